@@ -1,0 +1,1 @@
+"""citygml stage of cityshade."""

@@ -1,0 +1,84 @@
+"""Typed errors of the cityshade library.
+
+The library raises these and never prints or exits; the CLI turns each into one line on stderr
+and a non-zero exit status. Every error can carry the file, line and ``gml:id`` where it is known.
+"""
+from __future__ import annotations
+
+
+class CityshadeError(Exception):
+    """Base class: a failure with a one-line, user-facing message.
+
+    Parameters
+    ----------
+    message : str
+        What went wrong, in one line, phrased for the user.
+    path : str, optional
+        File the error concerns.
+    line : int, optional
+        1-based line number in ``path``.
+    gml_id : str, optional
+        ``gml:id`` of the object concerned.
+    """
+
+    exit_code = 1
+
+    def __init__(self, message: str, *, path: str | None = None, line: int | None = None,
+                 gml_id: str | None = None):
+        super().__init__(message)
+        self.message = message
+        self.path = path
+        self.line = line
+        self.gml_id = gml_id
+
+    def __str__(self) -> str:
+        where = ""
+        if self.path:
+            where = str(self.path)
+            if self.line:
+                where += f":{self.line}"
+            where += ": "
+        what = f" (gml:id {self.gml_id})" if self.gml_id else ""
+        return f"{where}{self.message}{what}"
+
+
+class UsageError(CityshadeError):
+    """An option or argument that makes no sense (exit status 2, like click's usage errors)."""
+
+    exit_code = 2
+
+
+class InputError(CityshadeError):
+    """The input file cannot be used: missing, unreadable, malformed, not CityGML, empty."""
+
+
+class XMLSyntaxError(InputError):
+    """Malformed or truncated XML, or an XML construct refused for safety (entities, DTDs)."""
+
+
+class NotCityGMLError(InputError):
+    """Well-formed XML that is not a CityGML model."""
+
+
+class EmptyModelError(InputError):
+    """A CityGML model with no usable geometry."""
+
+
+class CRSError(CityshadeError):
+    """An unknown or unusable coordinate reference system."""
+
+
+class CacheError(CityshadeError):
+    """A cache file that cannot be used; the message always says to rebuild."""
+
+
+class CacheVersionError(CacheError):
+    """A cache written by another format version."""
+
+
+class CacheCorruptError(CacheError):
+    """A truncated or tampered cache (size or checksum mismatch)."""
+
+
+class ConfigError(UsageError):
+    """A TOML configuration with unknown keys or values of the wrong type."""

@@ -1,0 +1,1 @@
+"""trace stage of cityshade."""
