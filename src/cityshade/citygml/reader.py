@@ -1,0 +1,544 @@
+"""Streaming CityGML reader (lxml ``iterparse``): file → :class:`RawModel`.
+
+Memory is bounded by the largest city object, never by the file: the parser stops at the end of
+every top-level member (``cityObjectMember``, ``featureMember``, ``appearanceMember``), the walker
+turns the member into flat records, and the member is cleared. Geometry is kept as ring texts
+that are parsed in large batches by a Numba kernel (:mod:`cityshade.citygml.geometry`).
+
+What the walker records
+-----------------------
+- objects: gml:id, type (local name), parent object, raw time attributes, source line;
+- polygons: owning object, surface class, LoD (-1 when no LoD is known), orientation flip
+  (``OrientableSurface orientation="-"``), gml:id, first ring;
+- rings: coordinate text, dimension, gml:id (for texture coordinates);
+- references: every ``xlink:href`` where geometry may stand, with the context it stands in, so
+  that forward references anywhere in the file resolve after the last member;
+- aggregates: gml:ids of geometry aggregates and thematic surfaces → the polygons and
+  references inside them (appearance targets and xlinks may point at them);
+- appearances (see :mod:`cityshade.citygml.appearance`), srsName counts, counters.
+
+Safety: no DTD is loaded, no entity is resolved, nothing is fetched from a network; a document
+that declares entities is refused before parsing (entity-expansion bombs never start).
+"""
+from __future__ import annotations
+
+import os
+import re
+from collections import Counter
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+
+from cityshade.citygml import namespaces as ns
+from cityshade.citygml.appearance import AppearanceCollector
+from cityshade.citygml.geometry import parse_ring_texts
+from cityshade.errors import EmptyModelError, InputError, NotCityGMLError, XMLSyntaxError
+
+#: Batch size (characters of coordinate text) handed to the Numba parser at once: large enough
+#: to amortise the call, small enough (≈16 MB of text) to bound memory on 200 MB files.
+_PARSE_BATCH_CHARS = 16_000_000
+
+#: How far into a file we look for a DOCTYPE with entity declarations (the prolog).
+_PROLOG_BYTES = 65536
+
+_LOD_PROPERTY = re.compile(r"^lod([0-4])[A-Z]")
+
+# Walker element kinds (cached per tag string).
+K_SKIP, K_DESCEND, K_OBJECT, K_THEMATIC, K_LOD, K_POLYGON, K_AGG, K_ORIENTABLE, K_APPEARANCE, \
+    K_GML_BOUNDED, K_IMPLICIT = range(11)
+
+
+@dataclass
+class RawModel:
+    """Everything read from one CityGML file, before LoD selection and triangulation."""
+
+    path: Path
+    versions: set[str] = field(default_factory=set)
+    root_namespace: str = ""
+    # Objects.
+    obj_ids: list[str | None] = field(default_factory=list)
+    obj_types: list[str] = field(default_factory=list)
+    obj_parent: list[int] = field(default_factory=list)
+    obj_time: list[dict[str, str]] = field(default_factory=list)
+    obj_line: list[int] = field(default_factory=list)
+    # Polygons (one entry per polygon element).
+    poly_obj: list[int] = field(default_factory=list)
+    poly_cls: list[int] = field(default_factory=list)
+    poly_lod: list[int] = field(default_factory=list)
+    poly_flip: list[int] = field(default_factory=list)
+    poly_ring0: list[int] = field(default_factory=list)
+    poly_ids: list[str | None] = field(default_factory=list)
+    poly_by_id: dict[str, int] = field(default_factory=dict)
+    # Rings: parsed coordinates, per-ring point counts and bad flags.
+    ring_by_id: dict[str, int] = field(default_factory=dict)
+    xyz: np.ndarray = field(default_factory=lambda: np.empty((0, 3)))
+    ring_points: np.ndarray = field(default_factory=lambda: np.empty(0, np.int64))
+    ring_bad: np.ndarray = field(default_factory=lambda: np.empty(0, np.uint8))
+    # References (xlink:href in a geometry context).
+    ref_obj: list[int] = field(default_factory=list)
+    ref_cls: list[int] = field(default_factory=list)
+    ref_lod: list[int] = field(default_factory=list)
+    ref_flip: list[int] = field(default_factory=list)
+    ref_target: list[str] = field(default_factory=list)
+    # Aggregates: id → (first polygon, end polygon, first ref, end ref).
+    aggregates: dict[str, tuple[int, int, int, int]] = field(default_factory=dict)
+    appearance: AppearanceCollector = field(default_factory=AppearanceCollector)
+    srs_names: Counter = field(default_factory=Counter)
+    counters: Counter = field(default_factory=Counter)
+    warnings: list[str] = field(default_factory=list)
+
+    @property
+    def n_polygons(self) -> int:
+        return len(self.poly_obj)
+
+
+def _split_tag(tag: str) -> tuple[str, str]:
+    if tag[0] == "{":
+        end = tag.index("}")
+        return tag[1:end], tag[end + 1:]
+    return "", tag
+
+
+def _prescan(path: Path) -> None:
+    """Refuse documents that declare entities or an external DTD, before lxml sees them."""
+    with path.open("rb") as fh:
+        head = fh.read(_PROLOG_BYTES)
+    if not head.strip():
+        raise InputError("the file is empty", path=str(path))
+    doctype = head.find(b"<!DOCTYPE")
+    if doctype >= 0:
+        prolog = head[doctype:]
+        if b"<!ENTITY" in prolog:
+            line = head[:doctype].count(b"\n") + 1
+            raise XMLSyntaxError("the document declares XML entities, which cityshade refuses "
+                                 "to expand (entity-expansion attacks); remove the DOCTYPE",
+                                 path=str(path), line=line)
+        if b"SYSTEM" in prolog.split(b">", 1)[0] or b"PUBLIC" in prolog.split(b">", 1)[0]:
+            line = head[:doctype].count(b"\n") + 1
+            raise XMLSyntaxError("the document refers to an external DTD, which cityshade "
+                                 "never loads; remove the DOCTYPE", path=str(path), line=line)
+
+
+class _Walker:
+    """Turns one top-level member subtree into records of a :class:`RawModel`."""
+
+    def __init__(self, model: RawModel):
+        self.m = model
+        self.kinds: dict[str, tuple[int, object]] = {}
+        self.texts: list[str] = []
+        self.dims: list[int] = []
+        self.text_chars = 0
+        self.xyz_chunks: list[np.ndarray] = []
+        self.points_chunks: list[np.ndarray] = []
+        self.bad_chunks: list[np.ndarray] = []
+        self.gml_ns = ns.GML_NAMESPACES[0]
+        self.gml_id = ns.GML_ID_ATTRS[0]
+        self.ade_namespaces: Counter = Counter()
+        self.rings_flushed = 0
+
+    # -- classification -------------------------------------------------------------------
+    def kind(self, tag: str) -> tuple[int, object]:
+        """(kind, payload) of an element tag, cached: payload is a LoD, class code or type."""
+        cached = self.kinds.get(tag)
+        if cached is not None:
+            return cached
+        namespace, local = _split_tag(tag)
+        if namespace in ns.GML_NAMESPACES:
+            if local in ns.POLYGON_ELEMENTS:
+                result = (K_POLYGON, None)
+            elif local == "OrientableSurface":
+                result = (K_ORIENTABLE, None)
+            elif local in ns.AGGREGATE_ELEMENTS:
+                result = (K_AGG, None)
+            elif local == "boundedBy":
+                result = (K_GML_BOUNDED, None)
+            else:
+                result = (K_SKIP, None)
+        elif namespace == "" or namespace.startswith(ns.CITYGML_NS_PREFIXES):
+            version = ns.citygml_version(namespace)
+            if version:
+                self.m.versions.add(version)
+            if any(module in namespace for module in ns.SKIPPED_CITYGML_MODULES):
+                result = (K_SKIP, None)
+            elif local in ns.CITY_OBJECT_TYPES:
+                result = (K_OBJECT, local)
+            elif local in ns.THEMATIC_SURFACES:
+                result = (K_THEMATIC, ns.SURFACE_CODE[ns.THEMATIC_SURFACES[local]])
+            elif local in ns.IMPLICIT_PROPERTIES:
+                result = (K_IMPLICIT, None)
+            elif local in ns.SKIPPED_CITYGML or local in ns.TIME_ATTRIBUTES:
+                result = (K_SKIP, None)
+            elif local in ("appearance", "Appearance", "appearanceMember"):
+                result = (K_APPEARANCE, None)
+            else:
+                match = _LOD_PROPERTY.match(local)
+                result = (K_LOD, int(match.group(1))) if match else (K_DESCEND, None)
+        else:
+            # An Application Domain Extension (or a foreign element): skipped with its subtree.
+            self.ade_namespaces[namespace] += 1
+            result = (K_SKIP, None)
+        self.kinds[tag] = result
+        return result
+
+    def detect_gml(self, root) -> None:
+        """Pick the GML namespace of the file (3.1.1 or 3.2) from the root's declarations."""
+        declared = set((root.nsmap or {}).values())
+        for gml_ns, id_attr in zip(ns.GML_NAMESPACES, ns.GML_ID_ATTRS):
+            if gml_ns in declared:
+                self.gml_ns, self.gml_id = gml_ns, id_attr
+                return
+
+    def element_id(self, el) -> str | None:
+        value = el.get(self.gml_id)
+        if value is None:
+            # Files mixing GML versions exist (envelopes in one, geometry in the other).
+            for attr in ns.GML_ID_ATTRS:
+                value = el.get(attr)
+                if value is not None:
+                    break
+        return value
+
+    # -- members --------------------------------------------------------------------------
+    def member(self, member) -> None:
+        for child in member:
+            tag = child.tag
+            if not isinstance(tag, str):
+                continue
+            kind, payload = self.kind(tag)
+            if kind == K_OBJECT:
+                self.city_object(child, payload, -1)
+            elif kind == K_APPEARANCE:
+                self.m.appearance.read_appearance(child, self, owner=-1)
+            else:
+                self.m.counters["skipped_top_level_features"] += 1
+        href = member.get(ns.XLINK_HREF)
+        if href is not None:
+            self.m.counters["member_references_ignored"] += 1
+
+    def city_object(self, el, obj_type: str, parent: int) -> None:
+        m = self.m
+        index = len(m.obj_ids)
+        m.obj_ids.append(self.element_id(el))
+        m.obj_types.append(obj_type)
+        m.obj_parent.append(parent)
+        m.obj_line.append(el.sourceline or 0)
+        times: dict[str, str] = {}
+        relief_lod = -1
+        for child in el:
+            tag = child.tag
+            if not isinstance(tag, str):
+                continue
+            local = tag[tag.rfind("}") + 1:]
+            if local in ns.TIME_ATTRIBUTES and child.text:
+                times[local] = child.text.strip()
+            elif local == "lod" and child.text and child.text.strip().isdigit():
+                relief_lod = int(child.text.strip())  # dem:lod of a relief
+        m.obj_time.append(times)
+        default_cls = ns.SURFACE_CODE[ns.OBJECT_DEFAULT_CLASS.get(obj_type, "unclassified")]
+        self.walk(el, index, default_cls, relief_lod, 0)
+
+    def walk(self, el, obj: int, cls: int, lod: int, flip: int) -> None:
+        """Walk the children of ``el`` in the context (object, class, LoD, orientation flip)."""
+        m = self.m
+        kind_of = self.kind
+        for child in el:
+            tag = child.tag
+            if not isinstance(tag, str):
+                continue
+            kind, payload = kind_of(tag)
+            if kind == K_SKIP:
+                continue
+            if kind == K_POLYGON:
+                self.polygon(child, obj, cls, lod, flip)
+            elif kind == K_AGG:
+                href = child.get(ns.XLINK_HREF)
+                if href is not None:
+                    self.reference(href, obj, cls, lod, flip)
+                    continue
+                srs = child.get("srsName")
+                if srs is not None:
+                    m.srs_names[srs] += 1
+                agg_id = self.element_id(child)
+                if agg_id is None:
+                    self.walk(child, obj, cls, lod, flip)
+                else:
+                    p0, r0 = len(m.poly_obj), len(m.ref_obj)
+                    self.walk(child, obj, cls, lod, flip)
+                    m.aggregates.setdefault(agg_id, (p0, len(m.poly_obj), r0, len(m.ref_obj)))
+            elif kind == K_LOD:
+                href = child.get(ns.XLINK_HREF)
+                if href is not None:
+                    self.reference(href, obj, cls, payload, flip)
+                else:
+                    self.walk(child, obj, cls, payload, flip)
+            elif kind == K_DESCEND:
+                if child.get(ns.XLINK_HREF) is None:
+                    self.walk(child, obj, cls, lod, flip)
+            elif kind == K_OBJECT:
+                self.city_object(child, payload, obj)
+            elif kind == K_THEMATIC:
+                surface_id = self.element_id(child)
+                p0, r0 = len(m.poly_obj), len(m.ref_obj)
+                self.walk(child, obj, payload, lod, flip)
+                if surface_id is not None:
+                    m.aggregates.setdefault(surface_id, (p0, len(m.poly_obj), r0, len(m.ref_obj)))
+            elif kind == K_ORIENTABLE:
+                flipped = flip ^ (1 if child.get("orientation", "+").strip() == "-" else 0)
+                agg_id = self.element_id(child)
+                p0, r0 = len(m.poly_obj), len(m.ref_obj)
+                for base in child:
+                    if not isinstance(base.tag, str):
+                        continue
+                    href = base.get(ns.XLINK_HREF)
+                    if href is not None:
+                        self.reference(href, obj, cls, lod, flipped)
+                    else:
+                        self.walk(base, obj, cls, lod, flipped)
+                if agg_id is not None:
+                    m.aggregates.setdefault(agg_id, (p0, len(m.poly_obj), r0, len(m.ref_obj)))
+            elif kind == K_APPEARANCE:
+                self.m.appearance.read_appearance(child, self, owner=obj)
+            elif kind == K_GML_BOUNDED:
+                for envelope in child:
+                    if isinstance(envelope.tag, str):
+                        srs = envelope.get("srsName")
+                        if srs is not None:
+                            m.srs_names[srs] += 1
+            elif kind == K_IMPLICIT:
+                m.counters["implicit_geometries_skipped"] += 1
+
+    def reference(self, href: str, obj: int, cls: int, lod: int, flip: int) -> None:
+        m = self.m
+        m.ref_obj.append(obj)
+        m.ref_cls.append(cls)
+        m.ref_lod.append(lod)
+        m.ref_flip.append(flip)
+        m.ref_target.append(href[1:] if href.startswith("#") else href)
+
+    def polygon(self, el, obj: int, cls: int, lod: int, flip: int) -> None:
+        m = self.m
+        index = len(m.poly_obj)
+        m.poly_obj.append(obj)
+        m.poly_cls.append(cls)
+        m.poly_lod.append(lod)
+        m.poly_flip.append(flip)
+        m.poly_ring0.append(self.rings_flushed + len(self.dims))
+        srs = el.get("srsName")
+        if srs is not None:
+            m.srs_names[srs] += 1
+        pid = self.element_id(el)
+        m.poly_ids.append(pid)
+        if pid is not None and m.poly_by_id.setdefault(pid, index) != index:
+            m.counters["duplicate_gml_ids"] += 1
+        dim_default = el.get("srsDimension")
+        has_exterior = False
+        for boundary in el:
+            btag = boundary.tag
+            if not isinstance(btag, str):
+                continue
+            blocal = btag[btag.rfind("}") + 1:]
+            if blocal in ("exterior", "outerBoundaryIs"):
+                if has_exterior:
+                    continue
+                has_exterior = True
+            elif blocal not in ("interior", "innerBoundaryIs"):
+                continue
+            for ring in boundary:
+                if isinstance(ring.tag, str):
+                    self.ring(ring, dim_default)
+                    break
+        if not has_exterior:
+            m.counters["polygons_without_exterior"] += 1
+            # Keep the ring numbering consistent: an empty exterior makes the polygon skip.
+            self.ring_text("", 3, None)
+
+    def ring(self, ring, dim_default: str | None) -> None:
+        dim = dim_default
+        text = None
+        if len(ring):
+            first = ring[0]
+            local = first.tag[first.tag.rfind("}") + 1:] if isinstance(first.tag, str) else ""
+            if local == "posList":
+                text = first.text or ""
+                dim = first.get("srsDimension") or first.get("dimension") or dim
+            elif local == "pos":
+                text = " ".join((c.text or "") for c in ring if isinstance(c.tag, str))
+                dim = first.get("srsDimension") or dim
+            elif local == "coordinates":
+                text = first.text or ""
+                cs = first.get("cs", ",")
+                ts = first.get("ts", " ")
+                decimal = first.get("decimal", ".")
+                if decimal != ".":
+                    text = text.replace(cs, "\x00").replace(decimal, ".").replace("\x00", cs)
+                text = text.replace(cs, " ").replace(ts, " ")
+        if text is None:
+            self.m.counters["rings_without_coordinates"] += 1
+            text = ""
+        try:
+            dim_value = int(dim) if dim is not None else 3
+        except ValueError:
+            dim_value = 0
+        self.ring_text(text, dim_value, self.element_id(ring))
+
+    def ring_text(self, text: str, dim: int, ring_id: str | None) -> None:
+        if ring_id is not None:
+            self.m.ring_by_id.setdefault(ring_id, self.rings_flushed + len(self.dims))
+        self.texts.append(text)
+        self.dims.append(dim)
+        self.text_chars += len(text)
+        if self.text_chars > _PARSE_BATCH_CHARS:
+            self.flush()
+
+    def flush(self) -> None:
+        if not self.texts:
+            return
+        xyz, points, bad = parse_ring_texts(self.texts, self.dims)
+        self.xyz_chunks.append(xyz)
+        self.points_chunks.append(points)
+        self.bad_chunks.append(bad)
+        self.rings_flushed += len(self.texts)
+        self.texts, self.dims, self.text_chars = [], [], 0
+
+    def finish(self) -> None:
+        self.flush()
+        m = self.m
+        if self.xyz_chunks:
+            m.xyz = np.concatenate(self.xyz_chunks) if len(self.xyz_chunks) > 1 else self.xyz_chunks[0]
+            m.ring_points = np.concatenate(self.points_chunks)
+            m.ring_bad = np.concatenate(self.bad_chunks)
+        self.xyz_chunks = self.points_chunks = self.bad_chunks = []
+        for namespace, count in sorted(self.ade_namespaces.items()):
+            m.counters["ade_elements_skipped"] += count
+
+
+def _member_tags(root_namespace: str) -> list[str]:
+    """Tags of top-level members in every CityGML/GML version (lxml iterparse filter)."""
+    cores = {
+        "http://www.opengis.net/citygml/1.0", "http://www.opengis.net/citygml/2.0",
+        "http://www.opengis.net/citygml/3.0", "http://www.citygml.org/citygml/1/0/0",
+        "http://www.opengis.net/citygml/profiles/base/1.0",
+        "http://www.opengis.net/citygml/profiles/base/2.0",
+        "http://www.citygml.org/citygml/profiles/base/2.0", root_namespace,
+    }
+    apps = {"http://www.opengis.net/citygml/appearance/1.0",
+            "http://www.opengis.net/citygml/appearance/2.0",
+            "http://www.opengis.net/citygml/appearance/3.0"}
+    tags = []
+    for core in sorted(cores):
+        prefix = "{%s}" % core if core else ""
+        tags += [prefix + "cityObjectMember", prefix + "appearanceMember", prefix + "featureMember"]
+    for app in sorted(apps):
+        tags.append("{%s}appearanceMember" % app)
+    for gml in ns.GML_NAMESPACES:
+        tags += ["{%s}featureMember" % gml, "{%s}featureMembers" % gml]
+    return tags
+
+
+def _root_of(path: Path, recover: bool):
+    """(namespace, local name, nsmap) of the document's root element, reading only its start."""
+    from lxml import etree
+
+    with path.open("rb") as fh:
+        try:
+            for _event, elem in etree.iterparse(fh, events=("start",), resolve_entities=False,
+                                                 no_network=True, load_dtd=False,
+                                                 recover=recover, huge_tree=True):
+                namespace, local = _split_tag(elem.tag)
+                return namespace, local
+        except etree.XMLSyntaxError as exc:
+            raise XMLSyntaxError(f"malformed XML: {exc.msg}", path=str(path),
+                                 line=exc.lineno) from None
+    raise XMLSyntaxError("no XML element found", path=str(path))
+
+
+def read_citygml(path: str | os.PathLike, progress: Callable[[int, int], None] | None = None
+                 ) -> RawModel:
+    """Read a CityGML file into flat records.
+
+    Parameters
+    ----------
+    path : path-like
+        A CityGML 1.0 / 2.0 / 3.0 file (GML 3.1.1 or 3.2).
+    progress : callable(bytes_read, bytes_total), optional
+        Called after each top-level member.
+
+    Raises
+    ------
+    InputError, XMLSyntaxError, NotCityGMLError, EmptyModelError
+        With file and line where known.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise InputError("no such file" if not path.exists() else "not a regular file",
+                         path=str(path))
+    _prescan(path)
+    root_ns, root_local = _root_of(path, recover=False)
+    if root_local != "CityModel" or not (root_ns == "" or root_ns.startswith(ns.CITYGML_NS_PREFIXES)):
+        raise NotCityGMLError(f"not a CityGML file: the root element is "
+                              f"{'{' + root_ns + '}' if root_ns else ''}{root_local}, "
+                              f"not a CityGML CityModel", path=str(path))
+    try:
+        return _read(path, root_ns, progress, recover=False)
+    except XMLSyntaxError as exc:
+        # Real files (PLATEAU) use undeclared namespace prefixes: recover with a warning rather
+        # than refusing the whole model. Anything else that is malformed stays an error.
+        if "Namespace prefix" not in exc.message:
+            raise
+        model = _read(path, root_ns, progress, recover=True)
+        model.warnings.insert(0, f"XML namespace error recovered ({exc.message}, line {exc.line})")
+        return model
+
+
+def _read(path: Path, root_ns: str, progress, recover: bool) -> RawModel:
+    from lxml import etree
+
+    model = RawModel(path=path, root_namespace=root_ns)
+    version = ns.citygml_version(root_ns)
+    if version:
+        model.versions.add(version)
+    walker = _Walker(model)
+    total = path.stat().st_size
+    members = 0
+    with path.open("rb") as fh:
+        context = etree.iterparse(fh, events=("end",), tag=_member_tags(root_ns),
+                                  resolve_entities=False, no_network=True, load_dtd=False,
+                                  recover=recover, huge_tree=True, remove_comments=True)
+        try:
+            for _event, member in context:
+                if members == 0:
+                    root = member.getparent()
+                    if root is not None:
+                        walker.detect_gml(root)
+                        for child in root:
+                            if isinstance(child.tag, str) and child.tag.endswith("}boundedBy"):
+                                for env in child:
+                                    if isinstance(env.tag, str) and env.get("srsName"):
+                                        model.srs_names[env.get("srsName")] += 1
+                if member.getparent() is None or member.getparent().getparent() is not None:
+                    continue  # a nested element with a member-like name: handled by its owner
+                members += 1
+                walker.member(member)
+                # Free the member and everything before it: memory stays bounded.
+                member.clear()
+                parent = member.getparent()
+                while member.getprevious() is not None:
+                    del parent[0]
+                if progress is not None:
+                    progress(fh.tell(), total)
+        except etree.XMLSyntaxError as exc:
+            msg = exc.msg or str(exc)
+            if "Premature end" in msg or "EndTag" in msg and fh.tell() >= total:
+                msg = f"the file is truncated or malformed ({msg})"
+            else:
+                msg = f"malformed XML: {msg}"
+            raise XMLSyntaxError(msg, path=str(path), line=exc.lineno) from None
+    walker.finish()
+    model.counters["members"] = members
+    if members == 0 or not model.obj_ids:
+        raise EmptyModelError("the CityGML model contains no city objects", path=str(path))
+    if progress is not None:
+        progress(total, total)
+    return model
