@@ -1,0 +1,741 @@
+"""Build the 4-D (x, y, z, time) SAH kd-tree of a scene's triangles.
+
+The tree follows the thesis slides ("Data structure") and DESIGN §5:
+
+* Spatial splits are chosen by the surface-area heuristic (SAH): the probability that a ray
+  which hits a node also hits a child is the ratio of their 3-D surface areas.
+* Rays carry one constant time, so a node's "surface" is its 3-D surface area times its
+  duration. A time split keeps the box, so its probability is the ratio of the durations.
+  Open (infinite) validity ends are clamped to the model's finite time range for the heuristic;
+  a model without dates never considers a time split and pays nothing for the fourth dimension.
+* Straddling triangles go to both children with "perfect splits": the triangle is clipped to
+  the child box (Sutherland-Hodgman) and the child keeps the clipped extent.
+* Large nodes choose their plane from binned counts; nodes with at most
+  ``KdTreeSettings.sweep_threshold`` references run the exact sorted event sweep of
+  Wald & Havran, "On building fast kd-trees for ray tracing, and on doing that in O(N log N)"
+  (2006), including their treatment of triangles lying in the plane.
+* Termination by cost (``C_t + C_i (P_L N_L + P_R N_R)`` against ``C_i N``), with an
+  empty-space bonus and a depth cap.
+
+Every split position is a float32 value and every reference box is rounded outward to float32,
+so the float32 node layout of :mod:`cityshade.accel.kdtree_layout` routes rays exactly as the
+build classified the triangles.
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass
+
+import numpy as np
+from numba import njit
+from numba.typed import List
+
+from cityshade.errors import ConfigError, UsageError
+
+#: Deepest tree the layout and the fixed traversal stack support (the stack holds one entry
+#: per level, see ``cityshade.trace.kernels.STACK_SIZE``).
+MAX_DEPTH_LIMIT = 60
+#: Axis code of a time split; 0, 1, 2 are x, y, z.
+AXIS_T = 3
+#: Axis code stored for a leaf.
+LEAF = 4
+
+
+class KdTreeInputError(UsageError):
+    """Arrays handed to :func:`build_kdtree` of the wrong shape, type or content."""
+
+
+@dataclass(frozen=True)
+class KdTreeSettings:
+    """Tunables of the kd-tree build (TOML table ``[kdtree]``).
+
+    The defaults are the values measured fastest for our own traversal on the 1M-triangle
+    synthetic city of ``benchmarks/raytrace.py`` (``--sweep-sah`` there repeats the measurement).
+    """
+
+    #: Cost of one traversal step, relative to ``intersection_cost``.
+    traversal_cost: float = 1.0
+    #: Cost of one ray/triangle test.
+    intersection_cost: float = 1.5
+    #: Fraction of a split's cost forgiven when one child is empty: cutting off empty space
+    #: lets rays skip it entirely, which the plain SAH under-rates.
+    empty_bonus: float = 0.2
+    #: Depth cap; 0 means automatic, ``round(8 + 1.3 log2 N)`` (pbrt's rule), never above 60.
+    max_depth: int = 0
+    #: A node with at most this many triangle references becomes a leaf without a split search.
+    min_leaf_triangles: int = 1
+    #: Nodes with more references than this choose their plane from ``bins`` bins per axis;
+    #: smaller nodes run the exact sorted event sweep.
+    sweep_threshold: int = 2048
+    #: Number of bins per axis in binned nodes.
+    bins: int = 32
+
+    def __post_init__(self) -> None:
+        for name in ("traversal_cost", "intersection_cost"):
+            value = getattr(self, name)
+            if not (math.isfinite(value) and value > 0):
+                raise ConfigError(f"kdtree {name} must be a finite number > 0, not {value}")
+        if not (0.0 <= self.empty_bonus < 1.0):
+            raise ConfigError(f"kdtree empty_bonus must be in [0, 1), not {self.empty_bonus}")
+        if not (0 <= self.max_depth <= MAX_DEPTH_LIMIT):
+            raise ConfigError(f"kdtree max_depth must be in [0, {MAX_DEPTH_LIMIT}] "
+                              f"(0 = automatic), not {self.max_depth}")
+        if self.min_leaf_triangles < 0:
+            raise ConfigError("kdtree min_leaf_triangles must be >= 0, "
+                              f"not {self.min_leaf_triangles}")
+        if self.sweep_threshold < 0:
+            raise ConfigError(f"kdtree sweep_threshold must be >= 0, not {self.sweep_threshold}")
+        if not (2 <= self.bins <= 4096):
+            raise ConfigError(f"kdtree bins must be in [2, 4096], not {self.bins}")
+
+    def depth_cap(self, n_triangles: int) -> int:
+        """Depth cap for ``n_triangles`` triangles (resolves ``max_depth = 0``)."""
+        if self.max_depth > 0:
+            return self.max_depth
+        auto = int(round(8 + 1.3 * math.log2(max(n_triangles, 1))))
+        return min(auto, MAX_DEPTH_LIMIT)
+
+
+# --------------------------------------------------------------------------------------------
+# Numba kernels
+# --------------------------------------------------------------------------------------------
+
+@njit(cache=True)
+def _f32_down(x):
+    """Largest float32 value <= x (as float64); infinities pass through."""
+    f = np.float32(x)
+    if float(f) > x:
+        f = np.nextafter(f, np.float32(-np.inf))
+    return float(f)
+
+
+@njit(cache=True)
+def _f32_up(x):
+    """Smallest float32 value >= x (as float64); infinities pass through."""
+    f = np.float32(x)
+    if float(f) < x:
+        f = np.nextafter(f, np.float32(np.inf))
+    return float(f)
+
+
+@njit(cache=True)
+def _clip_poly(px, py, pz, n, axis, value, keep_below, qx, qy, qz):
+    """Clip polygon (px, py, pz)[:n] to ``coord <= value`` (or ``>=``); returns the new count.
+
+    Points on the plane are kept (inclusive), and crossing points get their ``axis`` coordinate
+    set exactly to ``value`` so clipping never drifts outside the box.
+    """
+    m = 0
+    for i in range(n):
+        j = (i + 1) % n
+        ci = px[i] if axis == 0 else (py[i] if axis == 1 else pz[i])
+        cj = px[j] if axis == 0 else (py[j] if axis == 1 else pz[j])
+        di = (value - ci) if keep_below else (ci - value)
+        dj = (value - cj) if keep_below else (cj - value)
+        if di >= 0.0:
+            qx[m] = px[i]
+            qy[m] = py[i]
+            qz[m] = pz[i]
+            m += 1
+        if (di > 0.0 and dj < 0.0) or (di < 0.0 and dj > 0.0):
+            s = di / (di - dj)
+            qx[m] = px[i] + s * (px[j] - px[i])
+            qy[m] = py[i] + s * (py[j] - py[i])
+            qz[m] = pz[i] + s * (pz[j] - pz[i])
+            if axis == 0:
+                qx[m] = value
+            elif axis == 1:
+                qy[m] = value
+            else:
+                qz[m] = value
+            m += 1
+    return m
+
+
+@njit(cache=True)
+def _clipped_box(tri_v, tri, box_lo, box_hi, out_lo, out_hi, scratch):
+    """Bounding box of triangle ``tri`` clipped to the 3-D box; False if nothing is left."""
+    px = scratch[0]
+    py = scratch[1]
+    pz = scratch[2]
+    qx = scratch[3]
+    qy = scratch[4]
+    qz = scratch[5]
+    for i in range(3):
+        px[i] = tri_v[tri, i, 0]
+        py[i] = tri_v[tri, i, 1]
+        pz[i] = tri_v[tri, i, 2]
+    n = 3
+    for axis in range(3):
+        n = _clip_poly(px, py, pz, n, axis, box_lo[axis], False, qx, qy, qz)
+        if n == 0:
+            return False
+        n = _clip_poly(qx, qy, qz, n, axis, box_hi[axis], True, px, py, pz)
+        if n == 0:
+            return False
+    for axis in range(3):
+        out_lo[axis] = np.inf
+        out_hi[axis] = -np.inf
+    for i in range(n):
+        for axis in range(3):
+            c = px[i] if axis == 0 else (py[i] if axis == 1 else pz[i])
+            out_lo[axis] = min(out_lo[axis], c)
+            out_hi[axis] = max(out_hi[axis], c)
+    return True
+
+
+@njit(cache=True)
+def _area(lo, hi):
+    """Surface area of the 3-D part of a 4-D box."""
+    ex = hi[0] - lo[0]
+    ey = hi[1] - lo[1]
+    ez = hi[2] - lo[2]
+    return 2.0 * (ex * ey + ex * ez + ey * ez)
+
+
+@njit(cache=True)
+def _surface(lo, hi, has_time, t0, t1):
+    """The slides' 4-D "surface": 3-D area times the clamped duration (area alone if dateless)."""
+    a = _area(lo, hi)
+    if has_time:
+        return a * (min(hi[3], t1) - max(lo[3], t0))
+    return a
+
+
+@njit(cache=True)
+def _split_probabilities(lo, hi, axis, p, t0, t1):
+    """(P_L, P_R) of a split of box (lo, hi) at ``p`` on ``axis``; (-1, -1) if undefined."""
+    if axis == AXIS_T:
+        a = max(lo[3], t0)
+        b = min(hi[3], t1)
+        d = b - a
+        if d <= 0.0:
+            return -1.0, -1.0
+        return (p - a) / d, (b - p) / d
+    ex = hi[0] - lo[0]
+    ey = hi[1] - lo[1]
+    ez = hi[2] - lo[2]
+    area = 2.0 * (ex * ey + ex * ez + ey * ez)
+    if area <= 0.0:
+        return -1.0, -1.0
+    # The two other extents give the area of the faces parallel to the split plane.
+    if axis == 0:
+        e1, e2, ea = ey, ez, ex
+    elif axis == 1:
+        e1, e2, ea = ex, ez, ey
+    else:
+        e1, e2, ea = ex, ey, ez
+    el = p - lo[axis]
+    er = hi[axis] - p
+    cap = e1 * e2
+    side = e1 + e2
+    return 2.0 * (cap + el * side) / area, 2.0 * (cap + er * side) / area
+
+
+@njit(cache=True)
+def _split_cost(pl, pr, nl, nr, ct, ci, bonus):
+    cost = ct + ci * (pl * nl + pr * nr)
+    if nl == 0 or nr == 0:
+        cost *= 1.0 - bonus
+    return cost
+
+
+@njit(cache=True)
+def _sweep_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, best):
+    """Exact SAH sweep over the sorted events of one axis (Wald & Havran 2006, §4.2).
+
+    ``best`` = [cost, axis, position, planar_left] is updated in place when a cheaper plane is
+    found. Events: a start at ``lo``, an end at ``hi``, or a planar event when ``lo == hi``.
+    """
+    n = lo.shape[0]
+    starts = np.empty(n)
+    ends = np.empty(n)
+    planars = np.empty(n)
+    ns = 0
+    npl = 0
+    for i in range(n):
+        a = lo[i, axis]
+        b = hi[i, axis]
+        if a == b:
+            planars[npl] = a
+            npl += 1
+        else:
+            starts[ns] = a
+            ends[ns] = b
+            ns += 1
+    starts = np.sort(starts[:ns])
+    ends = np.sort(ends[:ns])
+    planars = np.sort(planars[:npl])
+    if axis == AXIS_T:
+        a_lo = max(blo[3], t0)
+        a_hi = min(bhi[3], t1)
+    else:
+        a_lo = blo[axis]
+        a_hi = bhi[axis]
+    i = 0
+    j = 0
+    k = 0
+    n_left = 0
+    n_right = n
+    while i < ns or j < ns or k < npl:
+        p = np.inf
+        if i < ns:
+            p = starts[i]
+        if j < ns and ends[j] < p:
+            p = ends[j]
+        if k < npl and planars[k] < p:
+            p = planars[k]
+        p_end = 0
+        while j < ns and ends[j] == p:
+            j += 1
+            p_end += 1
+        p_planar = 0
+        while k < npl and planars[k] == p:
+            k += 1
+            p_planar += 1
+        p_start = 0
+        while i < ns and starts[i] == p:
+            i += 1
+            p_start += 1
+        if p == np.inf:
+            break
+        n_right -= p_planar + p_end
+        if a_lo < p < a_hi:
+            pl, pr = _split_probabilities(blo, bhi, axis, p, t0, t1)
+            if pl >= 0.0:
+                c_left = _split_cost(pl, pr, n_left + p_planar, n_right, ct, ci, bonus)
+                c_right = _split_cost(pl, pr, n_left, n_right + p_planar, ct, ci, bonus)
+                if c_left < best[0]:
+                    best[0] = c_left
+                    best[1] = axis
+                    best[2] = p
+                    best[3] = 1.0
+                if c_right < best[0]:
+                    best[0] = c_right
+                    best[1] = axis
+                    best[2] = p
+                    best[3] = 0.0
+        n_left += p_start + p_planar
+
+
+@njit(cache=True)
+def _binned_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, nbins, best):
+    """Approximate SAH over ``nbins`` equal bins of one axis (counts per bin, O(n))."""
+    n = lo.shape[0]
+    if axis == AXIS_T:
+        a = max(blo[3], t0)
+        b = min(bhi[3], t1)
+    else:
+        a = blo[axis]
+        b = bhi[axis]
+    if not (b > a):
+        return
+    scale = nbins / (b - a)
+    start_count = np.zeros(nbins, np.int64)
+    end_count = np.zeros(nbins, np.int64)
+    for r in range(n):
+        x = lo[r, axis]
+        if x <= a:
+            sb = 0
+        elif x >= b:
+            sb = nbins - 1
+        else:
+            sb = min(int((x - a) * scale), nbins - 1)
+        x = hi[r, axis]
+        if x <= a:
+            eb = 0
+        elif x >= b:
+            eb = nbins - 1
+        else:
+            eb = min(int((x - a) * scale), nbins - 1)
+        start_count[sb] += 1
+        end_count[eb] += 1
+    n_left = 0
+    n_right = n
+    for i in range(1, nbins):
+        n_left += start_count[i - 1]
+        n_right -= end_count[i - 1]
+        p = _f32_down(a + i * (b - a) / nbins)
+        if not (a < p < b):
+            continue
+        pl, pr = _split_probabilities(blo, bhi, axis, p, t0, t1)
+        if pl < 0.0:
+            continue
+        c = _split_cost(pl, pr, n_left, n_right, ct, ci, bonus)
+        if c < best[0]:
+            best[0] = c
+            best[1] = axis
+            best[2] = p
+            best[3] = 1.0
+
+
+@njit(cache=True)
+def _grow_i64(a, n):
+    if n <= a.shape[0]:
+        return a
+    b = np.empty(max(n, 2 * a.shape[0]), a.dtype)
+    b[:a.shape[0]] = a
+    return b
+
+
+@njit(cache=True)
+def _grow_f64(a, n):
+    if n <= a.shape[0]:
+        return a
+    b = np.empty(max(n, 2 * a.shape[0]), a.dtype)
+    b[:a.shape[0]] = a
+    return b
+
+
+@njit(cache=True)
+def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t0, t1,
+                  ct, ci, bonus, max_depth, min_leaf, sweep_threshold, nbins):
+    """Depth-first build with an explicit stack; returns the raw node and primitive arrays.
+
+    Output nodes are in depth-first order: the left child of inner node i is i + 1, and
+    ``node_child[i]`` is the right child; a leaf holds ``node_child`` = count and
+    ``node_first`` = first index into ``prims``.
+    """
+    n_tri = ids0.shape[0]
+    cap = max(16, 4 * n_tri // 3)
+    node_axis = np.empty(cap, np.int64)
+    node_child = np.empty(cap, np.int64)
+    node_first = np.empty(cap, np.int64)
+    node_split = np.empty(cap, np.float64)
+    prims = np.empty(max(16, 2 * n_tri), np.int64)
+    n_nodes = 0
+    n_prims = 0
+
+    scratch = np.empty((6, 16))
+    clo = np.empty(3)
+    chi = np.empty(3)
+
+    st_ids = List()
+    st_lo = List()
+    st_hi = List()
+    st_blo = List()
+    st_bhi = List()
+    st_depth = np.empty(4 * MAX_DEPTH_LIMIT + 8, np.int64)
+    st_parent = np.empty(4 * MAX_DEPTH_LIMIT + 8, np.int64)
+    st_ids.append(ids0)
+    st_lo.append(lo0)
+    st_hi.append(hi0)
+    st_blo.append(root_lo.copy())
+    st_bhi.append(root_hi.copy())
+    st_depth[0] = 0
+    st_parent[0] = -1
+    sp = 1
+
+    root_surface = _surface(root_lo, root_hi, has_time, t0, t1)
+    if root_surface <= 0.0:
+        root_surface = 1.0
+    sah = 0.0
+    n_leaves = 0
+    n_empty = 0
+    depth_max = 0
+    depth_sum = 0
+    time_splits = 0
+    best = np.empty(4)
+
+    while sp > 0:
+        sp -= 1
+        ids = st_ids.pop()
+        lo = st_lo.pop()
+        hi = st_hi.pop()
+        blo = st_blo.pop()
+        bhi = st_bhi.pop()
+        depth = st_depth[sp]
+        parent = st_parent[sp]
+
+        node = n_nodes
+        n_nodes += 1
+        if n_nodes > node_axis.shape[0]:
+            node_axis = _grow_i64(node_axis, n_nodes)
+            node_child = _grow_i64(node_child, n_nodes)
+            node_first = _grow_i64(node_first, n_nodes)
+            node_split = _grow_f64(node_split, n_nodes)
+        if parent >= 0:
+            node_child[parent] = node
+        n = ids.shape[0]
+        surf = _surface(blo, bhi, has_time, t0, t1) / root_surface
+
+        # Choose the cheapest plane over all axes, if splitting is allowed at all.
+        best[0] = np.inf
+        best[1] = -1.0
+        if n > min_leaf and depth < max_depth:
+            n_axes = 4 if has_time else 3
+            for axis in range(n_axes):
+                if n > sweep_threshold:
+                    _binned_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, nbins, best)
+                else:
+                    _sweep_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, best)
+        if best[1] < 0.0 or best[0] >= ci * n:
+            # Leaf: references sorted by (material, triangle id) make the draw batches.
+            key = np.empty(n, np.int64)
+            for r in range(n):
+                key[r] = (np.int64(material[ids[r]]) + 1) * (np.int64(n_tri) + 1) + ids[r]
+            order = np.argsort(key, kind="mergesort")
+            prims = _grow_i64(prims, n_prims + n)
+            for r in range(n):
+                prims[n_prims + r] = ids[order[r]]
+            node_axis[node] = LEAF
+            node_child[node] = n
+            node_first[node] = n_prims
+            node_split[node] = 0.0
+            n_prims += n
+            n_leaves += 1
+            if n == 0:
+                n_empty += 1
+            depth_max = max(depth_max, depth)
+            depth_sum += depth
+            sah += ci * n * surf
+            continue
+
+        axis = int(best[1])
+        p = best[2]
+        planar_left = best[3] > 0.5
+        sah += ct * surf
+        if axis == AXIS_T:
+            time_splits += 1
+
+        # Classify: 1 = left only, 2 = right only, 3 = both (straddling, clipped below).
+        side = np.empty(n, np.int8)
+        n_l = 0
+        n_r = 0
+        for r in range(n):
+            a = lo[r, axis]
+            b = hi[r, axis]
+            if axis == AXIS_T:
+                s = (1 if a < p else 0) | (2 if b > p else 0)
+            elif a == b and a == p:
+                s = 1 if planar_left else 2
+            elif b <= p:
+                s = 1
+            elif a >= p:
+                s = 2
+            else:
+                s = 3
+            side[r] = s
+            if s & 1:
+                n_l += 1
+            if s & 2:
+                n_r += 1
+
+        blo_l = blo.copy()
+        bhi_l = bhi.copy()
+        bhi_l[axis] = p
+        blo_r = blo.copy()
+        bhi_r = bhi.copy()
+        blo_r[axis] = p
+        ids_l = np.empty(n_l, ids.dtype)
+        lo_l = np.empty((n_l, 4))
+        hi_l = np.empty((n_l, 4))
+        ids_r = np.empty(n_r, ids.dtype)
+        lo_r = np.empty((n_r, 4))
+        hi_r = np.empty((n_r, 4))
+        il = 0
+        ir = 0
+        for r in range(n):
+            s = side[r]
+            if s & 1:
+                ids_l[il] = ids[r]
+                lo_l[il] = lo[r]
+                hi_l[il] = hi[r]
+                if s == 3 and axis != AXIS_T:
+                    # Perfect split: the true extent of the triangle inside the child box.
+                    if _clipped_box(tri_v, ids[r], blo_l, bhi_l, clo, chi, scratch):
+                        for c in range(3):
+                            lo_l[il, c] = max(lo[r, c], max(blo_l[c], _f32_down(clo[c])))
+                            hi_l[il, c] = min(hi[r, c], min(bhi_l[c], _f32_up(chi[c])))
+                    else:
+                        hi_l[il, axis] = p
+                il += 1
+            if s & 2:
+                ids_r[ir] = ids[r]
+                lo_r[ir] = lo[r]
+                hi_r[ir] = hi[r]
+                if s == 3 and axis != AXIS_T:
+                    if _clipped_box(tri_v, ids[r], blo_r, bhi_r, clo, chi, scratch):
+                        for c in range(3):
+                            lo_r[ir, c] = max(lo[r, c], max(blo_r[c], _f32_down(clo[c])))
+                            hi_r[ir, c] = min(hi[r, c], min(bhi_r[c], _f32_up(chi[c])))
+                    else:
+                        lo_r[ir, axis] = p
+                ir += 1
+
+        node_axis[node] = axis
+        node_split[node] = p
+        node_first[node] = 0
+        # Push the right child first so the left child is emitted next, at node + 1.
+        st_ids.append(ids_r)
+        st_lo.append(lo_r)
+        st_hi.append(hi_r)
+        st_blo.append(blo_r)
+        st_bhi.append(bhi_r)
+        st_depth[sp] = depth + 1
+        st_parent[sp] = node
+        sp += 1
+        st_ids.append(ids_l)
+        st_lo.append(lo_l)
+        st_hi.append(hi_l)
+        st_blo.append(blo_l)
+        st_bhi.append(bhi_l)
+        st_depth[sp] = depth + 1
+        st_parent[sp] = -1
+        sp += 1
+
+    stats = np.array([float(n_leaves), float(n_empty), float(depth_max), float(depth_sum),
+                      float(time_splits), sah])
+    return (node_axis[:n_nodes], node_child[:n_nodes], node_first[:n_nodes],
+            node_split[:n_nodes], prims[:n_prims], stats)
+
+
+# --------------------------------------------------------------------------------------------
+# Public API
+# --------------------------------------------------------------------------------------------
+
+def _f32_outward(values: np.ndarray, down: bool) -> np.ndarray:
+    """Round float64 values to float32-representable float64 values, outward."""
+    f = values.astype(np.float32)
+    if down:
+        bad = f.astype(np.float64) > values
+        f[bad] = np.nextafter(f[bad], np.float32(-np.inf))
+    else:
+        bad = f.astype(np.float64) < values
+        f[bad] = np.nextafter(f[bad], np.float32(np.inf))
+    return f.astype(np.float64)
+
+
+def model_time_range(t_begin_days: np.ndarray, t_end_days: np.ndarray) -> tuple[float, float] | None:
+    """Finite time range ``(t0, t1)`` in days used by the heuristic, or None for a dateless model.
+
+    The range spans every finite begin and end, padded by 1 % of its length (at least one day)
+    so that the first and last dates are strictly inside and a single date still has a duration.
+    """
+    finite = np.concatenate([t_begin_days[np.isfinite(t_begin_days)],
+                             t_end_days[np.isfinite(t_end_days)]])
+    if finite.size == 0:
+        return None
+    lo = float(finite.min())
+    hi = float(finite.max())
+    pad = max(1.0, 0.01 * (hi - lo))
+    return lo - pad, hi + pad
+
+
+def build_kdtree(vertices, triangles, t_begin_days, t_end_days, material,
+                 settings: KdTreeSettings | None = None):
+    """Build the 4-D SAH kd-tree of a triangle scene.
+
+    Parameters
+    ----------
+    vertices : (V, 3) float32 array
+        Render-space vertex positions (x east, y north, z up, metres, relative to the scene
+        origin). Other float types are converted to float32.
+    triangles : (T, 3) int array
+        Vertex indices; winding gives the outward normal (right-hand rule).
+    t_begin_days, t_end_days : (T,) float64 arrays
+        Validity interval ``[begin, end)`` of each triangle, days since 1970-01-01 UTC; open ends
+        are -inf / +inf. Triangles with ``begin >= end`` are never valid and left out.
+    material : (T,) int32 array
+        Material index per triangle (-1 = none); leaves list triangles sorted by it.
+    settings : KdTreeSettings, optional
+        Build tunables; defaults to ``KdTreeSettings()``.
+
+    Returns
+    -------
+    KdTree
+        The flat tree (:class:`cityshade.accel.kdtree_layout.KdTree`) with its build statistics.
+
+    Raises
+    ------
+    KdTreeInputError
+        Arrays of the wrong shape, non-finite vertices, indices out of range or NaN times.
+    """
+    from cityshade.accel.kdtree_layout import KdTree, pack_nodes, triangle_records
+
+    settings = settings or KdTreeSettings()
+    started = time.perf_counter()
+    vertices = np.asarray(vertices)
+    triangles = np.asarray(triangles)
+    if vertices.ndim != 2 or vertices.shape[1] != 3:
+        raise KdTreeInputError(f"vertices must have shape (V, 3), not {vertices.shape}")
+    if triangles.ndim != 2 or triangles.shape[1] != 3:
+        raise KdTreeInputError(f"triangles must have shape (T, 3), not {triangles.shape}")
+    if not np.issubdtype(triangles.dtype, np.integer):
+        raise KdTreeInputError(f"triangles must be integer indices, not {triangles.dtype}")
+    n_tri = triangles.shape[0]
+    if n_tri >= 2**29:
+        raise KdTreeInputError(f"{n_tri} triangles exceed the layout's limit of 2^29")
+    vertices32 = np.ascontiguousarray(vertices, dtype=np.float32)
+    if not np.all(np.isfinite(vertices32)):
+        raise KdTreeInputError("vertices contain NaN or infinite coordinates")
+    if n_tri and (triangles.min() < 0 or triangles.max() >= vertices32.shape[0]):
+        raise KdTreeInputError("triangle vertex indices out of range")
+    t_begin = np.ascontiguousarray(t_begin_days, dtype=np.float64)
+    t_end = np.ascontiguousarray(t_end_days, dtype=np.float64)
+    material = np.ascontiguousarray(material, dtype=np.int32)
+    for name, arr in (("t_begin_days", t_begin), ("t_end_days", t_end), ("material", material)):
+        if arr.shape != (n_tri,):
+            raise KdTreeInputError(f"{name} must have shape ({n_tri},), not {arr.shape}")
+    if np.isnan(t_begin).any() or np.isnan(t_end).any():
+        raise KdTreeInputError("validity times contain NaN (use -inf/+inf for open ends)")
+
+    triangles = np.ascontiguousarray(triangles, dtype=np.int64)
+    valid = t_begin < t_end
+    ids0 = np.flatnonzero(valid).astype(np.int32)
+    tri_v = vertices32[triangles].astype(np.float64)          # (T, 3, 3)
+    time_range = model_time_range(t_begin[valid], t_end[valid])
+    has_time = time_range is not None
+    t0, t1 = time_range if has_time else (0.0, 0.0)
+
+    lo0 = np.empty((ids0.size, 4))
+    hi0 = np.empty((ids0.size, 4))
+    if ids0.size:
+        lo0[:, :3] = tri_v[ids0].min(axis=1)
+        hi0[:, :3] = tri_v[ids0].max(axis=1)
+        # Outward float32 rounding keeps every time split a float32 value (see module doc).
+        lo0[:, 3] = _f32_outward(t_begin[ids0], down=True)
+        hi0[:, 3] = _f32_outward(t_end[ids0], down=False)
+        root_lo = np.append(lo0[:, :3].min(axis=0), -np.inf)
+        root_hi = np.append(hi0[:, :3].max(axis=0), np.inf)
+    else:
+        root_lo = np.array([0.0, 0.0, 0.0, -np.inf])
+        root_hi = np.array([0.0, 0.0, 0.0, np.inf])
+
+    depth_cap = settings.depth_cap(ids0.size)
+    node_axis, node_child, node_first, node_split, prims, raw = _build_kernel(
+        tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t0, t1,
+        float(settings.traversal_cost), float(settings.intersection_cost),
+        float(settings.empty_bonus), depth_cap, settings.min_leaf_triangles,
+        settings.sweep_threshold, settings.bins)
+    nodes = pack_nodes(node_axis, node_child, node_first, node_split)
+    prim_indices = prims.astype(np.int32)
+    records = triangle_records(vertices32, triangles, t_begin, t_end, material, prim_indices)
+
+    bounds = np.empty((2, 4))
+    bounds[0, :3] = root_lo[:3]
+    bounds[1, :3] = root_hi[:3]
+    bounds[0, 3] = t0
+    bounds[1, 3] = t1
+    n_leaves, n_empty, depth_max, depth_sum, time_splits, sah = raw
+    n_ref = int(prim_indices.size)
+    stats = {
+        "triangles_in": int(n_tri),
+        "triangles_valid": int(ids0.size),
+        "references": n_ref,
+        "duplication": n_ref / ids0.size if ids0.size else 0.0,
+        "nodes": int(node_axis.size),
+        "leaves": int(n_leaves),
+        "empty_leaves": int(n_empty),
+        "max_depth": int(depth_max),
+        "mean_depth": float(depth_sum / n_leaves) if n_leaves else 0.0,
+        "mean_leaf_triangles": (n_ref / (n_leaves - n_empty)) if n_leaves > n_empty else 0.0,
+        "sah_cost": float(sah),
+        "time_splits": int(time_splits),
+        "has_time": bool(has_time),
+        "depth_cap": int(depth_cap),
+        "build_s": time.perf_counter() - started,
+    }
+    return KdTree(nodes=nodes, prim_indices=prim_indices, tri_records=records, bounds=bounds,
+                  stats=stats)

@@ -1,0 +1,181 @@
+"""Flat layout of the 4-D kd-tree: 8-byte nodes, leaf-ordered primitive list, triangle records.
+
+Node layout (``nodes``, shape (M, 2), uint32), after the thesis slides' "flat kd-tree with
+8 bytes/node":
+
+* word 0: bits 0-2 hold the axis (0 x, 1 y, 2 z, 3 time) or 4 for a leaf; bits 3-31 hold, for
+  an inner node, the index of its right child (the left child is always the next node, i + 1),
+  and for a leaf, its number of triangle references.
+* word 1: for an inner node, the float32 bits of the split position (metres, or days since
+  1970-01-01 UTC for a time split: rays at time ``t < split`` go left); for a leaf, the index of
+  its first entry in ``prim_indices`` / ``tri_records``.
+
+Triangle records (``tri_records``, shape (K, 16), float32; one 64-byte cache line each) are
+stored in leaf order so traversal never chases vertex indices:
+
+* columns 0-8: the three vertices (v0 x, y, z, v1 x, y, z, v2 x, y, z), float32, render space;
+* column 9: the triangle id (int32 bits);
+* columns 10-11 and 12-13: validity begin and end (float64 bits, days; -inf/+inf for open);
+* column 14: material (int32 bits); column 15: zero padding.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+
+#: Number of float32 words of one triangle record (64 bytes: one cache line).
+RECORD_WORDS = 16
+#: Column of the triangle id in the int32 view of the records.
+REC_ID = 9
+#: Columns of validity begin / end in the float64 view (byte offsets 40 and 48).
+REC_T_BEGIN64 = 5
+REC_T_END64 = 6
+#: Column of the material in the int32 view.
+REC_MATERIAL = 14
+#: Axis code of a leaf in word 0 of a node.
+LEAF_CODE = 4
+#: Bits of word 0 that hold the axis code.
+AXIS_BITS = 3
+#: Arrays written to and read from the cache, in this order.
+ARRAY_NAMES = ("kdtree_nodes", "kdtree_prim_indices", "kdtree_tri_records", "kdtree_bounds")
+
+
+def pack_nodes(axis, child, first, split):
+    """Pack raw build output into (M, 2) uint32 nodes (see the module docstring).
+
+    Parameters
+    ----------
+    axis : (M,) int array
+        0-3 for inner nodes (x, y, z, time), 4 for leaves.
+    child : (M,) int array
+        Right-child index of inner nodes; reference count of leaves.
+    first : (M,) int array
+        First primitive index of leaves (ignored for inner nodes).
+    split : (M,) float array
+        Split position of inner nodes, exactly float32-representable.
+    """
+    axis = np.asarray(axis, dtype=np.int64)
+    child = np.asarray(child, dtype=np.int64)
+    if child.size and child.max() >= 2 ** (32 - AXIS_BITS):
+        raise ValueError("kd-tree too large for the 8-byte node layout")
+    nodes = np.empty((axis.size, 2), np.uint32)
+    nodes[:, 0] = ((child << AXIS_BITS) | axis).astype(np.uint32)
+    split_bits = np.asarray(split, dtype=np.float32).view(np.uint32)
+    nodes[:, 1] = np.where(axis == LEAF_CODE, np.asarray(first, dtype=np.int64).astype(np.uint32),
+                           split_bits)
+    return nodes
+
+
+def triangle_records(vertices, triangles, t_begin_days, t_end_days, material, prim_indices):
+    """Leaf-ordered (K, 16) float32 intersection records for ``prim_indices``."""
+    k = prim_indices.size
+    records = np.zeros((k, RECORD_WORDS), np.float32)
+    if k:
+        tri = triangles[prim_indices]
+        records[:, 0:9] = vertices[tri].reshape(k, 9)
+    as_i32 = records.view(np.int32)
+    as_f64 = records.view(np.float64)
+    as_i32[:, REC_ID] = prim_indices
+    as_f64[:, REC_T_BEGIN64] = t_begin_days[prim_indices]
+    as_f64[:, REC_T_END64] = t_end_days[prim_indices]
+    as_i32[:, REC_MATERIAL] = material[prim_indices]
+    return records
+
+
+@dataclass(frozen=True, eq=False)
+class KdTree:
+    """A built 4-D kd-tree in its flat layout; the arrays may be read-only memory maps.
+
+    Attributes
+    ----------
+    nodes : (M, 2) uint32
+        Packed nodes; node 0 is the root (layout in the module docstring).
+    prim_indices : (K,) int32
+        Triangle ids in leaf order; inside each leaf sorted by material, then id.
+    tri_records : (K, 16) float32
+        Intersection records in the same order (layout in the module docstring).
+    bounds : (2, 4) float64
+        Scene box: rows min, max; columns x, y, z (metres) and t (days, the finite time range
+        used by the heuristic; ``[0, 0]`` for a model without dates).
+    stats : dict
+        Build statistics: ``triangles_in``, ``triangles_valid``, ``references``, ``duplication``,
+        ``nodes``, ``leaves``, ``empty_leaves``, ``max_depth``, ``mean_depth``,
+        ``mean_leaf_triangles``, ``sah_cost``, ``time_splits``, ``has_time``, ``depth_cap``,
+        ``build_s``.
+    """
+
+    nodes: np.ndarray
+    prim_indices: np.ndarray
+    tri_records: np.ndarray
+    bounds: np.ndarray
+    stats: dict = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        nodes = self.nodes
+        if nodes.ndim != 2 or nodes.shape[1] != 2 or nodes.dtype != np.uint32 or nodes.shape[0] < 1:
+            raise ValueError(f"kd-tree nodes must be (M >= 1, 2) uint32, not {nodes.shape} "
+                             f"{nodes.dtype}")
+        recs = self.tri_records
+        if recs.ndim != 2 or recs.shape[1] != RECORD_WORDS or recs.dtype != np.float32:
+            raise ValueError(f"kd-tree records must be (K, {RECORD_WORDS}) float32")
+        if self.prim_indices.shape != (recs.shape[0],):
+            raise ValueError("kd-tree prim_indices and records differ in length")
+        if self.bounds.shape != (2, 4):
+            raise ValueError("kd-tree bounds must have shape (2, 4)")
+        for name in ("nodes", "tri_records"):
+            if not getattr(self, name).flags.c_contiguous:
+                object.__setattr__(self, name, np.ascontiguousarray(getattr(self, name)))
+
+    # Views of the same memory for the kernels (no copies; fine on read-only memory maps).
+    @property
+    def node_words(self) -> np.ndarray:
+        """(M, 2) uint32 node words."""
+        return self.nodes
+
+    @property
+    def node_splits(self) -> np.ndarray:
+        """(M, 2) float32 view of the nodes; column 1 is the split of inner nodes."""
+        return self.nodes.view(np.float32)
+
+    @property
+    def records_f64(self) -> np.ndarray:
+        """(K, 8) float64 view of the records (columns 5, 6: validity begin, end)."""
+        return self.tri_records.view(np.float64)
+
+    @property
+    def records_i32(self) -> np.ndarray:
+        """(K, 16) int32 view of the records (column 9: triangle id, 14: material)."""
+        return self.tri_records.view(np.int32)
+
+    @property
+    def has_time(self) -> bool:
+        """Whether the model has any finite validity date."""
+        return bool(self.bounds[1, 3] > self.bounds[0, 3])
+
+    def to_arrays(self) -> dict[str, np.ndarray]:
+        """The arrays to store in the cache file, by name (see ``ARRAY_NAMES``)."""
+        return dict(zip(ARRAY_NAMES, (self.nodes, self.prim_indices, self.tri_records,
+                                      self.bounds)))
+
+    @classmethod
+    def from_arrays(cls, arrays, stats: dict | None = None) -> "KdTree":
+        """Rebuild a tree from ``to_arrays()`` output (arrays may be read-only memory maps)."""
+        missing = [name for name in ARRAY_NAMES if name not in arrays]
+        if missing:
+            raise KeyError(f"kd-tree arrays missing: {', '.join(missing)}")
+        return cls(nodes=arrays["kdtree_nodes"], prim_indices=arrays["kdtree_prim_indices"],
+                   tri_records=arrays["kdtree_tri_records"], bounds=arrays["kdtree_bounds"],
+                   stats=dict(stats or {}))
+
+    def unpack(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Decoded nodes: (axis (M,) int, child-or-count (M,) int, split-or-first (M,)).
+
+        ``split-or-first`` is float64: the split of inner nodes, the first index of leaves.
+        """
+        w0 = self.nodes[:, 0].astype(np.int64)
+        axis = w0 & ((1 << AXIS_BITS) - 1)
+        child = w0 >> AXIS_BITS
+        second = np.where(axis == LEAF_CODE, self.nodes[:, 1].astype(np.float64),
+                          self.node_splits[:, 1].astype(np.float64))
+        return axis, child, second
