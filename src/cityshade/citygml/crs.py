@@ -154,8 +154,8 @@ def _single_code(part: str) -> int | None:
     return None
 
 
-def _codes_from_spelling(text: str) -> tuple[list[int], bool] | None:
-    """EPSG codes named by ``text`` and whether the text is an AdV URN; None if unknown."""
+def _codes_from_spelling(text: str) -> list[int] | None:
+    """EPSG codes named by ``text`` (horizontal first), or None for an unknown spelling."""
     lowered = text.lower()
     # Take AdV URNs apart with their own tables.
     if lowered.startswith(_ADV_HEAD):
@@ -164,7 +164,7 @@ def _codes_from_spelling(text: str) -> tuple[list[int], bool] | None:
         v_code = _ADV_VERTICAL.get(vertical.strip().upper()) if vertical else None
         if h_code is None or (vertical and v_code is None):
             return None
-        return ([h_code] if v_code is None else [h_code, v_code]), True
+        return [h_code] if v_code is None else [h_code, v_code]
     # Split the OGC compound http URI into its component URIs.
     match = _COMPOUND_URI_RE.fullmatch(lowered)
     if match:
@@ -183,7 +183,7 @@ def _codes_from_spelling(text: str) -> tuple[list[int], bool] | None:
     codes = [_single_code(p) for p in parts]
     if not parts or any(c is None for c in codes):
         return None
-    return codes, False
+    return codes
 
 
 @functools.lru_cache(maxsize=None)
@@ -213,11 +213,10 @@ def _parse_cached(srs_name: str) -> CrsInfo:
     if text.startswith("#"):
         return CrsInfo(srs_name=srs_name, horizontal_epsg=None, vertical_epsg=None,
                        is_geographic=False, local=True, name=f"local CRS {text}")
-    parsed = _codes_from_spelling(text)
-    if parsed is None:
+    codes = _codes_from_spelling(text)
+    if codes is None:
         raise CRSError(f"unknown CRS spelling {srs_name!r} (not an EPSG code, OGC URN/URI or "
                        f"AdV URN that cityshade understands); {_CRS_HINT}")
-    codes, _ = parsed
     if len(codes) > 2:
         raise CRSError(f"CRS {srs_name!r} names {len(codes)} components; expected a horizontal "
                        f"CRS and at most one height system; {_CRS_HINT}")
