@@ -1,0 +1,90 @@
+"""``cityshade build``: CityGML file → triangulated scene (+ kd-tree) → ``.cityshade`` file."""
+from __future__ import annotations
+
+import hashlib
+import os
+import time
+from dataclasses import asdict
+from pathlib import Path
+from typing import Callable
+
+from cityshade.config import Settings
+from cityshade.geometry.scene import Scene
+
+#: Read size when hashing the source file (large reads keep hashing near disk speed).
+_HASH_CHUNK = 8 << 20
+
+
+def file_sha256(path: str | os.PathLike) -> str:
+    digest = hashlib.sha256()
+    with open(path, "rb") as fh:
+        while chunk := fh.read(_HASH_CHUNK):
+            digest.update(chunk)
+    return digest.hexdigest()
+
+
+def default_output(source: str | os.PathLike) -> Path:
+    """``city.gml`` → ``city.cityshade`` next to it."""
+    return Path(source).with_suffix(".cityshade")
+
+
+def build_scene_from_file(source: str | os.PathLike, settings: Settings | None = None,
+                          progress: Callable[[str, int, int], None] | None = None) -> Scene:
+    """Read, triangulate and (when the scene needs one) build the kd-tree of a CityGML file.
+
+    Parameters
+    ----------
+    progress : callable(stage, done, total), optional
+        Called while reading (bytes) and at the start of later stages.
+    """
+    from cityshade.citygml.reader import read_citygml
+    from cityshade.geometry.scene import build_scene
+
+    settings = settings or Settings()
+    timings: dict[str, float] = {}
+    t0 = time.perf_counter()
+    read_progress = (lambda done, total: progress("read", done, total)) if progress else None
+    raw = read_citygml(source, progress=read_progress)
+    timings["read_s"] = time.perf_counter() - t0
+    if progress:
+        progress("triangulate", 0, 1)
+    t1 = time.perf_counter()
+    scene = build_scene(raw, settings.build)
+    del raw
+    timings["triangulate_s"] = time.perf_counter() - t1
+    scene.kdtree = _build_tree(scene, settings, progress, timings)
+    scene.report["timings"] = {k: round(v, 4) for k, v in timings.items()}
+    return scene
+
+
+def _build_tree(scene: Scene, settings: Settings, progress, timings: dict):
+    from cityshade.accel.kdtree_build import build_kdtree
+
+    if progress:
+        progress("kdtree", 0, 1)
+    t = time.perf_counter()
+    kwargs = {"settings": settings.kdtree} if hasattr(settings, "kdtree") else {}
+    tree = build_kdtree(scene.vertices, scene.triangles, scene.tri_t_begin_days,
+                        scene.tri_t_end_days, scene.tri_material, **kwargs)
+    timings["kdtree_s"] = time.perf_counter() - t
+    return tree
+
+
+def build_file(source: str | os.PathLike, output: str | os.PathLike | None = None,
+               settings: Settings | None = None,
+               progress: Callable[[str, int, int], None] | None = None) -> tuple[Path, Scene, int]:
+    """Build the ``.cityshade`` file of a CityGML file; returns (output path, scene, bytes)."""
+    from cityshade.scenefile import save_scene
+
+    settings = settings or Settings()
+    source = Path(source)
+    output = Path(output) if output is not None else default_output(source)
+    scene = build_scene_from_file(source, settings, progress)
+    if progress:
+        progress("write", 0, 1)
+    stat = source.stat()
+    source_info = {"path": str(source.resolve()), "size": stat.st_size,
+                   "mtime": stat.st_mtime, "sha256": file_sha256(source)}
+    options = asdict(settings.build)
+    size = save_scene(scene, output, source_info, options)
+    return output, scene, size

@@ -1,0 +1,192 @@
+"""The ``.cityshade`` file: one versioned, checksummed, memory-mappable file per model.
+
+Layout (little-endian)::
+
+    0   8 bytes   magic b"CITYSHD\\n"
+    8   uint32    format version (FORMAT_VERSION)
+    12  uint32    reserved (0)
+    16  uint64    header length H in bytes
+    24  16 bytes  BLAKE2b-128 of the header
+    40  H bytes   header: UTF-8 JSON (metadata, tables, array directory)
+    ... arrays, each starting at a multiple of 64 bytes (cache-line aligned for the kernels)
+
+The header's ``arrays`` directory gives each array's dtype, shape, offset and BLAKE2b-128
+checksum; ``file_size`` is the whole file's size (a truncated file is detected before any
+array is touched). Loading memory-maps the file read-only; arrays are views into the map.
+Files are written to a temporary name in the same folder and renamed, so an interrupted build
+never leaves a half file under the final name.
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+import struct
+import tempfile
+from pathlib import Path
+from typing import Any, Mapping
+
+import numpy as np
+
+from cityshade.errors import CacheCorruptError, CacheError, CacheVersionError, InputError
+
+MAGIC = b"CITYSHD\n"
+#: Bump on any change of layout or meaning of a stored array; old files are refused.
+FORMAT_VERSION = 1
+_PREFIX = struct.Struct("<8sIIQ16s")
+_ALIGN = 64
+_REBUILD = "rebuild it with `cityshade build`"
+
+
+def _digest(data) -> str:
+    return hashlib.blake2b(data, digest_size=16).hexdigest()
+
+
+def pack_strings(values: list[str]) -> tuple[np.ndarray, np.ndarray]:
+    """Strings → (UTF-8 blob uint8, offsets int64 of length n+1)."""
+    encoded = [v.encode("utf-8") for v in values]
+    offsets = np.zeros(len(encoded) + 1, np.int64)
+    if encoded:
+        np.cumsum([len(e) for e in encoded], out=offsets[1:])
+    blob = np.frombuffer(b"".join(encoded), dtype=np.uint8)
+    return blob, offsets
+
+
+def unpack_strings(blob: np.ndarray, offsets: np.ndarray) -> list[str]:
+    data = bytes(blob)
+    return [data[offsets[i]:offsets[i + 1]].decode("utf-8") for i in range(len(offsets) - 1)]
+
+
+def write_cache(path: str | os.PathLike, header: Mapping[str, Any],
+                arrays: Mapping[str, np.ndarray]) -> int:
+    """Write arrays and a JSON header atomically; returns the file size in bytes.
+
+    Parameters
+    ----------
+    path : path-like
+        Final file name (written as a temporary file in the same folder, then renamed).
+    header : mapping
+        JSON-serialisable metadata (must not contain the keys ``arrays``/``file_size``).
+    arrays : mapping of str to ndarray
+        Arrays to store; stored C-contiguous, little-endian, with their dtype and shape.
+    """
+    path = Path(path)
+    directory: dict[str, dict] = {}
+    prepared = {}
+    offset = 0
+    for name, array in arrays.items():
+        a = np.ascontiguousarray(array)
+        if a.dtype.byteorder == ">":
+            a = a.astype(a.dtype.newbyteorder("<"))
+        prepared[name] = a
+        directory[name] = {"dtype": a.dtype.str, "shape": list(a.shape), "offset": offset,
+                           "nbytes": int(a.nbytes), "blake2b": _digest(memoryview(a).cast("B"))}
+        offset += -(-a.nbytes // _ALIGN) * _ALIGN
+    full_header = dict(header)
+    full_header["arrays"] = directory
+    # The data offset depends on the header length, which contains the file size: iterate
+    # until the padded header length is stable (twice at most).
+    data_start = 0
+    for _ in range(4):
+        full_header["data_start"] = data_start
+        full_header["file_size"] = data_start + offset
+        blob = json.dumps(full_header, sort_keys=True, separators=(",", ":")).encode("utf-8")
+        needed = -(-(_PREFIX.size + len(blob)) // _ALIGN) * _ALIGN
+        if needed == data_start:
+            break
+        data_start = needed
+    prefix = _PREFIX.pack(MAGIC, FORMAT_VERSION, 0, len(blob),
+                          hashlib.blake2b(blob, digest_size=16).digest())
+    path.parent.mkdir(parents=True, exist_ok=True) if not path.parent.exists() else None
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            fh.write(prefix)
+            fh.write(blob)
+            fh.write(b"\0" * (data_start - _PREFIX.size - len(blob)))
+            for name, a in prepared.items():
+                fh.write(memoryview(a).cast("B"))
+                pad = -a.nbytes % _ALIGN
+                if pad:
+                    fh.write(b"\0" * pad)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        try:
+            os.unlink(tmp)
+        except OSError:
+            pass
+        raise
+    return data_start + offset
+
+
+class CacheFile:
+    """A loaded cache: :attr:`header` (dict) and :meth:`array` views into a read-only map."""
+
+    def __init__(self, path: Path, header: dict, mm: np.ndarray):
+        self.path = path
+        self.header = header
+        self._mm = mm
+
+    def names(self) -> list[str]:
+        return list(self.header["arrays"])
+
+    def array(self, name: str) -> np.ndarray:
+        entry = self.header["arrays"].get(name)
+        if entry is None:
+            raise CacheCorruptError(f"the cache has no array {name!r}; {_REBUILD}",
+                                    path=str(self.path))
+        start = self.header["data_start"] + entry["offset"]
+        raw = self._mm[start:start + entry["nbytes"]]
+        return raw.view(np.dtype(entry["dtype"])).reshape(entry["shape"])
+
+    def verify(self) -> None:
+        """Check every array against its checksum (reads the whole file once)."""
+        for name, entry in self.header["arrays"].items():
+            if _digest(memoryview(np.ascontiguousarray(self.array(name))).cast("B")) != entry["blake2b"]:
+                raise CacheCorruptError(f"array {name!r} does not match its checksum: the file "
+                                        f"was modified or damaged; {_REBUILD}", path=str(self.path))
+
+
+def open_cache(path: str | os.PathLike, verify: bool = True) -> CacheFile:
+    """Open a cache file read-only (memory-mapped).
+
+    Raises
+    ------
+    InputError
+        Missing file.
+    CacheVersionError
+        Written by another format version.
+    CacheCorruptError
+        Not a cityshade file, truncated, or a checksum mismatch.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise InputError("no such file", path=str(path))
+    size = path.stat().st_size
+    with path.open("rb") as fh:
+        prefix = fh.read(_PREFIX.size)
+        if len(prefix) < _PREFIX.size or not prefix.startswith(MAGIC):
+            if len(prefix) >= 5 and (prefix.lstrip().startswith(b"<") or b"<?xml" in prefix):
+                raise CacheError("this is an XML file, not a .cityshade cache; run "
+                                 "`cityshade build` on it first", path=str(path))
+            raise CacheCorruptError(f"not a .cityshade file (bad magic); {_REBUILD}",
+                                    path=str(path))
+        _magic, version, _reserved, header_len, header_digest = _PREFIX.unpack(prefix)
+        if version != FORMAT_VERSION:
+            raise CacheVersionError(f"cache format version {version}, this cityshade reads "
+                                    f"version {FORMAT_VERSION}; {_REBUILD}", path=str(path))
+        blob = fh.read(header_len)
+    if len(blob) != header_len or hashlib.blake2b(blob, digest_size=16).digest() != header_digest:
+        raise CacheCorruptError(f"the cache header is truncated or damaged; {_REBUILD}",
+                                path=str(path))
+    header = json.loads(blob.decode("utf-8"))
+    if header.get("file_size") != size:
+        raise CacheCorruptError(f"the cache is truncated or has extra bytes (size {size}, "
+                                f"expected {header.get('file_size')}); {_REBUILD}", path=str(path))
+    mm = np.memmap(path, dtype=np.uint8, mode="r") if size else np.zeros(0, np.uint8)
+    cache = CacheFile(path, header, mm)
+    if verify:
+        cache.verify()
+    return cache

@@ -1,0 +1,518 @@
+"""The triangulated scene: flat arrays in render space, plus object/polygon/material tables.
+
+Render space (DESIGN §3): x east, y north, z up, metres, float32, relative to a float64 origin
+(the rounded centre of the model's bounding box). Everything before the final cast — parsing,
+projection, triangulation, areas and normals — is float64.
+
+:func:`build_scene` turns a :class:`~cityshade.citygml.reader.RawModel` into a :class:`Scene`:
+it resolves ``xlink:href`` references (forward ones included), chooses the LoD of every object,
+makes sure each polygon is drawn once, triangulates, applies OrientableSurface flips, resolves
+the chosen appearance theme into per-triangle material/texture and per-vertex texture
+coordinates, and computes validity intervals.
+"""
+from __future__ import annotations
+
+from collections import Counter
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from cityshade.citygml import namespaces as ns
+from cityshade.citygml.appearance import (georeferenced_uv, read_world_file,
+                                          resolve_image_path)
+from cityshade.citygml.crs import CrsInfo, GeographicProjector, resolve_model_crs_detailed
+from cityshade.citygml.reader import RawModel
+from cityshade.citygml.temporal import choose_interval, days_to_iso
+from cityshade.config import BuildSettings
+from cityshade.errors import EmptyModelError
+
+#: Time-source codes stored per object (uint8).
+TIME_SOURCE_NAMES = ("none", "valid", "construction", "creation", "inherited")
+
+#: Depth limit when following references to aggregates that reference further aggregates:
+#: real files nest at most Solid → CompositeSurface → surfaceMember; 16 also stops cycles.
+_MAX_REFERENCE_DEPTH = 16
+
+
+@dataclass
+class Scene:
+    """A triangulated city model in render space.
+
+    Attributes
+    ----------
+    origin_m : (3,) float64
+        Render-space origin in the model CRS (metres); world = vertices + origin.
+    crs : CrsInfo
+        CRS of the render space (the projected CRS when the file was geographic).
+    vertices : (V, 3) float32
+        Render-space positions, metres.
+    uv : (V, 2) float32
+        Texture coordinates (0 where the vertex has no texture).
+    triangles : (T, 3) int32
+        Vertex indices; counter-clockwise seen from the side the polygon faces (outward).
+    tri_object, tri_polygon : (T,) int32
+        Index into the object and polygon tables.
+    tri_class : (T,) uint8
+        Surface class code (:data:`cityshade.citygml.namespaces.SURFACE_CLASSES`).
+    tri_material, tri_texture : (T,) int32
+        Index into :attr:`materials` / :attr:`textures`, -1 for none.
+    tri_t_begin_days, tri_t_end_days : (T,) float64
+        Validity interval [begin, end) of the triangle's object, days since 1970-01-01 UTC.
+    obj_ids, obj_types : list of str
+        gml:id ("" when absent) and local type name of each object.
+    obj_parent : (O,) int32
+        Parent object index, -1 for top-level objects.
+    obj_t_begin_days, obj_t_end_days : (O,) float64
+        Validity interval of each object.
+    obj_time_source : (O,) uint8
+        Code into :data:`TIME_SOURCE_NAMES`.
+    obj_lod : (O,) int8
+        LoD drawn for each object (-1: none/unknown).
+    poly_ids : list of str
+        gml:id of each drawn polygon ("" when absent).
+    poly_object : (P,) int32; poly_class : (P,) uint8; poly_area_m2 : (P,) float64;
+    poly_normal : (P, 3) float32
+        Per drawn polygon: owner, class, area (holes removed) and unit outward normal.
+    materials, textures : list of dict
+        Material parameters; texture image paths (absolute) and wrap mode.
+    report : dict
+        Build report: counts, skipped polygons by reason, repairs, warnings, time range...
+    """
+
+    origin_m: np.ndarray
+    crs: CrsInfo
+    vertices: np.ndarray
+    uv: np.ndarray
+    triangles: np.ndarray
+    tri_object: np.ndarray
+    tri_polygon: np.ndarray
+    tri_class: np.ndarray
+    tri_material: np.ndarray
+    tri_texture: np.ndarray
+    tri_t_begin_days: np.ndarray
+    tri_t_end_days: np.ndarray
+    obj_ids: list[str]
+    obj_types: list[str]
+    obj_parent: np.ndarray
+    obj_t_begin_days: np.ndarray
+    obj_t_end_days: np.ndarray
+    obj_time_source: np.ndarray
+    obj_lod: np.ndarray
+    poly_ids: list[str]
+    poly_object: np.ndarray
+    poly_class: np.ndarray
+    poly_area_m2: np.ndarray
+    poly_normal: np.ndarray
+    materials: list[dict] = field(default_factory=list)
+    textures: list[dict] = field(default_factory=list)
+    report: dict[str, Any] = field(default_factory=dict)
+    kdtree: Any = None
+    #: Header of the file the scene was loaded from (empty for a freshly built scene).
+    header: dict[str, Any] = field(default_factory=dict)
+
+    #: Array attributes stored in the cache (name → attribute).
+    ARRAY_FIELDS = ("origin_m", "vertices", "uv", "triangles", "tri_object", "tri_polygon",
+                    "tri_class", "tri_material", "tri_texture", "tri_t_begin_days",
+                    "tri_t_end_days", "obj_parent", "obj_t_begin_days", "obj_t_end_days",
+                    "obj_time_source", "obj_lod", "poly_object", "poly_class", "poly_area_m2",
+                    "poly_normal")
+
+    @property
+    def n_triangles(self) -> int:
+        return int(self.triangles.shape[0])
+
+    @property
+    def has_time(self) -> bool:
+        """True when some object has a finite validity bound (the tree needs a time axis)."""
+        return bool(np.isfinite(self.obj_t_begin_days).any() or
+                    np.isfinite(self.obj_t_end_days).any())
+
+    def world_from_render(self, xyz: np.ndarray) -> np.ndarray:
+        """Render-space points (N, 3) → model CRS coordinates, float64."""
+        return np.asarray(xyz, dtype=np.float64) + self.origin_m
+
+
+# ---------------------------------------------------------------------------------------------
+def _object_intervals(raw: RawModel, source: str, counters: Counter):
+    n = len(raw.obj_ids)
+    begin = np.full(n, -np.inf)
+    end = np.full(n, np.inf)
+    used = np.zeros(n, np.uint8)
+    code = {name: i for i, name in enumerate(TIME_SOURCE_NAMES)}
+    for i, attrs in enumerate(raw.obj_time):
+        parent = raw.obj_parent[i]
+        if attrs:
+            interval = choose_interval(attrs, source)
+            b, e, src = interval.begin_days, interval.end_days, interval.source
+            if interval.bad_values:
+                counters["unparseable_time_values"] += len(interval.bad_values)
+        else:
+            b, e, src = -np.inf, np.inf, "none"
+        if parent >= 0:
+            # A part exists only while its whole exists.
+            if src == "none" and used[parent] != 0:
+                src = "inherited"
+            b, e = max(b, begin[parent]), min(e, end[parent])
+        begin[i], end[i], used[i] = b, e, code[src]
+        if e <= b:
+            counters["objects_never_existing"] += 1
+    return begin, end, used
+
+
+def _resolve_references(raw: RawModel, counters: Counter):
+    """Expand every reference into (object, polygon, lod, flip, class) items."""
+    obj, poly, lod, flip, cls = [], [], [], [], []
+    poly_by_id, aggregates = raw.poly_by_id, raw.aggregates
+    targets, ref_obj, ref_lod = raw.ref_target, raw.ref_obj, raw.ref_lod
+    ref_flip, ref_cls = raw.ref_flip, raw.ref_cls
+    unresolved = 0
+
+    def expand(target: str, o: int, lo: int, fl: int, cl: int, depth: int) -> bool:
+        p = poly_by_id.get(target)
+        if p is not None:
+            obj.append(o), poly.append(p), lod.append(lo), flip.append(fl), cls.append(cl)
+            return True
+        agg = aggregates.get(target)
+        if agg is None or depth > _MAX_REFERENCE_DEPTH:
+            return False
+        p0, p1, r0, r1 = agg
+        for p in range(p0, p1):
+            obj.append(o), poly.append(p), lod.append(lo), flip.append(fl), cls.append(cl)
+        for r in range(r0, r1):
+            inner_cls = ref_cls[r] if ref_cls[r] != 0 else cl
+            expand(targets[r], o, lo, fl ^ ref_flip[r], inner_cls, depth + 1)
+        return True
+
+    for r, target in enumerate(targets):
+        if not expand(target, ref_obj[r], ref_lod[r], ref_flip[r], ref_cls[r], 0):
+            unresolved += 1
+    if unresolved:
+        counters["unresolved_references"] += unresolved
+    return (np.array(obj, np.int64), np.array(poly, np.int64), np.array(lod, np.int64),
+            np.array(flip, np.int64), np.array(cls, np.int64))
+
+
+def _expand_ranges(starts: np.ndarray, lengths: np.ndarray) -> np.ndarray:
+    """Concatenate ``arange(s, s + n)`` for every (s, n), vectorised."""
+    total = int(lengths.sum())
+    if total == 0:
+        return np.empty(0, np.int64)
+    offsets = np.repeat(starts - np.concatenate([[0], np.cumsum(lengths)[:-1]]), lengths)
+    return np.arange(total, dtype=np.int64) + offsets
+
+
+def _polygon_targets(raw: RawModel, target: str, depth: int = 0) -> list[int]:
+    """Polygons an appearance target names: a polygon, or every polygon of an aggregate."""
+    p = raw.poly_by_id.get(target)
+    if p is not None:
+        return [p]
+    agg = raw.aggregates.get(target)
+    if agg is None or depth > _MAX_REFERENCE_DEPTH:
+        return []
+    p0, p1, r0, r1 = agg
+    out = list(range(p0, p1))
+    for r in range(r0, r1):
+        out += _polygon_targets(raw, raw.ref_target[r], depth + 1)
+    return out
+
+
+def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
+    """Select, triangulate and assemble the scene of a read CityGML file.
+
+    Raises
+    ------
+    EmptyModelError
+        Nothing triangulable is left (every polygon skipped, or the LoD asked for is absent).
+    CRSError
+        The CRS cannot be resolved (unknown srsName, bad ``settings.crs``).
+    """
+    from cityshade.geometry.triangulate import SKIP_REASONS, triangulate_polygons
+
+    settings = settings or BuildSettings()
+    counters: Counter = Counter(raw.counters)
+    warnings = list(raw.warnings)
+    n_poly_all = raw.n_polygons
+
+    # 1. Validity intervals.
+    obj_begin, obj_end, obj_source = _object_intervals(raw, settings.time_source, counters)
+
+    # 2. Items: every polygon where it is defined, and where it is referenced.
+    ref_items = _resolve_references(raw, counters)
+    own_obj = np.asarray(raw.poly_obj, np.int64)
+    own_lod = np.asarray(raw.poly_lod, np.int64)
+    own_flip = np.asarray(raw.poly_flip, np.int64)
+    poly_cls = np.asarray(raw.poly_cls, np.int64)
+    item_obj = np.concatenate([own_obj, ref_items[0]])
+    item_poly = np.concatenate([np.arange(n_poly_all), ref_items[1]])
+    item_lod = np.concatenate([own_lod, ref_items[2]])
+    item_flip = np.concatenate([own_flip, own_flip[ref_items[1]] ^ ref_items[3]])
+    # A polygon defined without a thematic surface takes the class of a surface referencing it.
+    ref_cls = ref_items[4]
+    upgrade = (poly_cls[ref_items[1]] == 0) & (ref_cls != 0)
+    poly_cls[ref_items[1][upgrade]] = ref_cls[upgrade]
+
+    # 3. LoD per object: the requested one, else the highest it has.
+    n_obj = len(raw.obj_ids)
+    obj_max_lod = np.full(n_obj, -1, np.int64)
+    np.maximum.at(obj_max_lod, item_obj, item_lod)
+    # Objects per LoD they have (an object with LoD 1 and 2 counts under both).
+    has = np.unique(np.stack([item_obj, item_lod])[:, item_lod >= 0], axis=1)
+    lod_table = Counter(int(v) for v in has[1])
+    if settings.lod is None:
+        chosen = obj_max_lod
+    else:
+        chosen = np.full(n_obj, settings.lod, np.int64)
+        has_lod = np.zeros(n_obj, bool)
+        has_lod[item_obj[(item_lod == settings.lod) | (item_lod < 0)]] = True
+        has_geometry = np.zeros(n_obj, bool)
+        has_geometry[item_obj] = True
+        missing = int((has_geometry & ~has_lod).sum())
+        if missing:
+            counters["objects_without_requested_lod"] = missing
+    selected = (item_lod == chosen[item_obj]) | (item_lod < 0)
+    sel_idx = np.nonzero(selected)[0]
+    # 4. Each polygon once: own definitions come first in the item order, so they win.
+    _, first = np.unique(item_poly[sel_idx], return_index=True)
+    keep = sel_idx[np.sort(first)]
+    keep = keep[np.argsort(item_poly[keep], kind="stable")]
+    polys = item_poly[keep]
+    p_obj, p_flip = item_obj[keep], item_flip[keep]
+    counters["polygons_read"] = n_poly_all
+    counters["polygons_not_selected_lod"] = int(len(np.unique(item_poly)) - len(polys))
+    if len(polys) == 0:
+        lod_msg = f" at LoD {settings.lod}" if settings.lod is not None else ""
+        raise EmptyModelError(f"the model has no surface geometry{lod_msg} "
+                              f"({n_obj} objects, {n_poly_all} polygons read)", path=str(raw.path))
+
+    # 5. Gather the rings of the selected polygons into contiguous arrays.
+    poly_ring0 = np.asarray(raw.poly_ring0 + [len(raw.ring_points)], np.int64)
+    ring_start = np.concatenate([[0], np.cumsum(raw.ring_points)])
+    p_nrings = poly_ring0[polys + 1] - poly_ring0[polys]
+    rings = _expand_ranges(poly_ring0[polys], p_nrings)
+    bad_ring = raw.ring_bad[rings].astype(bool) if len(rings) else np.zeros(0, bool)
+    poly_of_ring = np.repeat(np.arange(len(polys)), p_nrings)
+    bad_poly = np.zeros(len(polys), bool)
+    bad_poly[poly_of_ring[bad_ring]] = True
+    if bad_poly.any():
+        counters["skipped_bad_coordinates"] = int(bad_poly.sum())
+        good = ~bad_poly
+        polys, p_obj, p_flip, p_nrings = polys[good], p_obj[good], p_flip[good], p_nrings[good]
+        rings = _expand_ranges(poly_ring0[polys], p_nrings)
+    ring_len = raw.ring_points[rings]
+    point_idx = _expand_ranges(ring_start[rings], ring_len)
+    coords = raw.xyz[point_idx]
+    ring_offsets = np.concatenate([[0], np.cumsum(ring_len)]).astype(np.int64)
+    poly_ring_offsets = np.concatenate([[0], np.cumsum(p_nrings)]).astype(np.int64)
+
+    # 6. CRS; geographic coordinates are projected to metres first.
+    resolution = resolve_model_crs_detailed(raw.srs_names.elements(), settings.crs)
+    crs = resolution.crs
+    warnings += list(resolution.warnings)
+    source_crs = crs
+    if crs.is_geographic:
+        projector = GeographicProjector(crs, coords)
+        if projector.warning:
+            warnings.append(projector.warning)
+        coords = projector.project(coords)
+        crs = projector.target
+
+    # 7. Triangulate in float64.
+    tri = triangulate_polygons(
+        coords, ring_offsets, poly_ring_offsets, merge_distance_m=settings.merge_distance_m,
+        collinear_rel_tol=settings.collinear_rel_tol, area_rel_tol=settings.area_rel_tol,
+        min_rel_area=settings.min_rel_area, nonplanar_rel_tol=settings.nonplanar_rel_tol)
+    skipped = Counter()
+    for code, count in zip(*np.unique(tri.status, return_counts=True)):
+        if code != 0:
+            skipped[SKIP_REASONS[int(code)]] += int(count)
+    if counters.get("skipped_bad_coordinates"):
+        skipped["bad_coordinates"] += counters.pop("skipped_bad_coordinates")
+    from cityshade.geometry import triangulate as _tri_mod
+    repairs = Counter()
+    for bit, name in getattr(_tri_mod, "REPAIR_NAMES", {}).items():
+        n = int(((tri.repairs & bit) != 0).sum())
+        if n:
+            repairs[name] = n
+    ok = tri.status == 0
+    if not ok.any():
+        raise EmptyModelError(f"no polygon could be triangulated ({dict(skipped)})",
+                              path=str(raw.path))
+    triangles = np.asarray(tri.triangles, np.int64).copy()
+    tri_poly_local = np.asarray(tri.tri_polygon, np.int64)
+    # OrientableSurface "-": reverse the winding.
+    flip_tri = p_flip[tri_poly_local] != 0
+    triangles[flip_tri] = triangles[flip_tri][:, ::-1]
+    normals = tri.normal * np.where(p_flip != 0, -1.0, 1.0)[:, None]
+
+    # 8. Keep drawn polygons only and renumber; compact the vertices.
+    drawn = np.nonzero(ok)[0]
+    remap_poly = np.full(len(polys), -1, np.int64)
+    remap_poly[drawn] = np.arange(len(drawn))
+    tri_polygon = remap_poly[tri_poly_local]
+    used_points, inverse = np.unique(triangles.ravel(), return_inverse=True)
+    triangles = inverse.reshape(-1, 3)
+    world = coords[used_points]
+    lo, hi = world.min(axis=0), world.max(axis=0)
+    origin = np.round(0.5 * (lo + hi))
+    vertices = (world - origin).astype(np.float32)
+
+    # 9. Appearance of the chosen theme.
+    theme = raw.appearance.choose_theme(settings.theme)
+    if settings.theme is not None and theme is None:
+        warnings.append(f"appearance theme {settings.theme!r} not found; themes in the file: "
+                        f"{', '.join(repr(t) for t in raw.appearance.themes()) or 'none'}")
+    orig_poly = polys[drawn]
+    poly_local_of_orig = {int(p): i for i, p in enumerate(orig_poly)}
+    poly_material = np.full(len(drawn), -1, np.int32)
+    poly_texture = np.full(len(drawn), -1, np.int32)
+    point_uv = np.zeros((len(coords), 2), np.float64)
+    materials: list[dict] = []
+    textures: list[dict] = []
+    if theme is not None:
+        _apply_appearance(raw, theme, poly_local_of_orig, drawn, polys, rings, ring_offsets,
+                          poly_ring_offsets, coords, poly_material, poly_texture, point_uv,
+                          materials, textures, warnings, counters)
+    uv = point_uv[used_points].astype(np.float32)
+
+    # 10. Tables.
+    p_obj_drawn = p_obj[drawn]
+    tri_object = p_obj_drawn[tri_polygon]
+    poly_class = poly_cls[orig_poly].astype(np.uint8)
+    obj_lod = np.where(obj_max_lod >= 0, chosen, -1).astype(np.int8)
+    finite = np.concatenate([obj_begin[np.isfinite(obj_begin)], obj_end[np.isfinite(obj_end)]])
+    time_range = ([days_to_iso(float(finite.min())), days_to_iso(float(finite.max()))]
+                  if finite.size else None)
+    sources = Counter(TIME_SOURCE_NAMES[int(c)] for c in obj_source)
+    report = {
+        "versions": sorted(raw.versions),
+        "objects_by_type": dict(sorted(Counter(raw.obj_types).items())),
+        "polygons": {"read": n_poly_all, "drawn": int(len(drawn)),
+                     "skipped": int(sum(skipped.values())),
+                     "not_selected_lod": counters.pop("polygons_not_selected_lod")},
+        "skipped": dict(sorted(skipped.items())),
+        "repairs": dict(sorted(repairs.items())),
+        "lods": {str(k): v for k, v in sorted(lod_table.items())},
+        "lods_drawn": {str(k): int(v) for k, v in zip(*np.unique(obj_lod[obj_lod >= 0],
+                                                                 return_counts=True))},
+        "lod_requested": settings.lod,
+        "time_source": settings.time_source,
+        "time_sources_used": dict(sorted(sources.items())),
+        "time_range": time_range,
+        "theme": theme,
+        "themes": raw.appearance.themes(),
+        "source_crs": source_crs.to_json(),
+        "counters": {k: int(v) for k, v in sorted(counters.items())
+                     if k not in ("polygons_read",)},
+        "warnings": warnings,
+    }
+    return Scene(
+        origin_m=origin.astype(np.float64), crs=crs, vertices=vertices, uv=uv,
+        triangles=triangles.astype(np.int32),
+        tri_object=tri_object.astype(np.int32), tri_polygon=tri_polygon.astype(np.int32),
+        tri_class=poly_class[tri_polygon],
+        tri_material=poly_material[tri_polygon], tri_texture=poly_texture[tri_polygon],
+        tri_t_begin_days=obj_begin[tri_object], tri_t_end_days=obj_end[tri_object],
+        obj_ids=[i or "" for i in raw.obj_ids], obj_types=list(raw.obj_types),
+        obj_parent=np.asarray(raw.obj_parent, np.int32), obj_t_begin_days=obj_begin,
+        obj_t_end_days=obj_end, obj_time_source=obj_source, obj_lod=obj_lod,
+        poly_ids=[raw.poly_ids[p] or "" for p in orig_poly],
+        poly_object=p_obj_drawn.astype(np.int32), poly_class=poly_class,
+        poly_area_m2=np.asarray(tri.area_m2, np.float64)[drawn],
+        poly_normal=normals[drawn].astype(np.float32),
+        materials=materials, textures=textures, report=report)
+
+
+def _apply_appearance(raw, theme, poly_local_of_orig, drawn, polys, rings, ring_offsets,
+                      poly_ring_offsets, coords, poly_material, poly_texture, point_uv,
+                      materials, textures, warnings, counters) -> None:
+    """Fill per-polygon material/texture indices and per-point uv for one theme."""
+    app = raw.appearance
+    # Gathered point range of every original ring index (only rings of drawn polygons matter).
+    ring_range = {int(r): (int(ring_offsets[i]), int(ring_offsets[i + 1]))
+                  for i, r in enumerate(rings)}
+    local_of_selected = {int(polys[d]): i for i, d in enumerate(drawn)}
+    for rec in app.materials:
+        if rec.theme != theme:
+            continue
+        index = len(materials)
+        hit = False
+        for target in rec.targets:
+            for p in _polygon_targets(raw, target):
+                local = local_of_selected.get(p)
+                if local is not None:
+                    poly_material[local] = index
+                    hit = True
+        if hit:
+            materials.append(rec.to_json())
+    texture_index: dict[str, int] = {}
+    for rec in app.textures:
+        if rec.theme != theme:
+            continue
+        image, reason = resolve_image_path(rec.image_uri, raw.path)
+        if image is None:
+            counters["textures_refused"] += 1
+            if len([w for w in warnings if w.startswith("texture")]) < 10:
+                warnings.append(reason)
+            continue
+        key = str(image)
+        if key not in texture_index:
+            texture_index[key] = len(textures)
+            textures.append({"path": key, "uri": rec.image_uri, "wrap_mode": rec.wrap_mode,
+                             "border_color": list(rec.border_color)})
+        tex = texture_index[key]
+        georef = None
+        if rec.kind == "georeferenced":
+            georef = _georeference(rec, image)
+            if georef is None:
+                counters["georeferenced_textures_without_placement"] += 1
+                continue
+        for target, ring_uvs, matrix in rec.targets:
+            for p in _polygon_targets(raw, target):
+                local = local_of_selected.get(p)
+                if local is None:
+                    continue
+                sel = drawn[local]
+                r0, r1 = poly_ring_offsets[sel], poly_ring_offsets[sel + 1]
+                a, b = ring_offsets[r0], ring_offsets[r1]
+                if georef is not None:
+                    point_uv[a:b] = georeferenced_uv(coords[a:b, :2], *georef)
+                elif matrix is not None:
+                    m = np.asarray(matrix).reshape(3, 4)
+                    h = np.column_stack([coords[a:b], np.ones(b - a)]) @ m.T
+                    with np.errstate(divide="ignore", invalid="ignore"):
+                        st = h[:, :2] / h[:, 2:3]
+                    point_uv[a:b] = np.nan_to_num(st, nan=0.0, posinf=0.0, neginf=0.0)
+                else:
+                    for ring_id, text in ring_uvs:
+                        r = raw.ring_by_id.get(ring_id)
+                        span = ring_range.get(r) if r is not None else None
+                        if span is None:
+                            continue
+                        values = np.array(text.split(), dtype=np.float64) if text.strip() else np.empty(0)
+                        n = span[1] - span[0]
+                        if values.size != 2 * n or not np.isfinite(values).all():
+                            counters["texture_coordinate_count_mismatch"] += 1
+                            continue
+                        point_uv[span[0]:span[1]] = values.reshape(n, 2)
+                poly_texture[local] = tex
+
+
+def _georeference(rec, image: Path):
+    """(reference point, orientation, width, height) of a GeoreferencedTexture, or None."""
+    from cityshade.errors import CityshadeError
+    from cityshade.imageio import read_image
+
+    try:
+        pixels, _ = read_image(image)
+    except CityshadeError:  # an unreadable image is counted by the caller
+        return None
+    height, width = pixels.shape[:2]
+    if rec.reference_point is not None and rec.orientation is not None:
+        return rec.reference_point, rec.orientation, width, height
+    world = read_world_file(image)
+    if world is None:
+        return None
+    a, d, b, e, c, f = world
+    return (c, f), (a, b, d, e), width, height

@@ -1,0 +1,95 @@
+"""Scene ↔ ``.cityshade`` file: which arrays and tables are stored, and how they come back.
+
+The generic container (atomic write, checksums, memory mapping) is :mod:`cityshade.cache`;
+this module decides the content. Loaded arrays are read-only views into the memory map.
+"""
+from __future__ import annotations
+
+import os
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from cityshade import __version__
+from cityshade.cache import open_cache, pack_strings, unpack_strings, write_cache
+from cityshade.citygml.crs import CrsInfo
+from cityshade.errors import CacheError
+from cityshade.geometry.scene import Scene
+
+_KDTREE_PREFIX = "kdtree/"
+
+
+def save_scene(scene: Scene, path: str | os.PathLike, source: dict[str, Any],
+               build_options: dict[str, Any]) -> int:
+    """Write ``scene`` (and its kd-tree, when built) to ``path``; returns the file size.
+
+    Parameters
+    ----------
+    source : dict
+        ``path``, ``size``, ``sha256`` of the source GML (to detect a cache of another file).
+    build_options : dict
+        The options the scene was built with (stored for ``info`` and cache checks).
+    """
+    arrays: dict[str, np.ndarray] = {name: getattr(scene, name) for name in Scene.ARRAY_FIELDS}
+    type_names = sorted(set(scene.obj_types))
+    type_code = {t: i for i, t in enumerate(type_names)}
+    arrays["obj_type"] = np.array([type_code[t] for t in scene.obj_types], np.uint16)
+    arrays["obj_id_blob"], arrays["obj_id_offsets"] = pack_strings(scene.obj_ids)
+    arrays["poly_id_blob"], arrays["poly_id_offsets"] = pack_strings(scene.poly_ids)
+    kdtree_stats = None
+    if scene.kdtree is not None:
+        for name, value in scene.kdtree.to_arrays().items():
+            arrays[_KDTREE_PREFIX + name] = value
+        kdtree_stats = scene.kdtree.stats
+    header = {
+        "kind": "cityshade-scene",
+        "cityshade_version": __version__,
+        "source": source,
+        "build_options": build_options,
+        "crs": scene.crs.to_json(),
+        "object_types": type_names,
+        "materials": scene.materials,
+        "textures": scene.textures,
+        "report": scene.report,
+        "kdtree_stats": kdtree_stats,
+    }
+    return write_cache(path, header, arrays)
+
+
+def load_scene(path: str | os.PathLike, verify: bool = True, with_kdtree: bool = True) -> Scene:
+    """Load a scene file written by :func:`save_scene` (memory-mapped, read-only arrays).
+
+    Raises
+    ------
+    CacheError
+        Another format version, truncated, tampered, or not a scene file (subclasses say which).
+    """
+    cache = open_cache(path, verify=verify)
+    header = cache.header
+    if header.get("kind") != "cityshade-scene":
+        raise CacheError("not a cityshade scene file; rebuild it with `cityshade build`",
+                         path=str(path))
+    fields = {name: cache.array(name) for name in Scene.ARRAY_FIELDS}
+    type_names = header["object_types"]
+    obj_types = [type_names[int(c)] for c in cache.array("obj_type")]
+    scene = Scene(
+        crs=CrsInfo.from_json(header["crs"]),
+        obj_ids=unpack_strings(cache.array("obj_id_blob"), cache.array("obj_id_offsets")),
+        obj_types=obj_types,
+        poly_ids=unpack_strings(cache.array("poly_id_blob"), cache.array("poly_id_offsets")),
+        materials=header["materials"], textures=header["textures"], report=header["report"],
+        **fields)
+    if with_kdtree and header.get("kdtree_stats") is not None:
+        from cityshade.accel import KdTree
+
+        tree_arrays = {name[len(_KDTREE_PREFIX):]: cache.array(name)
+                       for name in cache.names() if name.startswith(_KDTREE_PREFIX)}
+        scene.kdtree = KdTree.from_arrays(tree_arrays, header["kdtree_stats"])
+    scene.header = header
+    return scene
+
+
+def read_header(path: str | os.PathLike) -> dict[str, Any]:
+    """The JSON header of a scene file (no array is read or verified)."""
+    return open_cache(Path(path), verify=False).header
