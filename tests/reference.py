@@ -6,3 +6,117 @@ write it, so that a test can check that both agree. Speed does not matter here; 
 from __future__ import annotations
 
 import numpy as np
+
+
+# --- geometry.triangulate ---------------------------------------------------------------------
+
+def _ref_area2(p, q, r):
+    """Twice the signed area of 2-D triangle (p, q, r)."""
+    return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
+
+
+def _ref_segments_cross(a, b, c, d):
+    """Whether segments ab and cd cross at a point interior to both (plain sign test)."""
+    return (_ref_area2(a, b, c) * _ref_area2(a, b, d) < 0
+            and _ref_area2(c, d, a) * _ref_area2(c, d, b) < 0)
+
+
+def reference_triangulate_polygon(rings):
+    """Triangulate one clean polygon with holes by plain O(n³) ear clipping.
+
+    Twin of :func:`cityshade.geometry.triangulate.triangulate_polygons` for valid polygons
+    (no repairs, no skips): it shares no code and uses another bridge rule (the nearest
+    chain vertex whose bridge crosses no edge).
+
+    Parameters
+    ----------
+    rings : list of array_like, each (n_i, 3)
+        Exterior ring first, then holes, in metres; a closing point equal to the first is
+        ignored. Points must be distinct and the polygon valid.
+
+    Returns
+    -------
+    ndarray, shape (T, 3), int64
+        Row indices into ``np.concatenate(rings)``, counter-clockwise seen against the Newell
+        normal of the exterior ring.
+    """
+    rings = [np.asarray(r, dtype=np.float64) for r in rings]
+    all_points = np.concatenate(rings)
+    ring_rows = []
+    base = 0
+    for ring in rings:
+        n = len(ring)
+        if n > 1 and np.array_equal(ring[0], ring[-1]):
+            n -= 1
+        ring_rows.append(list(range(base, base + n)))
+        base += len(ring)
+    origin = all_points[ring_rows[0][0]]
+    # Newell normal of the exterior, then any orthonormal u, v with u × v = normal.
+    normal = np.zeros(3)
+    ext = [all_points[i] - origin for i in ring_rows[0]]
+    for i in range(len(ext)):
+        normal += np.cross(ext[i], ext[(i + 1) % len(ext)])
+    normal /= np.linalg.norm(normal)
+    helper = np.eye(3)[np.argmin(np.abs(normal))]
+    u = np.cross(helper, normal)
+    u /= np.linalg.norm(u)
+    v = np.cross(normal, u)
+    flat = {row: ((all_points[row] - origin) @ u, (all_points[row] - origin) @ v)
+            for rows in ring_rows for row in rows}
+
+    def ring_area2(rows):
+        return sum(flat[rows[i]][0] * flat[rows[(i + 1) % len(rows)]][1]
+                   - flat[rows[(i + 1) % len(rows)]][0] * flat[rows[i]][1]
+                   for i in range(len(rows)))
+
+    holes = []
+    for rows in ring_rows[1:]:
+        holes.append(rows[::-1] if ring_area2(rows) > 0 else rows)  # holes clockwise
+    holes.sort(key=lambda rows: -max(flat[r][0] for r in rows))
+    chain = list(ring_rows[0])
+    for k, hole in enumerate(holes):
+        m_pos = max(range(len(hole)), key=lambda i: flat[hole[i]][0])
+        m = flat[hole[m_pos]]
+        edges = [(chain[i], chain[(i + 1) % len(chain)]) for i in range(len(chain))]
+        for other in holes[k:]:
+            edges += [(other[i], other[(i + 1) % len(other)]) for i in range(len(other))]
+        order = sorted(range(len(chain)),
+                       key=lambda i: (flat[chain[i]][0] - m[0]) ** 2 + (flat[chain[i]][1] - m[1]) ** 2)
+        for i in order:
+            w = flat[chain[i]]
+            prev_pt = flat[chain[i - 1]]
+            next_pt = flat[chain[(i + 1) % len(chain)]]
+            # The bridge must leave the chain vertex into the polygon's interior …
+            if _ref_area2(prev_pt, w, next_pt) > 0:
+                inside = _ref_area2(prev_pt, w, m) > 0 and _ref_area2(w, next_pt, m) > 0
+            else:
+                inside = _ref_area2(prev_pt, w, m) > 0 or _ref_area2(w, next_pt, m) > 0
+            # … and cross no edge of the chain or of the holes.
+            if inside and not any(_ref_segments_cross(m, w, flat[e0], flat[e1])
+                                  for e0, e1 in edges):
+                break
+        else:
+            raise ValueError("no bridge for a hole: the polygon is not valid")
+        chain = chain[:i + 1] + hole[m_pos:] + hole[:m_pos + 1] + chain[i:]
+    triangles = []
+    while len(chain) > 3:
+        for i in range(len(chain)):
+            a, b, c = chain[i - 1], chain[i], chain[(i + 1) % len(chain)]
+            pa, pb, pc = flat[a], flat[b], flat[c]
+            if _ref_area2(pa, pb, pc) <= 0:
+                continue
+            corners = {pa, pb, pc}
+            blocked = any(flat[q] not in corners
+                          and _ref_area2(pa, pb, flat[q]) >= 0
+                          and _ref_area2(pb, pc, flat[q]) >= 0
+                          and _ref_area2(pc, pa, flat[q]) >= 0 for q in chain)
+            if not blocked:
+                triangles.append((a, b, c))
+                del chain[i]
+                break
+        else:
+            raise ValueError("no ear found: the polygon is not valid")
+    triangles.append(tuple(chain))
+    # Bridge copies give triangles with a repeated point; they have no area.
+    triangles = [t for t in triangles if len({flat[r] for r in t}) == 3]
+    return np.array(triangles, dtype=np.int64).reshape(-1, 3)
