@@ -12,7 +12,7 @@ from typing import Any
 import numpy as np
 
 from cityshade import __version__
-from cityshade.cache import open_cache, pack_strings, unpack_strings, write_cache
+from cityshade.cache import FORMAT_VERSION, open_cache, pack_strings, unpack_strings, write_cache
 from cityshade.citygml.crs import CrsInfo
 from cityshade.errors import CacheError
 from cityshade.geometry.scene import Scene
@@ -44,6 +44,7 @@ def save_scene(scene: Scene, path: str | os.PathLike, source: dict[str, Any],
         kdtree_stats = scene.kdtree.stats
     header = {
         "kind": "cityshade-scene",
+        "format_version": FORMAT_VERSION,
         "cityshade_version": __version__,
         "source": source,
         "build_options": build_options,

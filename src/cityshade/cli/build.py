@@ -1,0 +1,56 @@
+"""``cityshade build CITY.gml``: write the .cityshade scene file."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from cityshade.config import TIME_SOURCES
+
+
+@click.command("build")
+@click.argument("city", type=click.Path(dir_okay=False, path_type=Path))
+@click.option("-o", "--output", type=click.Path(dir_okay=False, path_type=Path),
+              help="Output file (default: CITY with suffix .cityshade).")
+@click.option("--lod", type=click.IntRange(0, 4),
+              help="LoD to take from every object (default: the highest each object has).")
+@click.option("--theme", help="Appearance theme (default: the one with the most surfaces).")
+@click.option("--crs", help="CRS of the coordinates, e.g. EPSG:25832 (overrides srsName).")
+@click.option("--time-source", type=click.Choice(TIME_SOURCES), default="auto", show_default=True,
+              help="Where object validity intervals come from.")
+@click.option("--config", "config_path", type=click.Path(dir_okay=False, path_type=Path),
+              help="TOML settings file ([build], [kdtree] tables).")
+@click.option("-q", "--quiet", is_flag=True, help="No progress display and no summary.")
+def build(city: Path, output: Path | None, lod: int | None, theme: str | None, crs: str | None,
+          time_source: str, config_path: Path | None, quiet: bool) -> None:
+    """Read CITY (CityGML 1.0/2.0/3.0), triangulate it, build its kd-tree, and write one
+    versioned, memory-mappable .cityshade file."""
+    import dataclasses
+
+    from cityshade.build import build_file, default_output
+    from cityshade.cli.options import Progress
+    from cityshade.config import Settings, load_settings
+    from cityshade.errors import UsageError
+
+    settings = load_settings(config_path) if config_path else Settings()
+    overrides = {k: v for k, v in (("lod", lod), ("theme", theme), ("crs", crs)) if v is not None}
+    if time_source != "auto":
+        overrides["time_source"] = time_source
+    settings = dataclasses.replace(settings, build=dataclasses.replace(settings.build, **overrides))
+    output = output or default_output(city)
+    if output.resolve() == city.resolve():
+        raise UsageError("the output would overwrite the input file; choose another -o")
+    progress = Progress(enabled=None if not quiet else False)
+    try:
+        out, scene, size = build_file(city, output, settings, progress)
+    finally:
+        progress.close()
+    for warning in scene.report.get("warnings", []):
+        click.echo(f"cityshade: warning: {warning}", err=True)
+    if not quiet:
+        rep = scene.report
+        skipped = sum(rep["skipped"].values())
+        click.echo(f"{out}: {scene.n_triangles:,} triangles from {rep['polygons']['drawn']:,} "
+                   f"polygons of {len(scene.obj_ids):,} objects"
+                   f"{f', {skipped:,} polygons skipped' if skipped else ''}; "
+                   f"{size / 1e6:.1f} MB in {sum(rep.get('timings', {}).values()):.2f} s")

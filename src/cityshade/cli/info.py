@@ -1,0 +1,134 @@
+"""``cityshade info FILE``: what a scene file (or a CityGML file, built in memory) contains."""
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import click
+
+
+def describe(scene) -> dict:
+    """The ``info --json`` object of a scene."""
+    import numpy as np
+
+    from cityshade.citygml.namespaces import SURFACE_CLASSES
+
+    rep = scene.report
+    verts = np.asarray(scene.vertices, dtype=np.float64)
+    if verts.size:
+        lo = (verts.min(axis=0) + scene.origin_m).tolist()
+        hi = (verts.max(axis=0) + scene.origin_m).tolist()
+    else:
+        lo = hi = None
+    classes = np.bincount(np.asarray(scene.tri_class), minlength=len(SURFACE_CLASSES))
+    header = scene.header or {}
+    out = {
+        "file": str(header.get("source", {}).get("path", "")) or None,
+        "format_version": header.get("format_version"),
+        "triangles": scene.n_triangles,
+        "vertices": int(scene.vertices.shape[0]),
+        "objects": {"total": len(scene.obj_ids), "by_type": rep["objects_by_type"]},
+        "polygons": rep["polygons"],
+        "skipped": rep["skipped"],
+        "repairs": rep["repairs"],
+        "lods": rep["lods"],
+        "lods_drawn": rep.get("lods_drawn", {}),
+        "lod_requested": rep.get("lod_requested"),
+        "surface_classes": {SURFACE_CLASSES[i]: int(c) for i, c in enumerate(classes) if c},
+        "time_range": rep["time_range"],
+        "time_source": rep["time_source"],
+        "time_sources_used": rep["time_sources_used"],
+        "crs": scene.crs.to_json(),
+        "source_crs": rep.get("source_crs"),
+        "origin": [float(v) for v in scene.origin_m],
+        "bbox": {"min": lo, "max": hi},
+        "theme": rep.get("theme"),
+        "themes": rep.get("themes", []),
+        "materials": len(scene.materials),
+        "textures": [t["uri"] for t in scene.textures],
+        "citygml_versions": rep.get("versions", []),
+        "counters": rep.get("counters", {}),
+        "warnings": rep.get("warnings", []),
+        "timings": rep.get("timings", {}),
+        "kdtree": scene.kdtree.stats if scene.kdtree is not None else None,
+    }
+    return out
+
+
+def _text(d: dict) -> str:
+    lines = []
+    add = lines.append
+    if d["file"]:
+        add(f"source        {d['file']}")
+    add(f"CityGML       {', '.join(d['citygml_versions']) or '?'}")
+    objs = ", ".join(f"{n} {t}" for t, n in d["objects"]["by_type"].items())
+    add(f"objects       {d['objects']['total']:,} ({objs})")
+    p = d["polygons"]
+    add(f"polygons      {p['read']:,} read, {p['drawn']:,} drawn, {p['skipped']:,} skipped, "
+        f"{p['not_selected_lod']:,} of other LoDs")
+    if d["skipped"]:
+        add("  skipped     " + ", ".join(f"{k} {v}" for k, v in d["skipped"].items()))
+    if d["repairs"]:
+        add("  repaired    " + ", ".join(f"{k} {v}" for k, v in d["repairs"].items()))
+    add(f"triangles     {d['triangles']:,} ({d['vertices']:,} vertices)")
+    add("surfaces      " + ", ".join(f"{k} {v:,}" for k, v in d["surface_classes"].items()))
+    lods = ", ".join(f"LoD{k}: {v}" for k, v in d["lods"].items()) or "none"
+    add(f"LoDs          objects with {lods}; drawn "
+        + (", ".join(f"LoD{k}: {v}" for k, v in d["lods_drawn"].items()) or "none"))
+    tr = d["time_range"]
+    used = ", ".join(f"{k} {v}" for k, v in d["time_sources_used"].items())
+    add(f"time          {tr[0] + ' … ' + tr[1] if tr else 'no dates'} "
+        f"(source {d['time_source']}: {used})")
+    crs = d["crs"]
+    src = d["source_crs"]
+    crs_text = crs["name"] + (f" (EPSG:{crs['horizontal_epsg']})" if crs["horizontal_epsg"] else "")
+    if src and src.get("is_geographic"):
+        crs_text += f", projected from {src['name']}"
+    add(f"CRS           {crs_text}")
+    add(f"origin        {d['origin'][0]:.3f} {d['origin'][1]:.3f} {d['origin'][2]:.3f}")
+    if d["bbox"]["min"]:
+        lo, hi = d["bbox"]["min"], d["bbox"]["max"]
+        add(f"bbox          {lo[0]:.3f} {lo[1]:.3f} {lo[2]:.3f} … {hi[0]:.3f} {hi[1]:.3f} "
+            f"{hi[2]:.3f} ({hi[0] - lo[0]:.1f} × {hi[1] - lo[1]:.1f} × {hi[2] - lo[2]:.1f} m)")
+    add(f"appearance    theme {d['theme']!r} of {d['themes']}; {d['materials']} materials, "
+        f"{len(d['textures'])} textures" if d["themes"] else "appearance    none")
+    kd = d["kdtree"]
+    if kd:
+        add(f"kd-tree       {kd.get('nodes', 0):,} nodes, {kd.get('leaves', 0):,} leaves "
+            f"({kd.get('empty_leaves', 0):,} empty), depth ≤ {kd.get('max_depth')}, "
+            f"{kd.get('mean_leaf_triangles', 0):.2f} triangles/leaf, duplication "
+            f"{kd.get('duplication', 0):.2f}, {kd.get('time_splits', 0)} time splits, "
+            f"SAH {kd.get('sah_cost', 0):.1f}, built in {kd.get('build_s', 0):.2f} s")
+    for w in d["warnings"]:
+        add(f"warning       {w}")
+    return "\n".join(lines)
+
+
+@click.command("info")
+@click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
+@click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
+def info(file: Path, as_json: bool) -> None:
+    """Describe FILE: objects by type, triangles, skipped polygons by reason, LoDs, time range
+    and its source, CRS, origin, bounding box, materials, textures and the kd-tree.
+
+    FILE is a .cityshade file; a CityGML file is read and described without writing anything.
+    """
+    from cityshade.errors import InputError
+
+    if not file.is_file():
+        raise InputError("no such file", path=str(file))
+    with file.open("rb") as fh:
+        head = fh.read(64)
+    if head.startswith(b"CITYSHD"):
+        from cityshade.scenefile import load_scene
+
+        scene = load_scene(file)
+    else:
+        from cityshade.build import build_scene_from_file
+
+        scene = build_scene_from_file(file)
+    d = describe(scene)
+    if as_json:
+        click.echo(json.dumps(d, indent=2, sort_keys=False))
+    else:
+        click.echo(_text(d))
