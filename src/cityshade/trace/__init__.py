@@ -1,1 +1,227 @@
-"""trace stage of cityshade."""
+"""trace stage of cityshade: closest-hit and shadow (any-hit) rays through the 4-D kd-tree.
+
+Conventions: render space (x east, y north, z up, metres, relative to the scene origin), unit
+ray directions, distances in metres along the ray, city time ``t_days`` in days since
+1970-01-01 UTC (a triangle is present when ``begin <= t_days < end``). The sun is a direction,
+so shadow rays end where they leave the scene box (``tmax=None``).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from cityshade.accel.kdtree_layout import KdTree
+from cityshade.errors import UsageError
+from cityshade.trace.bricks import (DEFAULT_BRICK_SIZE, intersect_bricks, occluded_bricks,
+                                    tile_order)
+
+__all__ = ["TraceInputError", "intersect", "occluded", "shadow_rays_from_surface",
+           "tile_order", "SHADOW_OFFSET_REL", "SHADOW_OFFSET_MIN_SCALE_M"]
+
+#: Shadow-ray origin offset per metre of coordinate magnitude. Surface points and vertices are
+#: float32 (2^-24 ≈ 6e-8 relative rounding) and hit points carry a few such roundings; 2^-18
+#: ≈ 3.8e-6 (64 float32 ulps) clears them with margin: 1.5 cm at 4 km from the origin.
+SHADOW_OFFSET_REL = 2.0 ** -18
+#: Coordinate magnitude below which the offset stops shrinking (points near the origin still
+#: lie on triangles whose vertices are metres away): 1 m, i.e. an offset of at least 3.8 µm.
+SHADOW_OFFSET_MIN_SCALE_M = 1.0
+#: Accepted deviation of a direction's length from 1 (float32 normalisation is good to 1e-7).
+UNIT_LENGTH_TOL = 1e-4
+#: Root-box padding relative to the scene size, so triangles on the box faces are inside every
+#: ray segment despite the rounding of the slab distances.
+BOX_PAD_REL = 1e-6
+
+
+class TraceInputError(UsageError):
+    """Rays handed to the tracing API of the wrong shape or with non-finite values."""
+
+
+def _tree_of(tree) -> KdTree:
+    """Accept a KdTree or anything holding one as ``.kdtree`` (the Scene)."""
+    if isinstance(tree, KdTree):
+        return tree
+    inner = getattr(tree, "kdtree", None)
+    if isinstance(inner, KdTree):
+        return inner
+    raise TraceInputError(f"expected a KdTree or a scene with a .kdtree, not {type(tree).__name__}")
+
+
+def _padded_box(tree: KdTree) -> tuple[np.ndarray, np.ndarray]:
+    lo = np.asarray(tree.bounds[0, :3], dtype=np.float64)
+    hi = np.asarray(tree.bounds[1, :3], dtype=np.float64)
+    pad = BOX_PAD_REL * max(float(np.max(hi - lo)), float(np.max(np.abs(np.r_[lo, hi]))), 1.0)
+    return lo - pad, hi + pad
+
+
+def _rays(origins, directions, tmax):
+    """Validated float64 (N, 3) origins and directions and (N,) tmax."""
+    origins = np.ascontiguousarray(origins, dtype=np.float64)
+    directions = np.ascontiguousarray(directions, dtype=np.float64)
+    if origins.ndim != 2 or origins.shape[1] != 3:
+        raise TraceInputError(f"origins must have shape (N, 3), not {origins.shape}")
+    if directions.shape != origins.shape:
+        raise TraceInputError(f"directions must have shape {origins.shape}, "
+                              f"not {directions.shape}")
+    if not np.isfinite(origins).all():
+        raise TraceInputError("ray origins contain NaN or infinite values")
+    if not np.isfinite(directions).all():
+        raise TraceInputError("ray directions contain NaN or infinite values")
+    length = np.sqrt(np.einsum("ij,ij->i", directions, directions))
+    if length.size and np.abs(length - 1.0).max() > UNIT_LENGTH_TOL:
+        worst = int(np.argmax(np.abs(length - 1.0)))
+        raise TraceInputError(f"ray directions must be unit length (ray {worst} has length "
+                              f"{length[worst]:.6g})")
+    n = origins.shape[0]
+    if tmax is None:
+        tmax_arr = np.full(n, np.inf)
+    else:
+        tmax_arr = np.asarray(tmax, dtype=np.float64)
+        if tmax_arr.ndim == 0:
+            tmax_arr = np.full(n, float(tmax_arr))
+        elif tmax_arr.shape != (n,):
+            raise TraceInputError(f"tmax must be a scalar or have shape ({n},), "
+                                  f"not {tmax_arr.shape}")
+        else:
+            tmax_arr = np.ascontiguousarray(tmax_arr)
+        if np.isnan(tmax_arr).any() or (tmax_arr < 0).any():
+            raise TraceInputError("tmax must be >= 0 (inf allowed), not NaN or negative")
+    return origins, directions, tmax_arr
+
+
+def _time(t_days) -> float:
+    t = float(t_days)
+    if np.isnan(t):
+        raise TraceInputError("t_days must be a number of days since 1970-01-01, not NaN")
+    return t
+
+
+def _brick(brick_size) -> int:
+    b = int(brick_size)
+    if b < 1:
+        raise TraceInputError(f"brick_size must be >= 1, not {brick_size}")
+    return b
+
+
+def occluded(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
+             brick_size: int = DEFAULT_BRICK_SIZE) -> np.ndarray:
+    """Whether each ray hits any triangle present at city time ``t_days`` (shadow rays).
+
+    Parameters
+    ----------
+    tree : KdTree or scene with ``.kdtree``
+        The 4-D kd-tree.
+    origins : (N, 3) float array
+        Ray origins, render-space metres. For shadow rays use
+        :func:`shadow_rays_from_surface` so rays do not re-hit their own surface.
+    directions : (N, 3) float array
+        Unit directions (towards the sun for shadow rays).
+    t_days : float
+        City time, days since 1970-01-01 UTC; ignored by a model without dates.
+    tmax : None, float or (N,) float array
+        Segment end in metres; None traces to the scene bounds (the sun is a direction).
+    brick_size : int
+        Rays per parallel work item; each brick keeps its own shadow-caster cache.
+
+    Returns
+    -------
+    (N,) bool array
+        True where the segment ``[0, tmax]`` of the ray is blocked.
+
+    Raises
+    ------
+    TraceInputError
+        Wrong shapes, non-finite values, non-unit directions, negative or NaN ``tmax``.
+    """
+    kd = _tree_of(tree)
+    origins, directions, tmax_arr = _rays(origins, directions, tmax)
+    t = _time(t_days)
+    brick = _brick(brick_size)
+    out = np.zeros(origins.shape[0], np.bool_)
+    if origins.shape[0] == 0 or kd.tri_records.shape[0] == 0:
+        return out
+    lo, hi = _padded_box(kd)
+    occluded_bricks(kd.nodes, kd.node_splits, kd.tri_records, kd.records_f64, lo, hi,
+                    origins, directions, 0.0, tmax_arr, t, brick, out)
+    return out
+
+
+def intersect(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
+              brick_size: int = DEFAULT_BRICK_SIZE):
+    """Closest hit of each ray among the triangles present at city time ``t_days``.
+
+    Parameters
+    ----------
+    tree, origins, directions, t_days, tmax, brick_size
+        As for :func:`occluded`.
+
+    Returns
+    -------
+    dist : (N,) float64
+        Distance in metres to the hit (``inf`` on a miss).
+    tri : (N,) int32
+        Triangle id (index into the scene's triangles; -1 on a miss). Rays exactly through a
+        shared edge report the lower id.
+    u, v : (N,) float32
+        Barycentrics of the hit: point = (1 - u - v) v0 + u v1 + v v2 (0 on a miss).
+    """
+    kd = _tree_of(tree)
+    origins, directions, tmax_arr = _rays(origins, directions, tmax)
+    t = _time(t_days)
+    brick = _brick(brick_size)
+    n = origins.shape[0]
+    dist = np.full(n, np.inf)
+    tri = np.full(n, -1, np.int32)
+    u = np.zeros(n, np.float32)
+    v = np.zeros(n, np.float32)
+    if n == 0 or kd.tri_records.shape[0] == 0:
+        return dist, tri, u, v
+    lo, hi = _padded_box(kd)
+    intersect_bricks(kd.nodes, kd.node_splits, kd.tri_records, kd.records_f64, lo, hi,
+                     origins, directions, 0.0, tmax_arr, t, brick, dist, tri, u, v)
+    return dist, tri, u, v
+
+
+def shadow_offset_m(points) -> np.ndarray:
+    """(N,) offset in metres for shadow rays leaving ``points`` (N, 3): relative to magnitude."""
+    points = np.asarray(points, dtype=np.float64)
+    scale = np.maximum(np.abs(points).max(axis=1), SHADOW_OFFSET_MIN_SCALE_M)
+    return SHADOW_OFFSET_REL * scale
+
+
+def shadow_rays_from_surface(points, normals, sun_dir) -> np.ndarray:
+    """Origins of shadow rays: surface points pushed off their surface along the normal.
+
+    Parameters
+    ----------
+    points : (N, 3) float array
+        Points on triangles, render-space metres.
+    normals : (N, 3) float array
+        Unit normals of the surfaces at the points, outward (the side the ray leaves from).
+    sun_dir : (3,) or (N, 3) float array
+        Unit direction towards the sun (not used for the offset, which is along the normal;
+        checked so that a bad sun fails here rather than in the kernel).
+
+    Returns
+    -------
+    (N, 3) float64 array
+        ``points + normals * offset`` with ``offset = SHADOW_OFFSET_REL * max(|p|_inf, 1 m)``:
+        the offset scales with coordinate magnitude, because float32 rounding does. Points
+        whose normal faces away from the sun are offset all the same; callers treat those as
+        self-shadowed (DESIGN §14).
+    """
+    points = np.asarray(points, dtype=np.float64)
+    normals = np.asarray(normals, dtype=np.float64)
+    if points.ndim != 2 or points.shape[1] != 3:
+        raise TraceInputError(f"points must have shape (N, 3), not {points.shape}")
+    if normals.shape != points.shape:
+        raise TraceInputError(f"normals must have shape {points.shape}, not {normals.shape}")
+    sun = np.asarray(sun_dir, dtype=np.float64)
+    if sun.shape not in ((3,), points.shape):
+        raise TraceInputError(f"sun_dir must have shape (3,) or {points.shape}, not {sun.shape}")
+    for name, arr in (("points", points), ("normals", normals), ("sun_dir", sun)):
+        if not np.isfinite(arr).all():
+            raise TraceInputError(f"{name} contain NaN or infinite values")
+    if np.abs(np.linalg.norm(sun, axis=-1) - 1.0).max(initial=0.0) > UNIT_LENGTH_TOL:
+        raise TraceInputError("sun_dir must be unit length")
+    if np.abs(np.linalg.norm(normals, axis=1) - 1.0).max(initial=0.0) > UNIT_LENGTH_TOL:
+        raise TraceInputError("normals must be unit length")
+    return points + normals * shadow_offset_m(points)[:, None]

@@ -1,0 +1,325 @@
+"""Numba kernels: watertight ray/triangle test and kd-tree traversal (closest hit, any hit).
+
+All kernels take the flat tree of :mod:`cityshade.accel.kdtree_layout` as separate views of
+the same memory (``nodes`` uint32 (M, 2), ``splits`` its float32 view, ``recs`` float32
+(K, 16) records and ``recs_f64`` their float64 view), so they work on read-only memory maps.
+
+Ray/triangle test: Woop, Benthin and Wald, "Watertight Ray/Triangle Intersection", JCGT 2(1),
+2013. The ray is sheared so that it runs along +z through the origin; the three 2-D edge
+functions are then evaluated in float64 from the same sheared vertex values for every triangle
+that shares an edge, so a ray through a shared edge or vertex gets edge functions of equal
+magnitude and opposite sign on the two sides and can never slip between them. A ray exactly on
+an edge hits both triangles (edge function 0 counts as inside); closest-hit breaks such exact
+distance ties towards the lower triangle id, so results do not depend on traversal order.
+
+Traversal: ray segments front to back (the thesis slides' "traversal algorithm based on ray
+segments"), a fixed stack of ``STACK_SIZE`` entries (one per tree level at most), time nodes
+send the ray to the child holding ``t_days``, leaves test only triangles valid at ``t_days``
+(``begin <= t_days < end``).
+"""
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+#: Entries of the fixed traversal stack: at most one push per level, and the build caps the
+#: depth at 60 (``cityshade.accel.kdtree_build.MAX_DEPTH_LIMIT``).
+STACK_SIZE = 64
+#: Relative slack when deciding to skip a child: split distances and hit distances are both
+#: float64 estimates of the same value (errors ~1e-15 relative), so a child is still visited
+#: when the split lies this close outside the segment. Costs nothing measurable.
+SPLIT_REL_TOL = 1e-9
+#: Absolute floor of that slack, metres along a unit ray.
+SPLIT_ABS_TOL = 1e-9
+#: Axis code of a leaf, of a time split (``kdtree_layout``).
+_LEAF = 4
+_TIME = 3
+#: Columns in the record views (``kdtree_layout``).
+_T_BEGIN = 5
+_T_END = 6
+
+
+@njit(cache=True)
+def ray_shear(dx, dy, dz):
+    """Permutation and shear constants of the watertight test for direction (dx, dy, dz).
+
+    Returns ``(kx, ky, kz, sx, sy, sz)``: ``kz`` is the axis of largest ``|d|``; ``kx``, ``ky``
+    follow cyclically and are swapped when ``d[kz] < 0`` to keep the triangle winding.
+    """
+    ax = abs(dx)
+    ay = abs(dy)
+    az = abs(dz)
+    if ax > ay and ax > az:
+        kz = 0
+    elif ay > az:
+        kz = 1
+    else:
+        kz = 2
+    kx = (kz + 1) % 3
+    ky = (kx + 1) % 3
+    dkz = dx if kz == 0 else (dy if kz == 1 else dz)
+    if dkz < 0.0:
+        kx, ky = ky, kx
+    dkx = dx if kx == 0 else (dy if kx == 1 else dz)
+    dky = dx if ky == 0 else (dy if ky == 1 else dz)
+    return kx, ky, kz, dkx / dkz, dky / dkz, 1.0 / dkz
+
+
+@njit(cache=True)
+def hit_record(recs, k, okx, oky, okz, kx, ky, kz, sx, sy, sz):
+    """Watertight test of ray against record ``k``; returns ``(hit, t, u, v)``.
+
+    ``okx, oky, okz`` are the ray origin's coordinates on axes ``kx, ky, kz`` and the rest come
+    from :func:`ray_shear`. ``t`` is the distance along the ray in units of its direction,
+    ``(u, v)`` the barycentrics of v1 and v2 (hit point = (1-u-v) v0 + u v1 + v v2).
+    """
+    # Translate the vertices to the ray origin, then shear so the ray runs along +z.
+    a_z = recs[k, kz] - okz
+    b_z = recs[k, 3 + kz] - okz
+    c_z = recs[k, 6 + kz] - okz
+    a_x = (recs[k, kx] - okx) - sx * a_z
+    a_y = (recs[k, ky] - oky) - sy * a_z
+    b_x = (recs[k, 3 + kx] - okx) - sx * b_z
+    b_y = (recs[k, 3 + ky] - oky) - sy * b_z
+    c_x = (recs[k, 6 + kx] - okx) - sx * c_z
+    c_y = (recs[k, 6 + ky] - oky) - sy * c_z
+    # Scaled barycentrics: 2-D edge functions of the three edges.
+    e_u = c_x * b_y - c_y * b_x
+    e_v = a_x * c_y - a_y * c_x
+    e_w = b_x * a_y - b_y * a_x
+    if (e_u < 0.0 or e_v < 0.0 or e_w < 0.0) and (e_u > 0.0 or e_v > 0.0 or e_w > 0.0):
+        return False, 0.0, 0.0, 0.0
+    det = e_u + e_v + e_w
+    if det == 0.0:
+        # Zero-area triangle or a ray in the triangle's plane: never a hit, never a NaN.
+        return False, 0.0, 0.0, 0.0
+    t_scaled = (e_u * a_z + e_v * b_z + e_w * c_z) * sz
+    inv_det = 1.0 / det
+    return True, t_scaled * inv_det, e_v * inv_det, e_w * inv_det
+
+
+@njit(cache=True)
+def clip_to_box(box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax):
+    """Segment ``[t0, t1]`` of the ray inside the box (``t0 > t1`` when it misses).
+
+    Zero direction components are handled explicitly (no 0 × inf NaN).
+    """
+    t0 = tmin
+    t1 = tmax
+    for axis in range(3):
+        o = ox if axis == 0 else (oy if axis == 1 else oz)
+        d = dx if axis == 0 else (dy if axis == 1 else dz)
+        lo = box_lo[axis]
+        hi = box_hi[axis]
+        if d == 0.0:
+            if o < lo or o > hi:
+                return 1.0, 0.0
+            continue
+        inv = 1.0 / d
+        ta = (lo - o) * inv
+        tb = (hi - o) * inv
+        if ta > tb:
+            ta, tb = tb, ta
+        if ta > t0:
+            t0 = ta
+        if tb < t1:
+            t1 = tb
+    return t0, t1
+
+
+@njit(cache=True)
+def closest_hit(nodes, splits, recs, recs_f64, box_lo, box_hi, ox, oy, oz, dx, dy, dz,
+                tmin, tmax, t_days, st_node, st_t0, st_t1):
+    """Closest hit of one ray in ``[tmin, tmax]`` at city time ``t_days``.
+
+    Returns ``(t, k, u, v)`` with ``k`` the record index (-1 and ``t = inf`` on a miss).
+    ``st_*`` are scratch stacks of ``STACK_SIZE`` entries owned by the calling thread.
+    """
+    best_t = np.inf
+    best_k = -1
+    best_id = -1
+    best_u = 0.0
+    best_v = 0.0
+    seg0, seg1 = clip_to_box(box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax)
+    if seg0 > seg1:
+        return best_t, best_k, best_u, best_v
+    kx, ky, kz, sx, sy, sz = ray_shear(dx, dy, dz)
+    okx = ox if kx == 0 else (oy if kx == 1 else oz)
+    oky = ox if ky == 0 else (oy if ky == 1 else oz)
+    okz = ox if kz == 0 else (oy if kz == 1 else oz)
+    inv_x = 1.0 / dx if dx != 0.0 else 0.0
+    inv_y = 1.0 / dy if dy != 0.0 else 0.0
+    inv_z = 1.0 / dz if dz != 0.0 else 0.0
+    rec_ids = recs.view(np.int32)
+    node = 0
+    sp = 0
+    while True:
+        w0 = np.int64(nodes[node, 0])
+        axis = w0 & 7
+        if axis == _LEAF:
+            # Test the leaf's triangles valid at t_days; keep the nearest (ties: lower id).
+            first = np.int64(nodes[node, 1])
+            for k in range(first, first + (w0 >> 3)):
+                if not (recs_f64[k, _T_BEGIN] <= t_days < recs_f64[k, _T_END]):
+                    continue
+                hit, t, u, v = hit_record(recs, k, okx, oky, okz, kx, ky, kz, sx, sy, sz)
+                if hit and tmin <= t <= tmax:
+                    tri = rec_ids[k, 9]
+                    if t < best_t or (t == best_t and tri < best_id):
+                        best_t = t
+                        best_k = k
+                        best_id = tri
+                        best_u = u
+                        best_v = v
+            # Nothing unvisited lies before seg1, so a hit before it is final.
+            if best_t < seg1 or sp == 0:
+                break
+            sp -= 1
+            node = st_node[sp]
+            seg0 = st_t0[sp]
+            seg1 = st_t1[sp]
+            continue
+        split = np.float64(splits[node, 1])
+        right = w0 >> 3
+        if axis == _TIME:
+            node = node + 1 if t_days < split else right
+            continue
+        if axis == 0:
+            o = ox
+            d = dx
+            inv = inv_x
+        elif axis == 1:
+            o = oy
+            d = dy
+            inv = inv_y
+        else:
+            o = oz
+            d = dz
+            inv = inv_z
+        if d == 0.0:
+            # Parallel to the plane: one side, or both when the ray lies in the plane.
+            if o < split:
+                node = node + 1
+            elif o > split:
+                node = right
+            else:
+                st_node[sp] = right
+                st_t0[sp] = seg0
+                st_t1[sp] = seg1
+                sp += 1
+                node = node + 1
+            continue
+        t_split = (split - o) * inv
+        if d > 0.0:
+            near = node + 1
+            far = right
+        else:
+            near = right
+            far = node + 1
+        tol = SPLIT_REL_TOL * abs(t_split) + SPLIT_ABS_TOL
+        if t_split > seg1 + tol:
+            node = near
+        elif t_split < seg0 - tol:
+            node = far
+        else:
+            ts = min(max(t_split, seg0), seg1)
+            st_node[sp] = far
+            st_t0[sp] = ts
+            st_t1[sp] = seg1
+            sp += 1
+            node = near
+            seg1 = ts
+    return best_t, best_k, best_u, best_v
+
+
+@njit(cache=True)
+def any_hit(nodes, splits, recs, recs_f64, box_lo, box_hi, ox, oy, oz, dx, dy, dz,
+            tmin, tmax, t_days, cache_k, st_node, st_t0, st_t1):
+    """Record index of some triangle valid at ``t_days`` hit in ``[tmin, tmax]``, else -1.
+
+    ``cache_k`` (or -1) is the brick's shadow-caster cache: that record is tested first, so
+    coherent shadow rays behind the same occluder skip the traversal.
+    """
+    kx, ky, kz, sx, sy, sz = ray_shear(dx, dy, dz)
+    okx = ox if kx == 0 else (oy if kx == 1 else oz)
+    oky = ox if ky == 0 else (oy if ky == 1 else oz)
+    okz = ox if kz == 0 else (oy if kz == 1 else oz)
+    if cache_k >= 0 and recs_f64[cache_k, _T_BEGIN] <= t_days < recs_f64[cache_k, _T_END]:
+        hit, t, u, v = hit_record(recs, cache_k, okx, oky, okz, kx, ky, kz, sx, sy, sz)
+        if hit and tmin <= t <= tmax:
+            return cache_k
+    seg0, seg1 = clip_to_box(box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax)
+    if seg0 > seg1:
+        return -1
+    inv_x = 1.0 / dx if dx != 0.0 else 0.0
+    inv_y = 1.0 / dy if dy != 0.0 else 0.0
+    inv_z = 1.0 / dz if dz != 0.0 else 0.0
+    node = 0
+    sp = 0
+    while True:
+        w0 = np.int64(nodes[node, 0])
+        axis = w0 & 7
+        if axis == _LEAF:
+            first = np.int64(nodes[node, 1])
+            for k in range(first, first + (w0 >> 3)):
+                if not (recs_f64[k, _T_BEGIN] <= t_days < recs_f64[k, _T_END]):
+                    continue
+                hit, t, u, v = hit_record(recs, k, okx, oky, okz, kx, ky, kz, sx, sy, sz)
+                if hit and tmin <= t <= tmax:
+                    return k
+            if sp == 0:
+                return -1
+            sp -= 1
+            node = st_node[sp]
+            seg0 = st_t0[sp]
+            seg1 = st_t1[sp]
+            continue
+        split = np.float64(splits[node, 1])
+        right = w0 >> 3
+        if axis == _TIME:
+            node = node + 1 if t_days < split else right
+            continue
+        if axis == 0:
+            o = ox
+            d = dx
+            inv = inv_x
+        elif axis == 1:
+            o = oy
+            d = dy
+            inv = inv_y
+        else:
+            o = oz
+            d = dz
+            inv = inv_z
+        if d == 0.0:
+            if o < split:
+                node = node + 1
+            elif o > split:
+                node = right
+            else:
+                st_node[sp] = right
+                st_t0[sp] = seg0
+                st_t1[sp] = seg1
+                sp += 1
+                node = node + 1
+            continue
+        t_split = (split - o) * inv
+        if d > 0.0:
+            near = node + 1
+            far = right
+        else:
+            near = right
+            far = node + 1
+        tol = SPLIT_REL_TOL * abs(t_split) + SPLIT_ABS_TOL
+        if t_split > seg1 + tol:
+            node = near
+        elif t_split < seg0 - tol:
+            node = far
+        else:
+            ts = min(max(t_split, seg0), seg1)
+            st_node[sp] = far
+            st_t0[sp] = ts
+            st_t1[sp] = seg1
+            sp += 1
+            node = near
+            seg1 = ts
