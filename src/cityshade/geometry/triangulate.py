@@ -119,7 +119,8 @@ class TriangulationResult:
     status : ndarray, shape (P,), uint8
         ``TRIANGULATED`` (0) or a ``SKIP_*`` code (see :data:`SKIP_REASONS`).
     repairs : ndarray, shape (P,), uint16
-        Bitmask of ``REPAIR_*`` applied (0 = none), also set for skipped polygons where known.
+        Bitmask of ``REPAIR_*`` applied to a triangulated polygon (0 = none, and 0 for every
+        skipped polygon, so report counts never mix repairs and skips).
     normal : ndarray, shape (P, 3), float64
         Unit Newell normal of the exterior ring as given (not re-oriented); zeros when the
         polygon has no defined normal (too few points, NaN, all collinear, zero area).
@@ -225,9 +226,10 @@ def _clean_ring(coords, a, b, ox, oy, oz, merge2_m2, col_tol_m, idx, loc, k0):
             bits |= REPAIR_DUPLICATE_POINTS
             continue
         # Pop kept points that lie on the line from their predecessor to this point.
-        while k - k0 >= 2 and _collinear3(loc[k - 2, 0], loc[k - 2, 1], loc[k - 2, 2],
-                                          loc[k - 1, 0], loc[k - 1, 1], loc[k - 1, 2],
-                                          px, py, pz, col_tol_m):
+        while k - k0 >= 2 and _dist2_to_slot(loc, k - 1, px, py, pz) > merge2_m2 \
+                and _collinear3(loc[k - 2, 0], loc[k - 2, 1], loc[k - 2, 2],
+                                loc[k - 1, 0], loc[k - 1, 1], loc[k - 1, 2],
+                                px, py, pz, col_tol_m):
             k -= 1
             bits |= REPAIR_COLLINEAR_POINTS
         # Removing a spike tip can bring this point next to its own duplicate.
@@ -771,7 +773,6 @@ def _triangulate_kernel(coords, ring_offsets, polygon_ring_offsets, merge_distan
             ny += loc[j, 2] * loc[j1, 0] - loc[j, 0] * loc[j1, 2]
             nz += loc[j, 0] * loc[j1, 1] - loc[j, 1] * loc[j1, 0]
         n_len = np.sqrt(nx * nx + ny * ny + nz * nz)
-        repairs[p] = bits
         if m_ext < 3 or 0.5 * n_len <= min_area_m2:
             reason, far, third = _degenerate_reason(coords, a, b, merge_distance_m, col_tol_m)
             if reason == 0:
@@ -869,7 +870,6 @@ def _triangulate_kernel(coords, ring_offsets, polygon_ring_offsets, merge_distan
             off_max = max(off_max, off)
         if off_max > nonplanar_rel_tol * size_m:
             bits |= REPAIR_NONPLANAR
-        repairs[p] = bits
         expected_m2 = ext_area_m2 - holes_area_m2
         if expected_m2 <= min_area_m2:
             status[p] = SKIP_INVALID_HOLES if n_holes > 0 else SKIP_ZERO_AREA
@@ -883,6 +883,7 @@ def _triangulate_kernel(coords, ring_offsets, polygon_ring_offsets, merge_distan
                 tri_poly[n_out] = p
                 n_out += 1
             area_m2[p] = expected_m2
+            repairs[p] = bits
             continue
         # General path: exact crossing test when small, then bridges, ear clipping, area check.
         proven_simple = False
@@ -906,6 +907,7 @@ def _triangulate_kernel(coords, ring_offsets, polygon_ring_offsets, merge_distan
                 status[p] = SKIP_SELF_INTERSECTING
             continue
         area_m2[p] = expected_m2
+        repairs[p] = bits
     return n_out
 
 
