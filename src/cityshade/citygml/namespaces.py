@@ -97,12 +97,10 @@ AGGREGATE_ELEMENTS = frozenset("""
     element
 """.split())
 
-#: GML elements never holding surfaces we draw: curves, points, envelopes, and a Solid's
-#: ``interior`` shells (cavities, invisible from outside). Polygon holes are read by the polygon
-#: fast path, never by the walker.
+#: GML elements never holding surfaces we draw: curves, points, envelopes.
 SKIPPED_GML = frozenset("""
     boundedBy Envelope LineString MultiCurve CompositeCurve Curve MultiPoint Point OrientableCurve
-    name description descriptionReference identifier interior
+    name description descriptionReference identifier
 """.split())
 
 #: CityGML properties never holding geometry we draw: skipped without descending.

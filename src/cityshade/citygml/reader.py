@@ -47,7 +47,7 @@ _LOD_PROPERTY = re.compile(r"^lod([0-4])[A-Z]")
 
 # Walker element kinds (cached per tag string).
 K_SKIP, K_DESCEND, K_OBJECT, K_THEMATIC, K_LOD, K_POLYGON, K_AGG, K_ORIENTABLE, K_APPEARANCE, \
-    K_GML_BOUNDED, K_IMPLICIT = range(11)
+    K_GML_BOUNDED, K_IMPLICIT, K_CAVITY = range(12)
 
 
 @dataclass
@@ -154,6 +154,10 @@ class _Walker:
                 result = (K_AGG, None)
             elif local == "boundedBy":
                 result = (K_GML_BOUNDED, None)
+            elif local == "interior":
+                # Met by the walker (polygon holes are read by the polygon fast path), so this
+                # is a Solid's inner shell: a cavity, invisible from outside.
+                result = (K_CAVITY, None)
             else:
                 result = (K_SKIP, None)
         elif namespace == "" or namespace.startswith(ns.CITYGML_NS_PREFIXES):
@@ -308,6 +312,10 @@ class _Walker:
                             m.srs_names[srs] += 1
             elif kind == K_IMPLICIT:
                 m.counters["implicit_geometries_skipped"] += 1
+            elif kind == K_CAVITY:
+                m.counters["cavity_polygons"] += sum(
+                    1 for p in child.iter() if isinstance(p.tag, str)
+                    and p.tag[p.tag.rfind("}") + 1:] in ns.POLYGON_ELEMENTS)
 
     def reference(self, href: str, obj: int, cls: int, lod: int, flip: int) -> None:
         m = self.m
@@ -488,7 +496,8 @@ def read_citygml(path: str | os.PathLike, progress: Callable[[int, int], None] |
         if "Namespace prefix" not in exc.message:
             raise
         model = _read(path, root_ns, progress, recover=True)
-        model.warnings.insert(0, f"XML namespace error recovered ({exc.message}, line {exc.line})")
+        detail = exc.message.removeprefix("malformed XML: ")
+        model.warnings.insert(0, f"XML namespace error recovered: {detail}")
         return model
 
 

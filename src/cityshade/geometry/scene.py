@@ -73,8 +73,10 @@ class Scene:
     poly_ids : list of str
         gml:id of each drawn polygon ("" when absent).
     poly_object : (P,) int32; poly_class : (P,) uint8; poly_area_m2 : (P,) float64;
-    poly_normal : (P, 3) float32
-        Per drawn polygon: owner, class, area (holes removed) and unit outward normal.
+    poly_normal : (P, 3) float32; poly_repairs : (P,) uint16
+        Per drawn polygon: owner, class, area (holes removed, measured in the polygon's
+        plane), unit outward normal, and the bitmask of repairs applied
+        (:data:`cityshade.geometry.triangulate.REPAIR_NAMES`).
     materials, textures : list of dict
         Material parameters; texture image paths (absolute) and wrap mode.
     report : dict
@@ -105,6 +107,7 @@ class Scene:
     poly_class: np.ndarray
     poly_area_m2: np.ndarray
     poly_normal: np.ndarray
+    poly_repairs: np.ndarray
     materials: list[dict] = field(default_factory=list)
     textures: list[dict] = field(default_factory=list)
     report: dict[str, Any] = field(default_factory=dict)
@@ -117,7 +120,7 @@ class Scene:
                     "tri_class", "tri_material", "tri_texture", "tri_t_begin_days",
                     "tri_t_end_days", "obj_parent", "obj_t_begin_days", "obj_t_end_days",
                     "obj_time_source", "obj_lod", "poly_object", "poly_class", "poly_area_m2",
-                    "poly_normal")
+                    "poly_normal", "poly_repairs")
 
     @property
     def n_triangles(self) -> int:
@@ -228,7 +231,7 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
     CRSError
         The CRS cannot be resolved (unknown srsName, bad ``settings.crs``).
     """
-    from cityshade.geometry.triangulate import SKIP_REASONS, triangulate_polygons
+    from cityshade.geometry.triangulate import REPAIR_NAMES, SKIP_REASONS, triangulate_polygons
 
     settings = settings or BuildSettings()
     counters: Counter = Counter(raw.counters)
@@ -329,9 +332,11 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
             skipped[SKIP_REASONS[int(code)]] += int(count)
     if counters.get("skipped_bad_coordinates"):
         skipped["bad_coordinates"] += counters.pop("skipped_bad_coordinates")
-    from cityshade.geometry import triangulate as _tri_mod
+    cavities = counters.pop("cavity_polygons", 0)
+    if cavities:
+        skipped["solid_cavity_shell"] += cavities
     repairs = Counter()
-    for bit, name in getattr(_tri_mod, "REPAIR_NAMES", {}).items():
+    for bit, name in REPAIR_NAMES.items():
         n = int(((tri.repairs & bit) != 0).sum())
         if n:
             repairs[name] = n
@@ -388,7 +393,7 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
     report = {
         "versions": sorted(raw.versions),
         "objects_by_type": dict(sorted(Counter(raw.obj_types).items())),
-        "polygons": {"read": n_poly_all, "drawn": int(len(drawn)),
+        "polygons": {"read": n_poly_all + cavities, "drawn": int(len(drawn)),
                      "skipped": int(sum(skipped.values())),
                      "not_selected_lod": counters.pop("polygons_not_selected_lod")},
         "skipped": dict(sorted(skipped.items())),
@@ -421,6 +426,7 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
         poly_object=p_obj_drawn.astype(np.int32), poly_class=poly_class,
         poly_area_m2=np.asarray(tri.area_m2, np.float64)[drawn],
         poly_normal=normals[drawn].astype(np.float32),
+        poly_repairs=np.asarray(tri.repairs, np.uint16)[drawn],
         materials=materials, textures=textures, report=report)
 
 
