@@ -120,3 +120,83 @@ def reference_triangulate_polygon(rings):
     # Bridge copies give triangles with a repeated point; they have no area.
     triangles = [t for t in triangles if len({flat[r] for r in t}) == 3]
     return np.array(triangles, dtype=np.int64).reshape(-1, 3)
+
+
+# --- ray tracing (twins of cityshade.trace and cityshade.accel) ---------------------------------
+
+def reference_ray_hits(vertices, triangles, t_begin_days, t_end_days, origin, direction,
+                       t_days=0.0, tmax=np.inf):
+    """All hits of one ray, by Moller-Trumbore in float64 over every triangle (no tree).
+
+    Returns (t (H,), triangle ids (H,)) of the triangles valid at ``t_days``
+    (``begin <= t_days < end``) hit at ``0 <= t <= tmax``; edges count as inside.
+    """
+    v = np.asarray(vertices, dtype=np.float64)[np.asarray(triangles)]
+    o = np.asarray(origin, dtype=np.float64)
+    d = np.asarray(direction, dtype=np.float64)
+    e1 = v[:, 1] - v[:, 0]
+    e2 = v[:, 2] - v[:, 0]
+    p = np.cross(d, e2)
+    det = np.einsum("ij,ij->i", e1, p)
+    s = o - v[:, 0]
+    q = np.cross(s, e1)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        u = np.einsum("ij,ij->i", s, p) / det
+        w = (q @ d) / det
+        t = np.einsum("ij,ij->i", e2, q) / det
+    valid = (np.asarray(t_begin_days) <= t_days) & (t_days < np.asarray(t_end_days))
+    ok = (det != 0) & (u >= 0) & (w >= 0) & (u + w <= 1) & (t >= 0) & (t <= tmax) & valid
+    ids = np.flatnonzero(ok)
+    return t[ids], ids
+
+
+def reference_closest_hit(vertices, triangles, t_begin_days, t_end_days, origin, direction,
+                          t_days=0.0, tmax=np.inf):
+    """(t, triangle id) of the nearest hit of one ray by brute force; (inf, -1) on a miss."""
+    t, ids = reference_ray_hits(vertices, triangles, t_begin_days, t_end_days, origin,
+                                direction, t_days, tmax)
+    if t.size == 0:
+        return np.inf, -1
+    i = int(np.argmin(t))
+    return float(t[i]), int(ids[i])
+
+
+def reference_kdtree_leaves_at_point(tree, point, t_days, tol_m=0.0):
+    """Leaf indices of a KdTree whose closed 4-D cell contains (point, t_days), walking the
+    unpacked nodes one at a time (a point within ``tol_m`` of a split plane goes to both
+    sides)."""
+    axis, child, second = tree.unpack()
+    leaves = []
+    todo = [0]
+    while todo:
+        node = todo.pop()
+        if axis[node] == 4:
+            leaves.append(node)
+            continue
+        s = second[node]
+        if axis[node] == 3:
+            todo.append(node + 1 if t_days < s else int(child[node]))
+            continue
+        c = point[axis[node]]
+        if c <= s + tol_m:
+            todo.append(node + 1)
+        if c >= s - tol_m:
+            todo.append(int(child[node]))
+    return leaves
+
+
+def reference_kdtree_triangles_at_time(tree, t_days):
+    """Set of triangle ids in the leaves reachable at city time ``t_days`` (all space)."""
+    axis, child, second = tree.unpack()
+    found = set()
+    todo = [0]
+    while todo:
+        node = todo.pop()
+        if axis[node] == 4:
+            first = int(second[node])
+            found.update(int(i) for i in tree.prim_indices[first:first + int(child[node])])
+        elif axis[node] == 3:
+            todo.append(node + 1 if t_days < second[node] else int(child[node]))
+        else:
+            todo.extend([node + 1, int(child[node])])
+    return found

@@ -1,0 +1,235 @@
+"""Tests of the 4-D SAH kd-tree build and layout (cityshade.accel)."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from cityshade.accel import KdTree, KdTreeInputError, KdTreeSettings, build_kdtree
+from cityshade.errors import ConfigError
+from reference import reference_kdtree_leaves_at_point, reference_kdtree_triangles_at_time
+
+BOX_FACES = np.array([(0, 2, 1), (0, 3, 2), (4, 5, 6), (4, 6, 7), (0, 1, 5), (0, 5, 4),
+                      (1, 2, 6), (1, 6, 5), (2, 3, 7), (2, 7, 6), (3, 0, 4), (3, 4, 7)])
+
+
+def box_city(n_boxes, seed=0, dated=True, extent_m=300.0):
+    """Seeded random boxes (12 triangles each, outward winding) with random validity intervals.
+
+    Returns vertices (V, 3) float32, triangles (T, 3) int32, begin, end (T,) float64 days,
+    material (T,) int32. About a third of the boxes have an open begin, 60 % an open end.
+    """
+    rng = np.random.default_rng(seed)
+    corners = np.array([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0),
+                        (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)], np.float64)
+    lo = np.column_stack([rng.uniform(0, extent_m, (n_boxes, 2)), rng.normal(0, 1, n_boxes)])
+    size = np.column_stack([rng.uniform(3, 20, (n_boxes, 2)), rng.uniform(3, 40, n_boxes)])
+    verts = (lo[:, None, :] + corners[None] * size[:, None, :]).reshape(-1, 3)
+    tris = (BOX_FACES[None] + 8 * np.arange(n_boxes)[:, None, None]).reshape(-1, 3)
+    begin = np.full(n_boxes, -np.inf)
+    end = np.full(n_boxes, np.inf)
+    if dated:
+        has_begin = rng.random(n_boxes) > 0.33
+        begin[has_begin] = np.round(rng.uniform(-20000, 20000, has_begin.sum()))
+        has_end = rng.random(n_boxes) > 0.6
+        end[has_end] = np.where(np.isfinite(begin[has_end]), begin[has_end], -20000) \
+            + np.round(rng.uniform(100, 20000, has_end.sum()))
+    material = rng.integers(-1, 4, n_boxes)
+    return (verts.astype(np.float32), tris.astype(np.int32), np.repeat(begin, 12),
+            np.repeat(end, 12), np.repeat(material, 12).astype(np.int32))
+
+
+@pytest.fixture(scope="module")
+def city():
+    return box_city(120, seed=3)
+
+
+@pytest.fixture(scope="module")
+def tree(city):
+    return build_kdtree(*city)
+
+
+def slices(begin, end):
+    """Time slices before, at, between and after the dates of a model."""
+    dates = np.unique(np.concatenate([begin[np.isfinite(begin)], end[np.isfinite(end)]]))
+    mids = 0.5 * (dates[:-1] + dates[1:])
+    return np.concatenate([[dates[0] - 1e4, dates[-1] + 1e4], dates, mids[::7]])
+
+
+def test_every_triangle_reachable_in_every_slice_where_valid(city, tree):
+    v, t, begin, end, mat = city
+    for t_days in slices(begin, end):
+        valid = set(np.flatnonzero((begin <= t_days) & (t_days < end)).tolist())
+        reached = reference_kdtree_triangles_at_time(tree, t_days)
+        assert valid <= reached, f"t={t_days}: {len(valid - reached)} valid triangles unreachable"
+
+
+def test_leaf_cells_cover_every_point_of_their_triangles(city, tree):
+    """Points on each triangle (vertices, edge points, interior) lie in a leaf that lists it."""
+    v, t, begin, end, mat = city
+    rng = np.random.default_rng(0)
+    axis, child, second = tree.unpack()
+    bary = np.vstack([np.eye(3), [[0.5, 0.5, 0], [0, 0.5, 0.5], [0.5, 0, 0.5]],
+                      rng.dirichlet([1, 1, 1], 4)])
+    for tri in rng.choice(t.shape[0], 150, replace=False):
+        times = [begin[tri] if np.isfinite(begin[tri]) else -1e6,
+                 np.nextafter(end[tri], -np.inf) if np.isfinite(end[tri]) else 1e6]
+        pts = bary @ v[t[tri]].astype(np.float64)
+        for t_days in times:
+            for p in pts:
+                # Barycentric sums round by ~1e-14 m: allow that much off a plane.
+                leaves = reference_kdtree_leaves_at_point(tree, p, t_days, tol_m=1e-9)
+                listed = any(tri in tree.prim_indices[int(second[n]):int(second[n]) + child[n]]
+                             for n in leaves)
+                assert listed, f"triangle {tri} point {p} at t={t_days} is in no leaf listing it"
+
+
+def test_depth_and_leaf_size_settings_are_obeyed(city):
+    settings = KdTreeSettings(max_depth=9, min_leaf_triangles=6)
+    tree = build_kdtree(*city, settings=settings)
+    axis, child, second = tree.unpack()
+    # Walk the tree computing depth and the distinct triangles under each node.
+    depth = np.zeros(axis.size, int)
+    under = [None] * axis.size
+    for node in range(axis.size - 1, -1, -1):
+        if axis[node] == 4:
+            first = int(second[node])
+            under[node] = set(tree.prim_indices[first:first + child[node]].tolist())
+        else:
+            under[node] = under[node + 1] | under[child[node]]
+    for node in range(axis.size):
+        if axis[node] != 4:
+            depth[node + 1] = depth[node] + 1
+            depth[child[node]] = depth[node] + 1
+            assert len(under[node]) > 6, "a node with <= min_leaf_triangles was split"
+    assert depth.max() <= 9
+    assert tree.stats["max_depth"] == depth[axis == 4].max()
+
+
+def test_leaves_sorted_by_material_then_id(city, tree):
+    v, t, begin, end, mat = city
+    axis, child, second = tree.unpack()
+    for node in np.flatnonzero(axis == 4):
+        ids = tree.prim_indices[int(second[node]):int(second[node]) + child[node]]
+        key = list(zip(mat[ids].tolist(), ids.tolist()))
+        assert key == sorted(key)
+
+
+def test_records_match_triangles(city, tree):
+    v, t, begin, end, mat = city
+    ids = tree.prim_indices
+    np.testing.assert_array_equal(tree.tri_records[:, :9], v[t[ids]].reshape(-1, 9))
+    np.testing.assert_array_equal(tree.records_i32[:, 9], ids)
+    np.testing.assert_array_equal(tree.records_i32[:, 14], mat[ids])
+    np.testing.assert_array_equal(tree.records_f64[:, 5], begin[ids])
+    np.testing.assert_array_equal(tree.records_f64[:, 6], end[ids])
+
+
+def test_stats_are_consistent_with_the_nodes(city, tree):
+    v, t, begin, end, mat = city
+    s = tree.stats
+    axis, child, second = tree.unpack()
+    leaves = axis == 4
+    assert s["nodes"] == axis.size == tree.nodes.shape[0]
+    assert s["leaves"] == leaves.sum() == (axis.size + 1) // 2
+    assert s["empty_leaves"] == (leaves & (child == 0)).sum()
+    assert s["references"] == child[leaves].sum() == tree.prim_indices.size
+    assert s["duplication"] == pytest.approx(tree.prim_indices.size / t.shape[0])
+    assert s["time_splits"] == (axis == 3).sum() > 0
+    assert s["triangles_in"] == t.shape[0]
+    assert s["build_s"] > 0 and s["sah_cost"] > 0
+    np.testing.assert_array_equal(tree.bounds[0, :3], v.min(axis=0))
+    np.testing.assert_array_equal(tree.bounds[1, :3], v.max(axis=0))
+
+
+def test_sah_cost_matches_an_independent_walk(city, tree):
+    """Recompute the tree's SAH cost from its nodes: sum of C_t P(inner) + C_i N P(leaf)."""
+    v, t, begin, end, mat = city
+    st = KdTreeSettings()
+    axis, child, second = tree.unpack()
+    t0, t1 = tree.bounds[:, 3]
+
+    def surface(lo, hi):
+        e = hi[:3] - lo[:3]
+        area = 2 * (e[0] * e[1] + e[0] * e[2] + e[1] * e[2])
+        return area * (min(hi[3], t1) - max(lo[3], t0))
+
+    lo0 = np.append(tree.bounds[0, :3], -np.inf)
+    hi0 = np.append(tree.bounds[1, :3], np.inf)
+    root = surface(lo0, hi0)
+    total = 0.0
+    todo = [(0, lo0, hi0)]
+    while todo:
+        node, lo, hi = todo.pop()
+        p = surface(lo, hi) / root
+        if axis[node] == 4:
+            total += st.intersection_cost * child[node] * p
+            continue
+        total += st.traversal_cost * p
+        a = axis[node]
+        hl, lr = hi.copy(), lo.copy()
+        hl[a] = lr[a] = second[node]
+        todo += [(node + 1, lo, hl), (int(child[node]), lr, hi)]
+    assert tree.stats["sah_cost"] == pytest.approx(total, rel=1e-9)
+
+
+def test_model_without_dates_builds_a_3d_tree():
+    v, t, begin, end, mat = box_city(60, seed=1, dated=False)
+    tree = build_kdtree(v, t, begin, end, mat)
+    axis, _, _ = tree.unpack()
+    assert tree.stats["time_splits"] == 0 and not (axis == 3).any()
+    assert not tree.has_time and not tree.stats["has_time"]
+    assert reference_kdtree_triangles_at_time(tree, 0.0) == set(range(t.shape[0]))
+
+
+def test_empty_and_never_valid_triangles():
+    v, t, begin, end, mat = box_city(3, seed=2, dated=False)
+    empty = build_kdtree(v, t[:0], begin[:0], end[:0], mat[:0])
+    assert empty.stats["nodes"] == 1 and empty.prim_indices.size == 0
+    end = end.copy()
+    end[:12] = begin[:12] = 5.0        # [5, 5) is empty: never valid, left out
+    tree = build_kdtree(v, t, begin, end, mat)
+    assert set(tree.prim_indices.tolist()) == set(range(12, 36))
+
+
+def test_zero_area_triangles_do_not_break_the_build():
+    v, t, begin, end, mat = box_city(5, seed=4, dated=False)
+    degenerate = np.array([[0, 0, 0], [1, 1, 1], [2, 2, 2], [0, 1, 2]], np.int32)  # point, line
+    degenerate[3] = [0, 1, 0]
+    t2 = np.vstack([t, degenerate])
+    n = t2.shape[0]
+    tree = build_kdtree(v, t2, np.full(n, -np.inf), np.full(n, np.inf), np.zeros(n, np.int32))
+    assert reference_kdtree_triangles_at_time(tree, 0.0) == set(range(n))
+    assert np.isfinite(tree.stats["sah_cost"])
+
+
+def test_round_trip_through_read_only_memory_maps(tmp_path, tree):
+    arrays = tree.to_arrays()
+    for name, arr in arrays.items():
+        np.save(tmp_path / f"{name}.npy", arr)
+    loaded = {name: np.load(tmp_path / f"{name}.npy", mmap_mode="r") for name in arrays}
+    back = KdTree.from_arrays(loaded, tree.stats)
+    for name, arr in back.to_arrays().items():
+        np.testing.assert_array_equal(arr, arrays[name])
+        assert not arr.flags.writeable
+    assert back.stats == tree.stats
+
+
+def test_bad_inputs_raise_typed_errors(city):
+    v, t, begin, end, mat = city
+    with pytest.raises(KdTreeInputError, match="shape"):
+        build_kdtree(v[:, :2], t, begin, end, mat)
+    with pytest.raises(KdTreeInputError, match="out of range"):
+        build_kdtree(v, t + v.shape[0], begin, end, mat)
+    bad = v.copy()
+    bad[0, 0] = np.nan
+    with pytest.raises(KdTreeInputError, match="NaN"):
+        build_kdtree(bad, t, begin, end, mat)
+    with pytest.raises(KdTreeInputError, match="NaN"):
+        build_kdtree(v, t, np.full_like(begin, np.nan), end, mat)
+    with pytest.raises(KdTreeInputError, match="material"):
+        build_kdtree(v, t, begin, end, mat[:-1])
+    with pytest.raises(ConfigError):
+        KdTreeSettings(empty_bonus=1.0)
+    with pytest.raises(ConfigError):
+        KdTreeSettings(max_depth=99)
+    assert KdTreeSettings().depth_cap(2 ** 20) == 34
