@@ -1,0 +1,56 @@
+"""Small hand-written CityGML documents for reader tests."""
+from __future__ import annotations
+
+CG2 = ('xmlns="http://www.opengis.net/citygml/2.0" xmlns:gml="http://www.opengis.net/gml" '
+       'xmlns:bldg="http://www.opengis.net/citygml/building/2.0" '
+       'xmlns:app="http://www.opengis.net/citygml/appearance/2.0" '
+       'xmlns:xlink="http://www.w3.org/1999/xlink"')
+
+
+def ring(points, ring_id=None) -> str:
+    """A closed gml:LinearRing with a posList."""
+    pts = list(points) + [points[0]]
+    rid = f' gml:id="{ring_id}"' if ring_id else ""
+    text = " ".join(f"{x} {y} {z}" for x, y, z in pts)
+    return f'<gml:LinearRing{rid}><gml:posList srsDimension="3">{text}</gml:posList></gml:LinearRing>'
+
+
+def polygon(points, poly_id=None, holes=(), ring_id=None) -> str:
+    pid = f' gml:id="{poly_id}"' if poly_id else ""
+    inner = "".join(f"<gml:interior>{ring(h)}</gml:interior>" for h in holes)
+    return f"<gml:Polygon{pid}><gml:exterior>{ring(points, ring_id)}</gml:exterior>{inner}</gml:Polygon>"
+
+
+def box_polygons(x0, y0, z0, dx, dy, dz, prefix="p"):
+    """Six outward-oriented faces of an axis-aligned box: list of (class, id, points)."""
+    x1, y1, z1 = x0 + dx, y0 + dy, z0 + dz
+    return [
+        ("GroundSurface", f"{prefix}g", [(x0, y0, z0), (x0, y1, z0), (x1, y1, z0), (x1, y0, z0)]),
+        ("RoofSurface", f"{prefix}r", [(x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)]),
+        ("WallSurface", f"{prefix}s", [(x0, y0, z0), (x1, y0, z0), (x1, y0, z1), (x0, y0, z1)]),
+        ("WallSurface", f"{prefix}e", [(x1, y0, z0), (x1, y1, z0), (x1, y1, z1), (x1, y0, z1)]),
+        ("WallSurface", f"{prefix}n", [(x1, y1, z0), (x0, y1, z0), (x0, y1, z1), (x1, y1, z1)]),
+        ("WallSurface", f"{prefix}w", [(x0, y1, z0), (x0, y0, z0), (x0, y0, z1), (x0, y1, z1)]),
+    ]
+
+
+def building(bid, faces, solid_refs=True, extra="", srs="EPSG:25832") -> str:
+    bounded = "".join(
+        f"<bldg:boundedBy><bldg:{cls}><bldg:lod2MultiSurface><gml:MultiSurface>"
+        f"<gml:surfaceMember>{polygon(pts, pid)}</gml:surfaceMember>"
+        f"</gml:MultiSurface></bldg:lod2MultiSurface></bldg:{cls}></bldg:boundedBy>"
+        for cls, pid, pts in faces)
+    solid = ""
+    if solid_refs:
+        members = "".join(f'<gml:surfaceMember xlink:href="#{pid}"/>' for _, pid, _ in faces)
+        solid = (f'<bldg:lod2Solid><gml:Solid srsName="{srs}"><gml:exterior><gml:CompositeSurface>'
+                 f"{members}</gml:CompositeSurface></gml:exterior></gml:Solid></bldg:lod2Solid>")
+    # The solid comes first: its references point forward, as in real exports.
+    return f'<bldg:Building gml:id="{bid}">{extra}{solid}{bounded}</bldg:Building>'
+
+
+def city(*members: str, ns: str = CG2, appearance: str = "") -> str:
+    body = "".join(f"<cityObjectMember>{m}</cityObjectMember>" for m in members)
+    if appearance:
+        body += f"<app:appearanceMember>{appearance}</app:appearanceMember>"
+    return f'<?xml version="1.0" encoding="UTF-8"?>\n<CityModel {ns}>{body}</CityModel>\n'
