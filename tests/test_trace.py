@@ -1,0 +1,348 @@
+"""Tests of the ray-tracing core (cityshade.trace) against brute force and analytic scenes."""
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import numba
+import numpy as np
+import pytest
+
+from cityshade.accel import build_kdtree
+from cityshade.trace import (TraceInputError, intersect, occluded, shadow_rays_from_surface,
+                             tile_order)
+from conftest import shared_file
+from reference import reference_closest_hit, reference_ray_hits
+from test_kdtree import BOX_FACES, box_city
+
+
+def unit(v):
+    v = np.asarray(v, dtype=np.float64)
+    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+
+
+@pytest.fixture(scope="module")
+def city():
+    return box_city(150, seed=7, extent_m=250.0)
+
+
+@pytest.fixture(scope="module")
+def tree(city):
+    return build_kdtree(*city)
+
+
+def random_rays(n, seed, lo=(-20, -20, -5), hi=(290, 290, 60)):
+    rng = np.random.default_rng(seed)
+    origins = rng.uniform(lo, hi, (n, 3))
+    directions = unit(rng.normal(size=(n, 3)))
+    return origins, directions
+
+
+@pytest.mark.parametrize("which", ["before", "between", "after"])
+def test_random_rays_agree_with_brute_force(city, tree, which):
+    v, t, begin, end, mat = city
+    dates = np.unique(np.concatenate([begin[np.isfinite(begin)], end[np.isfinite(end)]]))
+    t_days = {"before": dates[0] - 100.0, "between": float(np.median(dates)),
+              "after": dates[-1] + 100.0}[which]
+    origins, directions = random_rays(600, seed=hash(which) % 1000)
+    tmax = np.where(np.arange(600) % 3 == 0, 40.0, np.inf)    # some finite segments too
+    dist, tri, u, w = intersect(tree, origins, directions, t_days, tmax)
+    occ = occluded(tree, origins, directions, t_days, tmax)
+    n_hits = 0
+    for i in range(600):
+        t_ref, tri_ref = reference_closest_hit(v, t, begin, end, origins[i], directions[i],
+                                               t_days, tmax[i])
+        assert occ[i] == (tri_ref >= 0), f"ray {i}: any-hit disagrees with brute force"
+        assert (tri[i] >= 0) == (tri_ref >= 0), f"ray {i}: closest hit/miss disagrees"
+        if tri_ref >= 0:
+            n_hits += 1
+            assert dist[i] == pytest.approx(t_ref, rel=1e-9, abs=1e-9), f"ray {i}"
+            if tri[i] != tri_ref:   # a tie: both triangles must be hit at that distance
+                t_all, ids = reference_ray_hits(v, t, begin, end, origins[i], directions[i],
+                                                t_days, tmax[i])
+                assert tri[i] in ids and t_all[ids == tri[i]][0] == pytest.approx(t_ref)
+            # Barycentrics reproduce the hit point.
+            p = origins[i] + dist[i] * directions[i]
+            a, b, c = v[t[tri[i]]].astype(np.float64)
+            q = (1 - u[i] - w[i]) * a + u[i] * b + w[i] * c
+            np.testing.assert_allclose(q, p, atol=1e-3)
+        else:
+            assert dist[i] == np.inf and tri[i] == -1
+    assert n_hits > 60, "the test scene should be hit by a fair share of rays"
+
+
+def test_results_do_not_depend_on_thread_count_or_brick_size(tree):
+    origins, directions = random_rays(3000, seed=11)
+    ref = intersect(tree, origins, directions, 0.0)
+    occ_ref = occluded(tree, origins, directions, 0.0)
+    default = numba.get_num_threads()
+    try:
+        for threads in {1, default}:
+            numba.set_num_threads(threads)
+            for brick in (1, 7, 256, 5000):
+                got = intersect(tree, origins, directions, 0.0, brick_size=brick)
+                for a, b in zip(got, ref):
+                    np.testing.assert_array_equal(a, b)
+                np.testing.assert_array_equal(
+                    occluded(tree, origins, directions, 0.0, brick_size=brick), occ_ref)
+    finally:
+        numba.set_num_threads(default)
+
+
+def closed_box_tree(lo=(1.0, 2.0, 3.0), size=(4.0, 5.0, 6.0), rotation_seed=None):
+    corners = np.array([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0),
+                        (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)], np.float64)
+    verts = np.asarray(lo) + corners * np.asarray(size)
+    if rotation_seed is not None:
+        q, _ = np.linalg.qr(np.random.default_rng(rotation_seed).normal(size=(3, 3)))
+        verts = verts @ q.T * 3.7 + 1234.5
+    verts = verts.astype(np.float32)
+    n = 12
+    tree = build_kdtree(verts, BOX_FACES.astype(np.int32), np.full(n, -np.inf),
+                        np.full(n, np.inf), np.zeros(n, np.int32))
+    return verts, tree
+
+
+def edge_and_vertex_targets(verts, triangles, fractions=(0.5, 0.25, 1 / 3, 0.9)):
+    """Every vertex and points on every edge of a mesh (float64)."""
+    v = verts.astype(np.float64)
+    targets = [v]
+    for a, b, c in triangles:
+        for i, j in ((a, b), (b, c), (c, a)):
+            for f in fractions:
+                targets.append([(1 - f) * v[i] + f * v[j]])
+    return np.vstack(targets)
+
+
+@pytest.mark.parametrize("rotation_seed", [None, 1, 2, 3])
+def test_watertight_closed_box(rotation_seed):
+    """Rays from inside a closed box aimed at every vertex and edge always hit it; rays from
+    outside aimed at them through the box hit it too."""
+    verts, tree = closed_box_tree(rotation_seed=rotation_seed)
+    targets = edge_and_vertex_targets(verts, BOX_FACES)
+    centre = verts.astype(np.float64).mean(axis=0)
+    rng = np.random.default_rng(0)
+    for inside in [centre] + list(centre + rng.uniform(-0.4, 0.4, (5, 3))):
+        dirs = unit(targets - inside)
+        origins = np.broadcast_to(inside, dirs.shape)
+        dist, tri, _, _ = intersect(tree, origins, dirs)
+        assert (tri >= 0).all(), f"{(tri < 0).sum()} rays slipped through the closed box"
+        assert occluded(tree, origins, dirs).all()
+        # From outside, through the target, towards the box centre: must hit.
+        outside = targets + unit(targets - centre) * 7.0
+        d2 = unit(inside - outside)
+        assert occluded(tree, outside, d2).all()
+
+
+def fzk_haus_mesh():
+    """FZK-Haus LoD2 (CityGML 3.0) rings parsed with lxml and triangulated with earcut."""
+    import mapbox_earcut
+    from lxml import etree
+
+    path = shared_file("fzk-haus/citygml3.0/FZK-Haus-LoD2-KIT-IAI-KHH-B36-V1__v3.gml")
+    gml = "http://www.opengis.net/gml/3.2"
+    root = etree.parse(str(path)).getroot()
+    verts, tris = [], []
+    for ring in root.iter(f"{{{gml}}}LinearRing"):
+        pts = np.array([[float(x) for x in p.text.split()] for p in ring.iter(f"{{{gml}}}pos")])
+        if len(pts) > 1 and np.allclose(pts[0], pts[-1]):
+            pts = pts[:-1]
+        # Project on the plane of the ring (Newell normal), then ear-clip in 2-D.
+        normal = np.sum(np.cross(pts, np.roll(pts, -1, axis=0)), axis=0)
+        drop = int(np.argmax(np.abs(normal)))
+        keep = [a for a in range(3) if a != drop]
+        flat = pts[:, keep]
+        idx = mapbox_earcut.triangulate_float64(flat, np.array([len(pts)], np.uint32))
+        tri = idx.reshape(-1, 3)
+        # Restore the ring's winding (earcut output orientation is not guaranteed).
+        for a, b, c in tri:
+            n_tri = np.cross(pts[b] - pts[a], pts[c] - pts[a])
+            tris.append((a, b, c) if n_tri @ normal > 0 else (a, c, b))
+        tris[-len(tri):] = [tuple(np.array(x) + sum(len(p) for p in verts)) for x in tris[-len(tri):]]
+        verts.append(pts)
+    verts = np.vstack(verts)
+    origin = np.round(verts.mean(axis=0))   # the 10^6-10^7 m offset removed, as the scene does
+    return (verts - origin).astype(np.float32), np.array(tris, np.int32)
+
+
+def test_watertight_fzk_haus():
+    verts, tris = fzk_haus_mesh()
+    # Merge coincident ring vertices so shared edges share vertex values exactly.
+    uniq, inverse = np.unique(verts, axis=0, return_inverse=True)
+    verts, tris = uniq, inverse.reshape(-1)[tris].astype(np.int32)
+    n = tris.shape[0]
+    tree = build_kdtree(verts, tris, np.full(n, -np.inf), np.full(n, np.inf),
+                        np.zeros(n, np.int32))
+    targets = edge_and_vertex_targets(verts, tris)
+    centre = verts.astype(np.float64).mean(axis=0)
+    dirs = unit(targets - centre)
+    origins = np.broadcast_to(centre, dirs.shape)
+    dist, tri, _, _ = intersect(tree, origins, dirs)
+    assert (tri >= 0).all(), f"{(tri < 0).sum()} of {len(tri)} rays slipped through FZK-Haus"
+    assert occluded(tree, origins, dirs).all()
+
+
+def test_zero_area_triangles_never_hit_and_never_nan():
+    verts = np.array([[0, 0, 0], [1, 0, 0], [2, 0, 0], [0, 1, 0], [5, 5, 5]], np.float32)
+    tris = np.array([[0, 1, 2], [4, 4, 4], [0, 0, 1], [0, 1, 3]], np.int32)   # 3 degenerate
+    n = 4
+    tree = build_kdtree(verts, tris, np.full(n, -np.inf), np.full(n, np.inf),
+                        np.zeros(n, np.int32))
+    origins = np.array([[0.5, 0.0, 1.0], [5, 5, 6], [0.25, 0.25, 1.0], [1.5, 0, 1]])
+    dirs = np.array([[0, 0, -1.0]] * 4)
+    dist, tri, u, v = intersect(tree, origins, dirs)
+    np.testing.assert_array_equal(tri, [3, -1, 3, -1])
+    np.testing.assert_array_equal(dist, [1.0, np.inf, 1.0, np.inf])
+    assert np.isfinite(u).all() and np.isfinite(v).all()
+    # A ray in the plane z = 0 of every triangle here (and along the degenerate line) hits none.
+    d = unit([[1, 0, 0]])
+    assert not occluded(tree, [[-1.0, 0.0, 0.0]], d)[0]
+    assert intersect(tree, [[-1.0, 0.0, 0.0]], d)[1][0] == -1
+
+
+def test_axis_parallel_rays_in_a_face_plane_and_along_an_edge():
+    """Rays with zero direction components: in the plane of a face they hit the wall across
+    at its edge; along an edge they hit the corner; no NaN anywhere."""
+    verts, tree = closed_box_tree(lo=(1.0, 2.0, 3.0), size=(4.0, 5.0, 6.0))
+    origins = np.array([
+        [-3.0, 4.0, 9.0],      # in the plane of the top face (z = 9), towards +x
+        [-3.0, 2.0, 9.0],      # along the top edge y = 2, z = 9
+        [-3.0, 4.0, 5.0],      # parallel to the top face, through the box
+        [3.0, 4.0, 20.0],      # straight down onto the top face
+        [-3.0, 1.0, 9.0],      # parallel, just outside the box: miss
+    ])
+    dirs = np.array([[1, 0, 0], [1, 0, 0], [1, 0, 0], [0, 0, -1], [1, 0, 0]], np.float64)
+    dist, tri, u, v = intersect(tree, origins, dirs)
+    np.testing.assert_array_equal(dist, [4.0, 4.0, 4.0, 11.0, np.inf])
+    assert (tri[:4] >= 0).all() and tri[4] == -1
+    np.testing.assert_array_equal(occluded(tree, origins, dirs), [True] * 4 + [False])
+    assert np.isfinite(u).all() and np.isfinite(v).all()
+
+
+@pytest.mark.parametrize("offset_m", [0.0, 1.0e7])
+def test_box_shadow_length_and_grazing_rays(offset_m):
+    """A box of height h on a ground plane casts a shadow of length h / tan(elevation) (also
+    with a 10^7 m coordinate offset removed before float32); 0.1° grazing rays hit the ground
+    at height / sin(0.1°)."""
+    h = 10.0
+    box = np.array([(0, 0, 0), (4, 0, 0), (4, 4, 0), (0, 4, 0),
+                    (0, 0, h), (4, 0, h), (4, 4, h), (0, 4, h)], np.float64)
+    ground = np.array([(-500, -500, 0), (500, -500, 0), (500, 500, 0), (-500, 500, 0)],
+                      np.float64)
+    world = np.vstack([box, ground]) + offset_m                 # georeferenced, float64
+    origin = np.round(world.mean(axis=0))                      # the scene's origin shift
+    verts = (world - origin).astype(np.float32)
+    tris = np.vstack([BOX_FACES, [[8, 9, 10], [8, 10, 11]]]).astype(np.int32)
+    n = tris.shape[0]
+    tree = build_kdtree(verts, tris, np.full(n, -np.inf), np.full(n, np.inf),
+                        np.zeros(n, np.int32))
+    elevation = np.radians(30.0)
+    sun = np.array([0.0, -np.cos(elevation), np.sin(elevation)])   # sun in the south
+    length = h / np.tan(elevation)
+    # Ground points north of the box along x = 2: shadowed up to 4 + length.
+    ys = np.array([4.5, 10.0, 4 + length - 0.05, 4 + length + 0.05, 40.0])
+    pts = np.column_stack([np.full(5, 2.0), ys, np.zeros(5)]) + offset_m - origin
+    pts = pts.astype(np.float32).astype(np.float64)
+    normals = np.tile([0.0, 0.0, 1.0], (5, 1))
+    o = shadow_rays_from_surface(pts, normals, sun)
+    np.testing.assert_array_equal(occluded(tree, o, np.tile(sun, (5, 1))),
+                                  [True, True, True, False, False])
+    grazing = np.radians(0.1)
+    d = np.array([[np.cos(grazing), 0.0, -np.sin(grazing)]])
+    start = np.array([[-400.0, 100.0, 0.5]]) + (offset_m - origin)   # 0.5 m above ground
+    dist, tri, _, _ = intersect(tree, start, d)
+    assert tri[0] in (12, 13)
+    assert dist[0] == pytest.approx(0.5 / np.sin(grazing), rel=1e-5)
+
+
+def test_shadow_rays_never_rehit_their_own_surface(city, tree):
+    """Seeded property: rays leaving a float32 point of a lit triangle never hit it again."""
+    v, t, begin, end, mat = city
+    rng = np.random.default_rng(5)
+    sun = unit([0.4, -0.5, 0.6])
+    tv = v[t].astype(np.float64)
+    normals = unit(np.cross(tv[:, 1] - tv[:, 0], tv[:, 2] - tv[:, 0]))
+    lit = np.flatnonzero(normals @ sun > 0.05)
+    pick = rng.choice(lit, 2000)
+    bary = rng.dirichlet([1, 1, 1], 2000)
+    pts = np.einsum("ij,ijk->ik", bary, tv[pick]).astype(np.float32).astype(np.float64)
+    o = shadow_rays_from_surface(pts, normals[pick], sun)
+    dist, tri, _, _ = intersect(tree, o, np.tile(sun, (2000, 1)), t_days=-1e9)
+    assert not (tri == pick).any(), f"{(tri == pick).sum()} rays re-hit their own triangle"
+
+
+def test_read_only_memory_mapped_tree(tmp_path, city, tree):
+    from cityshade.accel import KdTree
+    for name, arr in tree.to_arrays().items():
+        np.save(tmp_path / f"{name}.npy", arr)
+    mapped = KdTree.from_arrays({name: np.load(tmp_path / f"{name}.npy", mmap_mode="r")
+                                 for name in tree.to_arrays()})
+    origins, directions = random_rays(500, seed=2)
+    origins.setflags(write=False)
+    for a, b in zip(intersect(mapped, origins, directions, 3000.0),
+                    intersect(tree, origins, directions, 3000.0)):
+        np.testing.assert_array_equal(a, b)
+
+
+def test_scene_like_object_is_accepted(tree):
+    class Scene:
+        kdtree = tree
+    origins, directions = random_rays(10, seed=3)
+    np.testing.assert_array_equal(occluded(Scene(), origins, directions),
+                                  occluded(tree, origins, directions))
+
+
+def test_input_validation(tree):
+    o, d = random_rays(4, seed=1)
+    with pytest.raises(TraceInputError, match="unit length"):
+        occluded(tree, o, d * 2)
+    with pytest.raises(TraceInputError, match="shape"):
+        intersect(tree, o[:, :2], d[:, :2])
+    with pytest.raises(TraceInputError, match="NaN"):
+        occluded(tree, np.full((4, 3), np.nan), d)
+    with pytest.raises(TraceInputError, match="tmax"):
+        occluded(tree, o, d, tmax=-1.0)
+    with pytest.raises(TraceInputError, match="KdTree"):
+        occluded(object(), o, d)
+    with pytest.raises(TraceInputError, match="unit length"):
+        shadow_rays_from_surface(o, d, [0, 0, 2.0])
+    empty = occluded(tree, np.empty((0, 3)), np.empty((0, 3)))
+    assert empty.shape == (0,)
+
+
+def test_tile_order_is_a_permutation_of_tiles():
+    order = tile_order(5, 7, tile_px=2)
+    assert sorted(order.tolist()) == list(range(35))
+    assert order[:4].tolist() == [0, 1, 7, 8]       # first tile: rows 0-1, columns 0-1
+
+
+def test_kernels_run_without_jit():
+    """NUMBA_DISABLE_JIT=1: the same code as plain Python agrees with the compiled kernels."""
+    script = r"""
+import json, numpy as np, sys
+sys.path.insert(0, sys.argv[1])
+from test_kdtree import box_city
+from cityshade.accel import build_kdtree
+from cityshade.trace import intersect, occluded
+city = box_city(4, seed=9, extent_m=30.0)
+tree = build_kdtree(*city)
+rng = np.random.default_rng(1)
+o = rng.uniform(-5, 40, (40, 3)); d = rng.normal(size=(40, 3))
+d /= np.linalg.norm(d, axis=1, keepdims=True)
+dist, tri, u, v = intersect(tree, o, d, 0.0)
+print(json.dumps({"nodes": tree.nodes.tolist(), "tri": tri.tolist(),
+                  "dist": [float(x) for x in dist], "occ": occluded(tree, o, d, 0.0).tolist()}))
+"""
+    tests_dir = str(Path(__file__).parent)
+    results = []
+    for disable in ("1", "0"):
+        env = dict(os.environ, NUMBA_DISABLE_JIT=disable)
+        out = subprocess.run([sys.executable, "-c", script, tests_dir], env=env,
+                             capture_output=True, text=True, timeout=300)
+        assert out.returncode == 0, out.stderr[-2000:]
+        results.append(json.loads(out.stdout.strip().splitlines()[-1]))
+    assert results[0] == results[1]
+    assert any(x >= 0 for x in results[0]["tri"])
