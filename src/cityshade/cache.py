@@ -28,7 +28,8 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from cityshade.errors import CacheCorruptError, CacheError, CacheVersionError, InputError
+from cityshade.errors import (CacheCorruptError, CacheError, CacheVersionError, InputError,
+                              OutputError)
 
 MAGIC = b"CITYSHD\n"
 #: Bump on any change of layout or meaning of a stored array; old files are refused.
@@ -97,8 +98,13 @@ def write_cache(path: str | os.PathLike, header: Mapping[str, Any],
         data_start = needed
     prefix = _PREFIX.pack(MAGIC, FORMAT_VERSION, 0, len(blob),
                           hashlib.blake2b(blob, digest_size=16).digest())
-    path.parent.mkdir(parents=True, exist_ok=True) if not path.parent.exists() else None
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    if path.parent.exists() and not path.parent.is_dir():
+        raise OutputError(f"cannot write here: {path.parent} is not a folder", path=str(path))
+    try:
+        path.parent.mkdir(parents=True, exist_ok=True)
+        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    except OSError as exc:
+        raise OutputError(f"cannot write here: {exc.strerror}", path=str(path)) from None
     try:
         with os.fdopen(fd, "wb") as fh:
             fh.write(prefix)

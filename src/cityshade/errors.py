@@ -82,3 +82,7 @@ class CacheCorruptError(CacheError):
 
 class ConfigError(UsageError):
     """A TOML configuration with unknown keys or values of the wrong type."""
+
+
+class OutputError(CityshadeError):
+    """An output file that cannot be written (folder missing or not writable, disk full)."""

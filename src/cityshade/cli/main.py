@@ -7,7 +7,6 @@ non-zero exit status here, and only here.
 from __future__ import annotations
 
 import importlib
-import sys
 
 import click
 
@@ -21,6 +20,12 @@ COMMANDS = {
 
 
 class LazyGroup(click.Group):
+    def invoke(self, ctx):
+        from cityshade.cli.options import translate_errors
+
+        with translate_errors():
+            return super().invoke(ctx)
+
     def list_commands(self, ctx):
         return list(COMMANDS)
 
@@ -51,7 +56,5 @@ def cli() -> None:
 
 
 def main(argv: list[str] | None = None) -> None:
-    """Console-script entry point: run the CLI and translate library errors to one line."""
-    from cityshade.cli.options import run_cli
-
-    sys.exit(run_cli(cli, argv))
+    """Console-script entry point (``cityshade`` and ``python -m cityshade``)."""
+    cli.main(args=argv, prog_name="cityshade")

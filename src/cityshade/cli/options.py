@@ -1,6 +1,7 @@
 """Options shared by several commands, progress display, and the error translation."""
 from __future__ import annotations
 
+import contextlib
 import sys
 import time
 
@@ -9,37 +10,31 @@ import click
 from cityshade.errors import CityshadeError
 
 
-def run_cli(group: click.Group, argv: list[str] | None) -> int:
-    """Run ``group``; every failure is one line on stderr and an exit status, never a traceback."""
+class LibraryFailure(click.ClickException):
+    """A library error shown as one line, ``cityshade: error: ...``, with its exit status."""
+
+    def __init__(self, message: str, exit_code: int = 1):
+        super().__init__(message)
+        self.exit_code = exit_code
+
+    def show(self, file=None) -> None:
+        click.echo(f"cityshade: error: {self.message}", err=True)
+
+
+@contextlib.contextmanager
+def translate_errors():
+    """Turn every failure into one line and an exit status, never a traceback."""
     try:
-        group.main(args=argv, prog_name="cityshade", standalone_mode=False)
-    except click.exceptions.Abort:
-        click.echo("cityshade: interrupted", err=True)
-        return 130
-    except click.ClickException as exc:
-        exc.show()
-        return exc.exit_code
-    except click.exceptions.Exit as exc:
-        return exc.exit_code
+        yield
     except CityshadeError as exc:
-        click.echo(f"cityshade: error: {exc}", err=True)
-        return exc.exit_code
+        raise LibraryFailure(str(exc), exc.exit_code) from None
     except KeyboardInterrupt:
-        click.echo("cityshade: interrupted", err=True)
-        return 130
+        raise click.Abort() from None
     except OSError as exc:
         where = f"{exc.filename}: " if getattr(exc, "filename", None) else ""
-        click.echo(f"cityshade: error: {where}{exc.strerror or exc}", err=True)
-        return 1
+        raise LibraryFailure(f"{where}{exc.strerror or exc}") from None
     except MemoryError:
-        click.echo("cityshade: error: out of memory", err=True)
-        return 1
-    return 0
-
-
-def fail_on_library_error(func):
-    """For CliRunner and API use of a command object: same translation as :func:`run_cli`."""
-    return func
+        raise LibraryFailure("out of memory") from None
 
 
 class Progress:

@@ -1,0 +1,142 @@
+"""The CLI through click's CliRunner: success, and the one-line message of every failure."""
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+
+import pytest
+from click.testing import CliRunner
+
+from citygml_snippets import box_polygons, building, city
+
+from cityshade.cli.main import cli
+
+
+@pytest.fixture
+def gml(tmp_path):
+    path = tmp_path / "city.gml"
+    extra = "<bldg:yearOfConstruction>1900</bldg:yearOfConstruction>"
+    path.write_text(city(building("b1", box_polygons(690_000, 5_336_000, 500, 10, 8, 6), extra=extra),
+                         building("b2", box_polygons(690_030, 5_336_000, 500, 5, 5, 20, "q"))))
+    return path
+
+
+def run(*args):
+    result = CliRunner().invoke(cli, [str(a) for a in args])
+    return result
+
+
+def assert_one_line_error(result, fragment, code=1):
+    assert result.exit_code == code, result.output
+    assert "Traceback" not in result.output
+    lines = [l for l in result.output.splitlines() if l.strip()]
+    assert len(lines) == 1, result.output
+    assert lines[0].startswith("cityshade: error: ") and fragment in lines[0], lines[0]
+
+
+def test_build_and_info(gml, tmp_path):
+    out = tmp_path / "out.cityshade"
+    result = run("build", gml, "-o", out)
+    assert result.exit_code == 0, result.output
+    assert "24 triangles" in result.output and out.is_file()
+    info = run("info", out, "--json")
+    assert info.exit_code == 0, info.output
+    d = json.loads(info.output)
+    for key in ("triangles", "objects", "crs", "origin", "bbox", "time_range", "skipped", "kdtree"):
+        assert key in d
+    assert d["triangles"] == 24 and d["objects"]["total"] == 2
+    assert d["crs"]["horizontal_epsg"] == 25832
+    assert d["time_range"] == ["1900-01-01", "1900-01-01"]
+    assert d["bbox"]["min"] == pytest.approx([690_000, 5_336_000, 500])
+    assert d["bbox"]["max"] == pytest.approx([690_035, 5_336_008, 520])
+    text = run("info", out)
+    assert text.exit_code == 0 and "objects       2 (2 Building)" in text.output
+
+
+def test_build_default_output_and_info_on_gml(gml):
+    assert run("build", gml, "-q").exit_code == 0
+    assert gml.with_suffix(".cityshade").is_file()
+    d = json.loads(run("info", gml, "--json").output)
+    assert d["triangles"] == 24
+
+
+def test_options_reach_the_build(gml, tmp_path):
+    out = tmp_path / "o.cityshade"
+    assert run("build", gml, "-o", out, "--crs", "EPSG:25833", "--time-source", "creation").exit_code == 0
+    d = json.loads(run("info", out, "--json").output)
+    assert d["crs"]["horizontal_epsg"] == 25833
+    assert d["time_range"] is None and d["time_source"] == "creation"
+
+
+def test_missing_file(tmp_path):
+    assert_one_line_error(run("build", tmp_path / "nope.gml"), "no such file")
+
+
+def test_malformed_xml(tmp_path):
+    p = tmp_path / "bad.gml"
+    p.write_text("<CityModel>\n<cityObjectMember>\n</CityModel>")
+    result = run("build", p)
+    assert_one_line_error(result, "malformed XML")
+    assert "bad.gml:3" in result.output
+    assert not p.with_suffix(".cityshade").exists()
+
+
+def test_not_citygml(tmp_path):
+    p = tmp_path / "x.gml"
+    p.write_text("<svg/>")
+    assert_one_line_error(run("build", p), "not a CityGML file")
+
+
+def test_empty_model(tmp_path):
+    p = tmp_path / "e.gml"
+    p.write_text(city())
+    assert_one_line_error(run("build", p), "no city objects")
+
+
+def test_unknown_crs(gml):
+    assert_one_line_error(run("build", gml, "--crs", "EPSG:999999"), "999999")
+
+
+def test_absurd_options(gml):
+    result = run("build", gml, "--lod", "7")
+    assert result.exit_code == 2 and "7 is not in the range" in result.output
+    result = run("build", gml, "--time-source", "soon")
+    assert result.exit_code == 2 and "soon" in result.output
+    assert_one_line_error(run("build", gml, "-o", gml), "overwrite the input", code=2)
+
+
+def test_unwritable_output(gml, tmp_path):
+    # The parent "folder" is a file: nothing can be written there.
+    assert_one_line_error(run("build", gml, "-o", gml / "x.cityshade"), "is not a folder")
+    assert_one_line_error(run("build", gml, "-o", "/proc/x.cityshade"), "cannot write here")
+
+
+def test_config_unknown_key(gml, tmp_path):
+    cfg = tmp_path / "c.toml"
+    cfg.write_text("[build]\nlodd = 2\n")
+    assert_one_line_error(run("build", gml, "--config", cfg), "unknown key(s) in", code=2)
+
+
+def test_info_on_corrupt_cache(gml, tmp_path):
+    out = tmp_path / "c.cityshade"
+    run("build", gml, "-o", out)
+    out.write_bytes(out.read_bytes()[:-10])
+    assert_one_line_error(run("info", out), "rebuild")
+
+
+def test_help_is_light():
+    """`cityshade --help` imports none of the heavy libraries."""
+    code = ("import sys; from cityshade.cli.main import cli\n"
+            "try:\n    cli.main(['--help'], standalone_mode=False)\nexcept SystemExit: pass\n"
+            "heavy = [m for m in ('numba', 'lxml', 'pyproj', 'OpenImageIO', 'numpy') if m in sys.modules]\n"
+            "print('HEAVY', heavy)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)
+    assert "HEAVY []" in out.stdout, out.stdout
+
+
+def test_python_m_cityshade(gml, tmp_path):
+    out = subprocess.run([sys.executable, "-m", "cityshade", "info", str(tmp_path / "missing")],
+                         capture_output=True, text=True)
+    assert out.returncode == 1 and out.stderr.strip().startswith("cityshade: error:")
+    assert "Traceback" not in out.stderr
