@@ -135,6 +135,7 @@ class _Walker:
         self.bad_chunks: list[np.ndarray] = []
         self.gml_ns = ns.GML_NAMESPACES[0]
         self.gml_id = ns.GML_ID_ATTRS[0]
+        self.other_gml_id: str | None = ns.GML_ID_ATTRS[1]
         self.ade_namespaces: Counter = Counter()
         self.rings_flushed = 0
 
@@ -189,19 +190,18 @@ class _Walker:
     def detect_gml(self, root) -> None:
         """Pick the GML namespace of the file (3.1.1 or 3.2) from the root's declarations."""
         declared = set((root.nsmap or {}).values())
-        for gml_ns, id_attr in zip(ns.GML_NAMESPACES, ns.GML_ID_ATTRS):
-            if gml_ns in declared:
-                self.gml_ns, self.gml_id = gml_ns, id_attr
-                return
+        present = [(g, a) for g, a in zip(ns.GML_NAMESPACES, ns.GML_ID_ATTRS) if g in declared]
+        if present:
+            self.gml_ns, self.gml_id = present[0]
+        # Only files declaring both GML versions need the second look-up of every id.
+        self.other_gml_id = present[1][1] if len(present) > 1 else (
+            None if present else ns.GML_ID_ATTRS[1])
 
     def element_id(self, el) -> str | None:
         value = el.get(self.gml_id)
-        if value is None:
+        if value is None and self.other_gml_id is not None:
             # Files mixing GML versions exist (envelopes in one, geometry in the other).
-            for attr in ns.GML_ID_ATTRS:
-                value = el.get(attr)
-                if value is not None:
-                    break
+            value = el.get(self.other_gml_id)
         return value
 
     # -- members --------------------------------------------------------------------------
