@@ -63,9 +63,8 @@ def _build_tree(scene: Scene, settings: Settings, progress, timings: dict):
     if progress:
         progress("kdtree", 0, 1)
     t = time.perf_counter()
-    kwargs = {"settings": settings.kdtree} if hasattr(settings, "kdtree") else {}
     tree = build_kdtree(scene.vertices, scene.triangles, scene.tri_t_begin_days,
-                        scene.tri_t_end_days, scene.tri_material, **kwargs)
+                        scene.tri_t_end_days, scene.tri_material, settings.kdtree)
     timings["kdtree_s"] = time.perf_counter() - t
     return tree
 

@@ -58,11 +58,23 @@ class BuildSettings:
                 raise ConfigError(f"{name} must be a finite number >= 0, not {value}")
 
 
+def _kdtree_settings():
+    # The kd-tree's tunables live next to its build kernel; importing them here lazily keeps
+    # `import cityshade.config` (and so `cityshade --help`) free of numba.
+    from cityshade.accel.kdtree_build import KdTreeSettings
+
+    return KdTreeSettings()
+
+
 @dataclass(frozen=True)
 class Settings:
     """All settings, one field per TOML table."""
 
     build: BuildSettings = field(default_factory=BuildSettings)
+    kdtree: Any = field(default_factory=_kdtree_settings)
+
+
+_TOML_TYPES = {"int": int, "float": float, "str": str, "bool": bool}
 
 
 def _coerce(cls: type, table: Mapping[str, Any], where: str) -> Any:
@@ -84,8 +96,14 @@ def _coerce(cls: type, table: Mapping[str, Any], where: str) -> Any:
             raise ConfigError(f"{where}.{key} must be true or false")
         if isinstance(default, float) and isinstance(value, int) and not isinstance(value, bool):
             value = float(value)
-        if default is not None and not isinstance(value, type(default)):
-            raise ConfigError(f"{where}.{key} must be of type {type(default).__name__}")
+        if default is not None:
+            allowed: tuple[type, ...] = (type(default),)
+        else:  # an optional setting: its annotation names the type, e.g. "int | None"
+            names = str(fields[key].type).replace(" ", "").split("|")
+            allowed = tuple(_TOML_TYPES[n] for n in names if n in _TOML_TYPES)
+        if allowed and not isinstance(value, allowed):
+            raise ConfigError(f"{where}.{key} must be of type "
+                              f"{' or '.join(t.__name__ for t in allowed)}")
         kwargs[key] = value
     return cls(**kwargs)
 
