@@ -1,0 +1,243 @@
+"""Build throughput: ``cityshade build`` against plain lxml parsing of the same CityGML file.
+
+Generates (once, cached in ``--workdir``) the ~1-million-triangle synthetic city with
+:mod:`cityshade.samplegen`, then measures, alternating in the same run, the median over
+``--repeat`` runs of:
+
+* anchor A — ``lxml.etree.iterparse`` over every ``cityObjectMember``, clearing it and deleting
+  its previous siblings, nothing else (the floor of any streaming lxml reader);
+* anchor B — the same, plus converting every ``gml:posList`` text to float64 with numpy;
+* ours — ``python -m cityshade build FILE -o OUT`` in a subprocess: MB/s of GML, the child's
+  peak RSS (``getrusage(RUSAGE_CHILDREN)`` in a small wrapper process, one per run) and the
+  output size. Goal: peak RSS ≤ 1.5 × output size + 300 MB. The first run (which may compile
+  Numba kernels into the cache) is excluded from the median and reported on its own.
+
+MB are 10^6 bytes. Prints one JSON object (machine-readable, with the git commit), then a
+plain-text table with the ratios ours / anchor A and ours / anchor B. If ``cityshade build``
+fails or does not exist yet, the anchors are still measured and "ours" says why it is missing.
+
+Usage (from the repository root)::
+
+    python benchmarks/build_throughput.py                       # 1M triangles, 3 repeats
+    python benchmarks/build_throughput.py --triangles 50000 --repeat 1   # quick smoke run
+    python benchmarks/build_throughput.py --city path/to/file.gml       # any CityGML file
+"""
+from __future__ import annotations
+
+import argparse
+import hashlib
+import json
+import os
+import platform
+import statistics
+import subprocess
+import sys
+import time
+from dataclasses import asdict
+from pathlib import Path
+
+import numpy as np
+from lxml import etree
+
+REPO = Path(__file__).resolve().parents[1]
+MB = 1e6
+
+#: Member elements of CityGML 1.0/2.0/3.0 city models (anchors clear each one when it ends).
+_MEMBER_TAGS = [f"{{http://www.opengis.net/citygml/{v}}}cityObjectMember"
+                for v in ("1.0", "2.0", "3.0")]
+_POSLIST_TAGS = ("{http://www.opengis.net/gml}posList", "{http://www.opengis.net/gml/3.2}posList")
+
+#: Runs the build in a child and reports that child's peak RSS: getrusage(RUSAGE_CHILDREN) of a
+#: fresh wrapper process sees only this one build. ru_maxrss is in KiB on Linux.
+_WRAPPER = r"""
+import json, resource, subprocess, sys, time
+t0 = time.perf_counter()
+proc = subprocess.run(sys.argv[1:], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+seconds = time.perf_counter() - t0
+usage = resource.getrusage(resource.RUSAGE_CHILDREN)
+print(json.dumps({"returncode": proc.returncode, "seconds": seconds,
+                  "peak_rss_bytes": usage.ru_maxrss * 1024,
+                  "stderr_tail": proc.stderr.strip().splitlines()[-1:] or [""],
+                  "stdout_tail": proc.stdout.strip().splitlines()[-1:] or [""]}))
+"""
+
+
+def _git_commit() -> str:
+    try:
+        return subprocess.run(["git", "rev-parse", "HEAD"], cwd=REPO, capture_output=True,
+                              text=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def _generator_digest() -> str:
+    source = (REPO / "src" / "cityshade" / "samplegen.py").read_bytes()
+    return hashlib.sha256(source).hexdigest()[:16]
+
+
+def ensure_city(workdir: Path, triangles: int, seed: int) -> tuple[Path, dict]:
+    """The cached benchmark city; regenerated when missing or made by another generator."""
+    from cityshade.samplegen import generate_city
+
+    workdir.mkdir(parents=True, exist_ok=True)
+    gml = workdir / f"city_{triangles}_s{seed}.gml"
+    meta_path = gml.with_suffix(".json")
+    digest = _generator_digest()
+    if gml.exists() and meta_path.exists():
+        meta = json.loads(meta_path.read_text())
+        if meta.get("generator") == digest and meta.get("size_bytes") == gml.stat().st_size:
+            return gml, meta
+    t0 = time.perf_counter()
+    info = generate_city(gml, target_triangles=triangles, seed=seed)
+    meta = {k: (str(v) if isinstance(v, Path) else v) for k, v in asdict(info).items()}
+    meta.update(generator=digest, generate_seconds=round(time.perf_counter() - t0, 2))
+    meta_path.write_text(json.dumps(meta, indent=1))
+    return gml, meta
+
+
+def anchor_a(path: Path) -> float:
+    """Seconds for iterparse + clear of every member, nothing else."""
+    t0 = time.perf_counter()
+    for _, elem in etree.iterparse(str(path), events=("end",), tag=_MEMBER_TAGS,
+                                   huge_tree=True, resolve_entities=False, no_network=True):
+        elem.clear()
+        while elem.getprevious() is not None:
+            del elem.getparent()[0]
+    return time.perf_counter() - t0
+
+
+def anchor_b(path: Path) -> tuple[float, int]:
+    """Seconds for anchor A plus every posList converted to float64; also the value count."""
+    values = 0
+    t0 = time.perf_counter()
+    for _, elem in etree.iterparse(str(path), events=("end",), tag=_MEMBER_TAGS,
+                                   huge_tree=True, resolve_entities=False, no_network=True):
+        for pos in elem.iter(_POSLIST_TAGS):
+            values += np.array(pos.text.split(), dtype=np.float64).size
+        elem.clear()
+        while elem.getprevious() is not None:
+            del elem.getparent()[0]
+    return time.perf_counter() - t0, values
+
+
+def ours(path: Path, out: Path) -> dict:
+    """One ``cityshade build`` in a wrapper process: seconds, peak RSS, output size."""
+    if out.exists():
+        out.unlink()
+    cmd = [sys.executable, "-c", _WRAPPER, sys.executable, "-m", "cityshade", "build",
+           str(path), "-o", str(out)]
+    proc = subprocess.run(cmd, capture_output=True, text=True, cwd=REPO)
+    if proc.returncode != 0:
+        return {"error": (proc.stderr.strip().splitlines() or ["wrapper failed"])[-1]}
+    run = json.loads(proc.stdout.strip().splitlines()[-1])
+    if run["returncode"] != 0:
+        return {"error": run["stderr_tail"][0] or run["stdout_tail"][0]
+                or f"exit status {run['returncode']}"}
+    if not out.exists():
+        return {"error": f"no output file {out}"}
+    run["output_bytes"] = out.stat().st_size
+    return run
+
+
+def _summary(seconds: list[float], size: int) -> dict:
+    median = statistics.median(seconds)
+    return {"median_s": round(median, 3), "mb_per_s": round(size / MB / median, 1),
+            "runs_s": [round(s, 3) for s in seconds]}
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--workdir", type=Path, default=REPO / "bench_out",
+                        help="cache folder for the generated city and outputs (bench_out/)")
+    parser.add_argument("--repeat", type=int, default=3, help="timed runs of each (3)")
+    parser.add_argument("--triangles", type=int, default=1_000_000,
+                        help="size of the generated city (1000000)")
+    parser.add_argument("--seed", type=int, default=7, help="generator seed (7)")
+    parser.add_argument("--city", type=Path, default=None,
+                        help="measure this CityGML file instead of the generated city")
+    args = parser.parse_args(argv)
+    if args.repeat < 1:
+        parser.error("--repeat must be at least 1")
+
+    if args.city is not None:
+        gml, city = args.city.resolve(), {"path": str(args.city)}
+    else:
+        gml, city = ensure_city(args.workdir.resolve(), args.triangles, args.seed)
+    size = gml.stat().st_size
+    city["size_bytes"] = size
+    out = args.workdir.resolve() / (gml.stem + ".cityshade")
+    out.parent.mkdir(parents=True, exist_ok=True)
+
+    # Warm-up build: compiles (or loads) the Numba kernels; reported, not in the median.
+    first = ours(gml, out)
+    available = "error" not in first
+    times_a, times_b, runs = [], [], []
+    values = 0
+    for _ in range(args.repeat):
+        times_a.append(anchor_a(gml))
+        seconds, values = anchor_b(gml)
+        times_b.append(seconds)
+        if available:
+            run = ours(gml, out)
+            if "error" in run:
+                available, first = False, run
+            else:
+                runs.append(run)
+
+    result = {
+        "benchmark": "build_throughput",
+        "commit": _git_commit(),
+        "machine": {"python": platform.python_version(), "platform": platform.platform(),
+                    "cpus": os.cpu_count(), "lxml": ".".join(map(str, etree.LXML_VERSION)),
+                    "numpy": np.__version__},
+        "city": city,
+        "repeat": args.repeat,
+        "anchor_a_iterparse": _summary(times_a, size),
+        "anchor_b_iterparse_poslist": {**_summary(times_b, size), "float_values": values},
+    }
+    if available and runs:
+        peak = statistics.median(r["peak_rss_bytes"] for r in runs)
+        out_bytes = runs[-1]["output_bytes"]
+        budget = 1.5 * out_bytes + 300 * MB
+        result["ours"] = {
+            **_summary([r["seconds"] for r in runs], size),
+            "first_run_s": round(first["seconds"], 3),
+            "first_run_peak_rss_mb": round(first["peak_rss_bytes"] / MB, 1),
+            "peak_rss_mb": round(peak / MB, 1),
+            "output_mb": round(out_bytes / MB, 1),
+            "memory_goal_mb": round(budget / MB, 1),
+            "memory_goal_met": bool(peak <= budget),
+        }
+        result["ratios"] = {
+            "ours_over_anchor_a": round(result["ours"]["mb_per_s"]
+                                        / result["anchor_a_iterparse"]["mb_per_s"], 3),
+            "ours_over_anchor_b": round(result["ours"]["mb_per_s"]
+                                        / result["anchor_b_iterparse_poslist"]["mb_per_s"], 3),
+        }
+    else:
+        result["ours"] = {"unavailable": first.get("error", "no run")}
+    print(json.dumps(result, indent=1))
+
+    a, b, o = result["anchor_a_iterparse"], result["anchor_b_iterparse_poslist"], result["ours"]
+    print()
+    print(f"build throughput on {gml.name} ({size / MB:.1f} MB, commit {result['commit'][:10]},"
+          f" median of {args.repeat})")
+    print(f"{'':34s}{'MB/s':>9s}{'median s':>10s}{'ours/this':>11s}")
+    if "mb_per_s" in o:
+        print(f"{'anchor A: iterparse + clear':34s}{a['mb_per_s']:9.1f}{a['median_s']:10.2f}"
+              f"{result['ratios']['ours_over_anchor_a']:11.2f}")
+        print(f"{'anchor B: + posList -> float64':34s}{b['mb_per_s']:9.1f}{b['median_s']:10.2f}"
+              f"{result['ratios']['ours_over_anchor_b']:11.2f}")
+        print(f"{'ours: cityshade build':34s}{o['mb_per_s']:9.1f}{o['median_s']:10.2f}")
+        print(f"ours: first run {o['first_run_s']:.2f} s (excluded); peak RSS "
+              f"{o['peak_rss_mb']:.0f} MB, output {o['output_mb']:.0f} MB, goal <= "
+              f"{o['memory_goal_mb']:.0f} MB: {'met' if o['memory_goal_met'] else 'NOT met'}")
+    else:
+        print(f"{'anchor A: iterparse + clear':34s}{a['mb_per_s']:9.1f}{a['median_s']:10.2f}")
+        print(f"{'anchor B: + posList -> float64':34s}{b['mb_per_s']:9.1f}{b['median_s']:10.2f}")
+        print(f"ours: unavailable ({o['unavailable']})")
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
