@@ -165,36 +165,48 @@ def _object_intervals(raw: RawModel, source: str, counters: Counter):
 
 
 def _resolve_references(raw: RawModel, counters: Counter):
-    """Expand every reference into (object, polygon, lod, flip, class) items."""
-    obj, poly, lod, flip, cls = [], [], [], [], []
+    """Expand every reference into (object, polygon, lod, flip, class) item arrays."""
     poly_by_id, aggregates = raw.poly_by_id, raw.aggregates
-    targets, ref_obj, ref_lod = raw.ref_target, raw.ref_obj, raw.ref_lod
-    ref_flip, ref_cls = raw.ref_flip, raw.ref_cls
-    unresolved = 0
+    targets = raw.ref_target
+    # Most references name a polygon directly (solids made of boundary polygons): one dict
+    # look-up each. Only the rest (aggregates, nested references) go through the slow path.
+    direct = np.fromiter((poly_by_id.get(t, -1) for t in targets), np.int64, len(targets))
+    ref_obj = np.asarray(raw.ref_obj, np.int64)
+    ref_lod = np.asarray(raw.ref_lod, np.int64)
+    ref_flip = np.asarray(raw.ref_flip, np.int64)
+    ref_cls = np.asarray(raw.ref_cls, np.int64)
+    hit = direct >= 0
+    obj, poly, lod, flip, cls = ([ref_obj[hit]], [direct[hit]], [ref_lod[hit]],
+                                 [ref_flip[hit]], [ref_cls[hit]])
+    extra: list[tuple[int, int, int, int, int]] = []
 
     def expand(target: str, o: int, lo: int, fl: int, cl: int, depth: int) -> bool:
         p = poly_by_id.get(target)
         if p is not None:
-            obj.append(o), poly.append(p), lod.append(lo), flip.append(fl), cls.append(cl)
+            extra.append((o, p, lo, fl, cl))
             return True
         agg = aggregates.get(target)
         if agg is None or depth > _MAX_REFERENCE_DEPTH:
             return False
         p0, p1, r0, r1 = agg
-        for p in range(p0, p1):
-            obj.append(o), poly.append(p), lod.append(lo), flip.append(fl), cls.append(cl)
+        extra.extend((o, p, lo, fl, cl) for p in range(p0, p1))
         for r in range(r0, r1):
-            inner_cls = ref_cls[r] if ref_cls[r] != 0 else cl
-            expand(targets[r], o, lo, fl ^ ref_flip[r], inner_cls, depth + 1)
+            inner_cls = int(ref_cls[r]) if ref_cls[r] != 0 else cl
+            expand(targets[r], o, lo, fl ^ int(ref_flip[r]), inner_cls, depth + 1)
         return True
 
-    for r, target in enumerate(targets):
-        if not expand(target, ref_obj[r], ref_lod[r], ref_flip[r], ref_cls[r], 0):
+    unresolved = 0
+    for r in np.nonzero(~hit)[0]:
+        if not expand(targets[r], int(ref_obj[r]), int(ref_lod[r]), int(ref_flip[r]),
+                      int(ref_cls[r]), 0):
             unresolved += 1
     if unresolved:
         counters["unresolved_references"] += unresolved
-    return (np.array(obj, np.int64), np.array(poly, np.int64), np.array(lod, np.int64),
-            np.array(flip, np.int64), np.array(cls, np.int64))
+    if extra:
+        cols = np.array(extra, np.int64).T
+        for out, col in zip((obj, poly, lod, flip, cls), cols):
+            out.append(col)
+    return tuple(np.concatenate(parts) for parts in (obj, poly, lod, flip, cls))
 
 
 def _expand_ranges(starts: np.ndarray, lengths: np.ndarray) -> np.ndarray:
@@ -261,8 +273,10 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
     obj_max_lod = np.full(n_obj, -1, np.int64)
     np.maximum.at(obj_max_lod, item_obj, item_lod)
     # Objects per LoD they have (an object with LoD 1 and 2 counts under both).
-    has = np.unique(np.stack([item_obj, item_lod])[:, item_lod >= 0], axis=1)
-    lod_table = Counter(int(v) for v in has[1])
+    has = np.zeros((n_obj, 5), bool)
+    known = item_lod >= 0
+    has[item_obj[known], item_lod[known]] = True
+    lod_table = {lod: int(n) for lod, n in enumerate(has.sum(axis=0)) if n}
     if settings.lod is None:
         chosen = obj_max_lod
     else:
@@ -276,14 +290,14 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
             counters["objects_without_requested_lod"] = missing
     selected = (item_lod == chosen[item_obj]) | (item_lod < 0)
     sel_idx = np.nonzero(selected)[0]
-    # 4. Each polygon once: own definitions come first in the item order, so they win.
-    _, first = np.unique(item_poly[sel_idx], return_index=True)
-    keep = sel_idx[np.sort(first)]
-    keep = keep[np.argsort(item_poly[keep], kind="stable")]
+    # 4. Each polygon once: own definitions come first in the item order, so they win
+    # (assigning in reverse order leaves the first selected item of each polygon).
+    first_item = np.full(n_poly_all, -1, np.int64)
+    first_item[item_poly[sel_idx[::-1]]] = sel_idx[::-1]
+    keep = first_item[first_item >= 0]  # ordered by polygon index
     polys = item_poly[keep]
     p_obj, p_flip = item_obj[keep], item_flip[keep]
-    counters["polygons_read"] = n_poly_all
-    counters["polygons_not_selected_lod"] = int(len(np.unique(item_poly)) - len(polys))
+    counters["polygons_not_selected_lod"] = int(n_poly_all - len(polys))
     if len(polys) == 0:
         lod_msg = f" at LoD {settings.lod}" if settings.lod is not None else ""
         raise EmptyModelError(f"the model has no surface geometry{lod_msg} "
@@ -356,8 +370,11 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
     remap_poly = np.full(len(polys), -1, np.int64)
     remap_poly[drawn] = np.arange(len(drawn))
     tri_polygon = remap_poly[tri_poly_local]
-    used_points, inverse = np.unique(triangles.ravel(), return_inverse=True)
-    triangles = inverse.reshape(-1, 3)
+    used = np.zeros(len(coords), bool)
+    used[triangles.ravel()] = True
+    used_points = np.nonzero(used)[0]
+    new_index = np.cumsum(used) - 1
+    triangles = new_index[triangles]
     world = coords[used_points]
     lo, hi = world.min(axis=0), world.max(axis=0)
     origin = np.round(0.5 * (lo + hi))
@@ -369,14 +386,13 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
         warnings.append(f"appearance theme {settings.theme!r} not found; themes in the file: "
                         f"{', '.join(repr(t) for t in raw.appearance.themes()) or 'none'}")
     orig_poly = polys[drawn]
-    poly_local_of_orig = {int(p): i for i, p in enumerate(orig_poly)}
     poly_material = np.full(len(drawn), -1, np.int32)
     poly_texture = np.full(len(drawn), -1, np.int32)
     point_uv = np.zeros((len(coords), 2), np.float64)
     materials: list[dict] = []
     textures: list[dict] = []
     if theme is not None:
-        _apply_appearance(raw, theme, poly_local_of_orig, drawn, polys, rings, ring_offsets,
+        _apply_appearance(raw, theme, drawn, polys, rings, ring_offsets,
                           poly_ring_offsets, coords, poly_material, poly_texture, point_uv,
                           materials, textures, warnings, counters)
     uv = point_uv[used_points].astype(np.float32)
@@ -408,8 +424,7 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
         "theme": theme,
         "themes": raw.appearance.themes(),
         "source_crs": source_crs.to_json(),
-        "counters": {k: int(v) for k, v in sorted(counters.items())
-                     if k not in ("polygons_read",)},
+        "counters": {k: int(v) for k, v in sorted(counters.items())},
         "warnings": warnings,
     }
     return Scene(
@@ -430,15 +445,19 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
         materials=materials, textures=textures, report=report)
 
 
-def _apply_appearance(raw, theme, poly_local_of_orig, drawn, polys, rings, ring_offsets,
+def _apply_appearance(raw, theme, drawn, polys, rings, ring_offsets,
                       poly_ring_offsets, coords, poly_material, poly_texture, point_uv,
                       materials, textures, warnings, counters) -> None:
     """Fill per-polygon material/texture indices and per-point uv for one theme."""
     app = raw.appearance
-    # Gathered point range of every original ring index (only rings of drawn polygons matter).
-    ring_range = {int(r): (int(ring_offsets[i]), int(ring_offsets[i + 1]))
-                  for i, r in enumerate(rings)}
-    local_of_selected = {int(polys[d]): i for i, d in enumerate(drawn)}
+    # Gathered point range of every original ring (-1: not gathered), and the drawn-polygon
+    # index of every original polygon (-1: not drawn).
+    ring_first = np.full(len(raw.ring_points), -1, np.int64)
+    ring_first[rings] = ring_offsets[:-1]
+    ring_count = np.zeros(len(raw.ring_points), np.int64)
+    ring_count[rings] = np.diff(ring_offsets)
+    local_of_orig = np.full(raw.n_polygons, -1, np.int64)
+    local_of_orig[polys[drawn]] = np.arange(len(drawn))
     for rec in app.materials:
         if rec.theme != theme:
             continue
@@ -446,8 +465,8 @@ def _apply_appearance(raw, theme, poly_local_of_orig, drawn, polys, rings, ring_
         hit = False
         for target in rec.targets:
             for p in _polygon_targets(raw, target):
-                local = local_of_selected.get(p)
-                if local is not None:
+                local = local_of_orig[p]
+                if local >= 0:
                     poly_material[local] = index
                     hit = True
         if hit:
@@ -476,8 +495,8 @@ def _apply_appearance(raw, theme, poly_local_of_orig, drawn, polys, rings, ring_
                 continue
         for target, ring_uvs, matrix in rec.targets:
             for p in _polygon_targets(raw, target):
-                local = local_of_selected.get(p)
-                if local is None:
+                local = local_of_orig[p]
+                if local < 0:
                     continue
                 sel = drawn[local]
                 r0, r1 = poly_ring_offsets[sel], poly_ring_offsets[sel + 1]
@@ -493,15 +512,17 @@ def _apply_appearance(raw, theme, poly_local_of_orig, drawn, polys, rings, ring_
                 else:
                     for ring_id, text in ring_uvs:
                         r = raw.ring_by_id.get(ring_id)
-                        span = ring_range.get(r) if r is not None else None
-                        if span is None:
+                        if r is None or ring_first[r] < 0:
                             continue
-                        values = np.array(text.split(), dtype=np.float64) if text.strip() else np.empty(0)
-                        n = span[1] - span[0]
+                        start, n = ring_first[r], ring_count[r]
+                        try:
+                            values = np.array(text.split(), dtype=np.float64)
+                        except ValueError:
+                            values = np.empty(0)
                         if values.size != 2 * n or not np.isfinite(values).all():
                             counters["texture_coordinate_count_mismatch"] += 1
                             continue
-                        point_uv[span[0]:span[1]] = values.reshape(n, 2)
+                        point_uv[start:start + n] = values.reshape(n, 2)
                 poly_texture[local] = tex
 
 
