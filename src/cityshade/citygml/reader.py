@@ -63,12 +63,12 @@ class RawModel:
     obj_parent: list[int] = field(default_factory=list)
     obj_time: list[dict[str, str]] = field(default_factory=list)
     obj_line: list[int] = field(default_factory=list)
-    # Polygons (one entry per polygon element).
-    poly_obj: list[int] = field(default_factory=list)
-    poly_cls: list[int] = field(default_factory=list)
-    poly_lod: list[int] = field(default_factory=list)
-    poly_flip: list[int] = field(default_factory=list)
-    poly_ring0: list[int] = field(default_factory=list)
+    # Polygons (one entry per polygon element); int64 arrays once reading is finished.
+    poly_obj: np.ndarray = field(default_factory=lambda: np.empty(0, np.int64))
+    poly_cls: np.ndarray = field(default_factory=lambda: np.empty(0, np.int64))
+    poly_lod: np.ndarray = field(default_factory=lambda: np.empty(0, np.int64))
+    poly_flip: np.ndarray = field(default_factory=lambda: np.empty(0, np.int64))
+    poly_ring0: np.ndarray = field(default_factory=lambda: np.empty(0, np.int64))
     poly_ids: list[str | None] = field(default_factory=list)
     poly_by_id: dict[str, int] = field(default_factory=dict)
     # Rings: parsed coordinates, per-ring point counts and bad flags.
@@ -76,11 +76,11 @@ class RawModel:
     xyz: np.ndarray = field(default_factory=lambda: np.empty((0, 3)))
     ring_points: np.ndarray = field(default_factory=lambda: np.empty(0, np.int64))
     ring_bad: np.ndarray = field(default_factory=lambda: np.empty(0, np.uint8))
-    # References (xlink:href in a geometry context).
-    ref_obj: list[int] = field(default_factory=list)
-    ref_cls: list[int] = field(default_factory=list)
-    ref_lod: list[int] = field(default_factory=list)
-    ref_flip: list[int] = field(default_factory=list)
+    # References (xlink:href in a geometry context); int64 arrays once reading is finished.
+    ref_obj: np.ndarray = field(default_factory=lambda: np.empty(0, np.int64))
+    ref_cls: np.ndarray = field(default_factory=lambda: np.empty(0, np.int64))
+    ref_lod: np.ndarray = field(default_factory=lambda: np.empty(0, np.int64))
+    ref_flip: np.ndarray = field(default_factory=lambda: np.empty(0, np.int64))
     ref_target: list[str] = field(default_factory=list)
     # Aggregates: id → (first polygon, end polygon, first ref, end ref).
     aggregates: dict[str, tuple[int, int, int, int]] = field(default_factory=dict)
@@ -91,7 +91,7 @@ class RawModel:
 
     @property
     def n_polygons(self) -> int:
-        return len(self.poly_obj)
+        return len(self.poly_ids)
 
 
 def _split_tag(tag: str) -> tuple[str, str]:
@@ -138,7 +138,13 @@ class _Walker:
         self.other_gml_id: str | None = ns.GML_ID_ATTRS[1]
         self.ade_namespaces: Counter = Counter()
         self.rings_flushed = 0
-
+        # Records as tuples, one append each; turned into arrays by finish().
+        self.polys: list[tuple[int, int, int, int, int]] = []
+        self.refs: list[tuple[int, int, int, int]] = []
+        gml_tags = [("{%s}" % g) for g in ns.GML_NAMESPACES]
+        self.exterior_tags = {t + n for t in gml_tags for n in ("exterior", "outerBoundaryIs")}
+        self.interior_tags = {t + n for t in gml_tags for n in ("interior", "innerBoundaryIs")}
+        self.poslist_tags = {t + "posList" for t in gml_tags}
     # -- classification -------------------------------------------------------------------
     def kind(self, tag: str) -> tuple[int, object]:
         """(kind, payload) of an element tag, cached: payload is a LoD, class code or type."""
@@ -268,9 +274,9 @@ class _Walker:
                 if agg_id is None:
                     self.walk(child, obj, cls, lod, flip)
                 else:
-                    p0, r0 = len(m.poly_obj), len(m.ref_obj)
+                    p0, r0 = len(self.polys), len(self.refs)
                     self.walk(child, obj, cls, lod, flip)
-                    m.aggregates.setdefault(agg_id, (p0, len(m.poly_obj), r0, len(m.ref_obj)))
+                    m.aggregates.setdefault(agg_id, (p0, len(self.polys), r0, len(self.refs)))
             elif kind == K_LOD:
                 href = child.get(ns.XLINK_HREF)
                 if href is not None:
@@ -284,14 +290,14 @@ class _Walker:
                 self.city_object(child, payload, obj)
             elif kind == K_THEMATIC:
                 surface_id = self.element_id(child)
-                p0, r0 = len(m.poly_obj), len(m.ref_obj)
+                p0, r0 = len(self.polys), len(self.refs)
                 self.walk(child, obj, payload, lod, flip)
                 if surface_id is not None:
-                    m.aggregates.setdefault(surface_id, (p0, len(m.poly_obj), r0, len(m.ref_obj)))
+                    m.aggregates.setdefault(surface_id, (p0, len(self.polys), r0, len(self.refs)))
             elif kind == K_ORIENTABLE:
                 flipped = flip ^ (1 if child.get("orientation", "+").strip() == "-" else 0)
                 agg_id = self.element_id(child)
-                p0, r0 = len(m.poly_obj), len(m.ref_obj)
+                p0, r0 = len(self.polys), len(self.refs)
                 for base in child:
                     if not isinstance(base.tag, str):
                         continue
@@ -301,7 +307,7 @@ class _Walker:
                     else:
                         self.walk(base, obj, cls, lod, flipped)
                 if agg_id is not None:
-                    m.aggregates.setdefault(agg_id, (p0, len(m.poly_obj), r0, len(m.ref_obj)))
+                    m.aggregates.setdefault(agg_id, (p0, len(self.polys), r0, len(self.refs)))
             elif kind == K_APPEARANCE:
                 self.m.appearance.read_appearance(child, self, owner=obj)
             elif kind == K_GML_BOUNDED:
@@ -318,78 +324,83 @@ class _Walker:
                     and p.tag[p.tag.rfind("}") + 1:] in ns.POLYGON_ELEMENTS)
 
     def reference(self, href: str, obj: int, cls: int, lod: int, flip: int) -> None:
-        m = self.m
-        m.ref_obj.append(obj)
-        m.ref_cls.append(cls)
-        m.ref_lod.append(lod)
-        m.ref_flip.append(flip)
-        m.ref_target.append(href[1:] if href.startswith("#") else href)
+        self.refs.append((obj, cls, lod, flip))
+        self.m.ref_target.append(href[1:] if href.startswith("#") else href)
 
     def polygon(self, el, obj: int, cls: int, lod: int, flip: int) -> None:
+        """Record one polygon-like element and the text of its rings (the hot path)."""
         m = self.m
-        index = len(m.poly_obj)
-        m.poly_obj.append(obj)
-        m.poly_cls.append(cls)
-        m.poly_lod.append(lod)
-        m.poly_flip.append(flip)
-        m.poly_ring0.append(self.rings_flushed + len(self.dims))
+        texts, dims = self.texts, self.dims
+        index = len(self.polys)
+        self.polys.append((obj, cls, lod, flip, self.rings_flushed + len(texts)))
         srs = el.get("srsName")
         if srs is not None:
             m.srs_names[srs] += 1
-        pid = self.element_id(el)
+        gml_id = self.gml_id
+        pid = el.get(gml_id)
+        if pid is None and self.other_gml_id is not None:
+            pid = el.get(self.other_gml_id)
         m.poly_ids.append(pid)
         if pid is not None and m.poly_by_id.setdefault(pid, index) != index:
             m.counters["duplicate_gml_ids"] += 1
         dim_default = el.get("srsDimension")
+        exterior_tags, interior_tags = self.exterior_tags, self.interior_tags
         has_exterior = False
         for boundary in el:
             btag = boundary.tag
-            if not isinstance(btag, str):
-                continue
-            blocal = btag[btag.rfind("}") + 1:]
-            if blocal in ("exterior", "outerBoundaryIs"):
+            if btag in exterior_tags:
                 if has_exterior:
                     continue
                 has_exterior = True
-            elif blocal not in ("interior", "innerBoundaryIs"):
+            elif btag not in interior_tags or not len(boundary):
                 continue
-            for ring in boundary:
-                if isinstance(ring.tag, str):
-                    self.ring(ring, dim_default)
-                    break
+            ring = boundary[0]
+            first = ring[0] if len(ring) else None
+            if first is not None and first.tag in self.poslist_tags:
+                # The common case: one posList.
+                text = first.text or ""
+                dim = first.get("srsDimension") or dim_default
+            else:
+                text, dim = self.ring_other(ring, first, dim_default)
+            ring_id = ring.get(gml_id)
+            if ring_id is not None:
+                m.ring_by_id.setdefault(ring_id, self.rings_flushed + len(texts))
+            texts.append(text)
+            dims.append(3 if dim is None or dim == "3" else self._dim(dim))
+            self.text_chars += len(text)
         if not has_exterior:
             m.counters["polygons_without_exterior"] += 1
             # Keep the ring numbering consistent: an empty exterior makes the polygon skip.
             self.ring_text("", 3, None)
+        if self.text_chars > _PARSE_BATCH_CHARS:
+            self.flush()
 
-    def ring(self, ring, dim_default: str | None) -> None:
-        dim = dim_default
-        text = None
-        if len(ring):
-            first = ring[0]
-            local = first.tag[first.tag.rfind("}") + 1:] if isinstance(first.tag, str) else ""
-            if local == "posList":
-                text = first.text or ""
-                dim = first.get("srsDimension") or first.get("dimension") or dim
-            elif local == "pos":
-                text = " ".join((c.text or "") for c in ring if isinstance(c.tag, str))
-                dim = first.get("srsDimension") or dim
-            elif local == "coordinates":
-                text = first.text or ""
-                cs = first.get("cs", ",")
-                ts = first.get("ts", " ")
-                decimal = first.get("decimal", ".")
-                if decimal != ".":
-                    text = text.replace(cs, "\x00").replace(decimal, ".").replace("\x00", cs)
-                text = text.replace(cs, " ").replace(ts, " ")
-        if text is None:
-            self.m.counters["rings_without_coordinates"] += 1
-            text = ""
+    @staticmethod
+    def _dim(dim: str) -> int:
         try:
-            dim_value = int(dim) if dim is not None else 3
+            return int(dim)
         except ValueError:
-            dim_value = 0
-        self.ring_text(text, dim_value, self.element_id(ring))
+            return 0  # not 2 or 3: the coordinate parser marks the ring bad
+
+    def ring_other(self, ring, first, dim):
+        """(text, dimension) of a ring written with gml:pos or gml:coordinates."""
+        if first is None or not isinstance(first.tag, str):
+            self.m.counters["rings_without_coordinates"] += 1
+            return "", dim
+        local = first.tag[first.tag.rfind("}") + 1:]
+        if local == "pos":
+            text = " ".join((c.text or "") for c in ring if isinstance(c.tag, str))
+            return text, first.get("srsDimension") or dim
+        if local == "coordinates":
+            text = first.text or ""
+            cs = first.get("cs", ",")
+            ts = first.get("ts", " ")
+            decimal = first.get("decimal", ".")
+            if decimal != ".":
+                text = text.replace(cs, "\x00").replace(decimal, ".").replace("\x00", cs)
+            return text.replace(cs, " ").replace(ts, " "), dim
+        self.m.counters["rings_without_coordinates"] += 1
+        return "", dim
 
     def ring_text(self, text: str, dim: int, ring_id: str | None) -> None:
         if ring_id is not None:
@@ -397,8 +408,6 @@ class _Walker:
         self.texts.append(text)
         self.dims.append(dim)
         self.text_chars += len(text)
-        if self.text_chars > _PARSE_BATCH_CHARS:
-            self.flush()
 
     def flush(self) -> None:
         if not self.texts:
@@ -418,6 +427,13 @@ class _Walker:
             m.ring_points = np.concatenate(self.points_chunks)
             m.ring_bad = np.concatenate(self.bad_chunks)
         self.xyz_chunks = self.points_chunks = self.bad_chunks = []
+        polys = np.array(self.polys, np.int64).reshape(-1, 5)
+        m.poly_obj, m.poly_cls, m.poly_lod, m.poly_flip, m.poly_ring0 = (
+            np.ascontiguousarray(polys[:, i]) for i in range(5))
+        refs = np.array(self.refs, np.int64).reshape(-1, 4)
+        m.ref_obj, m.ref_cls, m.ref_lod, m.ref_flip = (
+            np.ascontiguousarray(refs[:, i]) for i in range(4))
+        self.polys, self.refs = [], []
         for namespace, count in sorted(self.ade_namespaces.items()):
             m.counters["ade_elements_skipped"] += count
 

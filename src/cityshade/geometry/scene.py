@@ -258,7 +258,7 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
     own_obj = np.asarray(raw.poly_obj, np.int64)
     own_lod = np.asarray(raw.poly_lod, np.int64)
     own_flip = np.asarray(raw.poly_flip, np.int64)
-    poly_cls = np.asarray(raw.poly_cls, np.int64)
+    poly_cls = np.array(raw.poly_cls, np.int64)  # a copy: classes are upgraded below
     item_obj = np.concatenate([own_obj, ref_items[0]])
     item_poly = np.concatenate([np.arange(n_poly_all), ref_items[1]])
     item_lod = np.concatenate([own_lod, ref_items[2]])
@@ -304,7 +304,7 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
                               f"({n_obj} objects, {n_poly_all} polygons read)", path=str(raw.path))
 
     # 5. Gather the rings of the selected polygons into contiguous arrays.
-    poly_ring0 = np.asarray(raw.poly_ring0 + [len(raw.ring_points)], np.int64)
+    poly_ring0 = np.append(raw.poly_ring0, len(raw.ring_points)).astype(np.int64)
     ring_start = np.concatenate([[0], np.cumsum(raw.ring_points)])
     p_nrings = poly_ring0[polys + 1] - poly_ring0[polys]
     rings = _expand_ranges(poly_ring0[polys], p_nrings)
