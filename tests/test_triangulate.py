@@ -238,6 +238,13 @@ DEGENERATE = {
     "bow_tie_symmetric": ([closed([(0, 0), (0, 1), (1, 0), (1, 1)])], SKIP_SELF_INTERSECTING, 0),
     "bow_tie_unequal": ([closed([(0, 0), (2, 2), (2, 0), (0, 1)])], SKIP_SELF_INTERSECTING, 0),
     "pentagram": ([closed(regular(5, 1.0)[[0, 2, 4, 1, 3]])], SKIP_SELF_INTERSECTING, 0),
+    # The chain passes through (2, 1), a point inside the edge (3, 0) → (1, 2): no proper
+    # crossing, but a crossing through a vertex.
+    "crossing_through_vertex": ([closed([(0, 0), (2, 1), (4, 3), (3, 0), (1, 2), (0, 2)])],
+                                SKIP_SELF_INTERSECTING, 0),
+    # Two counter-clockwise lobes touching at (2, 1): weakly simple, triangulated (area 8).
+    "lobes_touching_at_vertex": ([closed([(0, 0), (2, 1), (4, 0), (4, 4), (2, 1), (0, 4)])],
+                                 TRIANGULATED, 0),
     "large_figure_eight": ([closed(figure_eight(600))], SKIP_SELF_INTERSECTING, 0),
     "collinear_only": ([closed([(0, 0), (1, 0), (2, 0), (3, 0)])], SKIP_ALL_COLLINEAR, 0),
     "two_points": ([closed([(0, 0), (0, 1)])], SKIP_TOO_FEW_POINTS, 0),
@@ -298,10 +305,14 @@ def test_degenerate_polygon_table(name):
 
 
 def test_repairs_keep_the_area():
-    coords, res = run([DEGENERATE[n][0] for n in ("repeated_points", "unclosed", "point_on_edge",
-                                                  "spike", "hole_two_points")])
-    np.testing.assert_allclose(res.area_m2, [1, 1, 1, 1, 16], rtol=1e-12)
-    assert np.bincount(res.tri_polygon).tolist() == [2, 2, 2, 2, 2]
+    names = ("repeated_points", "unclosed", "point_on_edge", "spike", "hole_two_points",
+             "lobes_touching_at_vertex")
+    coords, res = run([DEGENERATE[n][0] for n in names])
+    np.testing.assert_allclose(res.area_m2, [1, 1, 1, 1, 16, 8], rtol=1e-12)
+    tri_area = 0.5 * np.linalg.norm(triangle_vectors(coords, res.triangles), axis=1)
+    np.testing.assert_allclose(np.bincount(res.tri_polygon, tri_area), [1, 1, 1, 1, 16, 8],
+                               rtol=1e-12)
+    assert np.bincount(res.tri_polygon).tolist() == [2, 2, 2, 2, 2, 2]
 
 
 def test_polygon_without_rings_and_mixed_batch():

@@ -384,18 +384,76 @@ def _proper_cross(ax, ay, bx, by, cx, cy, dx, dy, eps):
 
 
 @njit(cache=True)
+def _wedge_holds(ax, ay, px, py, bx, by, qx, qy, eps):
+    """Side of point q against the wedge a → p → b (interior on the left).
+
+    Returns 1 inside, -1 outside, 0 when q lies on one of the two rays (undecided).
+    """
+    o_in = _orient2(ax, ay, px, py, qx, qy)
+    o_out = _orient2(px, py, bx, by, qx, qy)
+    if abs(o_in) <= eps or abs(o_out) <= eps:
+        return 0
+    if _orient2(ax, ay, px, py, bx, by) > 0.0:
+        return 1 if (o_in > 0.0 and o_out > 0.0) else -1
+    return 1 if (o_in > 0.0 or o_out > 0.0) else -1
+
+
+@njit(cache=True)
+def _vertex_contact(x2, y2, v, v_prev, v_next, c, d, c_prev, eps):
+    """Contact of vertex v (between v_prev and v_next) with edge c → d of another chain part.
+
+    Returns 2 when the chain crosses the edge's chain at v, 1 for a touch (contact that is
+    not a crossing, or undecidable within eps), 0 for no contact. When v coincides with c, the
+    two corners (v_prev, v, v_next) and (c_prev, c, d) cross when c's neighbours lie on
+    different sides of v's wedge.
+    """
+    vx = x2[v]
+    vy = y2[v]
+    cx = x2[c]
+    cy = y2[c]
+    dx = x2[d]
+    dy = y2[d]
+    if vx == cx and vy == cy:
+        side_prev = _wedge_holds(x2[v_prev], y2[v_prev], vx, vy, x2[v_next], y2[v_next],
+                                 x2[c_prev], y2[c_prev], eps)
+        side_next = _wedge_holds(x2[v_prev], y2[v_prev], vx, vy, x2[v_next], y2[v_next],
+                                 dx, dy, eps)
+        if side_prev * side_next < 0:
+            return 2
+        return 1
+    if vx == dx and vy == dy:
+        return 0  # handled as the start point of the next edge
+    if abs(_orient2(cx, cy, dx, dy, vx, vy)) > eps:
+        return 0
+    # v on the line of c → d: a contact only when it lies between c and d.
+    t = (vx - cx) * (dx - cx) + (vy - cy) * (dy - cy)
+    if t <= 0.0 or t >= (dx - cx) ** 2 + (dy - cy) ** 2:
+        return 0
+    o_prev = _orient2(cx, cy, dx, dy, x2[v_prev], y2[v_prev])
+    o_next = _orient2(cx, cy, dx, dy, x2[v_next], y2[v_next])
+    if (o_prev > eps and o_next < -eps) or (o_prev < -eps and o_next > eps):
+        return 2
+    return 1
+
+
+@njit(cache=True)
 def _crossing_code(x2, y2, ring_start, n_rings, eps):
     """Exact O(n²) crossing test over all ring edges.
 
-    Returns 0 when no two edges cross, ``SKIP_SELF_INTERSECTING`` when two exterior edges
-    cross, ``SKIP_INVALID_HOLES`` when a crossing involves a hole.
+    Finds proper crossings of two edges and crossings through a vertex (a vertex on another
+    edge, or two corners at one point, whose chains pass through each other). Returns
+    (code, touched): code is 0 when nothing crosses, ``SKIP_SELF_INTERSECTING`` when the
+    exterior crosses itself, ``SKIP_INVALID_HOLES`` when a crossing involves a hole; touched
+    says whether two non-adjacent parts of the rings touch without crossing.
     """
     total = ring_start[n_rings]
+    touched = False
     for r in range(n_rings):
         r0 = ring_start[r]
         r1 = ring_start[r + 1]
         for i in range(r0, r1):
             i1 = i + 1 if i + 1 < r1 else r0
+            i_prev = i - 1 if i > r0 else r1 - 1
             ax = x2[i]
             ay = y2[i]
             bx = x2[i1]
@@ -421,12 +479,22 @@ def _crossing_code(x2, y2, ring_start, n_rings, eps):
                     dy = y2[j1]
                     if not (max(cx, dx) < lo_x or min(cx, dx) > hi_x
                             or max(cy, dy) < lo_y or min(cy, dy) > hi_y):
+                        contact = 0
                         if _proper_cross(ax, ay, bx, by, cx, cy, dx, dy, eps):
+                            contact = 2
+                        else:
+                            j_prev = j0 - 1 if j0 > s0 else s1 - 1
+                            contact = max(
+                                _vertex_contact(x2, y2, i, i_prev, i1, j0, j1, j_prev, eps),
+                                _vertex_contact(x2, y2, j0, j_prev, j1, i, i1, i_prev, eps))
+                        if contact == 2:
                             if r == 0 and s == 0:
-                                return SKIP_SELF_INTERSECTING
-                            return SKIP_INVALID_HOLES
+                                return SKIP_SELF_INTERSECTING, touched
+                            return SKIP_INVALID_HOLES, touched
+                        if contact == 1:
+                            touched = True
                 j0 += 1
-    return 0
+    return 0, touched
 
 
 # ---------------------------------------------------------------------------------------------
@@ -528,8 +596,28 @@ def _find_bridge(x2, y2, nslot, prv, nxt, n_nodes, ms):
 
 
 @njit(cache=True)
-def _is_ear(x2, y2, nslot, nxt, a, b, c):
-    """Whether chain node b is a convex ear: no other chain point in or on triangle (a, b, c)."""
+def _enters_corner(xx, xy, yx, yy, zx, zy, px, py):
+    """Whether point p lies strictly inside the angle at corner x from x→y counter-clockwise
+    to x→z of a counter-clockwise triangle (x, y, z)."""
+    return _orient2(xx, xy, yx, yy, px, py) > 0.0 and _orient2(xx, xy, zx, zy, px, py) < 0.0
+
+
+@njit(cache=True)
+def _copy_enters(x2, y2, nslot, prv, nxt, q, xx, xy, yx, yy, zx, zy):
+    """Whether the chain at node q (a copy of corner x) runs into the triangle's angle at x."""
+    sp = nslot[prv[q]]
+    sn = nslot[nxt[q]]
+    return (_enters_corner(xx, xy, yx, yy, zx, zy, x2[sp], y2[sp])
+            or _enters_corner(xx, xy, yx, yy, zx, zy, x2[sn], y2[sn]))
+
+
+@njit(cache=True)
+def _is_ear(x2, y2, nslot, prv, nxt, a, b, c):
+    """Whether chain node b is a convex ear: no other chain point in or on triangle (a, b, c).
+
+    A point at the same place as a corner (a bridge end, or a ring touching itself) blocks the
+    ear only when the chain through it runs into the triangle.
+    """
     sa = nslot[a]
     sb = nslot[b]
     sc = nslot[c]
@@ -551,12 +639,19 @@ def _is_ear(x2, y2, nslot, nxt, a, b, c):
         px = x2[s]
         py = y2[s]
         if lo_x <= px <= hi_x and lo_y <= py <= hi_y:
-            # Copies of the corners (bridge ends) do not block the ear.
-            if not ((px == ax and py == ay) or (px == bx and py == by) or (px == cx and py == cy)):
-                if (_orient2(ax, ay, bx, by, px, py) >= 0.0
-                        and _orient2(bx, by, cx, cy, px, py) >= 0.0
-                        and _orient2(cx, cy, ax, ay, px, py) >= 0.0):
+            if px == ax and py == ay:
+                if _copy_enters(x2, y2, nslot, prv, nxt, q, ax, ay, bx, by, cx, cy):
                     return False
+            elif px == bx and py == by:
+                if _copy_enters(x2, y2, nslot, prv, nxt, q, bx, by, cx, cy, ax, ay):
+                    return False
+            elif px == cx and py == cy:
+                if _copy_enters(x2, y2, nslot, prv, nxt, q, cx, cy, ax, ay, bx, by):
+                    return False
+            elif (_orient2(ax, ay, bx, by, px, py) >= 0.0
+                    and _orient2(bx, by, cx, cy, px, py) >= 0.0
+                    and _orient2(cx, cy, ax, ay, px, py) >= 0.0):
+                return False
         q = nxt[q]
     return True
 
@@ -645,7 +740,13 @@ def _earclip_with_holes(x2, y2, loc, idx, ring_start, n_holes, nslot, nxt, prv, 
     while count > 3:
         a = prv[cur]
         c = nxt[cur]
-        if _is_ear(x2, y2, nslot, nxt, a, cur, c):
+        sa = nslot[a]
+        sb = nslot[cur]
+        sc = nslot[c]
+        # A point repeated at once, or the tip of an out-and-back spike, encloses nothing:
+        # drop it first (bridges and rings touching themselves leave such pieces behind).
+        spike = (x2[sa] == x2[sc] and y2[sa] == y2[sc]) or (x2[sb] == x2[sc] and y2[sb] == y2[sc])
+        if spike or _is_ear(x2, y2, nslot, prv, nxt, a, cur, c):
             n_out, area = _emit(x2, y2, loc, idx, nslot[a], nslot[cur], nslot[c], poly,
                                 tri_out, tri_poly, n_out)
             abs_sum += abs(area)
@@ -794,7 +895,8 @@ def _triangulate_kernel(coords, ring_offsets, polygon_ring_offsets, merge_distan
                     _project(loc, x2, y2, 0, m_ext, ux, uy, uz, vx, vy, vz)
                     ring_start[0] = 0
                     ring_start[1] = m_ext
-                    if _crossing_code(x2, y2, ring_start, 1, col_tol_m * size_m) != 0:
+                    code, _ = _crossing_code(x2, y2, ring_start, 1, col_tol_m * size_m)
+                    if code != 0:
                         reason = SKIP_SELF_INTERSECTING
             if n_len > 0.0 and reason != SKIP_ALL_COLLINEAR and reason != SKIP_TOO_FEW_POINTS:
                 normal[p, 0] = nx / n_len
@@ -888,11 +990,11 @@ def _triangulate_kernel(coords, ring_offsets, polygon_ring_offsets, merge_distan
         # General path: exact crossing test when small, then bridges, ear clipping, area check.
         proven_simple = False
         if total <= SEGMENT_TEST_MAX_POINTS:
-            code = _crossing_code(x2, y2, ring_start, n_holes + 1, col_tol_m * size_m)
+            code, touched = _crossing_code(x2, y2, ring_start, n_holes + 1, col_tol_m * size_m)
             if code != 0:
                 status[p] = code
                 continue
-            proven_simple = True
+            proven_simple = not touched
         first_tri = n_out
         n_out, abs_sum, ok = _earclip_with_holes(x2, y2, loc, idx, ring_start, n_holes, nslot,
                                                  nxt, prv, hole_key, hole_slot, p, tri_out,
