@@ -1,0 +1,89 @@
+"""Shadow techniques: one registry, one signature, one output.
+
+Every technique takes a :class:`ShadowContext` (scene, resolved G-buffer surfaces, camera, sun,
+city time) and returns a :class:`ShadowResult`: the per-pixel lit fraction (0 = shadow,
+1 = sun; NaN never) and its own diagnostics. Techniques are chosen by name with
+:func:`get_technique`; unknown names raise a :class:`~cityshade.errors.UsageError` listing the
+valid ones.
+
+Shared rule (DESIGN §14): a surface facing away from the sun (N·L ≤ 0, with N turned towards
+the viewer) is in shadow without any test, in every technique, so techniques agree there.
+"""
+from __future__ import annotations
+
+import importlib
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+import numpy as np
+
+from cityshade.errors import UsageError
+
+#: name → "module:class". Later techniques (shadow maps, hybrid) register here too.
+TECHNIQUES: dict[str, str] = {
+    "raytrace": "cityshade.shadows.raytraced:RayTraced",
+}
+
+
+@dataclass
+class ShadowContext:
+    """Everything a technique may use for one frame."""
+
+    scene: Any
+    surfaces: Any          # cityshade.raster.gbuffer.Surfaces
+    camera: Any            # cityshade.raster.camera.Camera
+    sun: Any               # cityshade.sun.SunPosition
+    t_days: float
+    options: dict[str, Any] = field(default_factory=dict)
+
+
+@dataclass
+class ShadowResult:
+    """Per-pixel lit fraction and diagnostics of one technique run."""
+
+    lit: np.ndarray                       # (H, W) float32 in [0, 1]; 0 where no surface
+    diagnostics: dict[str, Any] = field(default_factory=dict)
+    extra_channels: dict[str, np.ndarray] = field(default_factory=dict)
+
+
+class Technique(Protocol):
+    name: str
+
+    def run(self, ctx: ShadowContext) -> ShadowResult: ...
+
+
+def technique_names() -> list[str]:
+    return sorted(TECHNIQUES)
+
+
+def get_technique(name: str) -> Technique:
+    """The technique registered under ``name`` (an instance ready to run)."""
+    entry = TECHNIQUES.get(name)
+    if entry is None:
+        raise UsageError(f"unknown shadow technique {name!r}; valid: "
+                         f"{', '.join(technique_names())}")
+    module, cls = entry.split(":")
+    return getattr(importlib.import_module(module), cls)()
+
+
+def oriented_normals(surfaces, camera) -> np.ndarray:
+    """Unit normals (H, W, 3) float64 turned to the side the camera sees.
+
+    A pixel may show the back of a triangle (an open model, a wall seen from inside); its
+    surface for shading and shadows is the side that is seen.
+    """
+    normal = np.asarray(surfaces.normal, dtype=np.float64)
+    if camera.kind == "map":
+        to_viewer = np.asarray(camera.eye_m, np.float64) - np.asarray(camera.target_m, np.float64)
+        to_viewer = np.broadcast_to(to_viewer, normal.shape)
+    else:
+        to_viewer = np.asarray(camera.eye_m, np.float64) - surfaces.position_m
+    seen_from_back = np.einsum("ijk,ijk->ij", normal, to_viewer) < 0
+    return np.where(seen_from_back[..., None], -normal, normal)
+
+
+def facing_sun(surfaces, camera, sun_direction) -> tuple[np.ndarray, np.ndarray]:
+    """(oriented normals, mask of surface pixels that face the sun): the shared rule."""
+    normal = oriented_normals(surfaces, camera)
+    faces = (normal @ np.asarray(sun_direction, dtype=np.float64)) > 0
+    return normal, faces & np.asarray(surfaces.valid, bool)
