@@ -28,7 +28,11 @@ Conventions
   every triangle is positive (the sum of |triangle areas| equals |exterior| − Σ|holes|), the
   coverage is exactly the polygon with its holes; otherwise the chain crosses itself or its
   holes are invalid and the polygon is skipped. Self-overlaps of winding two (a pentagram) keep
-  positive triangles, so small polygons also get an exact O(n²) edge-crossing test.
+  positive triangles, so polygons of up to ``SEGMENT_TEST_MAX_POINTS`` points also get an
+  O(n²) edge-crossing test (proper crossings and crossings through a vertex).
+* Known limit: a ring that runs back along its own edges (collinear overlaps, found only on
+  coarse grids in testing) can pass both tests; its triangles then cover the overlap twice,
+  as its winding number says. Shadows are unaffected; the area counts the overlap twice.
 """
 from __future__ import annotations
 
@@ -372,18 +376,6 @@ def _is_convex(x2, y2, m):
 
 
 @njit(cache=True)
-def _proper_cross(ax, ay, bx, by, cx, cy, dx, dy, eps):
-    """Whether segments ab and cd cross at one interior point of both (touching is not)."""
-    o1 = _orient2(ax, ay, bx, by, cx, cy)
-    o2 = _orient2(ax, ay, bx, by, dx, dy)
-    if not ((o1 > eps and o2 < -eps) or (o1 < -eps and o2 > eps)):
-        return False
-    o3 = _orient2(cx, cy, dx, dy, ax, ay)
-    o4 = _orient2(cx, cy, dx, dy, bx, by)
-    return (o3 > eps and o4 < -eps) or (o3 < -eps and o4 > eps)
-
-
-@njit(cache=True)
 def _wedge_holds(ax, ay, px, py, bx, by, qx, qy, eps):
     """Side of point q against the wedge a → p → b (interior on the left).
 
@@ -480,8 +472,16 @@ def _crossing_code(x2, y2, ring_start, n_rings, eps):
                     if not (max(cx, dx) < lo_x or min(cx, dx) > hi_x
                             or max(cy, dy) < lo_y or min(cy, dy) > hi_y):
                         contact = 0
-                        if _proper_cross(ax, ay, bx, by, cx, cy, dx, dy, eps):
-                            contact = 2
+                        o1 = _orient2(ax, ay, bx, by, cx, cy)
+                        o2 = _orient2(ax, ay, bx, by, dx, dy)
+                        o3 = _orient2(cx, cy, dx, dy, ax, ay)
+                        o4 = _orient2(cx, cy, dx, dy, bx, by)
+                        if ((o1 > eps and o2 > eps) or (o1 < -eps and o2 < -eps)
+                                or (o3 > eps and o4 > eps) or (o3 < -eps and o4 < -eps)):
+                            contact = 0  # both ends of one edge strictly on one side
+                        elif (abs(o1) > eps and abs(o2) > eps
+                              and abs(o3) > eps and abs(o4) > eps):
+                            contact = 2  # proper crossing
                         else:
                             j_prev = j0 - 1 if j0 > s0 else s1 - 1
                             contact = max(
