@@ -16,6 +16,7 @@ from cityshade import __version__
 COMMANDS = {
     "build": ("cityshade.cli.build:build", "Build the .cityshade scene file of a CityGML model."),
     "info": ("cityshade.cli.info:info", "Describe a .cityshade file (or a CityGML file)."),
+    "render": ("cityshade.cli.render:render", "Render a picture and shadow mask at a date and sun."),
 }
 
 

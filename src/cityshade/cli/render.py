@@ -1,0 +1,119 @@
+"""``cityshade render FILE``: one picture and shadow mask of the city at a date and sun."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+
+def _triple(text: str | None, what: str):
+    if text is None:
+        return None
+    try:
+        values = [float(v) for v in text.split(",")]
+    except ValueError:
+        values = []
+    if len(values) != 3:
+        raise click.BadParameter(f"{what} must be X,Y,Z in metres, e.g. 690100,5336000,600")
+    return values
+
+
+def _size(text: str) -> tuple[int, int]:
+    try:
+        w, h = (int(v) for v in text.lower().split("x"))
+    except ValueError:
+        raise click.BadParameter(f"--size must be WIDTHxHEIGHT, e.g. 1280x720, not {text!r}")
+    if not (1 <= w <= 16384 and 1 <= h <= 16384):
+        raise click.BadParameter("--size must be between 1x1 and 16384x16384 pixels")
+    return w, h
+
+
+@click.command("render")
+@click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
+@click.option("--date", "date_text", help="City state: 1850, 1850-06-21 or 1850-06-21T15:00+01:00 "
+              "(default: today).")
+@click.option("--tz", help="IANA time zone for a --date without UTC offset, e.g. Europe/Berlin.")
+@click.option("--sun-azimuth", type=float, help="Degrees clockwise from true north.")
+@click.option("--sun-elevation", type=float, help="Degrees above the horizon.")
+@click.option("--camera", default="overview", show_default=True,
+              help="overview, map, or a preset of configs/cameras.toml.")
+@click.option("--eye", help="Camera position X,Y,Z in the model CRS (metres); with --target.")
+@click.option("--target", help="Point looked at, X,Y,Z in the model CRS (metres).")
+@click.option("--fov", type=click.FloatRange(1, 170), default=45.0, show_default=True,
+              help="Vertical field of view in degrees (perspective).")
+@click.option("--size", default="1280x720", show_default=True, help="WIDTHxHEIGHT (perspective).")
+@click.option("--pixel-size", type=click.FloatRange(min=1e-3, min_open=False),
+              help="Metres per pixel of the map view (default: fits 2048 px).")
+@click.option("--shadows", "technique", default="raytrace", show_default=True,
+              help="Shadow technique (raytrace).")
+@click.option("-o", "--output", type=click.Path(dir_okay=False, path_type=Path), required=True,
+              help="EXR with colour, shadow, Z, normals, primid, objid and provenance.")
+@click.option("--png", type=click.Path(dir_okay=False, path_type=Path), help="sRGB picture.")
+@click.option("--mask", type=click.Path(dir_okay=False, path_type=Path),
+              help="8-bit shadow mask PNG: 255 sun, 0 shadow, 128 no surface.")
+@click.option("--geotiff", type=click.Path(dir_okay=False, path_type=Path),
+              help="Map view: georeferenced mask (TIFF + world file + .prj) for QGIS/GDAL.")
+@click.option("--no-sky", is_flag=True, help="Black background instead of the sky gradient.")
+@click.option("-v", "--verbose", is_flag=True, help="Stage timings and technique diagnostics.")
+def render(file, date_text, tz, sun_azimuth, sun_elevation, camera, eye, target, fov, size,
+           pixel_size, technique, output, png, mask, geotiff, no_sky, verbose):
+    """Render FILE (a .cityshade scene) as the city stood on --date, lit by the sun at
+    --sun-azimuth/--sun-elevation, from a perspective camera or as a top-down map."""
+    import datetime as dt
+    import time
+
+    from cityshade.citygml.temporal import parse_user_date
+    from cityshade.errors import UsageError
+    from cityshade.render import render_frame, write_frame
+    from cityshade.scenefile import load_scene
+    from cityshade.shadows import get_technique
+    from cityshade.sun import sun_from_angles
+
+    get_technique(technique)  # unknown names fail before any work
+    if (sun_azimuth is None) != (sun_elevation is None):
+        raise UsageError("give both --sun-azimuth and --sun-elevation")
+    if sun_azimuth is None:
+        raise UsageError("no sun position: give --sun-azimuth and --sun-elevation (degrees)")
+    if (eye is None) != (target is None):
+        raise UsageError("give both --eye and --target, or neither")
+    eye_v, target_v = _triple(eye, "--eye"), _triple(target, "--target")
+    width, height = _size(size)
+    date_text = date_text or dt.date.today().isoformat()
+    user_date = parse_user_date(date_text, tz)
+    t0 = time.perf_counter()
+    scene = load_scene(file)
+    load_s = time.perf_counter() - t0
+    cam = _camera(scene, camera, eye_v, target_v, fov, width, height, pixel_size)
+    sun = sun_from_angles(sun_azimuth, sun_elevation, scene.crs, scene.origin_m)
+    frame = render_frame(scene, cam, user_date.city_days, sun, technique, sky=not no_sky)
+    for warning in frame.warnings:
+        click.echo(f"cityshade: warning: {warning}", err=True)
+    t1 = time.perf_counter()
+    written = write_frame(frame, scene, date_text, exr=output, png=png, mask=mask, georef=geotiff)
+    write_s = time.perf_counter() - t1
+    if verbose:
+        timings = {"load_s": load_s, **frame.timings_s, "write_s": write_s}
+        click.echo("timings  " + "  ".join(f"{k[:-2]} {v * 1000:.1f} ms" for k, v in timings.items()),
+                   err=True)
+        click.echo(f"sun      azimuth {sun.azimuth_true_deg:.3f}° true / {sun.azimuth_grid_deg:.3f}° "
+                   f"grid (convergence {sun.convergence_deg:+.4f}°), elevation "
+                   f"{sun.elevation_deg:.3f}°", err=True)
+        for key, value in frame.diagnostics.items():
+            if key != "channels":
+                click.echo(f"{key:<8} {value}", err=True)
+    click.echo(" ".join(str(p) for p in written))
+
+
+def _camera(scene, name, eye, target, fov, width, height, pixel_size):
+    import numpy as np
+
+    from cityshade.raster import camera as cams
+
+    if eye is not None:
+        return cams.perspective(np.asarray(eye) - scene.origin_m, np.asarray(target) - scene.origin_m,
+                                vfov_deg=fov, width_px=width, height_px=height, scene=scene)
+    if name == "overview":
+        return cams.overview(scene, width, height)
+    if name == "map":
+        return cams.map_view(scene, pixel_size)
+    return cams.preset(name, scene, width, height)

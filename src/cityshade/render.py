@@ -1,0 +1,175 @@
+"""One frame: city time + sun + camera → G-buffer → shadow technique → shading → outputs.
+
+The library entry points are :func:`render_frame` (arrays in, arrays out) and
+:func:`write_frame` (EXR, PNG, shadow mask, georeferenced mask). The CLI (`cli/render.py`) only
+parses options into these calls.
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from cityshade import __version__
+from cityshade.errors import UsageError
+
+#: Mask values of the 8-bit shadow mask (DESIGN §14: "no surface" is neither lit nor shadow).
+MASK_LIT, MASK_SHADOW, MASK_NODATA = 255, 0, 128
+
+
+@dataclass
+class Frame:
+    """A rendered frame and everything needed to write or inspect it."""
+
+    camera: Any
+    gbuffer: Any
+    surfaces: Any
+    lit: np.ndarray                 # (H, W) float32, 0 shadow … 1 sun; 0 where no surface
+    rgb: np.ndarray                 # (H, W, 3) float32 linear
+    sun: Any
+    t_days: float
+    technique: str
+    timings_s: dict[str, float] = field(default_factory=dict)
+    diagnostics: dict[str, Any] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
+
+
+def city_time_range(scene) -> tuple[float, float] | None:
+    """(first, last) finite validity bound of the model in days, None without dates."""
+    b = np.asarray(scene.obj_t_begin_days)
+    e = np.asarray(scene.obj_t_end_days)
+    finite = np.concatenate([b[np.isfinite(b)], e[np.isfinite(e)]])
+    return (float(finite.min()), float(finite.max())) if finite.size else None
+
+
+def render_frame(scene, camera, t_days: float, sun, technique: str = "raytrace",
+                 options: dict | None = None, sky: bool = True) -> Frame:
+    """Render one frame.
+
+    Parameters
+    ----------
+    scene : Scene
+        With its kd-tree (loaded from a .cityshade file).
+    camera : cityshade.raster.camera.Camera
+    t_days : float
+        City time, days since 1970-01-01 UTC.
+    sun : cityshade.sun.SunPosition
+    technique : str
+        A name of the shadow registry (:func:`cityshade.shadows.get_technique`).
+    """
+    from cityshade.raster.gbuffer import resolve
+    from cityshade.raster.rasterize import rasterize
+    from cityshade.shading import shade
+    from cityshade.shadows import ShadowContext, get_technique
+
+    if scene.kdtree is None:
+        raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
+    tech = get_technique(technique)
+    timings: dict[str, float] = {}
+    warnings: list[str] = []
+    if not sun.above_horizon:
+        warnings.append(f"the sun is at or below the horizon (elevation {sun.elevation_deg:g}°): "
+                        f"everything is in shadow")
+    rng = city_time_range(scene)
+    if rng is not None and math.isfinite(t_days) and not rng[0] <= t_days <= rng[1]:
+        from cityshade.citygml.temporal import days_to_iso
+
+        warnings.append(f"the date is outside the model's time range "
+                        f"({days_to_iso(rng[0])} … {days_to_iso(rng[1])})")
+    t = time.perf_counter()
+    gbuf = rasterize(scene, camera, t_days)
+    timings["gbuffer_s"] = time.perf_counter() - t
+    t = time.perf_counter()
+    surfaces = resolve(scene, gbuf)
+    timings["resolve_s"] = time.perf_counter() - t
+    t = time.perf_counter()
+    result = tech.run(ShadowContext(scene=scene, surfaces=surfaces, camera=camera, sun=sun,
+                                    t_days=t_days, options=options or {}))
+    timings["shadow_s"] = time.perf_counter() - t
+    lit = np.where(surfaces.valid, np.nan_to_num(result.lit, nan=0.0), 0.0).astype(np.float32)
+    t = time.perf_counter()
+    rgb = shade(scene, surfaces, camera, lit, sun.direction, sky=sky)
+    timings["shade_s"] = time.perf_counter() - t
+    diagnostics = dict(result.diagnostics)
+    diagnostics["gbuffer"] = gbuf.stats
+    return Frame(camera=camera, gbuffer=gbuf, surfaces=surfaces, lit=lit, rgb=rgb, sun=sun,
+                 t_days=t_days, technique=technique, timings_s=timings,
+                 diagnostics=diagnostics, warnings=warnings)
+
+
+def shadow_mask(frame: Frame) -> np.ndarray:
+    """(H, W) uint8: 255 sunlit, 0 shadow, 128 no surface."""
+    mask = np.where(frame.lit >= 0.5, MASK_LIT, MASK_SHADOW).astype(np.uint8)
+    mask[~frame.surfaces.valid] = MASK_NODATA
+    return mask
+
+
+def frame_metadata(frame: Frame, scene, date_text: str) -> dict[str, Any]:
+    """Provenance recorded in every output (DESIGN §13.10)."""
+    from cityshade.citygml.temporal import days_to_iso
+
+    header = scene.header or {}
+    meta = {
+        "cityshade:version": __version__,
+        "cityshade:date": date_text,
+        "cityshade:city_time": days_to_iso(frame.t_days) if math.isfinite(frame.t_days) else "any",
+        "cityshade:sun_azimuth_true_deg": frame.sun.azimuth_true_deg,
+        "cityshade:sun_azimuth_grid_deg": frame.sun.azimuth_grid_deg,
+        "cityshade:sun_elevation_deg": frame.sun.elevation_deg,
+        "cityshade:meridian_convergence_deg": frame.sun.convergence_deg,
+        "cityshade:sun_source": frame.sun.source,
+        "cityshade:technique": frame.technique,
+        "cityshade:camera": frame.camera.kind,
+        "cityshade:source_sha256": header.get("source", {}).get("sha256", ""),
+        "cityshade:crs": scene.crs.name,
+        "cityshade:crs_epsg": scene.crs.horizontal_epsg or 0,
+        "cityshade:origin_m": " ".join(f"{v:.3f}" for v in scene.origin_m),
+        "cityshade:timings_s": " ".join(f"{k}={v:.4f}" for k, v in frame.timings_s.items()),
+    }
+    if frame.sun.note:
+        meta["cityshade:sun_note"] = frame.sun.note
+    return meta
+
+
+def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
+                png: Path | None = None, mask: Path | None = None,
+                georef: Path | None = None) -> list[Path]:
+    """Write the requested outputs; returns the paths written."""
+    from cityshade import imageio
+    from cityshade.shading import to_srgb8
+
+    meta = frame_metadata(frame, scene, date_text)
+    written = []
+    s = frame.surfaces
+    if exr is not None:
+        normal = np.where(s.valid[..., None], s.normal, 0.0).astype(np.float32)
+        channels = {
+            "R": frame.rgb[..., 0], "G": frame.rgb[..., 1], "B": frame.rgb[..., 2],
+            "shadow": frame.lit,
+            "Z": np.where(s.valid, frame.gbuffer.depth, np.inf).astype(np.float32),
+            "N.x": normal[..., 0], "N.y": normal[..., 1], "N.z": normal[..., 2],
+            "primid": frame.gbuffer.prim_id, "objid": s.obj_id,
+        }
+        for name, values in frame.diagnostics.get("channels", {}).items():
+            channels[name] = values
+        imageio.write_exr(exr, channels, meta)
+        written.append(Path(exr))
+    if png is not None:
+        imageio.write_image(png, to_srgb8(frame.rgb), attributes=meta)
+        written.append(Path(png))
+    mask_px = shadow_mask(frame)
+    if mask is not None:
+        imageio.write_mask_png(mask, mask_px, attributes=meta)
+        written.append(Path(mask))
+    if georef is not None:
+        if frame.camera.kind != "map":
+            raise UsageError("a georeferenced mask needs the map view (--camera map)")
+        epsg = scene.crs.horizontal_epsg
+        imageio.write_georeferenced(georef, mask_px, frame.camera.geotransform(scene.origin_m),
+                                    epsg=epsg, nodata=MASK_NODATA)
+        written.append(Path(georef))
+    return written
