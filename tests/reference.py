@@ -144,8 +144,8 @@ def reference_ray_hits(vertices, triangles, t_begin_days, t_end_days, origin, di
         u = np.einsum("ij,ij->i", s, p) / det
         w = (q @ d) / det
         t = np.einsum("ij,ij->i", e2, q) / det
-    valid = (np.asarray(t_begin_days) <= t_days) & (t_days < np.asarray(t_end_days))
-    ok = (det != 0) & (u >= 0) & (w >= 0) & (u + w <= 1) & (t >= 0) & (t <= tmax) & valid
+        valid = (np.asarray(t_begin_days) <= t_days) & (t_days < np.asarray(t_end_days))
+        ok = (det != 0) & (u >= 0) & (w >= 0) & (u + w <= 1) & (t >= 0) & (t <= tmax) & valid
     ids = np.flatnonzero(ok)
     return t[ids], ids
 
