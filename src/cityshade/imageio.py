@@ -12,11 +12,16 @@ ways OpenImageIO loses data without an error:
 Files are written to a temporary name in the destination folder and renamed into place, so an
 error never leaves a half-written image behind.
 
+On top of that: :func:`write_exr` (named channels, float32 and integer ids, provenance header),
+:func:`write_png_rgb`, :func:`write_mask_png` (255 sunlit, 0 shadow, 128 nodata) and
+:func:`write_georeferenced` (GeoTIFF tags, world file, ``.prj``) for map views.
+
 Conventions: arrays are ``(H, W, C)``, row 0 is the TOP row of the picture (image order, not map
 order), channels last.
 """
 from __future__ import annotations
 
+import math
 import os
 import uuid
 from pathlib import Path
@@ -26,7 +31,9 @@ import numpy as np
 
 from cityshade.errors import CityshadeError
 
-__all__ = ["ImageIOError", "write_image", "read_image", "FORMAT_DTYPES"]
+__all__ = ["ImageIOError", "write_image", "read_image", "FORMAT_DTYPES", "write_exr", "read_exr",
+           "write_png_rgb", "write_mask_png", "mask_from_lit", "write_georeferenced",
+           "world_file_lines", "MASK_LIT", "MASK_SHADOW", "MASK_NODATA"]
 
 
 class ImageIOError(CityshadeError):
@@ -116,6 +123,63 @@ def _set_attribute(spec, path: Path, name: str, value) -> None:
                            f"{type(value).__name__}", path=str(path))
 
 
+def _write_atomically(path: Path, parts: Sequence[tuple], finish=None) -> None:
+    """Write ``parts`` [(ImageSpec, pixels), ...] (several = a multi-part EXR) to ``path``.
+
+    The image goes to a unique temporary name next to the destination (same file system, so the
+    rename is atomic; the name keeps the extension because OpenImageIO picks the format from
+    it; made unique rather than created with mkstemp so the file gets the usual umask
+    permissions). ``finish(tmp_path)``, if given, edits the complete temporary file before the
+    rename. Any failure removes the temporary file.
+    """
+    import OpenImageIO as oiio  # heavy import only when an image is written (DESIGN §2)
+
+    ext = path.suffix.lower()
+    folder = path.parent
+    if not folder.is_dir():
+        raise ImageIOError(f"cannot write image: folder {folder} does not exist",
+                           path=str(path))
+    tmp_name = str(folder / f".{path.name}.{os.getpid()}.{uuid.uuid4().hex}.tmp{ext}")
+    try:
+        out = oiio.ImageOutput.create(tmp_name)
+        if out is None:
+            raise ImageIOError(f"OpenImageIO has no writer for {ext}: {oiio.geterror()}",
+                               path=str(path))
+        if len(parts) > 1 and not out.supports("multiimage"):
+            raise ImageIOError(f"{ext} cannot hold several parts", path=str(path))
+        specs = [spec for spec, _ in parts]
+        ok, error = True, ""
+        for index, (spec, pixels) in enumerate(parts):
+            if index == 0:
+                opened = out.open(tmp_name, specs) if len(parts) > 1 else out.open(tmp_name, spec)
+            else:
+                opened = out.open(tmp_name, spec, "AppendSubimage")
+            if not opened:
+                raise ImageIOError(f"cannot write image: {out.geterror() or oiio.geterror()}",
+                                   path=str(path))
+            ok = out.write_image(pixels)
+            if not ok:
+                error = out.geterror()
+                break
+        if not out.close() and ok:
+            ok, error = False, out.geterror()
+        if not ok:
+            raise ImageIOError(f"cannot write image: {error or 'OpenImageIO failed'}",
+                               path=str(path))
+        if finish is not None:
+            finish(tmp_name)
+        try:
+            os.replace(tmp_name, path)
+        except OSError as exc:
+            raise ImageIOError(f"cannot write image: {exc.strerror}", path=str(path)) from None
+    except BaseException:
+        try:
+            os.unlink(tmp_name)
+        except FileNotFoundError:
+            pass
+        raise
+
+
 def write_image(path: str | os.PathLike, pixels: np.ndarray, *,
                 attributes: Mapping[str, str | float | int] | None = None,
                 channel_names: Sequence[str] | None = None) -> None:
@@ -142,13 +206,18 @@ def write_image(path: str | os.PathLike, pixels: np.ndarray, *,
         Bad shape, type, channel count, names or attributes; the folder does not exist or is
         not writable; OpenImageIO fails. No file is left behind in any of these cases.
     """
-    import OpenImageIO as oiio  # heavy import only when an image is written (DESIGN §2)
-
     path = Path(path)
     ext = _extension(path)
     pixels = _checked_pixels(path, ext, pixels)
-    height, width, channels = pixels.shape
+    spec = _make_spec(path, ext, pixels, attributes, channel_names)
+    _write_atomically(path, [(spec, pixels)])
 
+
+def _make_spec(path: Path, ext: str, pixels: np.ndarray, attributes, channel_names):
+    """The ImageSpec of checked ``pixels`` with channel names and attributes."""
+    import OpenImageIO as oiio  # heavy import only when an image is written (DESIGN §2)
+
+    height, width, channels = pixels.shape
     spec = oiio.ImageSpec(width, height, channels, _OIIO_TYPE_NAMES[pixels.dtype])
     if channel_names is not None:
         names = tuple(channel_names)
@@ -165,40 +234,7 @@ def write_image(path: str | os.PathLike, pixels: np.ndarray, *,
     spec.attribute("oiio:UnassociatedAlpha", 1)
     for name, value in (attributes or {}).items():
         _set_attribute(spec, path, name, value)
-
-    # Write next to the destination (same file system, so the rename is atomic); the temporary
-    # name keeps the extension because OpenImageIO picks the format from it. The name is made
-    # unique rather than created with mkstemp so the file gets the usual (umask) permissions.
-    folder = path.parent
-    if not folder.is_dir():
-        raise ImageIOError(f"cannot write image: folder {folder} does not exist",
-                           path=str(path))
-    tmp_name = str(folder / f".{path.name}.{os.getpid()}.{uuid.uuid4().hex}.tmp{ext}")
-    try:
-        out = oiio.ImageOutput.create(tmp_name)
-        if out is None:
-            raise ImageIOError(f"OpenImageIO has no writer for {ext}: {oiio.geterror()}",
-                               path=str(path))
-        if not out.open(tmp_name, spec):
-            raise ImageIOError(f"cannot write image: {out.geterror() or oiio.geterror()}",
-                               path=str(path))
-        ok = out.write_image(pixels)
-        error = out.geterror() if not ok else ""
-        if not out.close() and ok:
-            ok, error = False, out.geterror()
-        if not ok:
-            raise ImageIOError(f"cannot write image: {error or 'OpenImageIO failed'}",
-                               path=str(path))
-        try:
-            os.replace(tmp_name, path)
-        except OSError as exc:
-            raise ImageIOError(f"cannot write image: {exc.strerror}", path=str(path)) from None
-    except BaseException:
-        try:
-            os.unlink(tmp_name)
-        except FileNotFoundError:
-            pass
-        raise
+    return spec
 
 
 def read_image(path: str | os.PathLike) -> tuple[np.ndarray, dict]:
@@ -259,3 +295,454 @@ def read_image(path: str | os.PathLike) -> tuple[np.ndarray, dict]:
             names = wanted
     attributes["channel_names"] = names
     return pixels, attributes
+
+
+# --- EXR with named channels -----------------------------------------------------------------
+
+#: Integer values float32 holds exactly: every integer of magnitude up to 2**24.
+_FLOAT32_EXACT_INT = 2 ** 24
+#: Attribute listing the channels that were integers (stored as exact float32 values).
+_INT_CHANNELS_ATTRIBUTE = "cityshade:intChannels"
+#: uint32 value that stands for -1 ("none") in the uint32 part of an EXR.
+_UINT32_NONE = 0xFFFFFFFF
+
+
+def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
+              attributes: Mapping[str, str | float | int] | None = None) -> None:
+    """Write named (H, W) channels to an OpenEXR file atomically.
+
+    Float channels are stored as float32 (NaN and ±inf kept). Integer and bool channels (ids,
+    -1 = none) are stored as float32 too when every value is an integer of magnitude
+    ≤ 2**24, which float32 holds exactly (scenes up to 16.7 M triangles); their names are
+    recorded in the header attribute ``cityshade:intChannels``. Larger ids go into a second
+    EXR part named ``ids`` as uint32, with -1 stored as 0xFFFFFFFF. :func:`read_exr` undoes
+    both.
+
+    Parameters
+    ----------
+    path : str or path-like
+        Destination ending in ``.exr``.
+    channels : mapping of str to numpy.ndarray, each (H, W)
+        E.g. ``R, G, B, shadow, Z, N.x, N.y, N.z, primid, objid``; order is kept on reading.
+    attributes : mapping of str to str, int or float, optional
+        Header metadata (provenance: date, sun, technique, CRS, timings...), in every part.
+
+    Raises
+    ------
+    ImageIOError
+        Wrong extension, no channels, shapes that differ or are not 2-D, unsupported types,
+        integers outside -1 … 2**32 - 2, bad names or attributes, or a write failure.
+    """
+    path = Path(path)
+    if path.suffix.lower() != ".exr":
+        raise ImageIOError(f"write_exr needs a .exr path, not {path.suffix or '(none)'!r}",
+                           path=str(path))
+    if not channels:
+        raise ImageIOError("write_exr needs at least one channel", path=str(path))
+    shape = None
+    float_names, float_planes, uint_names, uint_planes = [], [], [], []
+    int_names = []
+    for name, values in channels.items():
+        if not isinstance(name, str) or not name or "," in name:
+            raise ImageIOError(f"channel names must be non-empty strings without commas, "
+                               f"not {name!r}", path=str(path))
+        values = np.asarray(values)
+        if values.ndim != 2 or 0 in values.shape:
+            raise ImageIOError(f"channel {name!r} must be a non-empty (H, W) array, not "
+                               f"{values.shape}", path=str(path))
+        if shape is None:
+            shape = values.shape
+        elif values.shape != shape:
+            raise ImageIOError(f"channel {name!r} has shape {values.shape}, others {shape}",
+                               path=str(path))
+        kind = values.dtype.kind
+        if kind == "f":
+            float_names.append(name)
+            float_planes.append(values.astype(np.float32))
+        elif kind in "biu":
+            wide = values.astype(np.int64)
+            lo, hi = int(wide.min()), int(wide.max())
+            if lo >= -_FLOAT32_EXACT_INT and hi <= _FLOAT32_EXACT_INT:
+                float_names.append(name)
+                float_planes.append(wide.astype(np.float32))
+                int_names.append(name)
+            elif lo >= -1 and hi < _UINT32_NONE:
+                uint_names.append(name)
+                uint_planes.append(np.where(wide < 0, _UINT32_NONE, wide).astype(np.uint32))
+            else:
+                raise ImageIOError(f"channel {name!r} has values {lo} … {hi}; EXR ids must lie "
+                                   f"in -1 … {_UINT32_NONE - 1}", path=str(path))
+        else:
+            raise ImageIOError(f"channel {name!r} has type {values.dtype}; EXR stores floats "
+                               f"and integer ids", path=str(path))
+    attrs = dict(attributes or {})
+    if int_names:
+        attrs[_INT_CHANNELS_ATTRIBUTE] = ",".join(int_names)
+    parts = []
+    for part_name, names, planes in (("data", float_names, float_planes),
+                                     ("ids", uint_names, uint_planes)):
+        if not names:
+            continue
+        if len(set(names)) != len(names):
+            raise ImageIOError(f"channel names must be distinct: {names!r}", path=str(path))
+        pixels = np.ascontiguousarray(np.stack(planes, axis=-1))
+        part_attrs = dict(attrs)
+        part_attrs["name"] = part_name
+        if pixels.dtype == np.uint32:
+            spec = _make_uint32_spec(path, pixels, part_attrs, names)
+        else:
+            spec = _make_spec(path, ".exr", pixels, part_attrs, names)
+        parts.append((spec, pixels))
+    _write_atomically(path, parts)
+
+
+def _make_uint32_spec(path: Path, pixels: np.ndarray, attributes, names):
+    """ImageSpec of a uint32 EXR part (not a type :func:`write_image` accepts)."""
+    import OpenImageIO as oiio
+
+    height, width, channels = pixels.shape
+    spec = oiio.ImageSpec(width, height, channels, "uint")
+    spec.channelnames = tuple(names)
+    _set_attribute(spec, path, _CHANNEL_ORDER_ATTRIBUTE, ",".join(names))
+    for name, value in attributes.items():
+        _set_attribute(spec, path, name, value)
+    return spec
+
+
+def read_exr(path: str | os.PathLike) -> tuple[dict[str, np.ndarray], dict]:
+    """Read every channel of every part of an EXR written by :func:`write_exr`.
+
+    Returns
+    -------
+    channels : dict of str to numpy.ndarray, each (H, W)
+        In the written order. Float channels float32 (half → float32); channels written as
+        integers are int64 (-1 = none); other uint32 channels uint32.
+    attributes : dict
+        Header of the first part, plus ``"channel_names"`` (tuple, written order).
+
+    Raises
+    ------
+    ImageIOError
+        Missing or unreadable file.
+    """
+    import OpenImageIO as oiio
+
+    path = Path(path)
+    if not path.is_file():
+        raise ImageIOError("cannot read image: no such file", path=str(path))
+    inp = oiio.ImageInput.open(str(path))
+    if inp is None:
+        raise ImageIOError(f"cannot read image: {oiio.geterror() or 'unknown format'}",
+                           path=str(path))
+    channels: dict[str, np.ndarray] = {}
+    attributes: dict = {}
+    try:
+        part = 0
+        while inp.seek_subimage(part, 0):
+            spec = inp.spec()
+            attrs = {p.name: p.value for p in spec.extra_attribs}
+            if part == 0:
+                attributes = attrs
+            names = tuple(spec.channelnames)
+            formats = [str(f) for f in spec.channelformats] or [str(spec.format)] * len(names)
+            int_names = set(str(attrs.get(_INT_CHANNELS_ATTRIBUTE, "")).split(","))
+            order = attrs.get(_CHANNEL_ORDER_ATTRIBUTE)
+            wanted = tuple(order.split(",")) if isinstance(order, str) else names
+            if sorted(wanted) != sorted(names):
+                wanted = names
+            for name in wanted:
+                c = names.index(name)
+                fmt = formats[c]
+                # Read one channel in its stored type (a mixed read would go through float).
+                plane = inp.read_image(part, 0, c, c + 1, "uint" if fmt == "uint" else "float")
+                if plane is None:
+                    raise ImageIOError(f"cannot read image: {inp.geterror() or 'read failed'}",
+                                       path=str(path))
+                plane = np.asarray(plane).reshape(spec.height, spec.width)
+                if fmt == "uint" and attrs.get("name") == "ids":
+                    wide = plane.astype(np.int64)
+                    plane = np.where(wide == _UINT32_NONE, -1, wide)
+                elif name in int_names:
+                    plane = plane.astype(np.int64)
+                channels[name] = plane
+            part += 1
+    finally:
+        inp.close()
+    attributes["channel_names"] = tuple(channels)
+    return channels, attributes
+
+
+# --- PNG beauty image and shadow masks -------------------------------------------------------
+
+#: 8-bit shadow-mask values (DESIGN §14): nodata is distinct from both lit and shadow.
+MASK_LIT, MASK_SHADOW, MASK_NODATA = 255, 0, 128
+
+
+def write_png_rgb(path: str | os.PathLike, rgb8: np.ndarray,
+                  attributes: Mapping[str, str | float | int] | None = None) -> None:
+    """Write an 8-bit sRGB picture, shape (H, W, 3) uint8, row 0 at the top, as PNG."""
+    path = Path(path)
+    rgb8 = np.asarray(rgb8)
+    if path.suffix.lower() != ".png":
+        raise ImageIOError(f"write_png_rgb needs a .png path", path=str(path))
+    if rgb8.ndim != 3 or rgb8.shape[2] != 3 or rgb8.dtype != np.uint8:
+        raise ImageIOError(f"an RGB picture must be (H, W, 3) uint8, not {rgb8.shape} "
+                           f"{rgb8.dtype}", path=str(path))
+    write_image(path, rgb8, attributes=attributes)
+
+
+def mask_from_lit(lit_fraction: np.ndarray, valid: np.ndarray | None = None, *,
+                  threshold: float = 0.5) -> np.ndarray:
+    """8-bit mask of a lit fraction: 255 where lit ≥ ``threshold``, 0 below, 128 no surface.
+
+    NaN lit fractions and pixels where ``valid`` is False are nodata (128).
+    """
+    lit = np.asarray(lit_fraction, dtype=np.float64)
+    mask = np.where(lit >= threshold, MASK_LIT, MASK_SHADOW).astype(np.uint8)
+    nodata = np.isnan(lit)
+    if valid is not None:
+        nodata |= ~np.asarray(valid, bool)
+    mask[nodata] = MASK_NODATA
+    return mask
+
+
+def _checked_mask(path: Path, mask: np.ndarray) -> np.ndarray:
+    mask = np.asarray(mask)
+    if mask.dtype == np.bool_:
+        mask = np.where(mask, MASK_LIT, MASK_SHADOW).astype(np.uint8)
+    if mask.ndim != 2 or mask.dtype != np.uint8:
+        raise ImageIOError(f"a shadow mask must be (H, W) uint8 or bool, not {mask.shape} "
+                           f"{mask.dtype} (use mask_from_lit for lit fractions)", path=str(path))
+    bad = ~np.isin(mask, (MASK_LIT, MASK_SHADOW, MASK_NODATA))
+    if bad.any():
+        raise ImageIOError(f"a shadow mask holds only 255 (lit), 0 (shadow) and 128 (nodata); "
+                           f"found {int(mask[bad][0])}", path=str(path))
+    return mask
+
+
+def write_mask_png(path: str | os.PathLike, mask: np.ndarray,
+                   attributes: Mapping[str, str | float | int] | None = None) -> None:
+    """Write a shadow mask as an 8-bit grey PNG: 255 sunlit, 0 shadow, 128 no surface/nodata.
+
+    Parameters
+    ----------
+    mask : numpy.ndarray, shape (H, W)
+        uint8 with only those three values, or bool (True = sunlit).
+    """
+    path = Path(path)
+    if path.suffix.lower() != ".png":
+        raise ImageIOError("write_mask_png needs a .png path", path=str(path))
+    write_image(path, _checked_mask(path, mask), attributes=attributes)
+
+
+# --- georeferenced rasters -------------------------------------------------------------------
+
+def world_file_lines(geotransform: Sequence[float]) -> list[str]:
+    """The six lines of an ESRI world file for a GDAL geotransform.
+
+    GDAL's geotransform ``(x0, a, b, y0, d, e)`` maps pixel CORNER coordinates
+    ``(col, row)`` to ``x = x0 + a·col + b·row``, ``y = y0 + d·col + e·row``; a world file
+    gives ``A, D, B, E`` and the CENTRE ``(C, F)`` of the upper-left pixel, i.e. the map
+    position of ``(col, row) = (0.5, 0.5)``.
+    """
+    x0, a, b, y0, d, e = (float(v) for v in geotransform)
+    c = x0 + 0.5 * a + 0.5 * b
+    f = y0 + 0.5 * d + 0.5 * e
+    # repr is the shortest text that reads back to the same double: no precision lost.
+    return [repr(v) for v in (a, d, b, e, c, f)]
+
+
+def _crs_of(crs_wkt, epsg):
+    """A pyproj CRS from a WKT string or an EPSG code; None if neither is given."""
+    if crs_wkt is None and epsg is None:
+        return None
+    from pyproj import CRS
+    from pyproj.exceptions import CRSError as ProjCRSError
+
+    from cityshade.errors import CRSError
+
+    try:
+        return CRS.from_epsg(int(epsg)) if epsg is not None else CRS.from_user_input(crs_wkt)
+    except (ProjCRSError, ValueError, TypeError) as exc:
+        raise CRSError(f"cannot georeference with CRS {epsg or crs_wkt!r}: {exc}") from None
+
+
+def _write_text_atomically(path: Path, text: str) -> None:
+    tmp = path.parent / f".{path.name}.{os.getpid()}.{uuid.uuid4().hex}.tmp"
+    try:
+        tmp.write_text(text, encoding="ascii", newline="\n")
+        os.replace(tmp, path)
+    except OSError as exc:
+        try:
+            tmp.unlink()
+        except FileNotFoundError:
+            pass
+        raise ImageIOError(f"cannot write file: {exc.strerror}", path=str(path)) from None
+
+
+# TIFF field types and GeoTIFF tags/keys (GeoTIFF 1.1, OGC 19-008r4).
+_TIFF_ASCII, _TIFF_SHORT, _TIFF_LONG, _TIFF_DOUBLE = 2, 3, 4, 12
+_TIFF_TYPE_SIZE = {1: 1, 2: 1, 3: 2, 4: 4, 5: 8, 6: 1, 7: 1, 8: 2, 9: 4, 10: 8, 11: 4, 12: 8,
+                   16: 8, 17: 8, 18: 8}
+_TAG_MODEL_PIXEL_SCALE = 33550
+_TAG_MODEL_TIEPOINT = 33922
+_TAG_MODEL_TRANSFORMATION = 34264
+_TAG_GEO_KEY_DIRECTORY = 34735
+_TAG_GDAL_NODATA = 42113
+_KEY_MODEL_TYPE, _KEY_RASTER_TYPE = 1024, 1025
+_KEY_GEOGRAPHIC_TYPE, _KEY_PROJECTED_CS_TYPE, _KEY_VERTICAL_CS_TYPE = 2048, 3072, 4096
+_MODEL_PROJECTED, _MODEL_GEOGRAPHIC = 1, 2
+_RASTER_PIXEL_IS_AREA = 1
+
+
+def _geotiff_tags(geotransform, crs, nodata) -> list[tuple[int, int, bytes | tuple]]:
+    """GeoTIFF tags (tag, type, values) for a geotransform, an optional CRS and nodata."""
+    x0, a, b, y0, d, e = (float(v) for v in geotransform)
+    tags: list[tuple[int, int, tuple | bytes]] = []
+    if b == 0.0 and d == 0.0:
+        # North-up: pixel scale + tie point of the upper-left corner (raster (0,0) ↔ model).
+        tags.append((_TAG_MODEL_PIXEL_SCALE, _TIFF_DOUBLE, (a, -e, 0.0)))
+        tags.append((_TAG_MODEL_TIEPOINT, _TIFF_DOUBLE, (0.0, 0.0, 0.0, x0, y0, 0.0)))
+    else:
+        tags.append((_TAG_MODEL_TRANSFORMATION, _TIFF_DOUBLE,
+                     (a, b, 0.0, x0, d, e, 0.0, y0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)))
+    keys = [(_KEY_RASTER_TYPE, _RASTER_PIXEL_IS_AREA)]
+    if crs is not None:
+        horizontal = crs.sub_crs_list[0] if crs.is_compound else crs
+        code = horizontal.to_epsg()
+        if code is not None and horizontal.is_projected:
+            keys += [(_KEY_MODEL_TYPE, _MODEL_PROJECTED), (_KEY_PROJECTED_CS_TYPE, code)]
+        elif code is not None and horizontal.is_geographic:
+            keys += [(_KEY_MODEL_TYPE, _MODEL_GEOGRAPHIC), (_KEY_GEOGRAPHIC_TYPE, code)]
+        if crs.is_compound and len(crs.sub_crs_list) > 1:
+            vcode = crs.sub_crs_list[1].to_epsg()
+            if vcode is not None:
+                keys.append((_KEY_VERTICAL_CS_TYPE, vcode))
+    keys.sort()
+    directory = [1, 1, 0, len(keys)]
+    for key, value in keys:
+        directory += [key, 0, 1, value]
+    tags.append((_TAG_GEO_KEY_DIRECTORY, _TIFF_SHORT, tuple(directory)))
+    if nodata is not None:
+        tags.append((_TAG_GDAL_NODATA, _TIFF_ASCII, repr(nodata).encode("ascii") + b"\0"))
+    return tags
+
+
+def _add_tiff_tags(tiff_path: str, new_tags) -> None:
+    """Add tags to the first IFD of a classic TIFF by writing a new IFD at the end of the file.
+
+    The old IFD stays in place unreferenced; the entries' existing data offsets remain valid
+    because nothing before the end of the file moves.
+    """
+    import struct
+
+    with open(tiff_path, "r+b") as fh:
+        data = fh.read()
+        order = {b"II": "<", b"MM": ">"}.get(data[:2])
+        if order is None or struct.unpack(order + "H", data[2:4])[0] != 42:
+            raise ImageIOError("cannot georeference: not a classic TIFF", path=tiff_path)
+        ifd = struct.unpack(order + "I", data[4:8])[0]
+        count = struct.unpack(order + "H", data[ifd:ifd + 2])[0]
+        entries = {}
+        for k in range(count):
+            raw = data[ifd + 2 + 12 * k: ifd + 14 + 12 * k]
+            entries[struct.unpack(order + "H", raw[:2])[0]] = raw
+        next_ifd = data[ifd + 2 + 12 * count: ifd + 6 + 12 * count]
+        for tag, _, _ in new_tags:
+            entries.pop(tag, None)
+        # Layout at the end: [new IFD][tag data...], word-aligned.
+        end = len(data) + (len(data) % 2)
+        n_entries = len(entries) + len(new_tags)
+        data_at = end + 2 + 12 * n_entries + 4
+        blobs = []
+        for tag, ftype, values in new_tags:
+            if ftype == _TIFF_ASCII:
+                payload, n = values, len(values)
+            else:
+                fmt = {_TIFF_SHORT: "H", _TIFF_LONG: "I", _TIFF_DOUBLE: "d"}[ftype]
+                payload, n = struct.pack(order + fmt * len(values), *values), len(values)
+            head = struct.pack(order + "HHI", tag, ftype, n)
+            if len(payload) <= 4:
+                entries[tag] = head + payload.ljust(4, b"\0")
+            else:
+                entries[tag] = head + struct.pack(order + "I", data_at)
+                blobs.append(payload + (b"\0" if len(payload) % 2 else b""))
+                data_at += len(blobs[-1])
+        ifd_bytes = struct.pack(order + "H", n_entries)
+        ifd_bytes += b"".join(entries[t] for t in sorted(entries)) + next_ifd
+        fh.seek(len(data))
+        fh.write(b"\0" * (end - len(data)) + ifd_bytes + b"".join(blobs))
+        fh.seek(4)
+        fh.write(struct.pack(order + "I", end))
+
+
+def write_georeferenced(path: str | os.PathLike, array: np.ndarray,
+                        geotransform: Sequence[float], crs_wkt: str | None = None, *,
+                        epsg: int | None = None, nodata: float | int | None = None,
+                        attributes: Mapping[str, str | float | int] | None = None) -> list[Path]:
+    """Write a raster that GIS software places exactly: GeoTIFF + world file + ``.prj``.
+
+    Writes ``path`` (a TIFF with GeoTIFF tags: pixel scale and tie point, or a transformation
+    matrix when rotated; GeoKeys for an EPSG-coded CRS; raster type PixelIsArea; GDAL's nodata
+    tag), ``path.with_suffix(".tfw")`` (the world file: pixel-CENTRE convention, converted from
+    the corner-based geotransform, see :func:`world_file_lines`) and, with a CRS,
+    ``path.with_suffix(".prj")`` (ESRI WKT1, what QGIS and ArcGIS expect next to a world file).
+    Each file is written to a temporary name and renamed.
+
+    Parameters
+    ----------
+    path : str or path-like
+        ``.tif`` or ``.tiff``.
+    array : numpy.ndarray, shape (H, W) or (H, W, C)
+        Row 0 = north edge (top); uint8, uint16 or float32 (NaN as nodata for floats).
+    geotransform : sequence of 6 float
+        GDAL convention: ``(x_ul, pixel_w, row_rot, y_ul, col_rot, -pixel_h)``, the UPPER-LEFT
+        CORNER of pixel (0, 0), in CRS units.
+    crs_wkt : str, optional
+        The CRS as WKT (or anything pyproj reads); ``epsg`` wins if both are given.
+    epsg : int, optional
+    nodata : number, optional
+        Value meaning "no surface" (e.g. 128 in a shadow mask), written as GDAL_NODATA.
+    attributes : mapping, optional
+        TIFF header metadata.
+
+    Returns
+    -------
+    list of pathlib.Path
+        The files written.
+
+    Raises
+    ------
+    ImageIOError
+        Bad extension, geotransform, array or a write failure.
+    cityshade.errors.CRSError
+        A CRS pyproj does not know.
+    """
+    path = Path(path)
+    if path.suffix.lower() not in (".tif", ".tiff"):
+        raise ImageIOError("a georeferenced raster must be a .tif/.tiff", path=str(path))
+    gt = tuple(float(v) for v in geotransform)
+    if len(gt) != 6 or not all(math.isfinite(v) for v in gt):
+        raise ImageIOError(f"geotransform must be 6 finite numbers, not {geotransform!r}",
+                           path=str(path))
+    if gt[1] * gt[5] - gt[2] * gt[4] == 0.0:
+        raise ImageIOError(f"geotransform {gt!r} is singular (zero pixel size)", path=str(path))
+    if nodata is not None and not isinstance(nodata, (int, float, np.integer, np.floating)):
+        raise ImageIOError(f"nodata must be a number, not {nodata!r}", path=str(path))
+    crs = _crs_of(crs_wkt, epsg)
+    ext = _extension(path)
+    pixels = _checked_pixels(path, ext, array)
+    spec = _make_spec(path, ext, pixels, attributes, None)
+    nodata_value = None if nodata is None else (float(nodata) if isinstance(
+        nodata, (float, np.floating)) else int(nodata))
+    tags = _geotiff_tags(gt, crs, nodata_value)
+    _write_atomically(path, [(spec, pixels)], finish=lambda tmp: _add_tiff_tags(tmp, tags))
+    written = [path]
+    world = path.with_suffix(".tfw")
+    _write_text_atomically(world, "\n".join(world_file_lines(gt)) + "\n")
+    written.append(world)
+    if crs is not None:
+        prj = path.with_suffix(".prj")
+        _write_text_atomically(prj, crs.to_wkt("WKT1_ESRI") + "\n")
+        written.append(prj)
+    return written
