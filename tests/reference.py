@@ -200,3 +200,70 @@ def reference_kdtree_triangles_at_time(tree, t_days):
         else:
             todo.extend([node + 1, int(child[node])])
     return found
+
+
+# --- textures (mip pyramid, trilinear sampling) -----------------------------------------------
+
+def reference_mip_reduce(image):
+    """Next mip level of ``image`` (h, w, c) by exact area averaging, done by upsampling.
+
+    Twin of ``cityshade.textures._reduce_level``. Each source texel is repeated ``nw`` times
+    along x and ``nh`` times along y; then every output texel covers a whole block of
+    ``w × h`` upsampled texels, and its value is that block's plain mean.
+    """
+    image = np.asarray(image, dtype=np.float64)
+    h, w, c = image.shape
+    nh, nw = max(1, h // 2), max(1, w // 2)
+    big = np.repeat(np.repeat(image, nh, axis=0), nw, axis=1)  # (h*nh, w*nw, c)
+    return big.reshape(nh, h, nw, w, c).mean(axis=(1, 3))
+
+
+def reference_sample_texture(levels, wrap_mode, border_rgba, u, v, lod):
+    """One trilinear texture sample, written out texel by texel.
+
+    Twin of ``cityshade.textures.sample_trilinear`` for a single texture.
+
+    Parameters
+    ----------
+    levels : list of ndarray (h_l, w_l, 4)
+        Mip pyramid, finest first, row 0 at the top.
+    wrap_mode : str
+        "none", "wrap", "mirror", "clamp" or "border".
+    border_rgba : sequence of 4 float
+    u, v, lod : float
+        v = 0 is the BOTTOM of the image; lod 0 is the finest level.
+    """
+    if wrap_mode == "none" and not (-1e-5 <= u <= 1 + 1e-5 and -1e-5 <= v <= 1 + 1e-5):
+        return np.zeros(4)
+    lod = min(max(lod, 0.0), len(levels) - 1.0)
+
+    def texel(level, i, j):
+        h, w, _ = level.shape
+        if wrap_mode == "wrap":
+            i, j = i % w, j % h
+        elif wrap_mode == "mirror":
+            i = i % (2 * w)
+            i = i if i < w else 2 * w - 1 - i
+            j = j % (2 * h)
+            j = j if j < h else 2 * h - 1 - j
+        elif wrap_mode == "border":
+            if not (0 <= i < w and 0 <= j < h):
+                return np.asarray(border_rgba, dtype=np.float64)
+        else:  # clamp, none
+            i, j = min(max(i, 0), w - 1), min(max(j, 0), h - 1)
+        return level[j, i].astype(np.float64)
+
+    def bilinear(level):
+        h, w, _ = level.shape
+        x = u * w - 0.5           # texel centres at integer x
+        y = (1.0 - v) * h - 0.5   # rows count downward from the top
+        i, j = int(np.floor(x)), int(np.floor(y))
+        fx, fy = x - i, y - j
+        return ((1 - fx) * (1 - fy) * texel(level, i, j) + fx * (1 - fy) * texel(level, i + 1, j)
+                + (1 - fx) * fy * texel(level, i, j + 1) + fx * fy * texel(level, i + 1, j + 1))
+
+    lo = int(np.floor(lod))
+    t = lod - lo
+    if t == 0.0:
+        return bilinear(levels[lo])
+    return (1 - t) * bilinear(levels[lo]) + t * bilinear(levels[lo + 1])
