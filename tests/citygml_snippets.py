@@ -4,6 +4,7 @@ from __future__ import annotations
 CG2 = ('xmlns="http://www.opengis.net/citygml/2.0" xmlns:gml="http://www.opengis.net/gml" '
        'xmlns:bldg="http://www.opengis.net/citygml/building/2.0" '
        'xmlns:app="http://www.opengis.net/citygml/appearance/2.0" '
+       'xmlns:luse="http://www.opengis.net/citygml/landuse/2.0" '
        'xmlns:xlink="http://www.w3.org/1999/xlink"')
 
 
@@ -54,3 +55,11 @@ def city(*members: str, ns: str = CG2, appearance: str = "") -> str:
     if appearance:
         body += f"<app:appearanceMember>{appearance}</app:appearanceMember>"
     return f'<?xml version="1.0" encoding="UTF-8"?>\n<CityModel {ns}>{body}</CityModel>\n'
+
+
+def ground(x0, y0, x1, y1, z=0.0, gid="ground") -> str:
+    """A flat LandUse square facing up (counter-clockwise seen from above)."""
+    pts = [(x0, y0, z), (x1, y0, z), (x1, y1, z), (x0, y1, z)]
+    return (f'<luse:LandUse gml:id="{gid}"><luse:lod1MultiSurface><gml:MultiSurface>'
+            f"<gml:surfaceMember>{polygon(pts, gid + '_poly')}</gml:surfaceMember>"
+            f"</gml:MultiSurface></luse:lod1MultiSurface></luse:LandUse>")
