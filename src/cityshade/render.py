@@ -159,7 +159,7 @@ def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
         imageio.write_exr(exr, channels, meta)
         written.append(Path(exr))
     if png is not None:
-        imageio.write_image(png, to_srgb8(frame.rgb), attributes=meta)
+        imageio.write_png_rgb(png, to_srgb8(frame.rgb), attributes=meta)
         written.append(Path(png))
     mask_px = shadow_mask(frame)
     if mask is not None:
@@ -168,8 +168,7 @@ def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
     if georef is not None:
         if frame.camera.kind != "map":
             raise UsageError("a georeferenced mask needs the map view (--camera map)")
-        epsg = scene.crs.horizontal_epsg
-        imageio.write_georeferenced(georef, mask_px, frame.camera.geotransform(scene.origin_m),
-                                    epsg=epsg, nodata=MASK_NODATA)
-        written.append(Path(georef))
+        written += imageio.write_georeferenced(
+            georef, mask_px, frame.camera.geotransform(scene.origin_m),
+            epsg=scene.crs.horizontal_epsg, nodata=MASK_NODATA, attributes=meta)
     return written
