@@ -92,8 +92,11 @@ def render_frame(scene, camera, t_days: float, sun, technique: str = "raytrace",
     timings["shadow_s"] = time.perf_counter() - t
     lit = np.where(surfaces.valid, np.nan_to_num(result.lit, nan=0.0), 0.0).astype(np.float32)
     t = time.perf_counter()
-    rgb = shade(scene, surfaces, camera, lit, sun.direction, sky=sky)
+    shade_report: dict = {}
+    rgb = shade(scene, surfaces, camera, lit, sun.direction, sky=sky, prim_id=gbuf.prim_id,
+                report=shade_report)
     timings["shade_s"] = time.perf_counter() - t
+    warnings += list(shade_report.get("texture_warnings", []))
     diagnostics = dict(result.diagnostics)
     diagnostics["gbuffer"] = gbuf.stats
     return Frame(camera=camera, gbuffer=gbuf, surfaces=surfaces, lit=lit, rgb=rgb, sun=sun,
