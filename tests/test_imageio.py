@@ -149,3 +149,194 @@ def test_read_errors(tmp_path):
     with pytest.raises(ImageIOError, match="cannot read image") as info:
         read_image(junk)
     assert info.value.path == str(junk)
+
+
+# --- EXR with named channels, PNG, masks, georeferenced rasters --------------------------------
+
+import json  # noqa: E402
+import shutil  # noqa: E402
+import struct  # noqa: E402
+import subprocess  # noqa: E402
+
+from cityshade.imageio import (MASK_NODATA, mask_from_lit, read_exr, world_file_lines,  # noqa: E402
+                               write_exr, write_georeferenced, write_mask_png, write_png_rgb)
+
+
+def _frame_channels(h=5, w=7):
+    rng = np.random.default_rng(7)
+    prim = rng.integers(-1, 2 ** 24, size=(h, w)).astype(np.int32)
+    prim[0, 0] = -1
+    prim[0, 1] = 2 ** 24          # the largest id float32 still holds exactly
+    normal = rng.normal(size=(h, w, 3)).astype(np.float32)
+    return {
+        "R": rng.uniform(0, 2, (h, w)).astype(np.float32),
+        "G": rng.uniform(0, 2, (h, w)).astype(np.float32),
+        "B": np.full((h, w), np.nan, np.float32),
+        "shadow": rng.uniform(0, 1, (h, w)).astype(np.float32),
+        "Z": np.where(prim >= 0, rng.uniform(1, 1e4, (h, w)), np.inf).astype(np.float32),
+        "N.x": normal[..., 0], "N.y": normal[..., 1], "N.z": normal[..., 2],
+        "primid": prim, "objid": (prim // 3).astype(np.int32),
+    }
+
+
+def test_exr_round_trip_with_every_channel_and_the_header(tmp_path):
+    channels = _frame_channels()
+    attrs = {"cityshade:date": "1850-06-21T15:00+01:00", "cityshade:sun_azimuth_true_deg": 194.25,
+             "cityshade:technique": "raytrace", "cityshade:crs_epsg": 25832}
+    path = tmp_path / "frame.exr"
+    write_exr(path, channels, attrs)
+    back, got = read_exr(path)
+    assert got["channel_names"] == tuple(channels)
+    for name, values in channels.items():
+        assert back[name].shape == values.shape
+        np.testing.assert_array_equal(back[name], values, err_msg=name)
+    assert back["primid"].dtype.kind == "i" and back["primid"][0, 0] == -1
+    assert back["primid"][0, 1] == 2 ** 24
+    assert got["cityshade:date"] == "1850-06-21T15:00+01:00"
+    assert got["cityshade:technique"] == "raytrace"
+    assert got["cityshade:crs_epsg"] == 25832
+    assert got["cityshade:sun_azimuth_true_deg"] == pytest.approx(194.25)
+    assert [p.name for p in tmp_path.iterdir()] == ["frame.exr"]
+
+
+def test_exr_ids_beyond_float32_go_to_a_uint32_part(tmp_path):
+    channels = {"R": np.zeros((2, 3), np.float32),
+                "primid": np.array([[-1, 0, 2 ** 24 + 1], [4_000_000_000, 7, 123_456_789]])}
+    path = tmp_path / "big.exr"
+    write_exr(path, channels, {"cityshade:technique": "raytrace"})
+    back, got = read_exr(path)
+    np.testing.assert_array_equal(back["primid"], channels["primid"])
+    np.testing.assert_array_equal(back["R"], 0.0)
+    # The plain reader sees the float part (what an EXR viewer shows first).
+    pixels, attrs = read_image(path)
+    assert attrs["channel_names"] == ("R",)
+
+
+@pytest.mark.parametrize("channels, message", [
+    ({}, "at least one channel"),
+    ({"R": np.zeros((2, 2), np.float32), "G": np.zeros((2, 3), np.float32)}, "shape"),
+    ({"R": np.zeros((2, 2, 1), np.float32)}, r"\(H, W\)"),
+    ({"id": np.array([[-2, 2 ** 25]])}, "EXR ids must lie"),
+    ({"s": np.array([["a", "b"]])}, "type"),
+    ({"": np.zeros((1, 1), np.float32)}, "channel names"),
+])
+def test_exr_refuses_bad_channels_and_writes_nothing(tmp_path, channels, message):
+    with pytest.raises(ImageIOError, match=message):
+        write_exr(tmp_path / "x.exr", channels)
+    assert list(tmp_path.iterdir()) == []
+
+
+def test_png_rgb_and_mask_values(tmp_path):
+    rgb = _pattern((6, 9, 3), np.uint8)
+    write_png_rgb(tmp_path / "beauty.png", rgb, {"cityshade:technique": "raytrace"})
+    back, _ = read_image(tmp_path / "beauty.png")
+    np.testing.assert_array_equal(back, rgb)
+    lit = np.array([[0.0, 0.49, 0.5, 1.0], [np.nan, 1.0, 0.2, 0.7]])
+    valid = np.array([[True, True, True, True], [True, False, True, True]])
+    mask = mask_from_lit(lit, valid)
+    np.testing.assert_array_equal(mask, [[0, 0, 255, 255], [128, 128, 0, 255]])
+    write_mask_png(tmp_path / "mask.png", mask)
+    back, _ = read_image(tmp_path / "mask.png")
+    assert back.shape == (2, 4, 1) and back.dtype == np.uint8
+    np.testing.assert_array_equal(back[:, :, 0], mask)
+    write_mask_png(tmp_path / "bool.png", np.array([[True, False]]))
+    np.testing.assert_array_equal(read_image(tmp_path / "bool.png")[0][:, :, 0], [[255, 0]])
+    with pytest.raises(ImageIOError, match="only 255"):
+        write_mask_png(tmp_path / "bad.png", np.array([[0, 7]], np.uint8))
+    with pytest.raises(ImageIOError, match="mask_from_lit"):
+        write_mask_png(tmp_path / "bad.png", lit)
+    with pytest.raises(ImageIOError, match=r"\(H, W, 3\) uint8"):
+        write_png_rgb(tmp_path / "bad.png", rgb[:, :, :2])
+    assert not (tmp_path / "bad.png").exists()
+
+
+def _tiff_tags(path):
+    """{tag: values} of the first IFD of a classic TIFF, parsed here from the TIFF 6.0 layout."""
+    data = path.read_bytes()
+    order = {b"II": "<", b"MM": ">"}[data[:2]]
+    ifd = struct.unpack(order + "I", data[4:8])[0]
+    sizes = {2: ("c", 1), 3: ("H", 2), 4: ("I", 4), 12: ("d", 8)}
+    tags = {}
+    for k in range(struct.unpack(order + "H", data[ifd:ifd + 2])[0]):
+        tag, ftype, count = struct.unpack(order + "HHI", data[ifd + 2 + 12 * k: ifd + 10 + 12 * k])
+        if ftype not in sizes:
+            continue
+        fmt, size = sizes[ftype]
+        field_at = ifd + 10 + 12 * k
+        at = field_at if size * count <= 4 else struct.unpack(order + "I",
+                                                                data[field_at:field_at + 4])[0]
+        raw = data[at: at + size * count]
+        tags[tag] = raw.rstrip(b"\0").decode() if ftype == 2 else struct.unpack(
+            order + fmt * count, raw)
+    return tags
+
+
+def test_georeferenced_mask_world_file_prj_and_geotiff_tags(tmp_path):
+    # A 3×4 map of 0.5 m pixels whose upper-left CORNER is at (690000, 5336000) in UTM 32N.
+    gt = (690000.0, 0.5, 0.0, 5336000.0, 0.0, -0.5)
+    mask = np.array([[255, 0, 128, 255], [0, 0, 255, 128], [128, 255, 0, 0]], np.uint8)
+    path = tmp_path / "shadow.tif"
+    written = write_georeferenced(path, mask, gt, epsg=25832, nodata=MASK_NODATA)
+    assert written == [path, tmp_path / "shadow.tfw", tmp_path / "shadow.prj"]
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["shadow.prj", "shadow.tfw", "shadow.tif"]
+    back, _ = read_image(path)
+    np.testing.assert_array_equal(back[:, :, 0], mask)
+    # World file: pixel size, rotations, then the CENTRE of the upper-left pixel.
+    lines = (tmp_path / "shadow.tfw").read_text().split()
+    assert [float(v) for v in lines] == [0.5, 0.0, 0.0, -0.5, 690000.25, 5335999.75]
+    # Every pixel centre from the world file equals the corner rule + half a pixel.
+    a, d, b, e, c, f = (float(v) for v in lines)
+    for row in range(3):
+        for col in range(4):
+            assert a * col + b * row + c == 690000.0 + 0.5 * (col + 0.5)
+            assert d * col + e * row + f == 5336000.0 - 0.5 * (row + 0.5)
+    prj = (tmp_path / "shadow.prj").read_text()
+    assert prj.startswith('PROJCS["ETRS_1989_UTM_Zone_32N"') and "GEOGCS" in prj
+    tags = _tiff_tags(path)
+    assert tags[33550] == (0.5, 0.5, 0.0)                                 # ModelPixelScale
+    assert tags[33922] == (0.0, 0.0, 0.0, 690000.0, 5336000.0, 0.0)       # ModelTiePoint
+    keys = tags[34735]
+    assert keys[:4] == (1, 1, 0, 3)
+    entries = {keys[i]: keys[i + 3] for i in range(4, len(keys), 4)}
+    assert entries == {1024: 1, 1025: 1, 3072: 25832}   # projected, PixelIsArea, EPSG:25832
+    assert tags[42113] == "128"                          # GDAL_NODATA
+    assert tags[256] == (4,) and tags[257] == (3,)       # the image's own tags survive
+    if shutil.which("gdalinfo"):   # an independent reader, when GDAL is installed
+        info = json.loads(subprocess.run(["gdalinfo", "-json", str(path)], check=True,
+                                         capture_output=True, text=True).stdout)
+        assert info["geoTransform"] == list(gt)
+        assert info["bands"][0]["noDataValue"] == 128
+        assert '"EPSG",25832' in info["coordinateSystem"]["wkt"].replace(" ", "")
+
+
+def test_georeferenced_rotated_float_raster_without_crs(tmp_path):
+    gt = (1000.0, 0.8, 0.6, 2000.0, 0.6, -0.8)     # 1 m pixels rotated by ~36.87°
+    raster = np.arange(6, dtype=np.float32).reshape(2, 3)
+    raster[0, 0] = np.nan
+    path = tmp_path / "r.tiff"
+    written = write_georeferenced(path, raster, gt)
+    assert written == [path, tmp_path / "r.tfw"]                   # no CRS: no .prj
+    lines = world_file_lines(gt)
+    assert lines == (tmp_path / "r.tfw").read_text().split()
+    # Centre of pixel (0, 0) = corner + half a pixel along both rotated pixel axes.
+    assert [float(v) for v in lines] == pytest.approx([0.8, 0.6, 0.6, -0.8, 1000.7, 1999.9],
+                                                      abs=1e-9)
+    tags = _tiff_tags(path)
+    assert tags[34264] == (0.8, 0.6, 0.0, 1000.0, 0.6, -0.8, 0.0, 2000.0,
+                           0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0)  # ModelTransformation
+    assert 33550 not in tags and 42113 not in tags
+    back, _ = read_image(path)
+    np.testing.assert_array_equal(back[:, :, 0], raster)
+
+
+def test_georeferenced_refusals_leave_no_files(tmp_path):
+    mask = np.zeros((2, 2), np.uint8)
+    with pytest.raises(ImageIOError, match="tif"):
+        write_georeferenced(tmp_path / "a.png", mask, (0, 1, 0, 0, 0, -1))
+    with pytest.raises(ImageIOError, match="singular"):
+        write_georeferenced(tmp_path / "a.tif", mask, (0, 0, 0, 0, 0, -1))
+    with pytest.raises(ImageIOError, match="6 finite"):
+        write_georeferenced(tmp_path / "a.tif", mask, (0, 1, 0, 0, 0))
+    with pytest.raises(CityshadeError, match="CRS"):
+        write_georeferenced(tmp_path / "a.tif", mask, (0, 1, 0, 0, 0, -1), epsg=999999)
+    assert list(tmp_path.iterdir()) == []
