@@ -20,6 +20,12 @@ _URL = re.compile(r"^[A-Za-z][A-Za-z0-9+.-]*://")
 _WORLD_SUFFIXES = (".tfw", ".pgw", ".jgw", ".wld", ".tifw", ".pngw", ".jpgw")
 
 
+#: X3DMaterial properties, in any namespace (``{*}``: lxml matches the local name in C).
+_MATERIAL_PROPERTY_TAGS = tuple("{*}" + name for name in (
+    "diffuseColor", "specularColor", "emissiveColor", "ambientIntensity", "shininess",
+    "transparency"))
+
+
 def _local(tag) -> str:
     return tag[tag.rfind("}") + 1:] if isinstance(tag, str) else ""
 
@@ -106,10 +112,14 @@ class AppearanceCollector:
                     self._georeferenced(data, theme)
 
     def _material(self, el, theme: str) -> None:
+        # Materials often list a target per polygon of the file (hundreds of thousands): lxml
+        # picks the property and target children by local name in C, so no tag string is made
+        # per target. Document order is kept within each of the two passes, which is all that
+        # matters (properties overwrite one another in order, targets append in order).
         rec = MaterialRecord(theme=theme)
-        for child in el:
+        for child in el.iterchildren(*_MATERIAL_PROPERTY_TAGS):
             name = _local(child.tag)
-            values = _floats(child.text) if name != "target" else []
+            values = _floats(child.text)
             if name == "diffuseColor" and len(values) == 3:
                 rec.diffuse = tuple(values)
             elif name == "specularColor" and len(values) == 3:
@@ -122,12 +132,13 @@ class AppearanceCollector:
                 rec.shininess = values[0]
             elif name == "transparency" and len(values) == 1:
                 rec.transparency = values[0]
-            elif name == "target":
-                target = _target_id(child)
-                if target:
-                    rec.targets.append(target)
+        targets = rec.targets
+        for child in el.iterchildren("{*}target"):
+            target = _target_id(child)
+            if target:
+                targets.append(target)
         self.materials.append(rec)
-        self.theme_targets[theme] += len(rec.targets)
+        self.theme_targets[theme] += len(targets)
 
     def _common_texture(self, el, rec: TextureRecord) -> None:
         for child in el:

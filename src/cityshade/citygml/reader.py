@@ -34,6 +34,7 @@ import numpy as np
 from cityshade.citygml import namespaces as ns
 from cityshade.citygml.appearance import AppearanceCollector
 from cityshade.citygml.geometry import parse_ring_texts
+from cityshade.citygml.namespaces import XLINK_HREF
 from cityshade.errors import EmptyModelError, InputError, NotCityGMLError, XMLSyntaxError
 
 #: Batch size (characters of coordinate text) handed to the Numba parser at once: large enough
@@ -250,41 +251,53 @@ class _Walker:
         self.walk(el, index, default_cls, relief_lod, 0)
 
     def walk(self, el, obj: int, cls: int, lod: int, flip: int) -> None:
-        """Walk the children of ``el`` in the context (object, class, LoD, orientation flip)."""
+        """Walk the children of ``el`` in the context (object, class, LoD, orientation flip).
+
+        The hot loop of the reader (every geometry property, aggregate member and polygon
+        passes here): a child is classified by one look-up in the tag cache (:meth:`kind` fills
+        it on a miss), and the frequent kinds — aggregate members and polygons — come first.
+        """
         m = self.m
-        kind_of = self.kind
+        kinds = self.kinds
+        gml_id, other_gml_id = self.gml_id, self.other_gml_id
         for child in el:
             tag = child.tag
-            if not isinstance(tag, str):
-                continue
-            kind, payload = kind_of(tag)
-            if kind == K_SKIP:
-                continue
-            if kind == K_POLYGON:
-                self.polygon(child, obj, cls, lod, flip)
-            elif kind == K_AGG:
-                href = child.get(ns.XLINK_HREF)
+            entry = kinds.get(tag)
+            if entry is None:
+                if not isinstance(tag, str):
+                    continue  # a processing instruction or an entity reference
+                entry = self.kind(tag)
+            kind, payload = entry
+            if kind == K_AGG:
+                href = child.get(XLINK_HREF)
                 if href is not None:
-                    self.reference(href, obj, cls, lod, flip)
+                    self.refs.append((obj, cls, lod, flip))
+                    m.ref_target.append(href[1:] if href.startswith("#") else href)
                     continue
                 srs = child.get("srsName")
                 if srs is not None:
                     m.srs_names[srs] += 1
-                agg_id = self.element_id(child)
+                agg_id = child.get(gml_id)
+                if agg_id is None and other_gml_id is not None:
+                    agg_id = child.get(other_gml_id)
                 if agg_id is None:
                     self.walk(child, obj, cls, lod, flip)
                 else:
                     p0, r0 = len(self.polys), len(self.refs)
                     self.walk(child, obj, cls, lod, flip)
                     m.aggregates.setdefault(agg_id, (p0, len(self.polys), r0, len(self.refs)))
+            elif kind == K_POLYGON:
+                self.polygon(child, obj, cls, lod, flip)
+            elif kind == K_SKIP:
+                continue
             elif kind == K_LOD:
-                href = child.get(ns.XLINK_HREF)
+                href = child.get(XLINK_HREF)
                 if href is not None:
                     self.reference(href, obj, cls, payload, flip)
                 else:
                     self.walk(child, obj, cls, payload, flip)
             elif kind == K_DESCEND:
-                if child.get(ns.XLINK_HREF) is None:
+                if child.get(XLINK_HREF) is None:
                     self.walk(child, obj, cls, lod, flip)
             elif kind == K_OBJECT:
                 self.city_object(child, payload, obj)
@@ -301,7 +314,7 @@ class _Walker:
                 for base in child:
                     if not isinstance(base.tag, str):
                         continue
-                    href = base.get(ns.XLINK_HREF)
+                    href = base.get(XLINK_HREF)
                     if href is not None:
                         self.reference(href, obj, cls, lod, flipped)
                     else:
@@ -309,7 +322,7 @@ class _Walker:
                 if agg_id is not None:
                     m.aggregates.setdefault(agg_id, (p0, len(self.polys), r0, len(self.refs)))
             elif kind == K_APPEARANCE:
-                self.m.appearance.read_appearance(child, self, owner=obj)
+                m.appearance.read_appearance(child, self, owner=obj)
             elif kind == K_GML_BOUNDED:
                 for envelope in child:
                     if isinstance(envelope.tag, str):
@@ -328,14 +341,17 @@ class _Walker:
         self.m.ref_target.append(href[1:] if href.startswith("#") else href)
 
     def polygon(self, el, obj: int, cls: int, lod: int, flip: int) -> None:
-        """Record one polygon-like element and the text of its rings (the hot path)."""
+        """Record one polygon-like element and the text of its rings (the hot path).
+
+        Rings are taken in document order: the first exterior (later ones are ignored) and
+        every interior with content. A ring whose first child is a ``posList`` is read inline;
+        ``gml:pos`` lists and ``gml:coordinates`` go through :meth:`ring_other`.
+        """
         m = self.m
         texts, dims = self.texts, self.dims
+        ring_base = self.rings_flushed
         index = len(self.polys)
-        self.polys.append((obj, cls, lod, flip, self.rings_flushed + len(texts)))
-        srs = el.get("srsName")
-        if srs is not None:
-            m.srs_names[srs] += 1
+        self.polys.append((obj, cls, lod, flip, ring_base + len(texts)))
         gml_id = self.gml_id
         pid = el.get(gml_id)
         if pid is None and self.other_gml_id is not None:
@@ -343,8 +359,16 @@ class _Walker:
         m.poly_ids.append(pid)
         if pid is not None and m.poly_by_id.setdefault(pid, index) != index:
             m.counters["duplicate_gml_ids"] += 1
-        dim_default = el.get("srsDimension")
+        dim_default = None
+        # Most polygons carry nothing but their id: counting the attributes (no strings made)
+        # spares the two look-ups that would find nothing.
+        if len(el.attrib) > (pid is not None):
+            srs = el.get("srsName")
+            if srs is not None:
+                m.srs_names[srs] += 1
+            dim_default = el.get("srsDimension")
         exterior_tags, interior_tags = self.exterior_tags, self.interior_tags
+        poslist_tags = self.poslist_tags
         has_exterior = False
         for boundary in el:
             btag = boundary.tag
@@ -356,7 +380,7 @@ class _Walker:
                 continue
             ring = boundary[0]
             first = ring[0] if len(ring) else None
-            if first is not None and first.tag in self.poslist_tags:
+            if first is not None and first.tag in poslist_tags:
                 # The common case: one posList.
                 text = first.text or ""
                 dim = first.get("srsDimension") or dim_default
@@ -364,7 +388,7 @@ class _Walker:
                 text, dim = self.ring_other(ring, first, dim_default)
             ring_id = ring.get(gml_id)
             if ring_id is not None:
-                m.ring_by_id.setdefault(ring_id, self.rings_flushed + len(texts))
+                m.ring_by_id.setdefault(ring_id, ring_base + len(texts))
             texts.append(text)
             dims.append(3 if dim is None or dim == "3" else self._dim(dim))
             self.text_chars += len(text)
