@@ -31,7 +31,7 @@ import numpy as np
 from numba import njit, prange
 
 from cityshade.errors import CityshadeError
-from cityshade.textures import (TextureSet, linear_to_srgb, load_texture_set,
+from cityshade.textures import (TextureSet, load_texture_set,
                                 lod_from_uv_neighbours, sample_trilinear, srgb_to_linear)
 
 __all__ = ["ShadingError", "ShadingSettings", "DEFAULT_PALETTE_SRGB8", "shade", "to_srgb8",
@@ -181,6 +181,29 @@ def _texture_set(textures: list[dict], used: np.ndarray) -> TextureSet:
     return hit
 
 
+@njit(cache=True, parallel=True)
+def _base_albedo_kernel(valid, material, klass, mat_colours, mat_usable, palette, out):
+    """Material colour where usable, else the palette colour of the class (0 = unclassified)."""
+    height, width = valid.shape
+    n_mat = len(mat_usable)
+    for r in prange(height):
+        for c in range(width):
+            if not valid[r, c]:
+                for k in range(3):
+                    out[r, c, k] = 0.0
+                continue
+            m = material[r, c]
+            if 0 <= m < n_mat and mat_usable[m]:
+                for k in range(3):
+                    out[r, c, k] = mat_colours[m, k]
+            else:
+                code = klass[r, c]
+                if code < 0 or code >= len(palette):
+                    code = 0
+                for k in range(3):
+                    out[r, c, k] = palette[code, k]
+
+
 def albedo_of_surfaces(scene, surfaces, *, settings: ShadingSettings | None = None,
                        prim_id: np.ndarray | None = None,
                        report: dict | None = None) -> np.ndarray:
@@ -208,24 +231,18 @@ def albedo_of_surfaces(scene, surfaces, *, settings: ShadingSettings | None = No
     settings = settings or ShadingSettings()
     valid = _field(surfaces, "valid").astype(bool)
     height, width = valid.shape
-    material = _field(surfaces, "material").astype(np.int64)
+    material = _field(surfaces, "material")
     klass = _field(surfaces, "surface_class", "cls", "klass", "class_", "class")
-    klass = klass.astype(np.int64)
     palette = settings.palette_linear()
-    # Start from the palette of each class (unknown codes: unclassified), then materials.
-    klass = np.where((klass >= 0) & (klass < len(palette)), klass, 0)
-    albedo = palette[klass]
     materials = list(getattr(scene, "materials", []) or [])
-    if materials:
-        colours, usable = _material_table(materials)
-        has_mat = valid & (material >= 0) & (material < len(materials))
-        has_mat[has_mat] = usable[material[has_mat]]
-        albedo[has_mat] = colours[material[has_mat]]
-    albedo[~valid] = 0.0
+    colours, usable = _material_table(materials)
+    albedo = np.empty((height, width, 3), np.float32)
+    _base_albedo_kernel(valid, np.ascontiguousarray(material), np.ascontiguousarray(klass),
+                        colours, usable, palette, albedo)
     textures = list(getattr(scene, "textures", []) or [])
     if not (settings.textures and textures):
         return albedo
-    texture = _field(surfaces, "texture").astype(np.int64)
+    texture = np.asarray(_field(surfaces, "texture"), np.int64)
     textured = valid & (texture >= 0) & (texture < len(textures))
     if not textured.any():
         return albedo  # no texture work when no visible pixel needs it (DESIGN §2)
@@ -413,14 +430,55 @@ def to_srgb8(rgb: np.ndarray, *, nodata_srgb8=(0, 0, 0)) -> np.ndarray:
     Returns
     -------
     numpy.ndarray, shape (H, W, 3), uint8
-        ``round(255 · srgb(x))``; e.g. linear 0.5 → 188, 0.0 → 0, 1.0 → 255.
+        ``round(255 · srgb(x))`` (half up); e.g. linear 0.5 → 188, 0.0 → 0, 1.0 → 255.
     """
     rgb = np.asarray(rgb)
     if rgb.ndim != 3 or rgb.shape[2] != 3:
         raise ShadingError(f"rgb must have shape (H, W, 3), not {rgb.shape}")
-    bad = ~np.isfinite(rgb).all(axis=2)
-    encoded = linear_to_srgb(np.where(np.isfinite(rgb), rgb, 0.0))
-    # Round half up: floor(x + 0.5) on values in 0..255 (np.round would round half to even).
-    out = np.floor(encoded * 255.0 + 0.5).astype(np.uint8)
-    out[bad] = np.asarray(nodata_srgb8, np.uint8)
+    nodata = np.asarray(nodata_srgb8, np.uint8).reshape(3)
+    out = np.empty(rgb.shape, np.uint8)
+    _encode_kernel(np.ascontiguousarray(rgb, dtype=np.float32), _SRGB8_THRESHOLDS, nodata, out)
     return out
+
+
+def _srgb8_thresholds() -> np.ndarray:
+    """Linear value at which the rounded 8-bit sRGB code steps from k - 1 to k (k = 1..255).
+
+    ``round(255 · srgb(x)) ≥ k`` exactly when ``srgb(x) ≥ (k - 0.5) / 255``, i.e. when
+    ``x ≥ srgb⁻¹((k - 0.5) / 255)``; counting the thresholds at or below x gives the code
+    without evaluating a power per pixel (round half up, clipping to 0..255 for free).
+    """
+    return _srgb_to_linear_f64((np.arange(1, 256) - 0.5) / 255.0)
+
+
+def _srgb_to_linear_f64(encoded: np.ndarray) -> np.ndarray:
+    """sRGB decode in float64 (thresholds must not carry float32 rounding)."""
+    x = np.asarray(encoded, dtype=np.float64)
+    return np.where(x <= 0.04045, x / 12.92, ((x + 0.055) / 1.055) ** 2.4)
+
+
+_SRGB8_THRESHOLDS = _srgb8_thresholds()
+
+
+@njit(cache=True, parallel=True)
+def _encode_kernel(rgb, thresholds, nodata, out):
+    height, width, _ = rgb.shape
+    for r in prange(height):
+        for c in range(width):
+            if not (math.isfinite(rgb[r, c, 0]) and math.isfinite(rgb[r, c, 1])
+                    and math.isfinite(rgb[r, c, 2])):
+                for k in range(3):
+                    out[r, c, k] = nodata[k]
+                continue
+            for k in range(3):
+                x = float(rgb[r, c, k])
+                # Binary search: number of thresholds <= x (0..255).
+                lo = 0
+                hi = len(thresholds)
+                while lo < hi:
+                    mid = (lo + hi) >> 1
+                    if thresholds[mid] <= x:
+                        lo = mid + 1
+                    else:
+                        hi = mid
+                out[r, c, k] = lo
