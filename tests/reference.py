@@ -267,3 +267,61 @@ def reference_sample_texture(levels, wrap_mode, border_rgba, u, v, lod):
     if t == 0.0:
         return bilinear(levels[lo])
     return (1 - t) * bilinear(levels[lo]) + t * bilinear(levels[lo + 1])
+
+
+# --- rasterizer (twin of cityshade.raster.rasterize) -------------------------------------------
+
+def reference_rasterize(vertices, triangles, t_begin_days, t_end_days, camera, t_days=0.0):
+    """Brute-force G-buffer: every pixel-centre ray against every triangle (Moller-Trumbore).
+
+    Keeps, per pixel, the nearest hit whose view depth lies in [near, far] (perspective: along
+    the camera's forward axis; map: below the camera plane); exact depth ties go to the lower
+    id. Edges count as inside (no fill rule), so results may differ from the rasterizer only on
+    triangle edges. Returns (prim_id (H, W) int, depth (H, W) float64 along the ray).
+    """
+    h, w = camera.height_px, camera.width_px
+    xs = np.arange(w) + 0.5
+    ys = np.arange(h) + 0.5
+    if camera.kind == "map":
+        px = camera.pixel_size_m
+        gx, gy = np.meshgrid(camera.x_left_m + xs * px, camera.y_top_m - ys * px)
+        origins = np.stack([gx, gy, np.full_like(gx, camera.eye_m[2])], -1).reshape(-1, 3)
+        dirs = np.tile([0.0, 0.0, -1.0], (h * w, 1))
+        cos = np.ones(h * w)
+    else:
+        fwd = np.asarray(camera.target_m, float) - camera.eye_m
+        fwd /= np.linalg.norm(fwd)
+        right = np.cross(fwd, camera.up)
+        if np.linalg.norm(right) < 1e-9:
+            right = np.cross(fwd, [0.0, 1.0, 0.0])
+        right /= np.linalg.norm(right)
+        up = np.cross(right, fwd)
+        pitch = 2.0 * np.tan(np.radians(camera.vfov_deg) / 2.0) / h
+        gx, gy = np.meshgrid((xs - w / 2.0) * pitch, (h / 2.0 - ys) * pitch)
+        dirs = (gx[..., None] * right + gy[..., None] * up + fwd).reshape(-1, 3)
+        dirs /= np.linalg.norm(dirs, axis=1, keepdims=True)
+        origins = np.tile(np.asarray(camera.eye_m, float), (h * w, 1))
+        cos = dirs @ fwd
+    prim = np.full(h * w, -1)
+    best = np.full(h * w, np.inf)
+    v = np.asarray(vertices, np.float64)
+    for tri in range(len(triangles)):
+        if not (t_begin_days[tri] <= t_days < t_end_days[tri]):
+            continue
+        a, b, c = v[np.asarray(triangles[tri])]
+        e1, e2 = b - a, c - a
+        p = np.cross(dirs, e2)
+        det = p @ e1
+        with np.errstate(divide="ignore", invalid="ignore"):
+            s = origins - a
+            uu = np.einsum("ij,ij->i", s, p) / det
+            q = np.cross(s, e1)
+            vv = np.einsum("ij,ij->i", q, dirs) / det
+            t = (q @ e2) / det
+        z = t * cos
+        ok = ((det != 0) & (uu >= 0) & (vv >= 0) & (uu + vv <= 1) & (z >= camera.near_m)
+              & (z <= camera.far_m))
+        better = ok & ((t < best) | ((t == best) & (tri < prim)))
+        prim[better] = tri
+        best[better] = t[better]
+    return prim.reshape(h, w), best.reshape(h, w)

@@ -1,0 +1,326 @@
+"""Front-to-back kd-tree walk for the rasterizer: time filtering, frustum and occlusion culling.
+
+The thesis slides' "Rendering" section: the kd-tree is drawn front to back; nodes outside the
+view frustum are skipped (box against the 6 planes), time splits send the walk only into the
+child that holds the city time (whole subtrees of demolished or not yet built buildings go at
+once), and occlusion culling follows Coherent Hierarchical Culling (Bittner et al. 2004) with
+*software* occlusion queries: a node's box is tested against a hierarchical max-depth buffer of
+what has been drawn so far, and skipped when every pixel it could cover already holds a surface
+strictly nearer than the box's nearest point. Leaves emit their triangles in stored order, which
+the kd-tree layout sorts by material ("draw batches").
+
+The walk is resumable: :func:`walk` stops after emitting about ``max_out`` triangles, the
+caller rasterizes them (which refines the max-depth buffer) and calls it again with the same
+stack. Culling never removes a visible triangle: a triangle's visible sample lies in some leaf
+cell the frustum test keeps (boxes are padded), and the occlusion test is strict and padded.
+"""
+from __future__ import annotations
+
+import weakref
+
+import numpy as np
+from numba import njit
+
+#: Axis codes of the flat kd-tree (``cityshade.accel.kdtree_layout``).
+_LEAF = 4
+_TIME = 3
+#: Columns of validity begin / end in the float64 view of the records.
+_T_BEGIN = 5
+_T_END = 6
+#: Walk stack entries: the walk pops one node and pushes at most two, so it holds at most one
+#: entry per tree level plus one; the build caps the depth at 60.
+STACK_SIZE = 128
+#: Padding of node boxes in the frustum test, relative to the scene size: float32 vertices and
+#: float64 plane evaluation differ by far less, so the test stays conservative.
+FRUSTUM_PAD_REL = 1e-5
+#: A node box is occluded only when its nearest point is farther than every covering depth by
+#: this relative margin (stored depths are float32: 6e-8 relative rounding) ...
+OCCLUSION_REL = 1e-5
+#: ... plus this absolute margin in metres.
+OCCLUSION_ABS_M = 1e-4
+#: Queries whose pixel rectangle covers more blocks than this read the coarser tile maxima
+#: instead (conservative: a tile's maximum bounds its blocks').
+QUERY_MAX_BLOCKS = 64
+#: Nodes with fewer triangle references than this are drawn without a query: the query
+#: (8 corner projections and a rectangle of reads) costs about as much as setting up that many
+#: small triangles.
+QUERY_MIN_REFS = 8
+
+# Indices of the statistics vector filled by :func:`walk`.
+ST_NODES_VISITED = 0
+ST_LEAVES_DRAWN = 1
+ST_TIME_SUBTREES = 2
+ST_TIME_REFS = 3
+ST_FRUSTUM_NODES = 4
+ST_FRUSTUM_REFS = 5
+ST_OCCLUSION_QUERIES = 6
+ST_OCCLUSION_NODES = 7
+ST_OCCLUSION_REFS = 8
+ST_DUPLICATE_REFS = 9
+ST_EMITTED = 10
+N_STATS = 11
+STAT_NAMES = ("nodes_visited", "leaves_drawn", "time_subtrees_skipped", "time_refs_removed",
+              "frustum_nodes_culled", "frustum_refs_removed", "occlusion_queries",
+              "occlusion_nodes_culled", "occlusion_refs_removed", "duplicate_refs",
+              "triangles_drawn")
+
+
+@njit(cache=True)
+def _subtree_refs(nodes):
+    """(M,) int64 triangle references below each node; and the largest leaf's count."""
+    m = nodes.shape[0]
+    refs = np.zeros(m, np.int64)
+    biggest = 0
+    # Children always have larger indices than their parent (left = i + 1), so one backward
+    # pass sees both children before the parent.
+    for i in range(m - 1, -1, -1):
+        w0 = np.int64(nodes[i, 0])
+        if w0 & 7 == _LEAF:
+            refs[i] = w0 >> 3
+            biggest = max(biggest, w0 >> 3)
+        else:
+            refs[i] = refs[i + 1] + refs[w0 >> 3]
+    return refs, biggest
+
+
+_TREE_INFO: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def tree_info(tree) -> tuple[np.ndarray, int]:
+    """(subtree reference counts (M,), largest leaf size) of a KdTree, computed once per tree."""
+    info = _TREE_INFO.get(tree)
+    if info is None:
+        refs, biggest = _subtree_refs(tree.nodes)
+        info = (refs, int(biggest))
+        _TREE_INFO[tree] = info
+    return info
+
+
+def frustum_planes(camera, pad_m: float) -> np.ndarray:
+    """(6, 4) float64 planes ``(n, d)`` with unit ``n``; inside is ``n . p + d >= -pad``.
+
+    The side planes pass one pixel outside the image edges, so boxes touching the border are
+    kept. ``pad_m`` is stored in column 3 offsets (added to ``d``).
+    """
+    right, up, fwd = camera.frame()
+    eye = np.asarray(camera.eye_m, np.float64)
+    xs, ys = camera.screen_coordinates()
+    planes = np.empty((6, 4))
+    if camera.kind == "map":
+        px = camera.pixel_size_m
+        x0, x1 = xs[0] - 1.5 * px, xs[-1] + 1.5 * px
+        y1, y0 = ys[0] + 1.5 * px, ys[-1] - 1.5 * px
+        normals = [(1, 0, 0), (-1, 0, 0), (0, 1, 0), (0, -1, 0), (0, 0, -1), (0, 0, 1)]
+        offsets = [-x0, x1, -y0, y1, eye[2] - camera.near_m, camera.far_m - eye[2]]
+        for i in range(6):
+            planes[i, :3] = normals[i]
+            planes[i, 3] = offsets[i]
+    else:
+        p = camera.pitch
+        x0, x1 = xs[0] - 1.5 * p, xs[-1] + 1.5 * p
+        y1, y0 = ys[0] + 1.5 * p, ys[-1] - 1.5 * p
+        side = [right - x0 * fwd, -right + x1 * fwd, up - y0 * fwd, -up + y1 * fwd]
+        for i, n in enumerate(side):
+            n = n / np.linalg.norm(n)
+            planes[i, :3] = n
+            planes[i, 3] = -n @ eye
+        planes[4, :3] = fwd
+        planes[4, 3] = -fwd @ eye - camera.near_m
+        planes[5, :3] = -fwd
+        planes[5, 3] = fwd @ eye + camera.far_m
+    planes[:, 3] += pad_m
+    return planes
+
+
+@njit(cache=True)
+def box_outside(planes, lo, hi):
+    """Whether the box ``[lo, hi]`` lies entirely outside one of the planes."""
+    for i in range(planes.shape[0]):
+        # The box corner farthest along the plane normal (the "p-vertex").
+        s = planes[i, 3]
+        for a in range(3):
+            s += planes[i, a] * (hi[a] if planes[i, a] > 0.0 else lo[a])
+        if s < 0.0:
+            return True
+    return False
+
+
+@njit(cache=True)
+def box_occluded(lo, hi, cam, hiz_block, hiz_tile, block_px, tile_px):
+    """Software occlusion query: is every pixel the box could cover already nearer?
+
+    ``cam`` is the rasterizer's parameter vector (:func:`cityshade.raster.rasterize.camera_params`);
+    ``hiz_block`` / ``hiz_tile`` hold the maximum stored depth of each ``block_px`` /
+    ``tile_px`` square (``inf`` while any of its pixels is empty).
+    """
+    w = int(cam[20])
+    h = int(cam[21])
+    if cam[0] != 0.0:
+        # Map: depth is the distance below the camera plane.
+        xmin, xmax, ymin, ymax = lo[0], hi[0], lo[1], hi[1]
+        dmin = cam[15] - hi[2]
+    else:
+        # Perspective: the box's nearest point bounds the distance along every pixel ray.
+        dd = 0.0
+        for a in range(3):
+            e = cam[1 + a]
+            g = max(lo[a] - e, 0.0, e - hi[a])
+            dd += g * g
+        dmin = np.sqrt(dd)
+        if dmin <= 0.0:
+            return False
+        xmin = np.inf
+        xmax = -np.inf
+        ymin = np.inf
+        ymax = -np.inf
+        for corner in range(8):
+            px = hi[0] if corner & 1 else lo[0]
+            py = hi[1] if corner & 2 else lo[1]
+            pz = hi[2] if corner & 4 else lo[2]
+            dx = px - cam[1]
+            dy = py - cam[2]
+            dz = pz - cam[3]
+            z = cam[10] * dx + cam[11] * dy + cam[12] * dz
+            if z < cam[13]:
+                return False    # the box reaches the near plane: no projection bound
+            x = (cam[4] * dx + cam[5] * dy + cam[6] * dz) / z
+            y = (cam[7] * dx + cam[8] * dy + cam[9] * dz) / z
+            xmin = min(xmin, x)
+            xmax = max(xmax, x)
+            ymin = min(ymin, y)
+            ymax = max(ymax, y)
+    # Pixel rectangle (one pixel of slack on each side), clamped to the image.
+    c0 = max(np.floor(cam[16] * xmin + cam[17]) - 1.0, 0.0)
+    c1 = min(np.ceil(cam[16] * xmax + cam[17]) + 1.0, w - 1.0)
+    r0 = max(np.floor(cam[18] * ymax + cam[19]) - 1.0, 0.0)
+    r1 = min(np.ceil(cam[18] * ymin + cam[19]) + 1.0, h - 1.0)
+    if c0 > c1 or r0 > r1:
+        return False        # off screen: the frustum test's business, never cull here
+    ic0 = int(c0)
+    ic1 = int(c1)
+    ir0 = int(r0)
+    ir1 = int(r1)
+    bx0 = ic0 // block_px
+    bx1 = ic1 // block_px
+    by0 = ir0 // block_px
+    by1 = ir1 // block_px
+    if (bx1 - bx0 + 1) * (by1 - by0 + 1) > QUERY_MAX_BLOCKS:
+        for ty in range(ir0 // tile_px, ir1 // tile_px + 1):
+            for tx in range(ic0 // tile_px, ic1 // tile_px + 1):
+                d = np.float64(hiz_tile[ty, tx])
+                if d * (1.0 + OCCLUSION_REL) + OCCLUSION_ABS_M >= dmin:
+                    return False
+        return True
+    for by in range(by0, by1 + 1):
+        for bx in range(bx0, bx1 + 1):
+            d = np.float64(hiz_block[by, bx])
+            if d * (1.0 + OCCLUSION_REL) + OCCLUSION_ABS_M >= dmin:
+                return False
+    return True
+
+
+@njit(cache=True)
+def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, t_days, planes, use_occlusion,
+         cam, hiz_block, hiz_tile, block_px, tile_px, st_node, st_box, state, drawn, out,
+         max_out, stats):
+    """Walk the tree front to back and emit the triangle ids to draw; resumable.
+
+    Parameters
+    ----------
+    nodes, splits : (M, 2) uint32 / float32 views of the flat tree.
+    prim_indices : (K,) int32; recs_f64 : (K, 8) float64 view of the triangle records.
+    subtree_refs : (M,) int64 from :func:`tree_info` (for the statistics).
+    t_days : float
+        City time; a triangle is drawn when ``begin <= t_days < end``.
+    planes : (6, 4) float64 from :func:`frustum_planes`.
+    use_occlusion : bool
+        Query node boxes against ``hiz_block`` / ``hiz_tile``.
+    st_node : (STACK_SIZE,) int64; st_box : (STACK_SIZE, 6) float64; state : (1,) int64
+        The walk stack and its pointer, kept by the caller between calls (start: the root with
+        its box and ``state[0] = 1``).
+    drawn : (T,) uint8
+        Triangles already emitted (the tree lists straddling triangles in several leaves).
+    out : (max_out + largest leaf,) int32
+        Receives the emitted ids.
+    stats : (N_STATS,) int64
+        Accumulated counts (``STAT_NAMES``).
+
+    Returns
+    -------
+    int
+        Number of ids written to ``out``; the walk is finished when ``state[0] == 0``.
+    """
+    sp = state[0]
+    n_out = 0
+    lo = np.empty(3)
+    hi = np.empty(3)
+    ortho = cam[0] != 0.0
+    while sp > 0 and n_out < max_out:
+        # Pop the nearest pending node.
+        sp -= 1
+        node = st_node[sp]
+        for a in range(3):
+            lo[a] = st_box[sp, a]
+            hi[a] = st_box[sp, 3 + a]
+        stats[ST_NODES_VISITED] += 1
+        if box_outside(planes, lo, hi):
+            stats[ST_FRUSTUM_NODES] += 1
+            stats[ST_FRUSTUM_REFS] += subtree_refs[node]
+            continue
+        if use_occlusion and subtree_refs[node] >= QUERY_MIN_REFS:
+            stats[ST_OCCLUSION_QUERIES] += 1
+            if box_occluded(lo, hi, cam, hiz_block, hiz_tile, block_px, tile_px):
+                stats[ST_OCCLUSION_NODES] += 1
+                stats[ST_OCCLUSION_REFS] += subtree_refs[node]
+                continue
+        w0 = np.int64(nodes[node, 0])
+        axis = w0 & 7
+        if axis == _LEAF:
+            # Emit the leaf's triangles present at t_days, each triangle once.
+            stats[ST_LEAVES_DRAWN] += 1
+            first = np.int64(nodes[node, 1])
+            for k in range(first, first + (w0 >> 3)):
+                if not (recs_f64[k, _T_BEGIN] <= t_days < recs_f64[k, _T_END]):
+                    stats[ST_TIME_REFS] += 1
+                    continue
+                tri = prim_indices[k]
+                if drawn[tri]:
+                    stats[ST_DUPLICATE_REFS] += 1
+                    continue
+                drawn[tri] = 1
+                out[n_out] = tri
+                n_out += 1
+            continue
+        split = np.float64(splits[node, 1])
+        right = w0 >> 3
+        if axis == _TIME:
+            # Only the child holding t_days can have triangles present at t_days.
+            keep = node + 1 if t_days < split else right
+            drop = right if t_days < split else node + 1
+            stats[ST_TIME_SUBTREES] += 1
+            stats[ST_TIME_REFS] += subtree_refs[drop]
+            st_node[sp] = keep
+            for a in range(3):
+                st_box[sp, a] = lo[a]
+                st_box[sp, 3 + a] = hi[a]
+            sp += 1
+            continue
+        # Spatial split: push the far child first so the near child is walked first.
+        if ortho:
+            left_first = axis != 2          # looking down: the upper half is nearer
+        else:
+            left_first = cam[1 + axis] < split
+        for side in range(2):
+            is_left = (side == 1) == left_first
+            st_node[sp] = node + 1 if is_left else right
+            for a in range(3):
+                st_box[sp, a] = lo[a]
+                st_box[sp, 3 + a] = hi[a]
+            if is_left:
+                st_box[sp, 3 + axis] = split
+            else:
+                st_box[sp, axis] = split
+            sp += 1
+    state[0] = sp
+    stats[ST_EMITTED] += n_out
+    return n_out

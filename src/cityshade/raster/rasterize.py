@@ -1,0 +1,469 @@
+"""The tile-parallel Numba triangle rasterizer that fills the G-buffer.
+
+Method
+------
+Homogeneous rasterization (Olano and Greer, "Triangle Scan Conversion using 2D Homogeneous
+Coordinates", 1997). Each vertex becomes ``v~ = (X, Y, Z)`` in the camera frame (map views:
+``(x, y, 1)``); the three edge functions ``e_i(xs, ys) = (v~_j x v~_k) . (xs, ys, 1)`` are
+linear in the pixel's screen coordinates. A pixel is covered when all three have the sign of
+``det = v~_0 . (v~_1 x v~_2)``; then ``e_i / sum(e)`` are *exactly* the barycentrics of the point
+where the pixel's ray meets the triangle's plane (so attributes are perspective-correct by
+construction, with no 1/w interpolation) and that point lies in front of the eye. Triangles
+that cross the near plane need no clipping into pieces: only their screen bounding box comes
+from the part in front of the near plane, and each pixel keeps the fragment only when its depth
+lies in [near, far]. Depth is the interpolated view depth times the pixel ray's length, i.e.
+the distance from the eye along the ray (maps: below the camera plane), stored as float32.
+
+Determinism
+-----------
+* Top-left fill rule: a pixel centre exactly on an edge (``e_i == 0``) belongs to the triangle
+  for which that edge is a left edge (``de/dxs > 0``) or a top edge (``de/dxs == 0`` and
+  ``de/dys < 0``). Two triangles sharing an edge compute edge functions that are exact
+  negations of each other (same float64 operations on the same vertices, in swapped order), so
+  exactly one of them owns the pixel: no cracks, no double coverage.
+* Depth test on ``(float32 depth, triangle id)`` lexicographically: the nearest fragment wins
+  and exact ties go to the lower id. The result does not depend on drawing order, so it is the
+  same for any thread count, tile size, batch split or culling setting.
+
+Parallelism: triangles are set up in parallel, binned serially into square tiles (in drawing
+order), and tiles are rasterized in parallel (``prange``); each tile owns its pixels.
+"""
+from __future__ import annotations
+
+import math
+import time
+
+import numba
+import numpy as np
+from numba import njit, prange
+
+from cityshade.errors import UsageError
+from cityshade.raster import culling as cull
+from cityshade.raster.camera import Camera
+from cityshade.raster.gbuffer import GBuffer
+
+#: Tile side in pixels: 64² pixels × (4 + 4 + 8 bytes) = 64 KiB of G-buffer per tile fits the
+#: L2 cache, and 1080p gives 510 tiles, plenty to balance two cores.
+TILE_PX = 64
+#: Side of the blocks of the hierarchical max-depth buffer (8 blocks per tile side).
+BLOCK_PX = 8
+#: Triangles per drawing batch without occlusion culling (bounds the setup arrays: 96 bytes per
+#: triangle, 25 MB per batch).
+MAX_BATCH = 262144
+#: First batch with occlusion culling: small, so the nearest surfaces are in the depth buffer
+#: before the first queries; later batches double up to MAX_BATCH.
+FIRST_OCCLUSION_BATCH = 2048
+#: Words per set-up triangle: 3 × (a, b, c) edge coefficients, 3 tie-ownership flags.
+_SETUP_WORDS = 12
+
+# Camera parameter vector shared with culling.box_occluded (see camera_params).
+_P_MODE, _P_NEAR, _P_FAR, _P_EYE_Z = 0, 13, 14, 15
+
+
+def camera_params(camera: Camera) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Flat camera description for the kernels.
+
+    Returns
+    -------
+    cam : (24,) float64
+        0 mode (0 perspective, 1 map); 1-3 eye; 4-6 right; 7-9 up; 10-12 forward; 13 near;
+        14 far; 15 map camera-plane height; 16, 17 ``col = a xs + b``; 18, 19
+        ``row = a ys + b`` (pixel-centre index from screen coordinates); 20 W; 21 H.
+    xs : (W,) float64; ys : (H,) float64
+        Screen coordinates of the pixel centres (:meth:`Camera.screen_coordinates`).
+    """
+    xs, ys = camera.screen_coordinates()
+    right, up, fwd = camera.frame()
+    cam = np.zeros(24)
+    cam[0] = 1.0 if camera.kind == "map" else 0.0
+    cam[1:4] = camera.eye_m
+    cam[4:7], cam[7:10], cam[10:13] = right, up, fwd
+    cam[13], cam[14] = camera.near_m, camera.far_m
+    cam[15] = camera.eye_m[2]
+    w, h = camera.width_px, camera.height_px
+    if camera.kind == "map":
+        px = camera.pixel_size_m
+        cam[16], cam[17] = 1.0 / px, -camera.x_left_m / px - 0.5
+        cam[18], cam[19] = -1.0 / px, camera.y_top_m / px - 0.5
+    else:
+        p = camera.pitch
+        cam[16], cam[17] = 1.0 / p, w / 2.0 - 0.5
+        cam[18], cam[19] = -1.0 / p, h / 2.0 - 0.5
+    cam[20], cam[21] = w, h
+    return cam, xs, ys
+
+
+@njit(cache=True, parallel=True)
+def _setup(vertices, triangles, ids, cam, coef, zs, bbox):
+    """Per triangle: normalised edge functions, vertex depths and the pixel bounding box.
+
+    ``coef`` (N, 12): a, b, c of the three edge functions (positive inside) and three 0/1
+    tie-ownership flags; ``zs`` (N, 3): view depth of the vertices; ``bbox`` (N, 4) int32:
+    col0, col1, row0, row1 inclusive (col0 > col1 when nothing is drawn).
+    """
+    n = ids.shape[0]
+    w = cam[20]
+    h = cam[21]
+    near = cam[_P_NEAR]
+    far = cam[_P_FAR]
+    ortho = cam[_P_MODE] != 0.0
+    for j in prange(n):
+        bbox[j, 0] = 1
+        bbox[j, 1] = 0
+        bbox[j, 2] = 1
+        bbox[j, 3] = 0
+        tri = ids[j]
+        vx = np.empty(3)
+        vy = np.empty(3)
+        vz = np.empty(3)
+        for i in range(3):
+            # Vertex to homogeneous camera coordinates (X, Y, Z) and its view depth.
+            q = triangles[tri, i]
+            px = np.float64(vertices[q, 0])
+            py = np.float64(vertices[q, 1])
+            pz = np.float64(vertices[q, 2])
+            if ortho:
+                vx[i] = px
+                vy[i] = py
+                vz[i] = 1.0
+                zs[j, i] = cam[_P_EYE_Z] - pz
+            else:
+                dx = px - cam[1]
+                dy = py - cam[2]
+                dz = pz - cam[3]
+                vx[i] = cam[4] * dx + cam[5] * dy + cam[6] * dz
+                vy[i] = cam[7] * dx + cam[8] * dy + cam[9] * dz
+                vz[i] = cam[10] * dx + cam[11] * dy + cam[12] * dz
+                zs[j, i] = vz[i]
+        zmin = min(zs[j, 0], zs[j, 1], zs[j, 2])
+        zmax = max(zs[j, 0], zs[j, 1], zs[j, 2])
+        if zmax < near or zmin > far:
+            continue
+        # Edge function of the edge opposite vertex i: v~_j x v~_k (j, k = i+1, i+2).
+        for i in range(3):
+            jj = (i + 1) % 3
+            kk = (i + 2) % 3
+            coef[j, 3 * i] = vy[jj] * vz[kk] - vz[jj] * vy[kk]
+            coef[j, 3 * i + 1] = vz[jj] * vx[kk] - vx[jj] * vz[kk]
+            coef[j, 3 * i + 2] = vx[jj] * vy[kk] - vy[jj] * vx[kk]
+        det = vx[0] * coef[j, 0] + vy[0] * coef[j, 1] + vz[0] * coef[j, 2]
+        if not (det > 0.0 or det < 0.0):
+            continue        # plane through the eye (or zero area, or NaN): never visible
+        if det < 0.0:
+            for m in range(9):
+                coef[j, m] = -coef[j, m]
+        for i in range(3):
+            a = coef[j, 3 * i]
+            b = coef[j, 3 * i + 1]
+            coef[j, 9 + i] = 1.0 if (a > 0.0 or (a == 0.0 and b < 0.0)) else 0.0
+        # Screen box of the part in front of the near plane (near-plane clipping).
+        xmin = np.inf
+        xmax = -np.inf
+        ymin = np.inf
+        ymax = -np.inf
+        for i in range(3):
+            if ortho:
+                sx = vx[i]
+                sy = vy[i]
+            elif vz[i] >= near:
+                sx = vx[i] / vz[i]
+                sy = vy[i] / vz[i]
+            else:
+                continue
+            xmin = min(xmin, sx)
+            xmax = max(xmax, sx)
+            ymin = min(ymin, sy)
+            ymax = max(ymax, sy)
+        if not ortho:
+            for i in range(3):
+                k = (i + 1) % 3
+                if (vz[i] >= near) != (vz[k] >= near):
+                    s = (near - vz[i]) / (vz[k] - vz[i])
+                    sx = (vx[i] + s * (vx[k] - vx[i])) / near
+                    sy = (vy[i] + s * (vy[k] - vy[i])) / near
+                    xmin = min(xmin, sx)
+                    xmax = max(xmax, sx)
+                    ymin = min(ymin, sy)
+                    ymax = max(ymax, sy)
+        # Pixel centres in the box, one pixel of slack (the edge functions decide exactly).
+        c0 = max(np.floor(cam[16] * xmin + cam[17]) - 1.0, 0.0)
+        c1 = min(np.ceil(cam[16] * xmax + cam[17]) + 1.0, w - 1.0)
+        r0 = max(np.floor(cam[18] * ymax + cam[19]) - 1.0, 0.0)
+        r1 = min(np.ceil(cam[18] * ymin + cam[19]) + 1.0, h - 1.0)
+        if c0 <= c1 and r0 <= r1:
+            bbox[j, 0] = int(c0)
+            bbox[j, 1] = int(c1)
+            bbox[j, 2] = int(r0)
+            bbox[j, 3] = int(r1)
+
+
+@njit(cache=True)
+def _bin(bbox, tile_px, tiles_x, tiles_y):
+    """Tile lists in drawing order: ``start`` (tiles + 1,) int64 offsets into ``items``."""
+    n_tiles = tiles_x * tiles_y
+    start = np.zeros(n_tiles + 1, np.int64)
+    n = bbox.shape[0]
+    for j in range(n):
+        if bbox[j, 0] > bbox[j, 1]:
+            continue
+        for ty in range(bbox[j, 2] // tile_px, bbox[j, 3] // tile_px + 1):
+            for tx in range(bbox[j, 0] // tile_px, bbox[j, 1] // tile_px + 1):
+                start[ty * tiles_x + tx + 1] += 1
+    for t in range(n_tiles):
+        start[t + 1] += start[t]
+    items = np.empty(start[n_tiles], np.int32)
+    fill = start[:-1].copy()
+    for j in range(n):
+        if bbox[j, 0] > bbox[j, 1]:
+            continue
+        for ty in range(bbox[j, 2] // tile_px, bbox[j, 3] // tile_px + 1):
+            for tx in range(bbox[j, 0] // tile_px, bbox[j, 1] // tile_px + 1):
+                t = ty * tiles_x + tx
+                items[fill[t]] = j
+                fill[t] += 1
+    return start, items
+
+
+@njit(cache=True, parallel=True)
+def _raster_tiles(start, items, ids, coef, zs, bbox, cam, xs, ys, tile_px, tiles_x, prim,
+                  depth, bary, update_hiz, hiz_block, hiz_tile, block_px):
+    """Rasterize the binned triangles, one tile per work item; refresh the max-depth buffer."""
+    n_tiles = start.shape[0] - 1
+    w = prim.shape[1]
+    h = prim.shape[0]
+    near = cam[_P_NEAR]
+    far = cam[_P_FAR]
+    ortho = cam[_P_MODE] != 0.0
+    for tile in prange(n_tiles):
+        if start[tile] == start[tile + 1]:
+            continue
+        tc0 = (tile % tiles_x) * tile_px
+        tr0 = (tile // tiles_x) * tile_px
+        tc1 = min(tc0 + tile_px, w) - 1
+        tr1 = min(tr0 + tile_px, h) - 1
+        for m in range(start[tile], start[tile + 1]):
+            j = items[m]
+            tri = ids[j]
+            a0, b0, k0 = coef[j, 0], coef[j, 1], coef[j, 2]
+            a1, b1, k1 = coef[j, 3], coef[j, 4], coef[j, 5]
+            a2, b2, k2 = coef[j, 6], coef[j, 7], coef[j, 8]
+            own0 = coef[j, 9] != 0.0
+            own1 = coef[j, 10] != 0.0
+            own2 = coef[j, 11] != 0.0
+            z0 = zs[j, 0]
+            dz1 = zs[j, 1] - z0
+            dz2 = zs[j, 2] - z0
+            for r in range(max(bbox[j, 2], tr0), min(bbox[j, 3], tr1) + 1):
+                y = ys[r]
+                row0 = b0 * y + k0
+                row1 = b1 * y + k1
+                row2 = b2 * y + k2
+                for c in range(max(bbox[j, 0], tc0), min(bbox[j, 1], tc1) + 1):
+                    x = xs[c]
+                    # Coverage with the top-left rule for exact zeros.
+                    e0 = a0 * x + row0
+                    if e0 < 0.0 or (e0 == 0.0 and not own0):
+                        continue
+                    e1 = a1 * x + row1
+                    if e1 < 0.0 or (e1 == 0.0 and not own1):
+                        continue
+                    e2 = a2 * x + row2
+                    if e2 < 0.0 or (e2 == 0.0 and not own2):
+                        continue
+                    s = e0 + e1 + e2
+                    if not s > 0.0:
+                        continue
+                    # Exact barycentrics of the ray/plane point; its view depth.
+                    inv = 1.0 / s
+                    u = e1 * inv
+                    v = e2 * inv
+                    z = z0 + u * dz1 + v * dz2
+                    if z < near or z > far:
+                        continue
+                    if ortho:
+                        d = np.float32(z)
+                    else:
+                        d = np.float32(z * np.sqrt(x * x + y * y + 1.0))
+                    cur = depth[r, c]
+                    if d < cur or (d == cur and tri < prim[r, c]):
+                        depth[r, c] = d
+                        prim[r, c] = tri
+                        bary[r, c, 0] = np.float32(u)
+                        bary[r, c, 1] = np.float32(v)
+        if update_hiz:
+            # Max depth of every block of this tile, and of the tile.
+            tmax = np.float32(0.0)
+            for br in range(tr0, tr1 + 1, block_px):
+                for bc in range(tc0, tc1 + 1, block_px):
+                    bmax = np.float32(0.0)
+                    for r in range(br, min(br + block_px, tr1 + 1)):
+                        for c in range(bc, min(bc + block_px, tc1 + 1)):
+                            bmax = max(bmax, depth[r, c])
+                    hiz_block[br // block_px, bc // block_px] = bmax
+                    tmax = max(tmax, bmax)
+            hiz_tile[tr0 // tile_px, tc0 // tile_px] = tmax
+
+
+@njit(cache=True)
+def _present(t_begin, t_end, t_days):
+    n = t_begin.shape[0]
+    out = np.empty(n, np.int32)
+    k = 0
+    for i in range(n):
+        if t_begin[i] <= t_days < t_end[i]:
+            out[k] = i
+            k += 1
+    return out[:k]
+
+
+class _Target:
+    """The G-buffer being drawn plus the kernel inputs that do not change between batches."""
+
+    def __init__(self, scene, camera: Camera, tile_px: int, occlusion: bool):
+        self.vertices = scene.vertices
+        self.triangles = scene.triangles
+        self.cam, self.xs, self.ys = camera_params(camera)
+        h, w = camera.shape
+        self.tile_px = tile_px
+        self.tiles_x = -(-w // tile_px)
+        self.tiles_y = -(-h // tile_px)
+        self.prim = np.full((h, w), -1, np.int32)
+        self.depth = np.full((h, w), np.inf, np.float32)
+        self.bary = np.zeros((h, w, 2), np.float32)
+        self.occlusion = occlusion
+        self.hiz_block = np.full((-(-h // BLOCK_PX), -(-w // BLOCK_PX)), np.inf, np.float32)
+        self.hiz_tile = np.full((self.tiles_y, self.tiles_x), np.inf, np.float32)
+        self.timings = {"setup_s": 0.0, "bin_s": 0.0, "raster_s": 0.0}
+        self.batches = 0
+        self.tile_triangles = 0
+
+    def draw(self, ids: np.ndarray) -> None:
+        n = ids.shape[0]
+        if n == 0:
+            return
+        t0 = time.perf_counter()
+        coef = np.empty((n, _SETUP_WORDS))
+        zs = np.empty((n, 3))
+        bbox = np.empty((n, 4), np.int32)
+        _setup(self.vertices, self.triangles, ids, self.cam, coef, zs, bbox)
+        t1 = time.perf_counter()
+        start, items = _bin(bbox, self.tile_px, self.tiles_x, self.tiles_y)
+        t2 = time.perf_counter()
+        _raster_tiles(start, items, ids, coef, zs, bbox, self.cam, self.xs, self.ys,
+                      self.tile_px, self.tiles_x, self.prim, self.depth, self.bary,
+                      self.occlusion, self.hiz_block, self.hiz_tile, BLOCK_PX)
+        t3 = time.perf_counter()
+        self.timings["setup_s"] += t1 - t0
+        self.timings["bin_s"] += t2 - t1
+        self.timings["raster_s"] += t3 - t2
+        self.batches += 1
+        self.tile_triangles += int(items.shape[0])
+
+
+def _validate(scene, camera, t_days, tile_px) -> float:
+    if not isinstance(camera, Camera):
+        raise UsageError(f"expected a Camera, not {type(camera).__name__}")
+    t = float(t_days)
+    if math.isnan(t):
+        raise UsageError("t_days must be a number of days since 1970-01-01, not NaN")
+    if tile_px < BLOCK_PX or tile_px % BLOCK_PX:
+        raise UsageError(f"tile_px must be a positive multiple of {BLOCK_PX}, not {tile_px}")
+    v = scene.vertices
+    tris = scene.triangles
+    if v.ndim != 2 or v.shape[1] != 3 or v.dtype != np.float32:
+        raise UsageError(f"scene vertices must be (V, 3) float32, not {v.shape} {v.dtype}")
+    if tris.ndim != 2 or tris.shape[1] != 3 or tris.dtype != np.int32:
+        raise UsageError(f"scene triangles must be (T, 3) int32, not {tris.shape} {tris.dtype}")
+    return t
+
+
+def rasterize(scene, camera: Camera, t_days: float, *, occlusion_culling="auto",
+              culling: bool = True, tile_px: int = TILE_PX,
+              first_batch: int = FIRST_OCCLUSION_BATCH) -> GBuffer:
+    """Rasterize the triangles present at city time ``t_days`` into a G-buffer.
+
+    Parameters
+    ----------
+    scene : Scene
+        Render-space triangles (arrays may be read-only memory maps) and, for culling, its
+        kd-tree.
+    camera : Camera
+        Perspective or map camera.
+    t_days : float
+        City time, days since 1970-01-01 UTC; triangles with ``begin <= t_days < end`` are drawn.
+    occlusion_culling : "auto", True or False
+        Software occlusion queries during the front-to-back walk. ``"auto"`` uses them for
+        perspective views and not for maps (a top-down view of a city has almost no occlusion:
+        the queries would cost more than they save).
+    culling : bool
+        Walk the kd-tree front to back with time filtering and frustum culling. False (or a
+        scene without kd-tree) draws every triangle present at ``t_days``; the picture is the
+        same.
+    tile_px : int
+        Tile side in pixels (a multiple of ``BLOCK_PX``); does not change the picture.
+    first_batch : int
+        With occlusion culling, triangles drawn before the first occlusion query (later batches
+        double up to ``MAX_BATCH``); does not change the picture.
+
+    Returns
+    -------
+    GBuffer
+        ``prim_id``, ``bary``, ``depth`` and ``stats`` (culling counts per step, timings in
+        seconds, tiles, threads).
+    """
+    t = _validate(scene, camera, t_days, int(tile_px))
+    if occlusion_culling not in ("auto", True, False):
+        raise UsageError(f"occlusion_culling must be 'auto', True or False, "
+                         f"not {occlusion_culling!r}")
+    tree = getattr(scene, "kdtree", None)
+    use_tree = bool(culling) and tree is not None
+    if occlusion_culling == "auto":
+        occlusion = use_tree and camera.kind == "perspective"
+    else:
+        occlusion = bool(occlusion_culling) and use_tree
+    started = time.perf_counter()
+    target = _Target(scene, camera, int(tile_px), occlusion)
+    walk_s = 0.0
+    stats: dict = {"culling": use_tree, "occlusion_culling": occlusion,
+                   "triangles": int(scene.triangles.shape[0])}
+    if use_tree:
+        refs, biggest = cull.tree_info(tree)
+        lo = np.asarray(tree.bounds[0, :3], np.float64)
+        hi = np.asarray(tree.bounds[1, :3], np.float64)
+        size = max(float(np.max(hi - lo)), float(np.max(np.abs(np.r_[lo, hi]))), 1.0)
+        planes = cull.frustum_planes(camera, cull.FRUSTUM_PAD_REL * size)
+        st_node = np.zeros(cull.STACK_SIZE, np.int64)
+        st_box = np.zeros((cull.STACK_SIZE, 6))
+        st_box[0, :3], st_box[0, 3:] = lo, hi
+        state = np.ones(1, np.int64)
+        drawn = np.zeros(scene.triangles.shape[0], np.uint8)
+        walk_stats = np.zeros(cull.N_STATS, np.int64)
+        batch = max(1, min(int(first_batch), MAX_BATCH)) if occlusion else MAX_BATCH
+        out = np.empty(MAX_BATCH + biggest, np.int32)
+        while state[0] > 0:
+            w0 = time.perf_counter()
+            n = cull.walk(tree.nodes, tree.node_splits, tree.prim_indices, tree.records_f64,
+                             refs, t, planes, occlusion, target.cam, target.hiz_block,
+                             target.hiz_tile, BLOCK_PX, target.tile_px, st_node, st_box, state,
+                             drawn, out, batch, walk_stats)
+            walk_s += time.perf_counter() - w0
+            target.draw(out[:n])
+            batch = min(2 * batch, MAX_BATCH)
+        stats.update({name: int(v) for name, v in zip(cull.STAT_NAMES, walk_stats)})
+        stats["references"] = int(tree.prim_indices.shape[0])
+    else:
+        w0 = time.perf_counter()
+        ids = _present(np.asarray(scene.tri_t_begin_days, np.float64),
+                       np.asarray(scene.tri_t_end_days, np.float64), t)
+        walk_s = time.perf_counter() - w0
+        stats["time_refs_removed"] = int(scene.triangles.shape[0] - ids.shape[0])
+        stats["triangles_drawn"] = int(ids.shape[0])
+        for b in range(0, ids.shape[0], MAX_BATCH):
+            target.draw(ids[b:b + MAX_BATCH])
+    timings = {"walk_s": walk_s, **target.timings, "total_s": time.perf_counter() - started}
+    stats.update({"batches": target.batches, "tile_px": target.tile_px,
+                  "tiles": target.tiles_x * target.tiles_y,
+                  "tile_triangle_pairs": target.tile_triangles,
+                  "threads": int(numba.get_num_threads()), "timings_s": timings})
+    return GBuffer(camera=camera, prim_id=target.prim, bary=target.bary, depth=target.depth,
+                   stats=stats)
