@@ -39,15 +39,16 @@ class Frame:
 
 
 def city_time_range(scene) -> tuple[float, float] | None:
-    """(first, last) finite validity bound of the model in days, None without dates."""
-    b = np.asarray(scene.obj_t_begin_days)
-    e = np.asarray(scene.obj_t_end_days)
-    finite = np.concatenate([b[np.isfinite(b)], e[np.isfinite(e)]])
-    return (float(finite.min()), float(finite.max())) if finite.size else None
+    """[earliest begin, latest end) over the model's objects in days (±inf for open ends);
+    None for a model without dates."""
+    if not scene.has_time:
+        return None
+    return (float(np.min(scene.obj_t_begin_days)), float(np.max(scene.obj_t_end_days)))
 
 
 def render_frame(scene, camera, t_days: float, sun, technique: str = "raytrace",
-                 options: dict | None = None, sky: bool = True) -> Frame:
+                 options: dict | None = None, sky: bool = True,
+                 ground: str | None = None) -> Frame:
     """Render one frame.
 
     Parameters
@@ -60,6 +61,9 @@ def render_frame(scene, camera, t_days: float, sun, technique: str = "raytrace",
     sun : cityshade.sun.SunPosition
     technique : str
         A name of the shadow registry (:func:`cityshade.shadows.get_technique`).
+    ground : str, optional
+        "min", "auto" or a CRS height: add a ground plane where no surface was drawn
+        (:mod:`cityshade.ground`).
     """
     from cityshade.raster.gbuffer import resolve
     from cityshade.raster.rasterize import rasterize
@@ -75,16 +79,23 @@ def render_frame(scene, camera, t_days: float, sun, technique: str = "raytrace",
         warnings.append(f"the sun is at or below the horizon (elevation {sun.elevation_deg:g}°): "
                         f"everything is in shadow")
     rng = city_time_range(scene)
-    if rng is not None and math.isfinite(t_days) and not rng[0] <= t_days <= rng[1]:
+    if rng is not None and not rng[0] <= t_days < rng[1]:
         from cityshade.citygml.temporal import days_to_iso
 
         warnings.append(f"the date is outside the model's time range "
-                        f"({days_to_iso(rng[0])} … {days_to_iso(rng[1])})")
+                        f"({days_to_iso(rng[0])} … {days_to_iso(rng[1])}): nothing stands then")
     t = time.perf_counter()
     gbuf = rasterize(scene, camera, t_days)
     timings["gbuffer_s"] = time.perf_counter() - t
     t = time.perf_counter()
     surfaces = resolve(scene, gbuf)
+    ground_info = None
+    if ground is not None:
+        from cityshade.ground import add_ground_plane, ground_height_m
+
+        z = ground_height_m(scene, ground)
+        surfaces, filled = add_ground_plane(scene, camera, surfaces, z)
+        ground_info = {"mode": ground, "z_crs_m": z + float(scene.origin_m[2]), "pixels": filled}
     timings["resolve_s"] = time.perf_counter() - t
     t = time.perf_counter()
     result = tech.run(ShadowContext(scene=scene, surfaces=surfaces, camera=camera, sun=sun,
@@ -99,6 +110,8 @@ def render_frame(scene, camera, t_days: float, sun, technique: str = "raytrace",
     warnings += list(shade_report.get("texture_warnings", []))
     diagnostics = dict(result.diagnostics)
     diagnostics["gbuffer"] = gbuf.stats
+    if ground_info is not None:
+        diagnostics["ground"] = ground_info
     return Frame(camera=camera, gbuffer=gbuf, surfaces=surfaces, lit=lit, rgb=rgb, sun=sun,
                  t_days=t_days, technique=technique, timings_s=timings,
                  diagnostics=diagnostics, warnings=warnings)
@@ -135,6 +148,9 @@ def frame_metadata(frame: Frame, scene, date_text: str) -> dict[str, Any]:
     }
     if frame.sun.note:
         meta["cityshade:sun_note"] = frame.sun.note
+    ground = frame.diagnostics.get("ground")
+    meta["cityshade:ground"] = (f"{ground['mode']} plane at z={ground['z_crs_m']:.3f} m"
+                                if ground else "none")
     return meta
 
 

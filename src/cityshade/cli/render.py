@@ -53,10 +53,12 @@ def _size(text: str) -> tuple[int, int]:
               help="8-bit shadow mask PNG: 255 sun, 0 shadow, 128 no surface.")
 @click.option("--geotiff", type=click.Path(dir_okay=False, path_type=Path),
               help="Map view: georeferenced mask (TIFF + world file + .prj) for QGIS/GDAL.")
+@click.option("--ground", help="Add a ground plane where the model has no surface: min (lowest "
+              "point), auto (typical ground level) or a height in metres.")
 @click.option("--no-sky", is_flag=True, help="Black background instead of the sky gradient.")
 @click.option("-v", "--verbose", is_flag=True, help="Stage timings and technique diagnostics.")
 def render(file, date_text, tz, sun_azimuth, sun_elevation, camera, eye, target, fov, size,
-           pixel_size, technique, output, png, mask, geotiff, no_sky, verbose):
+           pixel_size, technique, output, png, mask, geotiff, ground, no_sky, verbose):
     """Render FILE (a .cityshade scene) as the city stood on --date, lit by the sun at
     --sun-azimuth/--sun-elevation, from a perspective camera or as a top-down map."""
     import datetime as dt
@@ -85,7 +87,8 @@ def render(file, date_text, tz, sun_azimuth, sun_elevation, camera, eye, target,
     load_s = time.perf_counter() - t0
     cam = _camera(scene, camera, eye_v, target_v, fov, width, height, pixel_size)
     sun = sun_from_angles(sun_azimuth, sun_elevation, scene.crs, scene.origin_m)
-    frame = render_frame(scene, cam, user_date.city_days, sun, technique, sky=not no_sky)
+    frame = render_frame(scene, cam, user_date.city_days, sun, technique, sky=not no_sky,
+                         ground=ground)
     for warning in frame.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
     t1 = time.perf_counter()
