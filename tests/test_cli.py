@@ -5,6 +5,7 @@ import json
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 from click.testing import CliRunner
 
@@ -140,3 +141,82 @@ def test_python_m_cityshade(gml, tmp_path):
                          capture_output=True, text=True)
     assert out.returncode == 1 and out.stderr.strip().startswith("cityshade: error:")
     assert "Traceback" not in out.stderr
+
+
+# -- render ------------------------------------------------------------------------------------
+@pytest.fixture
+def built(gml, tmp_path):
+    out = tmp_path / "city.cityshade"
+    assert run("build", gml, "-o", out, "-q").exit_code == 0
+    return out
+
+
+def test_render_outputs(built, tmp_path):
+    from cityshade import imageio
+
+    exr, png, mask = tmp_path / "f.exr", tmp_path / "f.png", tmp_path / "m.png"
+    result = run("render", built, "--date", "1950", "--sun-azimuth", "135", "--sun-elevation", "30",
+                 "--size", "96x64", "-o", exr, "--png", png, "--mask", mask, "-v")
+    assert result.exit_code == 0, result.output
+    channels, attrs = imageio.read_exr(exr)
+    assert {"R", "G", "B", "shadow", "Z", "N.x", "N.y", "N.z", "primid", "objid"} <= set(channels)
+    assert channels["shadow"].shape == (64, 96)
+    assert attrs["cityshade:technique"] == "raytrace"
+    assert float(attrs["cityshade:sun_elevation_deg"]) == 30.0
+    assert "timings" in result.output and "azimuth 135.000° true" in result.output
+    pixels, _ = imageio.read_image(png)
+    assert pixels.shape == (64, 96, 3)
+    m, _ = imageio.read_image(mask)
+    assert set(np.unique(m).tolist()) <= {0, 128, 255} and (m == 255).any() and (m == 0).any()
+
+
+def test_render_map_georeferenced(built, tmp_path):
+    tif = tmp_path / "mask.tif"
+    result = run("render", built, "--date", "1950", "--sun-azimuth", "180", "--sun-elevation", "40",
+                 "--camera", "map", "--pixel-size", "0.5", "-o", tmp_path / "m.exr", "--geotiff", tif)
+    assert result.exit_code == 0, result.output
+    world = [float(v) for v in tif.with_suffix(".tfw").read_text().split()]
+    # World file: pixel size, rotations, then the CENTRE of the upper-left pixel.
+    assert world[0] == 0.5 and world[3] == -0.5
+    assert tif.with_suffix(".prj").read_text().startswith("PROJCS")
+
+
+def test_render_failures(built, tmp_path):
+    out = tmp_path / "x.exr"
+    assert_one_line_error(run("render", built, "-o", out), "no sun position", code=2)
+    assert_one_line_error(run("render", built, "--sun-azimuth", "10", "-o", out),
+                          "give both --sun-azimuth and --sun-elevation", code=2)
+    assert_one_line_error(run("render", built, "--sun-azimuth", "10", "--sun-elevation", "95",
+                              "-o", out), "between -90 and 90", code=2)
+    assert_one_line_error(run("render", built, "--sun-azimuth", "10", "--sun-elevation", "30",
+                              "--shadows", "magic", "-o", out), "unknown shadow technique", code=2)
+    assert_one_line_error(run("render", built, "--sun-azimuth", "10", "--sun-elevation", "30",
+                              "--camera", "nowhere", "-o", out), "unknown camera 'nowhere'", code=2)
+    assert_one_line_error(run("render", built, "--sun-azimuth", "10", "--sun-elevation", "30",
+                              "--date", "1850-06-21T15:00", "-o", out), "--tz", code=2)
+    assert_one_line_error(run("render", built, "--sun-azimuth", "10", "--sun-elevation", "30",
+                              "-o", built / "x.exr"), "x.exr")
+    assert_one_line_error(run("render", tmp_path / "none.cityshade", "--sun-azimuth", "10",
+                              "--sun-elevation", "30", "-o", out), "no such file")
+    assert not out.exists()
+
+
+def test_render_date_outside_range_warns(tmp_path):
+    extra = "<bldg:yearOfConstruction>1900</bldg:yearOfConstruction>"
+    src = tmp_path / "dated.gml"
+    src.write_text(city(building("b1", box_polygons(0, 0, 0, 10, 8, 6), extra=extra)))
+    assert run("build", src, "-q").exit_code == 0
+    result = run("render", src.with_suffix(".cityshade"), "--date", "1800", "--sun-azimuth", "135",
+                 "--sun-elevation", "30", "--size", "32x32", "-o", tmp_path / "a.exr")
+    assert result.exit_code == 0
+    assert "warning: the date is outside the model's time range" in result.output
+
+
+def test_render_night_warns_and_is_dark(built, tmp_path):
+    from cityshade import imageio
+
+    result = run("render", built, "--date", "1950", "--sun-azimuth", "0", "--sun-elevation", "-10",
+                 "--size", "32x32", "-o", tmp_path / "n.exr")
+    assert result.exit_code == 0 and "below the horizon" in result.output
+    channels, _ = imageio.read_exr(tmp_path / "n.exr")
+    assert (channels["shadow"] == 0).all() and np.isfinite(channels["R"]).all()
