@@ -133,16 +133,28 @@ def frustum_planes(camera, pad_m: float) -> np.ndarray:
 
 
 @njit(cache=True)
-def box_outside(planes, lo, hi):
-    """Whether the box ``[lo, hi]`` lies entirely outside one of the planes."""
+def box_outside(planes, lo, hi, mask):
+    """Test the box ``[lo, hi]`` against the planes whose bit is set in ``mask``.
+
+    Returns ``(outside, mask)``: ``outside`` when the box lies entirely outside one plane;
+    the returned mask drops the planes the box lies entirely inside, so the children of a
+    node inside the frustum skip those tests (plane masking).
+    """
     for i in range(planes.shape[0]):
-        # The box corner farthest along the plane normal (the "p-vertex").
-        s = planes[i, 3]
+        if not (mask >> i) & 1:
+            continue
+        # The box corners farthest along and against the plane normal.
+        far = planes[i, 3]
+        near = planes[i, 3]
         for a in range(3):
-            s += planes[i, a] * (hi[a] if planes[i, a] > 0.0 else lo[a])
-        if s < 0.0:
-            return True
-    return False
+            n = planes[i, a]
+            far += n * (hi[a] if n > 0.0 else lo[a])
+            near += n * (lo[a] if n > 0.0 else hi[a])
+        if far < 0.0:
+            return True, mask
+        if near >= 0.0:
+            mask &= ~(1 << i)
+    return False, mask
 
 
 @njit(cache=True)
@@ -221,7 +233,7 @@ def box_occluded(lo, hi, cam, hiz_block, hiz_tile, block_px, tile_px):
 
 @njit(cache=True)
 def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, t_days, planes, use_occlusion,
-         cam, hiz_block, hiz_tile, block_px, tile_px, st_node, st_box, state, drawn, out,
+         cam, hiz_block, hiz_tile, block_px, tile_px, st_node, st_box, st_mask, state, drawn, out,
          max_out, stats):
     """Walk the tree front to back and emit the triangle ids to draw; resumable.
 
@@ -235,9 +247,10 @@ def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, t_days, planes, us
     planes : (6, 4) float64 from :func:`frustum_planes`.
     use_occlusion : bool
         Query node boxes against ``hiz_block`` / ``hiz_tile``.
-    st_node : (STACK_SIZE,) int64; st_box : (STACK_SIZE, 6) float64; state : (1,) int64
-        The walk stack and its pointer, kept by the caller between calls (start: the root with
-        its box and ``state[0] = 1``).
+    st_node : (STACK_SIZE,) int64; st_box : (STACK_SIZE, 6) float64;
+    st_mask : (STACK_SIZE,) int64; state : (1,) int64
+        The walk stack (node, box, planes still to test) and its pointer, kept by the caller
+        between calls (start: the root, its box, mask 63 and ``state[0] = 1``).
     drawn : (T,) uint8
         Triangles already emitted (the tree lists straddling triangles in several leaves).
     out : (max_out + largest leaf,) int32
@@ -259,11 +272,13 @@ def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, t_days, planes, us
         # Pop the nearest pending node.
         sp -= 1
         node = st_node[sp]
+        mask = st_mask[sp]
         for a in range(3):
             lo[a] = st_box[sp, a]
             hi[a] = st_box[sp, 3 + a]
         stats[ST_NODES_VISITED] += 1
-        if box_outside(planes, lo, hi):
+        outside, mask = box_outside(planes, lo, hi, mask)
+        if outside:
             stats[ST_FRUSTUM_NODES] += 1
             stats[ST_FRUSTUM_REFS] += subtree_refs[node]
             continue
@@ -300,6 +315,7 @@ def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, t_days, planes, us
             stats[ST_TIME_SUBTREES] += 1
             stats[ST_TIME_REFS] += subtree_refs[drop]
             st_node[sp] = keep
+            st_mask[sp] = mask
             for a in range(3):
                 st_box[sp, a] = lo[a]
                 st_box[sp, 3 + a] = hi[a]
@@ -313,6 +329,7 @@ def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, t_days, planes, us
         for side in range(2):
             is_left = (side == 1) == left_first
             st_node[sp] = node + 1 if is_left else right
+            st_mask[sp] = mask
             for a in range(3):
                 st_box[sp, a] = lo[a]
                 st_box[sp, 3 + a] = hi[a]

@@ -53,6 +53,17 @@ MAX_BATCH = 262144
 #: First batch with occlusion culling: small, so the nearest surfaces are in the depth buffer
 #: before the first queries; later batches double up to MAX_BATCH.
 FIRST_OCCLUSION_BATCH = 2048
+#: "auto" occlusion culling judges the queries after this many of them ...
+AUTO_MIN_QUERIES = 2000
+#: ... and switches them off when they removed less than this fraction of the triangle
+#: references reached so far: a query costs about as much as drawing a few small triangles,
+#: and on the 1M-triangle city's overview (benchmarks/render.py) queries removing < 5 % made
+#: the pass slower than no queries at all.
+AUTO_MIN_YIELD = 0.05
+#: Slack of the pixel bounding box, in pixels: projected vertex positions and the pixel
+#: mapping are float64 (errors ~1e-12 px), so a centre the edge functions find inside is never
+#: outside the box; the edge functions alone decide coverage inside it.
+BOX_SLACK_PX = 1e-6
 #: Words per set-up triangle: 3 × (a, b, c) edge coefficients, 3 tie-ownership flags.
 _SETUP_WORDS = 12
 
@@ -185,11 +196,11 @@ def _setup(vertices, triangles, ids, cam, coef, zs, bbox):
                     xmax = max(xmax, sx)
                     ymin = min(ymin, sy)
                     ymax = max(ymax, sy)
-        # Pixel centres in the box, one pixel of slack (the edge functions decide exactly).
-        c0 = max(np.floor(cam[16] * xmin + cam[17]) - 1.0, 0.0)
-        c1 = min(np.ceil(cam[16] * xmax + cam[17]) + 1.0, w - 1.0)
-        r0 = max(np.floor(cam[18] * ymax + cam[19]) - 1.0, 0.0)
-        r1 = min(np.ceil(cam[18] * ymin + cam[19]) + 1.0, h - 1.0)
+        # Pixel centres inside the box (a sub-pixel triangle between centres gets none).
+        c0 = max(np.ceil(cam[16] * xmin + cam[17] - BOX_SLACK_PX), 0.0)
+        c1 = min(np.floor(cam[16] * xmax + cam[17] + BOX_SLACK_PX), w - 1.0)
+        r0 = max(np.ceil(cam[18] * ymax + cam[19] - BOX_SLACK_PX), 0.0)
+        r1 = min(np.floor(cam[18] * ymin + cam[19] + BOX_SLACK_PX), h - 1.0)
         if c0 <= c1 and r0 <= r1:
             bbox[j, 0] = int(c0)
             bbox[j, 1] = int(c1)
@@ -360,6 +371,14 @@ class _Target:
         self.tile_triangles += int(items.shape[0])
 
 
+def _occlusion_does_not_pay(walk_stats) -> bool:
+    """Whether the occlusion queries so far removed too little to be worth their cost."""
+    queries = walk_stats[cull.ST_OCCLUSION_QUERIES]
+    removed = walk_stats[cull.ST_OCCLUSION_REFS]
+    drawn = walk_stats[cull.ST_EMITTED]
+    return queries >= AUTO_MIN_QUERIES and removed < AUTO_MIN_YIELD * (removed + drawn)
+
+
 def _validate(scene, camera, t_days, tile_px) -> float:
     if not isinstance(camera, Camera):
         raise UsageError(f"expected a Camera, not {type(camera).__name__}")
@@ -394,7 +413,9 @@ def rasterize(scene, camera: Camera, t_days: float, *, occlusion_culling="auto",
     occlusion_culling : "auto", True or False
         Software occlusion queries during the front-to-back walk. ``"auto"`` uses them for
         perspective views and not for maps (a top-down view of a city has almost no occlusion:
-        the queries would cost more than they save).
+        the queries would cost more than they save), and switches them off during the walk
+        once ``AUTO_MIN_QUERIES`` queries removed less than ``AUTO_MIN_YIELD`` of the triangle
+        references reached (a whole-city overview, say).
     culling : bool
         Walk the kd-tree front to back with time filtering and frustum culling. False (or a
         scene without kd-tree) draws every triangle present at ``t_days``; the picture is the
@@ -417,7 +438,8 @@ def rasterize(scene, camera: Camera, t_days: float, *, occlusion_culling="auto",
                          f"not {occlusion_culling!r}")
     tree = getattr(scene, "kdtree", None)
     use_tree = bool(culling) and tree is not None
-    if occlusion_culling == "auto":
+    auto = occlusion_culling == "auto"
+    if auto:
         occlusion = use_tree and camera.kind == "perspective"
     else:
         occlusion = bool(occlusion_culling) and use_tree
@@ -434,6 +456,8 @@ def rasterize(scene, camera: Camera, t_days: float, *, occlusion_culling="auto",
         planes = cull.frustum_planes(camera, cull.FRUSTUM_PAD_REL * size)
         st_node = np.zeros(cull.STACK_SIZE, np.int64)
         st_box = np.zeros((cull.STACK_SIZE, 6))
+        st_mask = np.zeros(cull.STACK_SIZE, np.int64)
+        st_mask[0] = (1 << planes.shape[0]) - 1
         st_box[0, :3], st_box[0, 3:] = lo, hi
         state = np.ones(1, np.int64)
         drawn = np.zeros(scene.triangles.shape[0], np.uint8)
@@ -444,11 +468,15 @@ def rasterize(scene, camera: Camera, t_days: float, *, occlusion_culling="auto",
             w0 = time.perf_counter()
             n = cull.walk(tree.nodes, tree.node_splits, tree.prim_indices, tree.records_f64,
                              refs, t, planes, occlusion, target.cam, target.hiz_block,
-                             target.hiz_tile, BLOCK_PX, target.tile_px, st_node, st_box, state,
+                             target.hiz_tile, BLOCK_PX, target.tile_px, st_node, st_box, st_mask, state,
                              drawn, out, batch, walk_stats)
             walk_s += time.perf_counter() - w0
             target.draw(out[:n])
             batch = min(2 * batch, MAX_BATCH)
+            if auto and occlusion and _occlusion_does_not_pay(walk_stats):
+                # Switch the queries (and the max-depth refresh) off for the rest of the walk.
+                occlusion = target.occlusion = False
+                stats["occlusion_switched_off_at_batch"] = target.batches
         stats.update({name: int(v) for name, v in zip(cull.STAT_NAMES, walk_stats)})
         stats["references"] = int(tree.prim_indices.shape[0])
     else:

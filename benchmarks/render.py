@@ -1,0 +1,247 @@
+"""Camera-pass benchmark: the culled G-buffer rasterizer on the 1M-triangle city vs Mesa llvmpipe.
+
+Input: the synthetic benchmark city of ``cityshade.samplegen`` (``--triangles``, default
+1 000 000, seed 7), generated into ``--workdir`` (default ``bench_out/``) when missing and
+built once with ``cityshade build`` to ``city_1M.cityshade`` (or ``city_<N>.cityshade``).
+
+Measured, at 1 and 2 Numba threads, for the overview camera at ``--size`` (default 1920x1080)
+and the city time ``--date`` (default 2000-01-01):
+
+* ``rasterize`` with occlusion culling on, and off (frustum + time culling only), and without
+  the kd-tree walk at all (every triangle present at the date); the first (cold) run is
+  reported apart, then the median of ``--repeat`` runs, with the per-step timings and the
+  culling statistics (nodes/triangle references removed by each step);
+* agreement of ``prim_id`` with one closest-hit ray per pixel (``gbuffer_by_raycasting``).
+
+Anchor (when ``moderngl`` creates an EGL context, i.e. Mesa llvmpipe on this machine): the same
+triangles (those present at the date), the same clip matrix, drawn into a 1080p RGBA8 + 24-bit
+depth framebuffer (clear + draw + finish), in a child process per thread count
+(``LP_NUM_THREADS``). DESIGN §12 measured 264 ms / 165 ms at 1 / 2 threads. Prints one JSON
+object and then a table.
+
+Usage: python benchmarks/render.py [--repeat 5] [--size 1920x1080] [--no-llvmpipe]
+       [--triangles 1000000] [--workdir bench_out] [--json out.json]
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import platform
+import statistics
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+REPO = Path(__file__).resolve().parents[1]
+DAY_2000 = 10957.0          # 2000-01-01 in days since 1970-01-01
+ANCHOR_DESIGN_MS = {1: 264.0, 2: 165.0}   # DESIGN §12, llvmpipe 1080p depth+colour
+
+
+def _commit() -> str:
+    try:
+        return subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=REPO, text=True,
+                              capture_output=True, check=True).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
+def _machine() -> dict:
+    return {"cpu_count": os.cpu_count(), "platform": platform.platform(),
+            "python": platform.python_version()}
+
+
+def ensure_scene(workdir: Path, triangles: int, seed: int) -> Path:
+    """Generate (when missing) and build (once) the benchmark city; returns the scene path."""
+    workdir.mkdir(parents=True, exist_ok=True)
+    gml = workdir / f"city_{triangles}_s{seed}.gml"
+    tag = "1M" if triangles == 1_000_000 else str(triangles)
+    scene = workdir / f"city_{tag}.cityshade"
+    if not gml.exists():
+        subprocess.run([sys.executable, "-m", "cityshade.samplegen", str(gml), "--triangles",
+                        str(triangles), "--seed", str(seed)], check=True)
+    if not scene.exists():
+        subprocess.run([sys.executable, "-m", "cityshade", "build", str(gml), "-o", str(scene)],
+                       check=True)
+    return scene
+
+
+def time_runs(fn, repeat: int) -> tuple[float, list[float], object]:
+    """(first run s, later runs s, last result)."""
+    t = time.perf_counter()
+    result = fn()
+    first = time.perf_counter() - t
+    runs = []
+    for _ in range(repeat):
+        t = time.perf_counter()
+        result = fn()
+        runs.append(time.perf_counter() - t)
+    return first, runs, result
+
+
+# --- llvmpipe anchor (child process: LP_NUM_THREADS is read when the context is created) -------
+_LLVMPIPE_CHILD = r"""
+import json, sys, time, statistics
+import numpy as np
+import moderngl
+data = np.load(sys.argv[1])
+width, height, repeat = int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
+ctx = moderngl.create_standalone_context(backend="egl")
+prog = ctx.program(
+    vertex_shader='''#version 330
+        uniform mat4 clip_from_world;
+        in vec3 pos;
+        flat out int tri;
+        void main() { gl_Position = clip_from_world * vec4(pos, 1.0); }''',
+    fragment_shader='''#version 330
+        out vec4 colour;
+        void main() { colour = vec4(float(gl_PrimitiveID & 255) / 255.0, 0.5, 0.5, 1.0); }''')
+prog["clip_from_world"].write(data["clip"].astype("f4").T.tobytes())
+vbo = ctx.buffer(data["vertices"].astype("f4").tobytes())
+ibo = ctx.buffer(data["triangles"].astype("i4").tobytes())
+vao = ctx.vertex_array(prog, [(vbo, "3f", "pos")], ibo)
+fbo = ctx.framebuffer(color_attachments=[ctx.renderbuffer((width, height), 4)],
+                      depth_attachment=ctx.depth_renderbuffer((width, height)))
+fbo.use()
+ctx.enable(moderngl.DEPTH_TEST)
+def frame():
+    fbo.clear(0.0, 0.0, 0.0, 1.0, depth=1.0)
+    vao.render(moderngl.TRIANGLES)
+    ctx.finish()
+t = time.perf_counter(); frame(); first = time.perf_counter() - t
+runs = []
+for _ in range(repeat):
+    t = time.perf_counter(); frame(); runs.append(time.perf_counter() - t)
+depth = np.frombuffer(fbo.read(attachment=-1, components=1, dtype="f4"), "f4").reshape(height, width)[::-1]
+print(json.dumps({"renderer": ctx.info["GL_RENDERER"], "first_s": first, "runs_s": runs,
+                  "covered": float((depth < 1.0).mean())}))
+"""
+
+
+def llvmpipe(scene, camera, t_days, repeat, threads, tmp: Path) -> dict:
+    """Mesa llvmpipe drawing the triangles present at ``t_days`` (child process per count)."""
+    try:
+        import moderngl  # noqa: F401
+    except ImportError as exc:
+        return {"unavailable": f"moderngl not importable ({exc})"}
+    present = ((np.asarray(scene.tri_t_begin_days) <= t_days)
+               & (t_days < np.asarray(scene.tri_t_end_days)))
+    npz = tmp / "llvmpipe_input.npz"
+    np.savez(npz, vertices=np.asarray(scene.vertices), triangles=np.asarray(scene.triangles)[present],
+             clip=camera.clip_from_world())
+    out = {}
+    for n in threads:
+        env = dict(os.environ, LP_NUM_THREADS=str(n))
+        proc = subprocess.run([sys.executable, "-c", _LLVMPIPE_CHILD, str(npz),
+                               str(camera.width_px), str(camera.height_px), str(repeat)],
+                              env=env, capture_output=True, text=True, timeout=1800)
+        if proc.returncode != 0:
+            lines = proc.stderr.strip().splitlines()
+            return {"unavailable": lines[-1] if lines else "llvmpipe child failed"}
+        res = json.loads(proc.stdout.strip().splitlines()[-1])
+        res["median_ms"] = 1000.0 * statistics.median(res["runs_s"])
+        res["first_ms"] = 1000.0 * res["first_s"]
+        out[n] = res
+    npz.unlink(missing_ok=True)
+    return out
+
+
+def main(argv=None) -> dict:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--triangles", type=int, default=1_000_000)
+    ap.add_argument("--seed", type=int, default=7)
+    ap.add_argument("--workdir", type=Path, default=REPO / "bench_out")
+    ap.add_argument("--size", default="1920x1080")
+    ap.add_argument("--date-days", type=float, default=DAY_2000,
+                    help="city time in days since 1970-01-01 (default 2000-01-01)")
+    ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--no-llvmpipe", action="store_true")
+    ap.add_argument("--json", type=Path)
+    args = ap.parse_args(argv)
+
+    import numba
+
+    from cityshade.raster import camera as cams
+    from cityshade.raster.gbuffer import gbuffer_by_raycasting
+    from cityshade.raster.rasterize import rasterize
+    from cityshade.scenefile import load_scene
+
+    width, height = (int(v) for v in args.size.lower().split("x"))
+    path = ensure_scene(args.workdir, args.triangles, args.seed)
+    scene = load_scene(path)
+    t_days = args.date_days
+    camera = cams.overview(scene, width, height)
+    present = int(((np.asarray(scene.tri_t_begin_days) <= t_days)
+                   & (t_days < np.asarray(scene.tri_t_end_days))).sum())
+    report: dict = {"commit": _commit(), "machine": _machine(), "scene": str(path),
+                    "triangles": scene.n_triangles, "present_at_date": present,
+                    "kdtree_references": int(scene.kdtree.prim_indices.shape[0]),
+                    "size": [width, height], "t_days": t_days, "ours": {}}
+    threads = [1, 2] if numba.config.NUMBA_NUM_THREADS >= 2 else [1]
+    variants = {"auto": dict(occlusion_culling="auto"),
+                "occlusion": dict(occlusion_culling=True),
+                "frustum_time": dict(occlusion_culling=False),
+                "no_walk": dict(culling=False)}
+    reference = None
+    for n in threads:
+        numba.set_num_threads(n)
+        for name, kwargs in variants.items():
+            first, runs, g = time_runs(lambda: rasterize(scene, camera, t_days, **kwargs),
+                                       args.repeat)
+            if reference is None:
+                reference = g.prim_id
+            steps = g.stats["timings_s"]
+            report["ours"][f"{name}_{n}t"] = {
+                "first_ms": 1000 * first, "median_ms": 1000 * statistics.median(runs),
+                "runs_ms": [1000 * r for r in runs],
+                "identical_to_first_variant": bool(np.array_equal(g.prim_id, reference)),
+                "last_run_steps_ms": {k[:-2]: 1000 * v for k, v in steps.items()},
+                "stats": {k: v for k, v in g.stats.items() if k != "timings_s"}}
+    numba.set_num_threads(threads[-1])
+    t = time.perf_counter()
+    rays = gbuffer_by_raycasting(scene, camera, t_days)
+    report["raycast_twin"] = {"ms": 1000 * (time.perf_counter() - t),
+                              "prim_id_agreement": float((rays.prim_id == reference).mean()),
+                              "covered": float((reference >= 0).mean())}
+    if not args.no_llvmpipe:
+        report["llvmpipe"] = llvmpipe(scene, camera, t_days, args.repeat, threads, args.workdir)
+    print(json.dumps(report, indent=1, default=str))
+    if args.json:
+        args.json.write_text(json.dumps(report, indent=1, default=str))
+    _table(report, threads)
+    return report
+
+
+def _table(report: dict, threads) -> None:
+    lp = report.get("llvmpipe", {})
+    print(f"\nG-buffer pass, {report['triangles']} triangles ({report['present_at_date']} present "
+          f"at the date), {report['size'][0]}x{report['size'][1]}, overview camera; "
+          f"agreement with ray casting {report['raycast_twin']['prim_id_agreement']:.4%}")
+    print(f"{'variant':<16}{'threads':>8}{'first ms':>10}{'median ms':>11}{'drawn':>10}"
+          f"{'frustum':>10}{'occluded':>10}{'time':>10}{'vs llvmpipe':>13}")
+    for key, res in report["ours"].items():
+        name, n = key.rsplit("_", 1)
+        n = int(n[:-1])
+        st = res["stats"]
+        anchor = lp.get(n, {}).get("median_ms") if isinstance(lp, dict) else None
+        ratio = f"{anchor / res['median_ms']:.2f}x" if anchor else "-"
+        print(f"{name:<16}{n:>8}{res['first_ms']:>10.1f}{res['median_ms']:>11.1f}"
+              f"{st.get('triangles_drawn', 0):>10}{st.get('frustum_refs_removed', 0):>10}"
+              f"{st.get('occlusion_refs_removed', 0):>10}{st.get('time_refs_removed', 0):>10}"
+              f"{ratio:>13}")
+    if "unavailable" in lp:
+        print(f"llvmpipe: unavailable ({lp['unavailable']})")
+    else:
+        for n in threads:
+            if n in lp:
+                print(f"{'llvmpipe':<16}{n:>8}{lp[n]['first_ms']:>10.1f}{lp[n]['median_ms']:>11.1f}"
+                      f"   (DESIGN §12: {ANCHOR_DESIGN_MS[n]:.0f} ms; {lp[n]['renderer']})")
+    print("(drawn/frustum/occluded/time: triangles drawn; triangle references removed by each "
+          "step; 'vs llvmpipe' = llvmpipe median / ours, >1 means we are faster)")
+
+
+if __name__ == "__main__":
+    main()
