@@ -51,7 +51,11 @@ class KdTreeSettings:
     """Tunables of the kd-tree build (TOML table ``[kdtree]``).
 
     The defaults are the values measured fastest for our own traversal on the 1M-triangle
-    synthetic city of ``benchmarks/raytrace.py`` (``--sweep-sah`` there repeats the measurement).
+    synthetic city of ``benchmarks/raytrace.py`` (``--sweep-sah`` repeats the measurement:
+    intersection_cost 1.0/1.5/2.5 x empty_bonus 0/0.2/0.5, map workload, one thread). On the
+    shared 2-core machine (Nov 2026) 1.5/0 and 1.5/0.2 tied (4.2 Mrays/s closest hit,
+    1.9-2.0 Mrays/s shadow rays), 2.5 was 2-5 % slower and a bonus of 0.5 10-25 % slower;
+    1.5/0.2 has the lower SAH cost. Treat differences under ~5 % as noise on that machine.
     """
 
     #: Cost of one traversal step, relative to ``intersection_cost``.

@@ -15,8 +15,8 @@ from numba import njit, prange
 from cityshade.trace.kernels import STACK_SIZE, any_hit, closest_hit
 
 #: Rays per brick: large enough to amortise the per-brick stack allocation and to keep the
-#: caster cache warm, small enough for the two threads to balance on uneven scenes (measured
-#: with benchmarks/raytrace.py: 64-1024 are within a few percent of each other).
+#: caster cache warm (a 16x16 pixel tile in tile order), small enough for two threads to
+#: balance on uneven scenes (thousands of bricks per frame). Not tuned further.
 DEFAULT_BRICK_SIZE = 256
 
 

@@ -238,7 +238,8 @@ def any_hit(nodes, splits, recs, recs_f64, box_lo, box_hi, ox, oy, oz, dx, dy, d
     """Record index of some triangle valid at ``t_days`` hit in ``[tmin, tmax]``, else -1.
 
     ``cache_k`` (or -1) is the brick's shadow-caster cache: that record is tested first, so
-    coherent shadow rays behind the same occluder skip the traversal.
+    coherent shadow rays behind the same occluder skip the traversal. ``st_*`` are scratch
+    stacks of ``STACK_SIZE`` entries owned by the calling thread.
     """
     kx, ky, kz, sx, sy, sz = ray_shear(dx, dy, dz)
     okx = ox if kx == 0 else (oy if kx == 1 else oz)
