@@ -38,7 +38,13 @@ def _floats(text: str | None) -> list[float]:
 
 
 def _target_id(el) -> str | None:
-    value = el.get("uri") or el.get("{http://www.w3.org/1999/xlink}href") or (el.text or "").strip()
+    """The id a ``target`` points at: its ``uri`` attribute, else its xlink, else its text."""
+    # Counting the attributes makes no strings; CityGML 2.0 material targets (often one per
+    # polygon of the file) have none, so the two look-ups are skipped for them.
+    value = None
+    if len(el.attrib):
+        value = el.get("uri") or el.get("{http://www.w3.org/1999/xlink}href")
+    value = value or (el.text or "").strip()
     if not value:
         return None
     return value[1:] if value.startswith("#") else value

@@ -269,6 +269,11 @@ class _Walker:
                 entry = self.kind(tag)
             kind, payload = entry
             if kind == K_AGG:
+                if not len(child.attrib):
+                    # The usual member: no reference, CRS or id of its own (counting the
+                    # attributes makes no strings; the look-ups below would find nothing).
+                    self.walk(child, obj, cls, lod, flip)
+                    continue
                 href = child.get(XLINK_HREF)
                 if href is not None:
                     self.refs.append((obj, cls, lod, flip))
