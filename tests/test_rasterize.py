@@ -263,16 +263,20 @@ def low_view(scene):
 def test_culling_on_and_off_give_the_same_gbuffer(dated_city, sample_scene):
     for scene, cam in ((dated_city, low_view(dated_city)),
                        (dated_city, cams.map_view(dated_city, 2.0)),
+                       (dated_city, cams.map_view(dated_city, 1.5, bbox=(20, 20, 90, 70))),
                        (sample_scene, cams.overview(sample_scene, 200, 120))):
         for t_days in (-5000.0, 20000.0):
             plain = rasterize(scene, cam, t_days, culling=False)
-            for occ, first in ((True, 16), (True, 2048), (False, 0), ("auto", 64)):
-                g = rasterize(scene, cam, t_days, occlusion_culling=occ, first_batch=first)
+            for occ, first, q in ((True, 16, 1), (True, 16, 64), (True, 2048, 4),
+                                  (False, 0, 4), ("auto", 64, 4)):
+                g = rasterize(scene, cam, t_days, occlusion_culling=occ, first_batch=first,
+                              query_min_refs=q)
                 np.testing.assert_array_equal(g.prim_id, plain.prim_id)
                 np.testing.assert_array_equal(g.depth, plain.depth)
                 np.testing.assert_array_equal(g.bary, plain.bary)
     g = rasterize(dated_city, low_view(dated_city), 20000.0, occlusion_culling=True,
-                  first_batch=16)
+                  first_batch=16, query_min_refs=4)
+    assert g.stats["culling"] and g.stats["occlusion_culling"]
     assert g.stats["occlusion_refs_removed"] > 0, "the occlusion test removed nothing"
     assert g.stats["frustum_refs_removed"] > 0
     assert g.stats["time_refs_removed"] > 0
@@ -282,6 +286,13 @@ def test_culling_on_and_off_give_the_same_gbuffer(dated_city, sample_scene):
                             height_px=32, scene=dated_city)
     g = rasterize(dated_city, away, 0.0)
     assert g.stats["triangles_drawn"] == 0 and (g.prim_id < 0).all()
+    # A part of the map: the walk culls by the frustum, without occlusion queries ("auto").
+    g = rasterize(dated_city, cams.map_view(dated_city, 1.5, bbox=(20, 20, 90, 70)), 0.0)
+    assert g.stats["culling"] and not g.stats["occlusion_culling"]
+    assert g.stats["frustum_refs_removed"] > 0
+    # The whole model in view: nothing to cull, the walk is skipped (same picture, see above).
+    g = rasterize(dated_city, cams.overview(dated_city, 64, 48), 0.0)
+    assert not g.stats["culling"] and "walk_skipped" in g.stats
 
 
 def test_tile_size_and_thread_count_do_not_change_the_result(sample_scene):
@@ -384,3 +395,37 @@ def test_bad_input_is_refused(sample_scene):
         rasterize(sample_scene, cam, 0.0, tile_px=12)
     with pytest.raises(UsageError):
         rasterize(sample_scene, "overview", 0.0)
+
+
+def test_auto_occlusion_switches_off_only_when_queries_do_not_pay():
+    from cityshade.raster import culling as cull
+    from cityshade.raster.rasterize import (AUTO_MIN_QUERIES, AUTO_REFS_PER_QUERY,
+                                            _occlusion_does_not_pay)
+
+    stats = np.zeros(cull.N_STATS, np.int64)
+    stats[cull.ST_OCCLUSION_QUERIES] = AUTO_MIN_QUERIES - 1
+    assert not _occlusion_does_not_pay(stats)                 # too early to judge
+    stats[cull.ST_OCCLUSION_QUERIES] = AUTO_MIN_QUERIES
+    assert _occlusion_does_not_pay(stats)                     # nothing removed
+    stats[cull.ST_OCCLUSION_REFS] = int(AUTO_REFS_PER_QUERY * AUTO_MIN_QUERIES)
+    assert not _occlusion_does_not_pay(stats)
+
+
+def test_subtree_ranges_match_the_leaves(dated_city):
+    from cityshade.raster.culling import tree_info
+
+    tree = dated_city.kdtree
+    refs, first, biggest = tree_info(tree)
+    axis, child, second = tree.unpack()
+    leaves = axis == 4
+    assert refs[0] == tree.prim_indices.shape[0] and biggest == child[leaves].max()
+    # Every contiguous range holds exactly the references of the leaves below the node.
+    for node in np.flatnonzero(first >= 0)[:200]:
+        below, todo = [], [node]
+        while todo:
+            n = todo.pop()
+            if axis[n] == 4:
+                below.extend(range(int(second[n]), int(second[n]) + int(child[n])))
+            else:
+                todo.extend([n + 1, int(child[n])])
+        assert sorted(below) == list(range(first[node], first[node] + refs[node]))

@@ -41,10 +41,11 @@ OCCLUSION_ABS_M = 1e-4
 #: Queries whose pixel rectangle covers more blocks than this read the coarser tile maxima
 #: instead (conservative: a tile's maximum bounds its blocks').
 QUERY_MAX_BLOCKS = 64
-#: Nodes with fewer triangle references than this are drawn without a query: the query
-#: (8 corner projections and a rectangle of reads) costs about as much as setting up that many
-#: small triangles.
-QUERY_MIN_REFS = 8
+#: Nodes with fewer triangle references below them than this are drawn without a query: a
+#: query (8 corner projections and a rectangle of reads) costs about as much as drawing 2-3
+#: small triangles, so small nodes cannot win much; 64 gave the fastest occlusion-culled
+#: passes on the 1M-triangle city's views (benchmarks/render.py; 8 and 512 were slower).
+QUERY_MIN_REFS = 64
 
 # Indices of the statistics vector filled by :func:`walk`.
 ST_NODES_VISITED = 0
@@ -59,6 +60,7 @@ ST_OCCLUSION_REFS = 8
 ST_DUPLICATE_REFS = 9
 ST_EMITTED = 10
 N_STATS = 11
+#: Names of the statistics; "leaves_drawn" counts leaves and whole in-frustum subtrees scanned.
 STAT_NAMES = ("nodes_visited", "leaves_drawn", "time_subtrees_skipped", "time_refs_removed",
               "frustum_nodes_culled", "frustum_refs_removed", "occlusion_queries",
               "occlusion_nodes_culled", "occlusion_refs_removed", "duplicate_refs",
@@ -66,32 +68,52 @@ STAT_NAMES = ("nodes_visited", "leaves_drawn", "time_subtrees_skipped", "time_re
 
 
 @njit(cache=True)
-def _subtree_refs(nodes):
-    """(M,) int64 triangle references below each node; and the largest leaf's count."""
+def _subtree_info(nodes):
+    """Per node: triangle references below it and, when those references form one contiguous
+    range of the leaf-ordered records, the range's first index (else -1); and the largest
+    leaf's count."""
     m = nodes.shape[0]
     refs = np.zeros(m, np.int64)
+    lo = np.empty(m, np.int64)
+    hi = np.empty(m, np.int64)
     biggest = 0
     # Children always have larger indices than their parent (left = i + 1), so one backward
     # pass sees both children before the parent.
     for i in range(m - 1, -1, -1):
         w0 = np.int64(nodes[i, 0])
         if w0 & 7 == _LEAF:
-            refs[i] = w0 >> 3
-            biggest = max(biggest, w0 >> 3)
+            count = w0 >> 3
+            refs[i] = count
+            biggest = max(biggest, count)
+            if count > 0:
+                lo[i] = np.int64(nodes[i, 1])
+                hi[i] = lo[i] + count
+            else:
+                lo[i] = np.iinfo(np.int64).max
+                hi[i] = -1
         else:
-            refs[i] = refs[i + 1] + refs[w0 >> 3]
-    return refs, biggest
+            left = i + 1
+            right = w0 >> 3
+            refs[i] = refs[left] + refs[right]
+            lo[i] = min(lo[left], lo[right])
+            hi[i] = max(hi[left], hi[right])
+    first = np.full(m, -1, np.int64)
+    for i in range(m):
+        if refs[i] > 0 and hi[i] - lo[i] == refs[i]:
+            first[i] = lo[i]
+    return refs, first, biggest
 
 
 _TREE_INFO: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 
-def tree_info(tree) -> tuple[np.ndarray, int]:
-    """(subtree reference counts (M,), largest leaf size) of a KdTree, computed once per tree."""
+def tree_info(tree) -> tuple[np.ndarray, np.ndarray, int]:
+    """(subtree reference counts (M,), first index of each subtree's contiguous reference range
+    or -1 (M,), largest leaf size) of a KdTree, computed once per tree."""
     info = _TREE_INFO.get(tree)
     if info is None:
-        refs, biggest = _subtree_refs(tree.nodes)
-        info = (refs, int(biggest))
+        refs, first, biggest = _subtree_info(tree.nodes)
+        info = (refs, first, int(biggest))
         _TREE_INFO[tree] = info
     return info
 
@@ -232,21 +254,26 @@ def box_occluded(lo, hi, cam, hiz_block, hiz_tile, block_px, tile_px):
 
 
 @njit(cache=True)
-def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, t_days, planes, use_occlusion,
-         cam, hiz_block, hiz_tile, block_px, tile_px, st_node, st_box, st_mask, state, drawn, out,
-         max_out, stats):
-    """Walk the tree front to back and emit the triangle ids to draw; resumable.
+def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, subtree_first, t_days, planes,
+         use_occlusion, query_min_refs, cam, hiz_block, hiz_tile, block_px, tile_px, st_node,
+         st_box, st_mask, state, drawn, out, max_out, stats):
+    """Walk the tree front to back and emit the triangles to draw; resumable.
 
     Parameters
     ----------
     nodes, splits : (M, 2) uint32 / float32 views of the flat tree.
     prim_indices : (K,) int32; recs_f64 : (K, 8) float64 view of the triangle records.
-    subtree_refs : (M,) int64 from :func:`tree_info` (for the statistics).
+    subtree_refs, subtree_first : (M,) int64 from :func:`tree_info`: reference counts (for
+        the statistics) and contiguous reference ranges (a subtree entirely inside the frustum
+        is emitted by one linear scan of its range when no occlusion queries are made).
     t_days : float
         City time; a triangle is drawn when ``begin <= t_days < end``.
     planes : (6, 4) float64 from :func:`frustum_planes`.
     use_occlusion : bool
         Query node boxes against ``hiz_block`` / ``hiz_tile``.
+    query_min_refs : int
+        Only nodes with at least this many references below them are queried (see
+        ``QUERY_MIN_REFS``).
     st_node : (STACK_SIZE,) int64; st_box : (STACK_SIZE, 6) float64;
     st_mask : (STACK_SIZE,) int64; state : (1,) int64
         The walk stack (node, box, planes still to test) and its pointer, kept by the caller
@@ -254,14 +281,15 @@ def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, t_days, planes, us
     drawn : (T,) uint8
         Triangles already emitted (the tree lists straddling triangles in several leaves).
     out : (max_out + largest leaf,) int32
-        Receives the emitted ids.
+        Receives the record indices (into ``prim_indices`` / the triangle records) of the
+        triangles to draw, in walk order.
     stats : (N_STATS,) int64
         Accumulated counts (``STAT_NAMES``).
 
     Returns
     -------
     int
-        Number of ids written to ``out``; the walk is finished when ``state[0] == 0``.
+        Number of indices written to ``out``; the walk is finished when ``state[0] == 0``.
     """
     sp = state[0]
     n_out = 0
@@ -282,7 +310,8 @@ def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, t_days, planes, us
             stats[ST_FRUSTUM_NODES] += 1
             stats[ST_FRUSTUM_REFS] += subtree_refs[node]
             continue
-        if use_occlusion and subtree_refs[node] >= QUERY_MIN_REFS:
+        queried = use_occlusion and subtree_refs[node] >= query_min_refs
+        if queried:
             stats[ST_OCCLUSION_QUERIES] += 1
             if box_occluded(lo, hi, cam, hiz_block, hiz_tile, block_px, tile_px):
                 stats[ST_OCCLUSION_NODES] += 1
@@ -290,11 +319,21 @@ def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, t_days, planes, us
                 continue
         w0 = np.int64(nodes[node, 0])
         axis = w0 & 7
+        first = -1
+        count = 0
         if axis == _LEAF:
-            # Emit the leaf's triangles present at t_days, each triangle once.
-            stats[ST_LEAVES_DRAWN] += 1
             first = np.int64(nodes[node, 1])
-            for k in range(first, first + (w0 >> 3)):
+            count = w0 >> 3
+        elif (mask == 0 and not queried and subtree_first[node] >= 0
+              and subtree_refs[node] <= out.shape[0] - n_out):
+            # Inside the frustum and too small for queries: nothing below can be culled but by
+            # time, and the records' own validity does that; scan the subtree's range at once.
+            first = subtree_first[node]
+            count = subtree_refs[node]
+        if first >= 0:
+            # Emit the triangles present at t_days, each triangle once.
+            stats[ST_LEAVES_DRAWN] += 1
+            for k in range(first, first + count):
                 if not (recs_f64[k, _T_BEGIN] <= t_days < recs_f64[k, _T_END]):
                     stats[ST_TIME_REFS] += 1
                     continue
@@ -303,7 +342,7 @@ def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, t_days, planes, us
                     stats[ST_DUPLICATE_REFS] += 1
                     continue
                 drawn[tri] = 1
-                out[n_out] = tri
+                out[n_out] = k
                 n_out += 1
             continue
         split = np.float64(splits[node, 1])

@@ -55,11 +55,11 @@ MAX_BATCH = 262144
 FIRST_OCCLUSION_BATCH = 2048
 #: "auto" occlusion culling judges the queries after this many of them ...
 AUTO_MIN_QUERIES = 2000
-#: ... and switches them off when they removed less than this fraction of the triangle
-#: references reached so far: a query costs about as much as drawing a few small triangles,
-#: and on the 1M-triangle city's overview (benchmarks/render.py) queries removing < 5 % made
-#: the pass slower than no queries at all.
-AUTO_MIN_YIELD = 0.05
+#: ... and switches them off (and the max-depth refresh) unless they removed at least this
+#: many triangle references per query: on the 1M-triangle city (benchmarks/render.py, one
+#: thread) a query cost about as much as drawing 2-3 references (references include the
+#: tree's duplicates and the triangles absent at the date).
+AUTO_REFS_PER_QUERY = 3.0
 #: Slack of the pixel bounding box, in pixels: projected vertex positions and the pixel
 #: mapping are float64 (errors ~1e-12 px), so a centre the edge functions find inside is never
 #: outside the box; the edge functions alone decide coverage inside it.
@@ -105,14 +105,19 @@ def camera_params(camera: Camera) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
 
 
 @njit(cache=True, parallel=True)
-def _setup(vertices, triangles, ids, cam, coef, zs, bbox):
+def _setup(vertices, triangles, recs, from_records, items, cam, ids, coef, zs, bbox):
     """Per triangle: normalised edge functions, vertex depths and the pixel bounding box.
 
-    ``coef`` (N, 12): a, b, c of the three edge functions (positive inside) and three 0/1
-    tie-ownership flags; ``zs`` (N, 3): view depth of the vertices; ``bbox`` (N, 4) int32:
-    col0, col1, row0, row1 inclusive (col0 > col1 when nothing is drawn).
+    ``items`` (N,) are triangle ids (vertices through ``triangles``) or, when
+    ``from_records``, indices of kd-tree triangle records (float32 (K, 16): vertices in
+    columns 0-8, the triangle id's int32 bits in column 9), read in the walk's order without
+    chasing vertex indices. Writes ``ids`` (N,) int32 triangle ids; ``coef`` (N, 12): a, b, c of
+    the three edge functions (positive inside) and three 0/1 tie-ownership flags; ``zs``
+    (N, 3): view depth of the vertices; ``bbox`` (N, 4) int32: col0, col1, row0, row1
+    inclusive (col0 > col1 when nothing is drawn).
     """
-    n = ids.shape[0]
+    n = items.shape[0]
+    rec_ids = recs.view(np.int32)
     w = cam[20]
     h = cam[21]
     near = cam[_P_NEAR]
@@ -123,16 +128,22 @@ def _setup(vertices, triangles, ids, cam, coef, zs, bbox):
         bbox[j, 1] = 0
         bbox[j, 2] = 1
         bbox[j, 3] = 0
-        tri = ids[j]
+        item = items[j]
+        ids[j] = rec_ids[item, 9] if from_records else item
         vx = np.empty(3)
         vy = np.empty(3)
         vz = np.empty(3)
         for i in range(3):
             # Vertex to homogeneous camera coordinates (X, Y, Z) and its view depth.
-            q = triangles[tri, i]
-            px = np.float64(vertices[q, 0])
-            py = np.float64(vertices[q, 1])
-            pz = np.float64(vertices[q, 2])
+            if from_records:
+                px = np.float64(recs[item, 3 * i])
+                py = np.float64(recs[item, 3 * i + 1])
+                pz = np.float64(recs[item, 3 * i + 2])
+            else:
+                q = triangles[item, i]
+                px = np.float64(vertices[q, 0])
+                py = np.float64(vertices[q, 1])
+                pz = np.float64(vertices[q, 2])
             if ortho:
                 vx[i] = px
                 vy[i] = py
@@ -333,6 +344,8 @@ class _Target:
     def __init__(self, scene, camera: Camera, tile_px: int, occlusion: bool):
         self.vertices = scene.vertices
         self.triangles = scene.triangles
+        tree = getattr(scene, "kdtree", None)
+        self.recs = tree.tri_records if tree is not None else np.zeros((1, 16), np.float32)
         self.cam, self.xs, self.ys = camera_params(camera)
         h, w = camera.shape
         self.tile_px = tile_px
@@ -348,15 +361,18 @@ class _Target:
         self.batches = 0
         self.tile_triangles = 0
 
-    def draw(self, ids: np.ndarray) -> None:
-        n = ids.shape[0]
+    def draw(self, items: np.ndarray, from_records: bool) -> None:
+        """Draw triangle ids, or kd-tree record indices when ``from_records``."""
+        n = items.shape[0]
         if n == 0:
             return
         t0 = time.perf_counter()
+        ids = np.empty(n, np.int32)
         coef = np.empty((n, _SETUP_WORDS))
         zs = np.empty((n, 3))
         bbox = np.empty((n, 4), np.int32)
-        _setup(self.vertices, self.triangles, ids, self.cam, coef, zs, bbox)
+        _setup(self.vertices, self.triangles, self.recs, from_records, items, self.cam, ids,
+               coef, zs, bbox)
         t1 = time.perf_counter()
         start, items = _bin(bbox, self.tile_px, self.tiles_x, self.tiles_y)
         t2 = time.perf_counter()
@@ -375,8 +391,7 @@ def _occlusion_does_not_pay(walk_stats) -> bool:
     """Whether the occlusion queries so far removed too little to be worth their cost."""
     queries = walk_stats[cull.ST_OCCLUSION_QUERIES]
     removed = walk_stats[cull.ST_OCCLUSION_REFS]
-    drawn = walk_stats[cull.ST_EMITTED]
-    return queries >= AUTO_MIN_QUERIES and removed < AUTO_MIN_YIELD * (removed + drawn)
+    return queries >= AUTO_MIN_QUERIES and removed < AUTO_REFS_PER_QUERY * queries
 
 
 def _validate(scene, camera, t_days, tile_px) -> float:
@@ -398,7 +413,8 @@ def _validate(scene, camera, t_days, tile_px) -> float:
 
 def rasterize(scene, camera: Camera, t_days: float, *, occlusion_culling="auto",
               culling: bool = True, tile_px: int = TILE_PX,
-              first_batch: int = FIRST_OCCLUSION_BATCH) -> GBuffer:
+              first_batch: int = FIRST_OCCLUSION_BATCH,
+              query_min_refs: int = cull.QUERY_MIN_REFS) -> GBuffer:
     """Rasterize the triangles present at city time ``t_days`` into a G-buffer.
 
     Parameters
@@ -414,17 +430,21 @@ def rasterize(scene, camera: Camera, t_days: float, *, occlusion_culling="auto",
         Software occlusion queries during the front-to-back walk. ``"auto"`` uses them for
         perspective views and not for maps (a top-down view of a city has almost no occlusion:
         the queries would cost more than they save), and switches them off during the walk
-        once ``AUTO_MIN_QUERIES`` queries removed less than ``AUTO_MIN_YIELD`` of the triangle
-        references reached (a whole-city overview, say).
+        once ``AUTO_MIN_QUERIES`` queries removed fewer than ``AUTO_REFS_PER_QUERY`` triangle
+        references each.
     culling : bool
         Walk the kd-tree front to back with time filtering and frustum culling. False (or a
         scene without kd-tree) draws every triangle present at ``t_days``; the picture is the
-        same.
+        same. The walk is skipped too when the whole model lies in the view frustum and
+        occlusion culling is "auto" or off (nothing to cull: a linear time filter is faster).
     tile_px : int
         Tile side in pixels (a multiple of ``BLOCK_PX``); does not change the picture.
     first_batch : int
         With occlusion culling, triangles drawn before the first occlusion query (later batches
         double up to ``MAX_BATCH``); does not change the picture.
+    query_min_refs : int
+        With occlusion culling, only kd-tree nodes with at least this many triangle references
+        below them are queried; does not change the picture.
 
     Returns
     -------
@@ -436,6 +456,7 @@ def rasterize(scene, camera: Camera, t_days: float, *, occlusion_culling="auto",
     if occlusion_culling not in ("auto", True, False):
         raise UsageError(f"occlusion_culling must be 'auto', True or False, "
                          f"not {occlusion_culling!r}")
+    started = time.perf_counter()
     tree = getattr(scene, "kdtree", None)
     use_tree = bool(culling) and tree is not None
     auto = occlusion_culling == "auto"
@@ -443,17 +464,24 @@ def rasterize(scene, camera: Camera, t_days: float, *, occlusion_culling="auto",
         occlusion = use_tree and camera.kind == "perspective"
     else:
         occlusion = bool(occlusion_culling) and use_tree
-    started = time.perf_counter()
-    target = _Target(scene, camera, int(tile_px), occlusion)
-    walk_s = 0.0
-    stats: dict = {"culling": use_tree, "occlusion_culling": occlusion,
-                   "triangles": int(scene.triangles.shape[0])}
+    stats: dict = {"triangles": int(scene.triangles.shape[0])}
     if use_tree:
-        refs, biggest = cull.tree_info(tree)
         lo = np.asarray(tree.bounds[0, :3], np.float64)
         hi = np.asarray(tree.bounds[1, :3], np.float64)
         size = max(float(np.max(hi - lo)), float(np.max(np.abs(np.r_[lo, hi]))), 1.0)
         planes = cull.frustum_planes(camera, cull.FRUSTUM_PAD_REL * size)
+        _, inside_mask = cull.box_outside(planes, lo, hi, (1 << planes.shape[0]) - 1)
+        if inside_mask == 0 and (auto or not occlusion):
+            # The whole model is in view: the frustum test cannot remove anything, and a
+            # scene seen whole from outside has too little occlusion to pay for the queries
+            # (benchmarks/render.py), so a linear time filter beats the walk.
+            use_tree = occlusion = False
+            stats["walk_skipped"] = "the model lies inside the view frustum"
+    stats.update({"culling": use_tree, "occlusion_culling": occlusion})
+    target = _Target(scene, camera, int(tile_px), occlusion)
+    walk_s = 0.0
+    if use_tree:
+        refs, first, biggest = cull.tree_info(tree)
         st_node = np.zeros(cull.STACK_SIZE, np.int64)
         st_box = np.zeros((cull.STACK_SIZE, 6))
         st_mask = np.zeros(cull.STACK_SIZE, np.int64)
@@ -467,16 +495,17 @@ def rasterize(scene, camera: Camera, t_days: float, *, occlusion_culling="auto",
         while state[0] > 0:
             w0 = time.perf_counter()
             n = cull.walk(tree.nodes, tree.node_splits, tree.prim_indices, tree.records_f64,
-                             refs, t, planes, occlusion, target.cam, target.hiz_block,
-                             target.hiz_tile, BLOCK_PX, target.tile_px, st_node, st_box, st_mask, state,
-                             drawn, out, batch, walk_stats)
+                          refs, first, t, planes, occlusion, int(query_min_refs), target.cam,
+                          target.hiz_block, target.hiz_tile, BLOCK_PX, target.tile_px,
+                          st_node, st_box, st_mask, state, drawn, out, batch, walk_stats)
             walk_s += time.perf_counter() - w0
-            target.draw(out[:n])
+            target.draw(out[:n], True)
             batch = min(2 * batch, MAX_BATCH)
             if auto and occlusion and _occlusion_does_not_pay(walk_stats):
                 # Switch the queries (and the max-depth refresh) off for the rest of the walk.
                 occlusion = target.occlusion = False
                 stats["occlusion_switched_off_at_batch"] = target.batches
+                batch = MAX_BATCH
         stats.update({name: int(v) for name, v in zip(cull.STAT_NAMES, walk_stats)})
         stats["references"] = int(tree.prim_indices.shape[0])
     else:
@@ -487,7 +516,7 @@ def rasterize(scene, camera: Camera, t_days: float, *, occlusion_culling="auto",
         stats["time_refs_removed"] = int(scene.triangles.shape[0] - ids.shape[0])
         stats["triangles_drawn"] = int(ids.shape[0])
         for b in range(0, ids.shape[0], MAX_BATCH):
-            target.draw(ids[b:b + MAX_BATCH])
+            target.draw(ids[b:b + MAX_BATCH], False)
     timings = {"walk_s": walk_s, **target.timings, "total_s": time.perf_counter() - started}
     stats.update({"batches": target.batches, "tile_px": target.tile_px,
                   "tiles": target.tiles_x * target.tiles_y,
