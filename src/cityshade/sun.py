@@ -5,15 +5,23 @@ the horizon. Render space has grid north (+y of the projected CRS), which differ
 north by the meridian convergence γ at the model's origin: ``azimuth_grid = azimuth_true − γ``
 (γ > 0 where grid north lies east of true north; :func:`cityshade.citygml.crs.grid_convergence_deg`).
 The sun is a direction, never a far-away point: float32 far points broke a peer (HORAYZON #12).
+
+Sun positions from a date, a time and a place use NREL's Solar Position Algorithm (Reda &
+Andreas 2004, corrigendum 2007) as implemented by pvlib (:func:`pvlib.spa.solar_position`), fed
+with Unix time as a float computed from proleptic Gregorian day ordinals, so any year 1000–3000
+works, and with ΔT from the Espenak–Meeus polynomials (:func:`pvlib.spa.calculate_deltat`).
+pvlib (and pandas, which it imports) are imported only when a sun must be computed: a render
+with explicit angles never loads them.
 """
 from __future__ import annotations
 
 import math
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, replace
+from datetime import datetime, timezone
 
 import numpy as np
 
-from cityshade.errors import UsageError
+from cityshade.errors import CRSError, UsageError
 
 
 @dataclass(frozen=True)
@@ -43,6 +51,14 @@ class SunPosition:
     direction: np.ndarray
     source: str = "explicit"
     note: str | None = None
+    #: Set when the position was computed from a date (SPA): the UTC instant (ISO 8601),
+    #: ΔT = TT − UT1 in seconds, whether refraction was applied, and the observer's place.
+    instant_utc: str | None = None
+    delta_t_s: float | None = None
+    refraction: bool | None = None
+    latitude_deg: float | None = None
+    longitude_deg: float | None = None
+    height_m: float | None = None
 
     @property
     def above_horizon(self) -> bool:
@@ -102,3 +118,244 @@ def sun_from_angles(azimuth_true_deg: float, elevation_deg: float, crs=None,
     return SunPosition(azimuth_true_deg=azimuth_true_deg, elevation_deg=elevation_deg,
                        azimuth_grid_deg=azimuth_grid, convergence_deg=convergence,
                        direction=direction_from_angles(azimuth_grid, elevation_deg), note=note)
+
+
+# --- sun positions from date, time and place (SPA through pvlib) ---------------------------
+
+#: Proleptic Gregorian ordinal of 1970-01-01 (Unix time 0).
+_EPOCH_ORDINAL = 719_163
+#: Years the product promises (DESIGN §3) and pvlib's ΔT polynomials cover well.
+SPA_YEAR_RANGE = (1000, 3000)
+
+
+@dataclass(frozen=True)
+class SpaSettings:
+    """Tunables of the sun position computation.
+
+    Attributes
+    ----------
+    refraction : bool
+        Apply SPA's atmospheric refraction correction to the elevation (on by default: the
+        apparent sun is what casts shadows; it lifts the sun by ~0.57° at the horizon).
+    temperature_c : float
+        Annual mean air temperature for the refraction formula; 12 °C is pvlib's default and
+        a mid-latitude mean (the correction changes by ~0.4 % per °C).
+    pressure_hpa : float or None
+        Annual mean air pressure; None derives it from the model's height with the standard
+        atmosphere (:func:`pvlib.atmosphere.alt2pres`), 1013.25 hPa at sea level.
+    atmos_refract_deg : float
+        Refraction at sunrise/sunset, SPA's 0.5667° (it only gates where the correction stops
+        below the horizon).
+    """
+
+    refraction: bool = True
+    temperature_c: float = 12.0
+    pressure_hpa: float | None = None
+    atmos_refract_deg: float = 0.5667
+
+    def __post_init__(self) -> None:
+        if not (math.isfinite(self.temperature_c) and -90.0 <= self.temperature_c <= 60.0):
+            raise UsageError(f"temperature_c must be between -90 and 60 °C, "
+                             f"not {self.temperature_c}")
+        if self.pressure_hpa is not None and not (math.isfinite(self.pressure_hpa)
+                                                  and 1.0 <= self.pressure_hpa <= 1100.0):
+            raise UsageError(f"pressure_hpa must be between 1 and 1100 hPa, "
+                             f"not {self.pressure_hpa}")
+        if not (math.isfinite(self.atmos_refract_deg) and 0.0 <= self.atmos_refract_deg < 5.0):
+            raise UsageError(f"atmos_refract_deg must be in [0, 5), "
+                             f"not {self.atmos_refract_deg}")
+
+
+def _as_utc(instant) -> datetime:
+    if not isinstance(instant, datetime):
+        raise UsageError(f"a sun instant must be a datetime, not {type(instant).__name__}")
+    if instant.utcoffset() is None:
+        raise UsageError(f"instant {instant.isoformat()} has no time zone; give an aware "
+                         f"datetime (or --tz ZONE)")
+    utc = instant.astimezone(timezone.utc)
+    if not SPA_YEAR_RANGE[0] <= utc.year <= SPA_YEAR_RANGE[1]:
+        raise UsageError(f"sun positions are computed for years {SPA_YEAR_RANGE[0]} to "
+                         f"{SPA_YEAR_RANGE[1]}, not {utc.year}")
+    return utc
+
+
+def unix_seconds(instant) -> float:
+    """Seconds since 1970-01-01T00:00Z of an aware datetime, as a float.
+
+    Counted from day ordinals (not :meth:`datetime.timestamp`), so years before 1970 and far
+    from it are exact to the microsecond's float64 rounding (~0.1 µs at year 1000).
+    """
+    utc = _as_utc(instant)
+    days = utc.toordinal() - _EPOCH_ORDINAL
+    seconds = (utc.hour * 60 + utc.minute) * 60 + utc.second
+    return days * 86_400.0 + seconds + utc.microsecond * 1e-6
+
+
+def delta_t_seconds(instants) -> np.ndarray:
+    """ΔT = TT − UT1 in seconds for each instant (Espenak–Meeus polynomials through pvlib).
+
+    Parameters
+    ----------
+    instants : sequence of aware datetime
+
+    Returns
+    -------
+    (N,) float64
+    """
+    from pvlib.spa import calculate_deltat
+
+    utc = [_as_utc(t) for t in instants]
+    years = np.array([t.year for t in utc], dtype=np.float64)
+    months = np.array([t.month for t in utc], dtype=np.float64)
+    return np.atleast_1d(np.asarray(calculate_deltat(years, months), dtype=np.float64))
+
+
+def spa_angles(unix_s, latitude_deg: float, longitude_deg: float, height_m: float,
+               delta_t_s, *, refraction: bool = True, pressure_hpa: float = 1013.25,
+               temperature_c: float = 12.0, atmos_refract_deg: float = 0.5667
+               ) -> tuple[np.ndarray, np.ndarray]:
+    """Topocentric sun azimuth and elevation by NREL's SPA (pvlib's implementation).
+
+    Parameters
+    ----------
+    unix_s : (N,) float
+        Instants, seconds since 1970-01-01T00:00 UTC (UT1 ≈ UTC).
+    latitude_deg, longitude_deg : float
+        Observer, WGS 84 degrees (north, east positive).
+    height_m : float
+        Observer height above sea level.
+    delta_t_s : float or (N,) float
+        ΔT = TT − UT1 in seconds.
+    refraction : bool
+        Apparent (refracted) elevation when True, geometric when False.
+    pressure_hpa, temperature_c, atmos_refract_deg : float
+        Refraction inputs (see :class:`SpaSettings`).
+
+    Returns
+    -------
+    azimuth_deg, elevation_deg : (N,) float64
+        Azimuth clockwise from true north in [0, 360); elevation in [-90, 90]. Never NaN.
+
+    Raises
+    ------
+    UsageError
+        A non-finite input or a latitude/longitude out of range.
+    """
+    import pvlib.spa
+
+    unix = np.atleast_1d(np.asarray(unix_s, dtype=np.float64))
+    dt = np.broadcast_to(np.asarray(delta_t_s, dtype=np.float64), unix.shape).copy()
+    for name, value in (("latitude", latitude_deg), ("longitude", longitude_deg),
+                        ("height", height_m)):
+        if not math.isfinite(value):
+            raise UsageError(f"observer {name} must be finite, not {value}")
+    if not -90.0 <= latitude_deg <= 90.0 or not -180.0 <= longitude_deg <= 360.0:
+        raise UsageError(f"observer at latitude {latitude_deg}, longitude {longitude_deg} is "
+                         f"not on Earth")
+    if not (np.isfinite(unix).all() and np.isfinite(dt).all()):
+        raise UsageError("sun instants and ΔT must be finite")
+    # Columns: apparent zenith, zenith, apparent elevation, elevation, azimuth, EoT.
+    out = np.asarray(pvlib.spa.solar_position(unix, float(latitude_deg), float(longitude_deg),
+                                              float(height_m), float(pressure_hpa),
+                                              float(temperature_c), dt,
+                                              float(atmos_refract_deg)), dtype=np.float64)
+    geometric = out[3]
+    elevation = out[2] if refraction else geometric
+    # SPA's refraction term divides by (e0 + 5.11°) before it is switched off below the
+    # horizon, so e0 = −5.11° exactly gives 0·NaN; there the correction is zero anyway.
+    elevation = np.where(np.isfinite(elevation), elevation, geometric)
+    azimuth = np.mod(out[4], 360.0)
+    if not (np.isfinite(elevation).all() and np.isfinite(azimuth).all()):
+        raise UsageError("the sun position algorithm returned no finite position")
+    return azimuth, np.clip(elevation, -90.0, 90.0)
+
+
+def model_place(crs, origin_m) -> tuple[float, float, float]:
+    """(latitude_deg, longitude_deg, height_m) of the model's origin in WGS 84.
+
+    Raises
+    ------
+    CRSError
+        The model has no CRS (or a local one): its place on Earth, and so the sun of a date,
+        is unknown; the message names ``--crs``.
+    """
+    from cityshade.citygml.crs import to_wgs84
+
+    if crs is None or crs.local or crs.horizontal_epsg is None:
+        name = "none" if crs is None else crs.name
+        raise CRSError(f"the sun of a date needs the model's place on Earth, but the model has "
+                       f"no CRS ({name}); rebuild it with --crs EPSG:nnnn or give "
+                       f"--sun-azimuth and --sun-elevation")
+    origin = np.asarray(origin_m, dtype=np.float64)
+    lon_deg, lat_deg, h = to_wgs84(crs, float(origin[0]), float(origin[1]), float(origin[2]))
+    return lat_deg, lon_deg, h
+
+
+def _pressure_hpa(settings: SpaSettings, height_m: float) -> float:
+    if settings.pressure_hpa is not None:
+        return settings.pressure_hpa
+    from pvlib.atmosphere import alt2pres
+
+    # Clamp: model heights can be ellipsoidal or arbitrary; the formula needs a real altitude.
+    return float(alt2pres(min(max(height_m, -500.0), 9000.0))) / 100.0
+
+
+def suns_from_instants(instants, crs, origin_m, settings: SpaSettings | None = None
+                       ) -> list[SunPosition]:
+    """Sun positions for aware instants at the model's origin (SPA through pvlib).
+
+    Parameters
+    ----------
+    instants : sequence of aware datetime
+        Any time zone; converted to UTC. Years 1000 to 3000.
+    crs : CrsInfo
+        The model's CRS (render space); the origin is transformed to WGS 84 with pyproj and
+        grid north is corrected by the meridian convergence there.
+    origin_m : (3,) float
+        Model origin in CRS coordinates; its z is the observer height.
+    settings : SpaSettings, optional
+
+    Returns
+    -------
+    list of SunPosition
+        ``source`` "spa (pvlib x.y)", with instant, ΔT, refraction and place filled in. A sun
+        at or below the horizon is returned as it is (``above_horizon`` False).
+
+    Raises
+    ------
+    CRSError
+        No CRS (names ``--crs``).
+    UsageError
+        A naive datetime or a year outside 1000–3000.
+    """
+    import pvlib
+
+    settings = settings or SpaSettings()
+    utc = [_as_utc(t) for t in instants]
+    if not utc:
+        return []
+    lat, lon, h = model_place(crs, origin_m)
+    dts = delta_t_seconds(utc)
+    unix = np.array([unix_seconds(t) for t in utc])
+    az, el = spa_angles(unix, lat, lon, h, dts, refraction=settings.refraction,
+                        pressure_hpa=_pressure_hpa(settings, h),
+                        temperature_c=settings.temperature_c,
+                        atmos_refract_deg=settings.atmos_refract_deg)
+    suns = []
+    source = f"spa (pvlib {pvlib.__version__})"
+    for t, a, e, d in zip(utc, az, el, dts):
+        sun = sun_from_angles(float(a), float(e), crs, origin_m)
+        iso = t.isoformat().replace("+00:00", "Z")
+        suns.append(replace(sun, source=source, instant_utc=iso, delta_t_s=float(d),
+                            refraction=settings.refraction, latitude_deg=lat,
+                            longitude_deg=lon, height_m=h,
+                            note=f"SPA at {iso}, ΔT {float(d):.2f} s, refraction "
+                                 f"{'on' if settings.refraction else 'off'}, "
+                                 f"{lat:.6f}° N {lon:.6f}° E"))
+    return suns
+
+
+def sun_from_instant(instant, crs, origin_m, settings: SpaSettings | None = None) -> SunPosition:
+    """One sun position of an aware instant at the model's origin (see
+    :func:`suns_from_instants`)."""
+    return suns_from_instants([instant], crs, origin_m, settings)[0]

@@ -33,6 +33,10 @@ def _size(text: str) -> tuple[int, int]:
 @click.option("--date", "date_text", help="City state: 1850, 1850-06-21 or 1850-06-21T15:00+01:00 "
               "(default: today).")
 @click.option("--tz", help="IANA time zone for a --date without UTC offset, e.g. Europe/Berlin.")
+@click.option("--time", "time_text", help="Local time HH:MM[:SS] combined with a --date day "
+              "(the sun is then computed by SPA for the model's place).")
+@click.option("--no-refraction", is_flag=True, help="Geometric sun elevation (SPA without "
+              "atmospheric refraction).")
 @click.option("--sun-azimuth", type=float, help="Degrees clockwise from true north.")
 @click.option("--sun-elevation", type=float, help="Degrees above the horizon.")
 @click.option("--camera", default="overview", show_default=True,
@@ -57,10 +61,12 @@ def _size(text: str) -> tuple[int, int]:
               "point), auto (typical ground level) or a height in metres.")
 @click.option("--no-sky", is_flag=True, help="Black background instead of the sky gradient.")
 @click.option("-v", "--verbose", is_flag=True, help="Stage timings and technique diagnostics.")
-def render(file, date_text, tz, sun_azimuth, sun_elevation, camera, eye, target, fov, size,
-           pixel_size, technique, output, png, mask, geotiff, ground, no_sky, verbose):
+def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_elevation, camera,
+           eye, target, fov, size, pixel_size, technique, output, png, mask, geotiff, ground,
+           no_sky, verbose):
     """Render FILE (a .cityshade scene) as the city stood on --date, lit by the sun at
-    --sun-azimuth/--sun-elevation, from a perspective camera or as a top-down map."""
+    --sun-azimuth/--sun-elevation or, for a --date with a time, by the sun computed for the
+    model's place (NREL SPA), from a perspective camera or as a top-down map."""
     import datetime as dt
     import time
 
@@ -74,19 +80,28 @@ def render(file, date_text, tz, sun_azimuth, sun_elevation, camera, eye, target,
     get_technique(technique)  # unknown names fail before any work
     if (sun_azimuth is None) != (sun_elevation is None):
         raise UsageError("give both --sun-azimuth and --sun-elevation")
-    if sun_azimuth is None:
-        raise UsageError("no sun position: give --sun-azimuth and --sun-elevation (degrees)")
     if (eye is None) != (target is None):
         raise UsageError("give both --eye and --target, or neither")
     eye_v, target_v = _triple(eye, "--eye"), _triple(target, "--target")
     width, height = _size(size)
-    date_text = date_text or dt.date.today().isoformat()
+    date_text = _with_time(date_text or dt.date.today().isoformat(), time_text)
     user_date = parse_user_date(date_text, tz)
+    if sun_azimuth is None and user_date.instant_utc is None:
+        raise UsageError("no sun position: give --sun-azimuth and --sun-elevation (degrees), "
+                         "or a --date with a time of day (e.g. 2024-06-21T15:00+02:00, or "
+                         "--time 15:00 --tz Europe/Berlin)")
     t0 = time.perf_counter()
     scene = load_scene(file)
     load_s = time.perf_counter() - t0
     cam = _camera(scene, camera, eye_v, target_v, fov, width, height, pixel_size)
-    sun = sun_from_angles(sun_azimuth, sun_elevation, scene.crs, scene.origin_m)
+    if sun_azimuth is not None:
+        sun = sun_from_angles(sun_azimuth, sun_elevation, scene.crs, scene.origin_m)
+    else:
+        # pvlib (and pandas) load only here: a render with explicit angles never needs them.
+        from cityshade.sun import SpaSettings, sun_from_instant
+
+        sun = sun_from_instant(user_date.instant_utc, scene.crs, scene.origin_m,
+                               SpaSettings(refraction=not no_refraction))
     frame = render_frame(scene, cam, user_date.city_days, sun, technique, sky=not no_sky,
                          ground=ground)
     for warning in frame.warnings:
@@ -101,10 +116,30 @@ def render(file, date_text, tz, sun_azimuth, sun_elevation, camera, eye, target,
         click.echo(f"sun      azimuth {sun.azimuth_true_deg:.3f}° true / {sun.azimuth_grid_deg:.3f}° "
                    f"grid (convergence {sun.convergence_deg:+.4f}°), elevation "
                    f"{sun.elevation_deg:.3f}°", err=True)
+        if sun.instant_utc is not None:
+            click.echo(f"instant  {sun.instant_utc} UTC, ΔT {sun.delta_t_s:.2f} s, refraction "
+                       f"{'on' if sun.refraction else 'off'}, {sun.source} at "
+                       f"{sun.latitude_deg:.6f}° N {sun.longitude_deg:.6f}° E "
+                       f"{sun.height_m:.1f} m", err=True)
         for key, value in frame.diagnostics.items():
             if key != "channels":
                 click.echo(f"{key:<8} {value}", err=True)
     click.echo(" ".join(str(p) for p in written))
+
+
+def _with_time(date_text: str, time_text: str | None) -> str:
+    """``--date`` joined with ``--time`` (a day plus HH:MM[:SS]) into one date-time text."""
+    import re
+
+    from cityshade.errors import UsageError
+
+    if time_text is None:
+        return date_text
+    if not re.fullmatch(r"\d{4,}-\d{2}-\d{2}", date_text.strip()):
+        raise UsageError(f"--time needs --date as a day (YYYY-MM-DD), not {date_text!r}")
+    if not re.fullmatch(r"\d{2}:\d{2}(:\d{2})?", time_text.strip()):
+        raise UsageError(f"--time must be HH:MM or HH:MM:SS, not {time_text!r}")
+    return f"{date_text.strip()}T{time_text.strip()}"
 
 
 def _camera(scene, name, eye, target, fov, width, height, pixel_size):
