@@ -64,6 +64,9 @@ AUTO_REFS_PER_QUERY = 3.0
 #: mapping are float64 (errors ~1e-12 px), so a centre the edge functions find inside is never
 #: outside the box; the edge functions alone decide coverage inside it.
 BOX_SLACK_PX = 1e-6
+#: Chunks of the parallel binning (several per thread for balance; any value gives the same
+#: lists).
+BIN_CHUNKS = 16
 #: Words per set-up triangle: 3 × (a, b, c) edge coefficients, 3 tie-ownership flags.
 _SETUP_WORDS = 12
 
@@ -104,6 +107,32 @@ def camera_params(camera: Camera) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return cam, xs, ys
 
 
+@njit(cache=True, inline="always")
+def _camera_vertex(px, py, pz, cam, ortho):
+    """Render-space point → homogeneous camera coordinates (X, Y, Z) and its view depth."""
+    if ortho:
+        return px, py, 1.0, cam[_P_EYE_Z] - pz
+    dx = px - cam[1]
+    dy = py - cam[2]
+    dz = pz - cam[3]
+    z = cam[10] * dx + cam[11] * dy + cam[12] * dz
+    return (cam[4] * dx + cam[5] * dy + cam[6] * dz, cam[7] * dx + cam[8] * dy + cam[9] * dz,
+            z, z)
+
+
+@njit(cache=True, inline="always")
+def _grow_box(box, sx, sy):
+    """Extend the screen box (xmin, xmax, ymin, ymax) by a point."""
+    return min(box[0], sx), max(box[1], sx), min(box[2], sy), max(box[3], sy)
+
+
+@njit(cache=True, inline="always")
+def _clip_point(xa, ya, za, xb, yb, zb, near):
+    """Screen position of the point where edge a-b crosses the near plane."""
+    s = (near - za) / (zb - za)
+    return (xa + s * (xb - xa)) / near, (ya + s * (yb - ya)) / near
+
+
 @njit(cache=True, parallel=True)
 def _setup(vertices, triangles, recs, from_records, items, cam, ids, coef, zs, bbox):
     """Per triangle: normalised edge functions, vertex depths and the pixel bounding box.
@@ -114,7 +143,7 @@ def _setup(vertices, triangles, recs, from_records, items, cam, ids, coef, zs, b
     chasing vertex indices. Writes ``ids`` (N,) int32 triangle ids; ``coef`` (N, 12): a, b, c of
     the three edge functions (positive inside) and three 0/1 tie-ownership flags; ``zs``
     (N, 3): view depth of the vertices; ``bbox`` (N, 4) int32: col0, col1, row0, row1
-    inclusive (col0 > col1 when nothing is drawn).
+    inclusive (col0 > col1 when nothing is drawn; then ``coef`` and ``zs`` are not set).
     """
     n = items.shape[0]
     rec_ids = recs.view(np.int32)
@@ -129,120 +158,134 @@ def _setup(vertices, triangles, recs, from_records, items, cam, ids, coef, zs, b
         bbox[j, 2] = 1
         bbox[j, 3] = 0
         item = items[j]
-        ids[j] = rec_ids[item, 9] if from_records else item
-        vx = np.empty(3)
-        vy = np.empty(3)
-        vz = np.empty(3)
-        for i in range(3):
-            # Vertex to homogeneous camera coordinates (X, Y, Z) and its view depth.
-            if from_records:
-                px = np.float64(recs[item, 3 * i])
-                py = np.float64(recs[item, 3 * i + 1])
-                pz = np.float64(recs[item, 3 * i + 2])
-            else:
-                q = triangles[item, i]
-                px = np.float64(vertices[q, 0])
-                py = np.float64(vertices[q, 1])
-                pz = np.float64(vertices[q, 2])
-            if ortho:
-                vx[i] = px
-                vy[i] = py
-                vz[i] = 1.0
-                zs[j, i] = cam[_P_EYE_Z] - pz
-            else:
-                dx = px - cam[1]
-                dy = py - cam[2]
-                dz = pz - cam[3]
-                vx[i] = cam[4] * dx + cam[5] * dy + cam[6] * dz
-                vy[i] = cam[7] * dx + cam[8] * dy + cam[9] * dz
-                vz[i] = cam[10] * dx + cam[11] * dy + cam[12] * dz
-                zs[j, i] = vz[i]
-        zmin = min(zs[j, 0], zs[j, 1], zs[j, 2])
-        zmax = max(zs[j, 0], zs[j, 1], zs[j, 2])
-        if zmax < near or zmin > far:
+        # The three vertices in camera coordinates.
+        if from_records:
+            ids[j] = rec_ids[item, 9]
+            x0, y0, z0, d0 = _camera_vertex(np.float64(recs[item, 0]), np.float64(recs[item, 1]),
+                                            np.float64(recs[item, 2]), cam, ortho)
+            x1, y1, z1, d1 = _camera_vertex(np.float64(recs[item, 3]), np.float64(recs[item, 4]),
+                                            np.float64(recs[item, 5]), cam, ortho)
+            x2, y2, z2, d2 = _camera_vertex(np.float64(recs[item, 6]), np.float64(recs[item, 7]),
+                                            np.float64(recs[item, 8]), cam, ortho)
+        else:
+            ids[j] = item
+            q0 = triangles[item, 0]
+            q1 = triangles[item, 1]
+            q2 = triangles[item, 2]
+            x0, y0, z0, d0 = _camera_vertex(np.float64(vertices[q0, 0]),
+                                            np.float64(vertices[q0, 1]),
+                                            np.float64(vertices[q0, 2]), cam, ortho)
+            x1, y1, z1, d1 = _camera_vertex(np.float64(vertices[q1, 0]),
+                                            np.float64(vertices[q1, 1]),
+                                            np.float64(vertices[q1, 2]), cam, ortho)
+            x2, y2, z2, d2 = _camera_vertex(np.float64(vertices[q2, 0]),
+                                            np.float64(vertices[q2, 1]),
+                                            np.float64(vertices[q2, 2]), cam, ortho)
+        if max(d0, d1, d2) < near or min(d0, d1, d2) > far:
+            continue
+        # Screen box of the part in front of the near plane (near-plane clipping).
+        box = (np.inf, -np.inf, np.inf, -np.inf)
+        if ortho:
+            box = _grow_box(box, x0, y0)
+            box = _grow_box(box, x1, y1)
+            box = _grow_box(box, x2, y2)
+        else:
+            if z0 >= near:
+                box = _grow_box(box, x0 / z0, y0 / z0)
+            if z1 >= near:
+                box = _grow_box(box, x1 / z1, y1 / z1)
+            if z2 >= near:
+                box = _grow_box(box, x2 / z2, y2 / z2)
+            if (z0 >= near) != (z1 >= near):
+                sx, sy = _clip_point(x0, y0, z0, x1, y1, z1, near)
+                box = _grow_box(box, sx, sy)
+            if (z1 >= near) != (z2 >= near):
+                sx, sy = _clip_point(x1, y1, z1, x2, y2, z2, near)
+                box = _grow_box(box, sx, sy)
+            if (z2 >= near) != (z0 >= near):
+                sx, sy = _clip_point(x2, y2, z2, x0, y0, z0, near)
+                box = _grow_box(box, sx, sy)
+        # Pixel centres inside the box (a sub-pixel triangle between centres gets none).
+        c0 = max(np.ceil(cam[16] * box[0] + cam[17] - BOX_SLACK_PX), 0.0)
+        c1 = min(np.floor(cam[16] * box[1] + cam[17] + BOX_SLACK_PX), w - 1.0)
+        r0 = max(np.ceil(cam[18] * box[3] + cam[19] - BOX_SLACK_PX), 0.0)
+        r1 = min(np.floor(cam[18] * box[2] + cam[19] + BOX_SLACK_PX), h - 1.0)
+        if not (c0 <= c1 and r0 <= r1):
             continue
         # Edge function of the edge opposite vertex i: v~_j x v~_k (j, k = i+1, i+2).
-        for i in range(3):
-            jj = (i + 1) % 3
-            kk = (i + 2) % 3
-            coef[j, 3 * i] = vy[jj] * vz[kk] - vz[jj] * vy[kk]
-            coef[j, 3 * i + 1] = vz[jj] * vx[kk] - vx[jj] * vz[kk]
-            coef[j, 3 * i + 2] = vx[jj] * vy[kk] - vy[jj] * vx[kk]
-        det = vx[0] * coef[j, 0] + vy[0] * coef[j, 1] + vz[0] * coef[j, 2]
+        a0 = y1 * z2 - z1 * y2
+        b0 = z1 * x2 - x1 * z2
+        k0 = x1 * y2 - y1 * x2
+        a1 = y2 * z0 - z2 * y0
+        b1 = z2 * x0 - x2 * z0
+        k1 = x2 * y0 - y2 * x0
+        a2 = y0 * z1 - z0 * y1
+        b2 = z0 * x1 - x0 * z1
+        k2 = x0 * y1 - y0 * x1
+        det = x0 * a0 + y0 * b0 + z0 * k0
         if not (det > 0.0 or det < 0.0):
             continue        # plane through the eye (or zero area, or NaN): never visible
-        if det < 0.0:
-            for m in range(9):
-                coef[j, m] = -coef[j, m]
+        sign = 1.0 if det > 0.0 else -1.0
+        coef[j, 0] = sign * a0
+        coef[j, 1] = sign * b0
+        coef[j, 2] = sign * k0
+        coef[j, 3] = sign * a1
+        coef[j, 4] = sign * b1
+        coef[j, 5] = sign * k1
+        coef[j, 6] = sign * a2
+        coef[j, 7] = sign * b2
+        coef[j, 8] = sign * k2
         for i in range(3):
             a = coef[j, 3 * i]
             b = coef[j, 3 * i + 1]
             coef[j, 9 + i] = 1.0 if (a > 0.0 or (a == 0.0 and b < 0.0)) else 0.0
-        # Screen box of the part in front of the near plane (near-plane clipping).
-        xmin = np.inf
-        xmax = -np.inf
-        ymin = np.inf
-        ymax = -np.inf
-        for i in range(3):
-            if ortho:
-                sx = vx[i]
-                sy = vy[i]
-            elif vz[i] >= near:
-                sx = vx[i] / vz[i]
-                sy = vy[i] / vz[i]
-            else:
-                continue
-            xmin = min(xmin, sx)
-            xmax = max(xmax, sx)
-            ymin = min(ymin, sy)
-            ymax = max(ymax, sy)
-        if not ortho:
-            for i in range(3):
-                k = (i + 1) % 3
-                if (vz[i] >= near) != (vz[k] >= near):
-                    s = (near - vz[i]) / (vz[k] - vz[i])
-                    sx = (vx[i] + s * (vx[k] - vx[i])) / near
-                    sy = (vy[i] + s * (vy[k] - vy[i])) / near
-                    xmin = min(xmin, sx)
-                    xmax = max(xmax, sx)
-                    ymin = min(ymin, sy)
-                    ymax = max(ymax, sy)
-        # Pixel centres inside the box (a sub-pixel triangle between centres gets none).
-        c0 = max(np.ceil(cam[16] * xmin + cam[17] - BOX_SLACK_PX), 0.0)
-        c1 = min(np.floor(cam[16] * xmax + cam[17] + BOX_SLACK_PX), w - 1.0)
-        r0 = max(np.ceil(cam[18] * ymax + cam[19] - BOX_SLACK_PX), 0.0)
-        r1 = min(np.floor(cam[18] * ymin + cam[19] + BOX_SLACK_PX), h - 1.0)
-        if c0 <= c1 and r0 <= r1:
-            bbox[j, 0] = int(c0)
-            bbox[j, 1] = int(c1)
-            bbox[j, 2] = int(r0)
-            bbox[j, 3] = int(r1)
+        zs[j, 0] = d0
+        zs[j, 1] = d1
+        zs[j, 2] = d2
+        bbox[j, 0] = int(c0)
+        bbox[j, 1] = int(c1)
+        bbox[j, 2] = int(r0)
+        bbox[j, 3] = int(r1)
 
 
-@njit(cache=True)
+@njit(cache=True, parallel=True)
 def _bin(bbox, tile_px, tiles_x, tiles_y):
-    """Tile lists in drawing order: ``start`` (tiles + 1,) int64 offsets into ``items``."""
+    """Tile lists in drawing order: ``start`` (tiles + 1,) int64 offsets into ``items``.
+
+    The triangles are split into ``BIN_CHUNKS`` consecutive chunks counted and filled in
+    parallel; each tile's list is its chunks' lists in chunk order, i.e. drawing order, for any
+    number of threads.
+    """
     n_tiles = tiles_x * tiles_y
-    start = np.zeros(n_tiles + 1, np.int64)
     n = bbox.shape[0]
-    for j in range(n):
-        if bbox[j, 0] > bbox[j, 1]:
-            continue
-        for ty in range(bbox[j, 2] // tile_px, bbox[j, 3] // tile_px + 1):
-            for tx in range(bbox[j, 0] // tile_px, bbox[j, 1] // tile_px + 1):
-                start[ty * tiles_x + tx + 1] += 1
+    counts = np.zeros((BIN_CHUNKS, n_tiles), np.int64)
+    for ch in prange(BIN_CHUNKS):
+        for j in range(ch * n // BIN_CHUNKS, (ch + 1) * n // BIN_CHUNKS):
+            if bbox[j, 0] > bbox[j, 1]:
+                continue
+            for ty in range(bbox[j, 2] // tile_px, bbox[j, 3] // tile_px + 1):
+                for tx in range(bbox[j, 0] // tile_px, bbox[j, 1] // tile_px + 1):
+                    counts[ch, ty * tiles_x + tx] += 1
+    # Offsets: tile by tile, chunk by chunk.
+    start = np.zeros(n_tiles + 1, np.int64)
+    fill = np.empty((BIN_CHUNKS, n_tiles), np.int64)
+    running = 0
     for t in range(n_tiles):
-        start[t + 1] += start[t]
-    items = np.empty(start[n_tiles], np.int32)
-    fill = start[:-1].copy()
-    for j in range(n):
-        if bbox[j, 0] > bbox[j, 1]:
-            continue
-        for ty in range(bbox[j, 2] // tile_px, bbox[j, 3] // tile_px + 1):
-            for tx in range(bbox[j, 0] // tile_px, bbox[j, 1] // tile_px + 1):
-                t = ty * tiles_x + tx
-                items[fill[t]] = j
-                fill[t] += 1
+        start[t] = running
+        for ch in range(BIN_CHUNKS):
+            fill[ch, t] = running
+            running += counts[ch, t]
+    start[n_tiles] = running
+    items = np.empty(running, np.int32)
+    for ch in prange(BIN_CHUNKS):
+        for j in range(ch * n // BIN_CHUNKS, (ch + 1) * n // BIN_CHUNKS):
+            if bbox[j, 0] > bbox[j, 1]:
+                continue
+            for ty in range(bbox[j, 2] // tile_px, bbox[j, 3] // tile_px + 1):
+                for tx in range(bbox[j, 0] // tile_px, bbox[j, 1] // tile_px + 1):
+                    t = ty * tiles_x + tx
+                    items[fill[ch, t]] = j
+                    fill[ch, t] += 1
     return start, items
 
 
