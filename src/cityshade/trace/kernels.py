@@ -39,7 +39,7 @@ _T_BEGIN = 5
 _T_END = 6
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def ray_shear(dx, dy, dz):
     """Permutation and shear constants of the watertight test for direction (dx, dy, dz).
 
@@ -65,7 +65,7 @@ def ray_shear(dx, dy, dz):
     return kx, ky, kz, dkx / dkz, dky / dkz, 1.0 / dkz
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def hit_record(recs, k, okx, oky, okz, kx, ky, kz, sx, sy, sz):
     """Watertight test of ray against record ``k``; returns ``(hit, t, u, v)``.
 
@@ -98,7 +98,7 @@ def hit_record(recs, k, okx, oky, okz, kx, ky, kz, sx, sy, sz):
     return True, t_scaled * inv_det, e_v * inv_det, e_w * inv_det
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def clip_to_box(box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax):
     """Segment ``[t0, t1]`` of the ray inside the box (``t0 > t1`` when it misses).
 
@@ -127,7 +127,7 @@ def clip_to_box(box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax):
     return t0, t1
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def closest_hit(nodes, splits, recs, recs_f64, box_lo, box_hi, ox, oy, oz, dx, dy, dz,
                 tmin, tmax, t_days, st_node, st_t0, st_t1):
     """Closest hit of one ray in ``[tmin, tmax]`` at city time ``t_days``.
@@ -232,7 +232,7 @@ def closest_hit(nodes, splits, recs, recs_f64, box_lo, box_hi, ox, oy, oz, dx, d
     return best_t, best_k, best_u, best_v
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def any_hit(nodes, splits, recs, recs_f64, box_lo, box_hi, ox, oy, oz, dx, dy, dz,
             tmin, tmax, t_days, cache_k, st_node, st_t0, st_t1):
     """Record index of some triangle valid at ``t_days`` hit in ``[tmin, tmax]``, else -1.
