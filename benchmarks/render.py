@@ -4,8 +4,10 @@ Input: the synthetic benchmark city of ``cityshade.samplegen`` (``--triangles``,
 1 000 000, seed 7), generated into ``--workdir`` (default ``bench_out/``) when missing and
 built once with ``cityshade build`` to ``city_1M.cityshade`` (or ``city_<N>.cityshade``).
 
-Measured, at 1 and 2 Numba threads, for the overview camera at ``--size`` (default 1920x1080)
-and the city time ``--date`` (default 2000-01-01):
+Measured, at 1 and 2 Numba threads, at ``--size`` (default 1920x1080) and the city time
+``--date-days`` (default 2000-01-01), for the overview camera (the whole city from the
+south-west, 35° down: the figure compared with llvmpipe in DESIGN §12) and a "street" camera
+inside the city (where frustum and occlusion culling have work to do):
 
 * ``rasterize`` with occlusion culling on, and off (frustum + time culling only), and without
   the kd-tree walk at all (every triangle present at the date); the first (cold) run is
@@ -19,7 +21,8 @@ depth framebuffer (clear + draw + finish), in a child process per thread count
 (``LP_NUM_THREADS``). DESIGN §12 measured 264 ms / 165 ms at 1 / 2 threads. Prints one JSON
 object and then a table.
 
-Usage: python benchmarks/render.py [--repeat 5] [--size 1920x1080] [--no-llvmpipe]
+Usage: python benchmarks/render.py [--repeat 5] [--size 1920x1080] [--views overview,street]
+       [--no-llvmpipe]
        [--triangles 1000000] [--workdir bench_out] [--json out.json]
 """
 from __future__ import annotations
@@ -158,6 +161,8 @@ def main(argv=None) -> dict:
     ap.add_argument("--date-days", type=float, default=DAY_2000,
                     help="city time in days since 1970-01-01 (default 2000-01-01)")
     ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--views", default="overview,street",
+                    help="comma-separated: overview (the figure of DESIGN §12), street")
     ap.add_argument("--no-llvmpipe", action="store_true")
     ap.add_argument("--json", type=Path)
     args = ap.parse_args(argv)
@@ -173,56 +178,74 @@ def main(argv=None) -> dict:
     path = ensure_scene(args.workdir, args.triangles, args.seed)
     scene = load_scene(path)
     t_days = args.date_days
-    camera = cams.overview(scene, width, height)
+    box = cams.scene_box(scene)
+    centre = box.mean(axis=0)
+    size = box[1] - box[0]
+    cameras = {
+        "overview": cams.overview(scene, width, height),
+        # Inside the city near its south-west corner, looking north-east along the streets:
+        # the frustum and occlusion culling have something to remove here.
+        "street": cams.perspective(centre + [-0.3 * size[0], -0.3 * size[1], 20.0],
+                                   centre + [0.2 * size[0], 0.1 * size[1], 0.0], vfov_deg=60.0,
+                                   width_px=width, height_px=height, scene=scene),
+    }
     present = int(((np.asarray(scene.tri_t_begin_days) <= t_days)
                    & (t_days < np.asarray(scene.tri_t_end_days))).sum())
     report: dict = {"commit": _commit(), "machine": _machine(), "scene": str(path),
                     "triangles": scene.n_triangles, "present_at_date": present,
                     "kdtree_references": int(scene.kdtree.prim_indices.shape[0]),
-                    "size": [width, height], "t_days": t_days, "ours": {}}
+                    "size": [width, height], "t_days": t_days, "views": {}}
     threads = [1, 2] if numba.config.NUMBA_NUM_THREADS >= 2 else [1]
     variants = {"auto": dict(occlusion_culling="auto"),
                 "occlusion": dict(occlusion_culling=True),
                 "frustum_time": dict(occlusion_culling=False),
                 "no_walk": dict(culling=False)}
-    reference = None
-    for n in threads:
-        numba.set_num_threads(n)
-        for name, kwargs in variants.items():
-            first, runs, g = time_runs(lambda: rasterize(scene, camera, t_days, **kwargs),
-                                       args.repeat)
-            if reference is None:
-                reference = g.prim_id
-            steps = g.stats["timings_s"]
-            report["ours"][f"{name}_{n}t"] = {
-                "first_ms": 1000 * first, "median_ms": 1000 * statistics.median(runs),
-                "runs_ms": [1000 * r for r in runs],
-                "identical_to_first_variant": bool(np.array_equal(g.prim_id, reference)),
-                "last_run_steps_ms": {k[:-2]: 1000 * v for k, v in steps.items()},
-                "stats": {k: v for k, v in g.stats.items() if k != "timings_s"}}
-    numba.set_num_threads(threads[-1])
-    t = time.perf_counter()
-    rays = gbuffer_by_raycasting(scene, camera, t_days)
-    report["raycast_twin"] = {"ms": 1000 * (time.perf_counter() - t),
-                              "prim_id_agreement": float((rays.prim_id == reference).mean()),
-                              "covered": float((reference >= 0).mean())}
-    if not args.no_llvmpipe:
-        report["llvmpipe"] = llvmpipe(scene, camera, t_days, args.repeat, threads, args.workdir)
+    for view in [v for v in args.views.split(",") if v]:
+        if view not in cameras:
+            raise SystemExit(f"unknown view {view!r}; valid: {', '.join(cameras)}")
+        camera = cameras[view]
+        out: dict = {"ours": {}}
+        reference = None
+        for n in threads:
+            numba.set_num_threads(n)
+            for name, kwargs in variants.items():
+                first, runs, g = time_runs(lambda: rasterize(scene, camera, t_days, **kwargs),
+                                           args.repeat)
+                if reference is None:
+                    reference = g.prim_id
+                steps = g.stats["timings_s"]
+                out["ours"][f"{name}_{n}t"] = {
+                    "first_ms": 1000 * first, "median_ms": 1000 * statistics.median(runs),
+                    "runs_ms": [1000 * r for r in runs],
+                    "identical_to_first_variant": bool(np.array_equal(g.prim_id, reference)),
+                    "last_run_steps_ms": {k[:-2]: 1000 * v for k, v in steps.items()},
+                    "stats": {k: v for k, v in g.stats.items() if k != "timings_s"}}
+        numba.set_num_threads(threads[-1])
+        t = time.perf_counter()
+        rays = gbuffer_by_raycasting(scene, camera, t_days)
+        out["raycast_twin"] = {"ms": 1000 * (time.perf_counter() - t),
+                               "prim_id_agreement": float((rays.prim_id == reference).mean()),
+                               "covered": float((reference >= 0).mean())}
+        if not args.no_llvmpipe:
+            out["llvmpipe"] = llvmpipe(scene, camera, t_days, args.repeat, threads, args.workdir)
+        report["views"][view] = out
     print(json.dumps(report, indent=1, default=str))
     if args.json:
         args.json.write_text(json.dumps(report, indent=1, default=str))
-    _table(report, threads)
+    for view, out in report["views"].items():
+        _table(report, view, out, threads)
     return report
 
 
-def _table(report: dict, threads) -> None:
-    lp = report.get("llvmpipe", {})
+def _table(report: dict, view: str, out: dict, threads) -> None:
+    lp = out.get("llvmpipe", {})
     print(f"\nG-buffer pass, {report['triangles']} triangles ({report['present_at_date']} present "
-          f"at the date), {report['size'][0]}x{report['size'][1]}, overview camera; "
-          f"agreement with ray casting {report['raycast_twin']['prim_id_agreement']:.4%}")
+          f"at the date), {report['size'][0]}x{report['size'][1]}, {view} camera "
+          f"({out['raycast_twin']['covered']:.1%} of pixels covered); agreement with ray "
+          f"casting {out['raycast_twin']['prim_id_agreement']:.4%}")
     print(f"{'variant':<16}{'threads':>8}{'first ms':>10}{'median ms':>11}{'drawn':>10}"
           f"{'frustum':>10}{'occluded':>10}{'time':>10}{'vs llvmpipe':>13}")
-    for key, res in report["ours"].items():
+    for key, res in out["ours"].items():
         name, n = key.rsplit("_", 1)
         n = int(n[:-1])
         st = res["stats"]

@@ -47,8 +47,10 @@ from cityshade.raster.gbuffer import GBuffer
 TILE_PX = 64
 #: Side of the blocks of the hierarchical max-depth buffer (8 blocks per tile side).
 BLOCK_PX = 8
-#: Triangles per drawing batch without occlusion culling (bounds the setup arrays: 96 bytes per
-#: triangle, 25 MB per batch).
+#: Triangles per drawing batch (bounds the transient setup arrays: 140 bytes per triangle,
+#: 37 MB per batch). Every batch costs four parallel regions; on a machine shared with other
+#: work a region can wait milliseconds for a descheduled thread (1.2 ms per empty region at 2
+#: threads measured here under load), so batches should not be small either.
 MAX_BATCH = 262144
 #: First batch with occlusion culling: small, so the nearest surfaces are in the depth buffer
 #: before the first queries; later batches double up to MAX_BATCH.
