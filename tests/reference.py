@@ -325,3 +325,28 @@ def reference_rasterize(vertices, triangles, t_begin_days, t_end_days, camera, t
         prim[better] = tri
         best[better] = t[better]
     return prim.reshape(h, w), best.reshape(h, w)
+
+
+# --- sun-hours (twin of cityshade.batch / cityshade.surfaces) ------------------------------------
+
+def reference_sun_hours(vertices, triangles, points, normals, sun_directions, weights_h,
+                        offset_m=1e-4):
+    """Sun-hours of each point by brute force: for every step, a point facing the sun
+    (normal · sun > 0) whose ray towards the sun, started ``offset_m`` off the surface along
+    the normal, hits no triangle, gains the step's weight. Steps with the sun at or below the
+    horizon (direction z <= 0) give nothing."""
+    points = np.asarray(points, dtype=np.float64)
+    normals = np.asarray(normals, dtype=np.float64)
+    n_tri = len(triangles)
+    begin, end = np.full(n_tri, -np.inf), np.full(n_tri, np.inf)
+    hours = np.zeros(len(points))
+    for d, w in zip(np.asarray(sun_directions, dtype=np.float64), weights_h):
+        if d[2] <= 0.0:
+            continue
+        for i, (p, n) in enumerate(zip(points, normals)):
+            if n @ d <= 0.0:
+                continue
+            t, _ = reference_ray_hits(vertices, triangles, begin, end, p + offset_m * n, d)
+            if t.size == 0:
+                hours[i] += w
+    return hours

@@ -17,6 +17,7 @@ COMMANDS = {
     "build": ("cityshade.cli.build:build", "Build the .cityshade scene file of a CityGML model."),
     "info": ("cityshade.cli.info:info", "Describe a .cityshade file (or a CityGML file)."),
     "render": ("cityshade.cli.render:render", "Render a picture and shadow mask at a date and sun."),
+    "batch": ("cityshade.cli.batch:batch", "Sun-hour maps and per-surface sun-hours over times."),
 }
 
 

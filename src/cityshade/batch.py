@@ -1,0 +1,773 @@
+"""Batch runs over many sun positions: sun-hour maps and per-surface sun-hours.
+
+The camera does not move in a batch, so the camera pass (rasterize + resolve, DESIGN §7) runs
+once; for each sun position only the shadow stage runs. Each step stands for an interval of
+time and is weighted by its length in hours; the sun of a step is taken at the interval's
+centre (midpoint rule: the weights add up to the covered time exactly, and the error in
+sun-hours is second order in the step). Steps with the sun at or below the horizon contribute
+nothing and are skipped; steps with an identical sun direction are computed once, with their
+weights summed.
+
+Sums are float64 and are added in a fixed order (the order of first occurrence of each sun
+position), so a run that was interrupted and resumed from its checkpoint (:class:`Checkpoint`)
+gives a result bit-identical to a straight run.
+
+Entry points: :func:`plan_steps` (dates, local times and a time zone → UTC steps),
+:func:`sun_hours` (arrays in, arrays out; a per-surface variant is
+:func:`surface_sun_hours`), :func:`write_sun_hours` (EXR, colour-mapped PNG with legend,
+georeferenced float raster) and the manifest helpers used by ``cityshade batch``.
+"""
+from __future__ import annotations
+
+import hashlib
+import json
+import math
+import os
+import re
+import time
+import uuid
+from dataclasses import dataclass, field
+from datetime import date, datetime, timedelta, timezone
+from pathlib import Path
+from typing import Any, Callable, Sequence
+
+import numpy as np
+
+from cityshade import __version__
+from cityshade.errors import OutputError, UsageError
+
+__all__ = ["Step", "Unit", "SunHours", "Checkpoint", "parse_duration_s", "parse_clock_s",
+           "plan_steps", "plan_units", "sun_hours", "surface_sun_hours", "write_sun_hours",
+           "colour_map_png", "params_key", "read_manifest", "write_manifest", "MANIFEST_NAME",
+           "STATE_NAME"]
+
+MANIFEST_NAME = "manifest.json"
+STATE_NAME = "state.npz"
+#: Largest number of steps of one run: 1 year every minute is 525 600; more is a typo.
+MAX_STEPS = 1_000_000
+_DURATION_RE = re.compile(r"\s*(\d+(?:\.\d*)?)\s*(h|min|s)\s*")
+_CLOCK_RE = re.compile(r"(\d{1,2}):(\d{2})(?::(\d{2}))?")
+
+
+# --- time steps -------------------------------------------------------------------------------
+
+def parse_duration_s(text: str) -> float:
+    """Seconds of a duration such as ``10min``, ``1h``, ``30s`` or ``1h30min``.
+
+    Raises
+    ------
+    UsageError
+        No unit, an unknown unit, or a duration that is not positive.
+    """
+    pos, total = 0, 0.0
+    text_s = str(text)
+    for match in _DURATION_RE.finditer(text_s):
+        if match.start() != pos:
+            break
+        total += float(match.group(1)) * {"h": 3600.0, "min": 60.0, "s": 1.0}[match.group(2)]
+        pos = match.end()
+    if pos != len(text_s) or pos == 0:
+        raise UsageError(f"cannot read duration {text!r}; use e.g. 10min, 1h, 30s or 1h30min")
+    if not total > 0.0:
+        raise UsageError(f"a duration must be longer than 0 s, not {text!r}")
+    return total
+
+
+def parse_clock_s(text: str) -> int:
+    """Seconds after midnight of a time of day ``HH:MM[:SS]``; ``24:00`` is the next midnight."""
+    match = _CLOCK_RE.fullmatch(str(text).strip())
+    if match is None:
+        raise UsageError(f"cannot read time of day {text!r}; use HH:MM, e.g. 05:30")
+    h, m, s = int(match.group(1)), int(match.group(2)), int(match.group(3) or 0)
+    seconds = (h * 60 + m) * 60 + s
+    if m >= 60 or s >= 60 or seconds > 86_400:
+        raise UsageError(f"time of day {text!r} does not exist; use 00:00 to 24:00")
+    return seconds
+
+
+@dataclass(frozen=True)
+class Step:
+    """One time step: the interval ``[start_utc, end_utc)`` it stands for."""
+
+    index: int
+    start_utc: datetime
+    end_utc: datetime
+
+    @property
+    def weight_h(self) -> float:
+        return (self.end_utc - self.start_utc).total_seconds() / 3600.0
+
+    @property
+    def centre_utc(self) -> datetime:
+        """Where the sun of the step is evaluated (midpoint rule)."""
+        return self.start_utc + (self.end_utc - self.start_utc) / 2
+
+
+def _local(day: date, seconds: int, zone) -> datetime:
+    """Aware datetime of a wall-clock time on ``day`` in ``zone`` (24:00 = next midnight).
+
+    A wall time skipped by a daylight-saving change is read with the offset before the change
+    (zoneinfo's ``fold=0``), i.e. one hour later in real time.
+    """
+    extra_day, rest = divmod(seconds, 86_400)
+    d = day + timedelta(days=extra_day)
+    h, rem = divmod(rest, 3600)
+    return datetime(d.year, d.month, d.day, h, rem // 60, rem % 60, tzinfo=zone)
+
+
+def plan_steps(first_day: date, from_s: int, to_s: int, every_s: float, tz: str,
+               days: int | None = None, to_date: date | None = None,
+               every_day: int = 1) -> list[Step]:
+    """Time steps of a batch: on each day, ``[from, to)`` local time cut into steps of
+    ``every_s`` (the last one shorter when it does not divide).
+
+    Parameters
+    ----------
+    first_day : datetime.date
+    from_s, to_s : int
+        Local times of day in seconds after midnight (:func:`parse_clock_s`), ``from < to``.
+    every_s : float
+        Step length in seconds, elapsed time (a daylight-saving change inside the window
+        adds or removes steps, as it adds or removes real time).
+    tz : str
+        IANA time zone of the local times ("UTC" for UTC).
+    days : int, optional
+        Number of days (default 1), ``every_day`` apart.
+    to_date : datetime.date, optional
+        Last day (inclusive) instead of ``days``.
+    every_day : int
+        Days between the days taken.
+
+    Returns
+    -------
+    list of Step
+
+    Raises
+    ------
+    UsageError
+        Unknown zone, empty window, both ``days`` and ``to_date``, non-positive counts, years
+        outside 1000–3000, or more than :data:`MAX_STEPS` steps.
+    """
+    from cityshade.citygml.temporal import _zone
+
+    if days is not None and to_date is not None:
+        raise UsageError("give --days or --to-date, not both")
+    if every_day < 1:
+        raise UsageError(f"--every-day must be >= 1, not {every_day}")
+    if not to_s > from_s:
+        raise UsageError("--to must be later than --from on the same day (24:00 is midnight "
+                         "at the end of the day)")
+    if not (math.isfinite(every_s) and every_s > 0):
+        raise UsageError(f"the step must be longer than 0 s, not {every_s}")
+    zone = _zone(tz)
+    if to_date is not None:
+        if to_date < first_day:
+            raise UsageError(f"--to-date {to_date} is before --date {first_day}")
+        n_days = (to_date - first_day).days // every_day + 1
+    else:
+        n_days = 1 if days is None else int(days)
+        if n_days < 1:
+            raise UsageError(f"--days must be >= 1, not {days}")
+    per_day = math.ceil((to_s - from_s) / every_s)
+    if n_days * per_day > MAX_STEPS:
+        raise UsageError(f"{n_days * per_day} steps exceed the limit of {MAX_STEPS}; "
+                         f"choose a longer step or fewer days")
+    steps: list[Step] = []
+    step = timedelta(seconds=every_s)
+    for k in range(n_days):
+        day = first_day + timedelta(days=k * every_day)
+        if not 1000 <= day.year <= 3000:
+            raise UsageError(f"dates must lie in the years 1000 to 3000, not {day}")
+        start = _local(day, from_s, zone).astimezone(timezone.utc)
+        end = _local(day, to_s, zone).astimezone(timezone.utc)
+        s = start
+        while s < end:
+            e = min(s + step, end)
+            steps.append(Step(len(steps), s, e))
+            s = e
+    return steps
+
+
+# --- work units: distinct sun positions above the horizon -------------------------------------
+
+@dataclass(frozen=True)
+class Unit:
+    """A distinct sun position above the horizon and the steps that share it."""
+
+    sun: Any
+    steps: tuple[int, ...]
+    weight_h: float
+
+
+def plan_units(suns: Sequence, weights_h: Sequence[float]) -> tuple[list[Unit], list[int], int]:
+    """Group steps by identical sun direction, skipping those at or below the horizon.
+
+    Returns
+    -------
+    units : list of Unit
+        In the order of each position's first step; weights summed in step order.
+    below : list of int
+        Indices of the steps with the sun at or below the horizon.
+    duplicates : int
+        Steps that reuse an earlier step's identical sun position.
+    """
+    by_key: dict[tuple, int] = {}
+    steps: list[list[int]] = []
+    weights: list[float] = []
+    order: list[Any] = []
+    below: list[int] = []
+    duplicates = 0
+    for i, (sun, w) in enumerate(zip(suns, weights_h)):
+        if not sun.above_horizon:
+            below.append(i)
+            continue
+        key = tuple(float(v) for v in sun.direction)
+        u = by_key.get(key)
+        if u is None:
+            by_key[key] = len(order)
+            order.append(sun)
+            steps.append([i])
+            weights.append(float(w))
+        else:
+            duplicates += 1
+            steps[u].append(i)
+            weights[u] += float(w)
+    units = [Unit(sun, tuple(s), w) for sun, s, w in zip(order, steps, weights)]
+    return units, below, duplicates
+
+
+# --- checkpoint ---------------------------------------------------------------------------------
+
+class Checkpoint:
+    """Running sums of an unfinished run, saved atomically after every unit.
+
+    Parameters
+    ----------
+    path : path-like
+        The state file (``OUTDIR/state.npz``).
+    key : str
+        Hash of the run's parameters (:func:`params_key`); a state with another key is
+        refused, so results of different runs never mix.
+    """
+
+    def __init__(self, path, key: str):
+        self.path = Path(path)
+        self.key = str(key)
+        self.saves = 0
+        self.save_s = 0.0
+
+    def load(self, n_units: int, pixel_shape, n_samples: int):
+        """``(units_done, pixel_sum, sample_sum)`` of a saved state, or None when there is none.
+
+        Raises
+        ------
+        UsageError
+            The state belongs to other parameters, does not fit this run, or is damaged.
+        """
+        if not self.path.exists():
+            return None
+        hint = "re-run with --overwrite to start afresh"
+        try:
+            with np.load(self.path, allow_pickle=False) as z:
+                key = str(z["key"])
+                done = int(z["units_done"])
+                pixel_sum = np.array(z["pixel_sum"], dtype=np.float64)
+                sample_sum = np.array(z["sample_sum"], dtype=np.float64)
+        except (OSError, ValueError, KeyError) as exc:
+            raise UsageError(f"the saved state {self.path} is damaged ({exc}); {hint}") from None
+        if key != self.key:
+            raise UsageError(f"the saved state {self.path} belongs to a run with other "
+                             f"parameters; {hint}")
+        shape = tuple(pixel_shape) if pixel_shape is not None else (0, 0)
+        if pixel_sum.shape != shape or sample_sum.shape != (n_samples,) or not \
+                0 <= done <= n_units:
+            raise UsageError(f"the saved state {self.path} does not fit this run; {hint}")
+        return done, pixel_sum, sample_sum
+
+    def units_done(self) -> int:
+        """Units recorded as done in the saved state (0 without a state or for another key)."""
+        try:
+            with np.load(self.path, allow_pickle=False) as z:
+                return int(z["units_done"]) if str(z["key"]) == self.key else 0
+        except (OSError, ValueError, KeyError):
+            return 0
+
+    def save(self, units_done: int, pixel_sum: np.ndarray, sample_sum: np.ndarray) -> None:
+        """Write the state to a temporary name and rename it over the previous one."""
+        t0 = time.perf_counter()
+        tmp = self.path.with_name(f".{self.path.name}.{uuid.uuid4().hex}.tmp")
+        try:
+            with tmp.open("wb") as fh:
+                np.savez(fh, key=np.array(self.key), units_done=np.array(units_done),
+                         pixel_sum=pixel_sum, sample_sum=sample_sum)
+            os.replace(tmp, self.path)
+        except OSError as exc:
+            tmp.unlink(missing_ok=True)
+            raise OutputError(f"cannot save the batch state: {exc.strerror or exc}",
+                              path=str(self.path)) from None
+        self.saves += 1
+        self.save_s += time.perf_counter() - t0
+
+    def remove(self) -> None:
+        self.path.unlink(missing_ok=True)
+
+
+# --- the run ------------------------------------------------------------------------------------
+
+@dataclass
+class SunHours:
+    """Result of :func:`sun_hours`.
+
+    Attributes
+    ----------
+    hours : (H, W) float32 or None
+        Sun-hours per pixel; NaN where no surface. None without a camera.
+    valid : (H, W) bool or None
+        Pixels showing a surface.
+    surfaces : cityshade.raster.gbuffer.Surfaces or None
+        The camera pass (done once).
+    samples : cityshade.surfaces.SurfaceSamples or None
+    sample_hours : (N,) float64 or None
+        Sun-hours of each surface sample.
+    polygon_hours : (P,) float64 or None
+        Area-weighted mean sun-hours per polygon, NaN where not sampled.
+    steps, steps_below_horizon, steps_duplicate, units, units_resumed : int
+        Counts: all steps, skipped (sun down), sharing a sun position, distinct positions
+        computed, positions taken from a saved state.
+    hours_total, hours_sun_up : float
+        Time covered by all steps, and by those with the sun above the horizon.
+    suns : list of SunPosition
+    timings_s : dict
+        ``suns_s, camera_s, samples_s, shadow_s, surface_rays_s, checkpoint_s, total_s``.
+    warnings : list of str
+    """
+
+    hours: np.ndarray | None
+    valid: np.ndarray | None
+    surfaces: Any
+    samples: Any
+    sample_hours: np.ndarray | None
+    polygon_hours: np.ndarray | None
+    steps: int
+    steps_below_horizon: int
+    steps_duplicate: int
+    units: int
+    units_resumed: int
+    hours_total: float
+    hours_sun_up: float
+    suns: list
+    timings_s: dict[str, float] = field(default_factory=dict)
+    diagnostics: dict[str, Any] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
+
+
+def _weights(instants: list, weights_h) -> np.ndarray:
+    if weights_h is not None:
+        w = np.asarray(weights_h, dtype=np.float64)
+        if w.shape != (len(instants),):
+            raise UsageError(f"weights_h must have one value per instant ({len(instants)}), "
+                             f"not shape {w.shape}")
+        if not (np.isfinite(w).all() and (w >= 0).all()):
+            raise UsageError("weights_h must be finite hours >= 0")
+        return w
+    if len(instants) < 2:
+        raise UsageError("give weights_h (hours per instant) for a single instant")
+    gaps = np.array([(b - a).total_seconds() for a, b in zip(instants, instants[1:])])
+    if not np.all(gaps == gaps[0]) or gaps[0] <= 0:
+        raise UsageError("instants are not evenly spaced; give weights_h (hours per instant)")
+    return np.full(len(instants), gaps[0] / 3600.0)
+
+
+def _city_changes(scene, instants, t_days) -> str | None:
+    """A warning when objects appear or disappear between the first and last instant."""
+    if not scene.has_time or not instants:
+        return None
+    from cityshade.citygml.temporal import datetime_to_days
+
+    lo = min(datetime_to_days(t) for t in instants)
+    hi = max(datetime_to_days(t) for t in instants)
+    ends = np.concatenate([scene.obj_t_begin_days, scene.obj_t_end_days])
+    n = int(((ends > lo) & (ends <= hi)).sum())
+    if n:
+        from cityshade.citygml.temporal import days_to_iso
+
+        return (f"{n} object dates fall inside the run; the city is shown as it stood at "
+                f"{days_to_iso(t_days) if math.isfinite(t_days) else 'any time'} throughout")
+    return None
+
+
+def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
+              weights_h=None, technique: str = "raytrace", options: dict | None = None,
+              ground: str | None = None, spa=None, suns: Sequence | None = None,
+              samples_per_m2: float | None = None, checkpoint: Checkpoint | None = None,
+              on_step: Callable[[int, int, Unit], None] | None = None,
+              on_frame: Callable[[Unit, np.ndarray, np.ndarray], None] | None = None
+              ) -> SunHours:
+    """Sun-hours per pixel of a fixed camera (and per surface) over many sun positions.
+
+    Parameters
+    ----------
+    scene : Scene
+        With its kd-tree.
+    camera : Camera or None
+        The view of the sun-hour map; None computes only per-surface values.
+    instants_utc : sequence of aware datetime
+        The instants of the steps (centres of their intervals).
+    t_days : float
+        City time (days since 1970-01-01 UTC): the city as it stood then is used for all
+        steps (the camera pass is done once).
+    weights_h : (N,) float, optional
+        Hours each instant stands for; default: the spacing of evenly spaced instants.
+    technique : str
+        Shadow technique of the registry for the pixels. Surface samples always use exact
+        shadow rays.
+    options : dict, optional
+        Technique options.
+    ground : str, optional
+        Ground plane where no surface is drawn ("min", "auto" or a height; see render).
+    spa : cityshade.sun.SpaSettings, optional
+        Sun computation settings (refraction...).
+    suns : sequence of SunPosition, optional
+        Precomputed sun positions, one per instant (then no SPA and no CRS is needed).
+    samples_per_m2 : float, optional
+        With a value, also compute per-surface sun-hours from sample points at this density.
+    checkpoint : Checkpoint, optional
+        Resume from and save to this state after every sun position.
+    on_step : callable(units_done, units_total, unit), optional
+        Called after each position is accumulated and saved (progress; an exception raised
+        here, e.g. KeyboardInterrupt, stops the run with the state saved).
+    on_frame : callable(unit, lit, valid), optional
+        Receives each position's per-pixel lit fraction (for ``--frames``).
+
+    Returns
+    -------
+    SunHours
+
+    Raises
+    ------
+    UsageError
+        No kd-tree, no instants, bad weights or suns, a saved state of another run.
+    CRSError
+        Sun positions from instants for a model without CRS.
+    """
+    from cityshade.shadows import ShadowContext, get_technique
+
+    t_start = time.perf_counter()
+    if scene.kdtree is None:
+        raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
+    instants = list(instants_utc)
+    if not instants:
+        raise UsageError("a batch needs at least one instant")
+    for t in instants:
+        if not isinstance(t, datetime) or t.utcoffset() is None:
+            raise UsageError(f"instants must be aware datetimes, not {t!r}")
+    if math.isnan(float(t_days)):
+        raise UsageError("t_days must be a number of days, not NaN")
+    if camera is None and samples_per_m2 is None:
+        raise UsageError("nothing to compute: give a camera, samples_per_m2, or both")
+    weights = _weights(instants, weights_h)
+    tech = get_technique(technique) if camera is not None else None
+    timings = dict.fromkeys(("suns_s", "camera_s", "samples_s", "shadow_s", "surface_rays_s",
+                             "checkpoint_s"), 0.0)
+    warnings: list[str] = []
+
+    # Sun positions: one SPA call for all instants, or the caller's.
+    t0 = time.perf_counter()
+    if suns is None:
+        from cityshade.sun import suns_from_instants
+
+        suns = suns_from_instants(instants, scene.crs, scene.origin_m, spa)
+    else:
+        suns = list(suns)
+        if len(suns) != len(instants):
+            raise UsageError(f"give one sun per instant ({len(instants)}), not {len(suns)}")
+    timings["suns_s"] = time.perf_counter() - t0
+    units, below, duplicates = plan_units(suns, weights)
+    if not units:
+        warnings.append(f"the sun stays at or below the horizon in all {len(suns)} steps: "
+                        f"nothing is lit, sun-hours are 0 everywhere")
+    change = _city_changes(scene, instants, float(t_days))
+    if change:
+        warnings.append(change)
+
+    # Camera pass, once.
+    surfaces = valid = None
+    diagnostics: dict[str, Any] = {}
+    if camera is not None:
+        from cityshade.raster.gbuffer import resolve
+        from cityshade.raster.rasterize import rasterize
+
+        t0 = time.perf_counter()
+        gbuf = rasterize(scene, camera, float(t_days))
+        surfaces = resolve(scene, gbuf)
+        if ground is not None:
+            from cityshade.ground import add_ground_plane, ground_height_m
+
+            z = ground_height_m(scene, ground)
+            surfaces, filled = add_ground_plane(scene, camera, surfaces, z)
+            diagnostics["ground"] = {"mode": ground, "z_crs_m": z + float(scene.origin_m[2]),
+                                     "pixels": filled}
+        valid = np.asarray(surfaces.valid, bool)
+        diagnostics["gbuffer"] = gbuf.stats
+        timings["camera_s"] = time.perf_counter() - t0
+    samples = None
+    if samples_per_m2 is not None:
+        from cityshade.surfaces import sample_surfaces
+
+        t0 = time.perf_counter()
+        samples = sample_surfaces(scene, samples_per_m2, float(t_days))
+        timings["samples_s"] = time.perf_counter() - t0
+
+    # Running float64 sums, restored from a saved state when there is one.
+    pixel_shape = valid.shape if valid is not None else (0, 0)
+    pixel_sum = np.zeros(pixel_shape, np.float64)
+    sample_sum = np.zeros(samples.n if samples is not None else 0, np.float64)
+    done = 0
+    if checkpoint is not None:
+        state = checkpoint.load(len(units), pixel_shape, sample_sum.shape[0])
+        if state is not None:
+            done, pixel_sum, sample_sum = state
+    resumed = done
+
+    for k in range(done, len(units)):
+        unit = units[k]
+        if camera is not None:
+            t0 = time.perf_counter()
+            result = tech.run(ShadowContext(scene=scene, surfaces=surfaces, camera=camera,
+                                            sun=unit.sun, t_days=float(t_days),
+                                            options=options or {}))
+            lit = np.where(valid, np.nan_to_num(result.lit, nan=0.0), 0.0).astype(np.float32)
+            pixel_sum += unit.weight_h * lit.astype(np.float64)
+            timings["shadow_s"] += time.perf_counter() - t0
+            if on_frame is not None:
+                on_frame(unit, lit, valid)
+        if samples is not None:
+            from cityshade.surfaces import samples_lit
+
+            t0 = time.perf_counter()
+            sample_sum += unit.weight_h * samples_lit(scene, samples, unit.sun,
+                                                      float(t_days)).astype(np.float64)
+            timings["surface_rays_s"] += time.perf_counter() - t0
+        if checkpoint is not None:
+            t0 = time.perf_counter()
+            checkpoint.save(k + 1, pixel_sum, sample_sum)
+            timings["checkpoint_s"] += time.perf_counter() - t0
+        if on_step is not None:
+            on_step(k + 1, len(units), unit)
+
+    hours = None
+    if camera is not None:
+        hours = np.where(valid, pixel_sum, np.nan).astype(np.float32)
+    sample_hours = polygon_hours = None
+    if samples is not None:
+        from cityshade.surfaces import polygon_means
+
+        sample_hours = sample_sum
+        polygon_hours = polygon_means(samples, sample_sum)
+    timings["total_s"] = time.perf_counter() - t_start
+    below_set = set(below)
+    return SunHours(hours=hours, valid=valid, surfaces=surfaces, samples=samples,
+                    sample_hours=sample_hours, polygon_hours=polygon_hours, steps=len(suns),
+                    steps_below_horizon=len(below), steps_duplicate=duplicates,
+                    units=len(units), units_resumed=resumed,
+                    hours_total=float(weights.sum()),
+                    hours_sun_up=float(sum(w for i, w in enumerate(weights)
+                                           if i not in below_set)),
+                    suns=list(suns), timings_s=timings, diagnostics=diagnostics,
+                    warnings=warnings)
+
+
+def surface_sun_hours(scene, instants_utc: Sequence[datetime], t_days: float, *,
+                      samples_per_m2: float = 1.0, **kwargs) -> SunHours:
+    """Per-surface sun-hours only (no camera): :func:`sun_hours` with ``camera=None``; read
+    ``polygon_hours`` (P,) and ``samples`` of the result."""
+    return sun_hours(scene, None, instants_utc, t_days, samples_per_m2=samples_per_m2,
+                     **kwargs)
+
+
+# --- outputs ------------------------------------------------------------------------------------
+
+#: Anchors of the viridis colour map (perceptually uniform, readable in grey and by the
+#: colour-blind), at 0, 1/4, 1/2, 3/4 and 1; linear in between.
+_VIRIDIS = np.array([(68, 1, 84), (59, 82, 139), (33, 145, 140), (94, 201, 98),
+                     (253, 231, 37)], dtype=np.float64)
+#: Colour of pixels without a surface in the PNG (white: most map pixels of a model without
+#: terrain are empty, DESIGN §14).
+_NODATA_RGB = (255, 255, 255)
+#: 3×5 pixel glyphs of the legend labels (1 = ink), rows top to bottom.
+_GLYPHS = {
+    "0": ("111", "101", "101", "101", "111"), "1": ("010", "110", "010", "010", "111"),
+    "2": ("111", "001", "111", "100", "111"), "3": ("111", "001", "111", "001", "111"),
+    "4": ("101", "101", "111", "001", "001"), "5": ("111", "100", "111", "001", "111"),
+    "6": ("111", "100", "111", "101", "111"), "7": ("111", "001", "001", "001", "001"),
+    "8": ("111", "101", "111", "101", "111"), "9": ("111", "101", "111", "001", "111"),
+    ".": ("000", "000", "000", "000", "010"), "h": ("100", "100", "111", "101", "101"),
+    " ": ("000", "000", "000", "000", "000"),
+}
+
+
+def _colours(t: np.ndarray) -> np.ndarray:
+    """(…) values in [0, 1] → (…, 3) uint8 viridis."""
+    x = np.clip(t, 0.0, 1.0) * (len(_VIRIDIS) - 1)
+    i = np.minimum(np.floor(x).astype(np.int64), len(_VIRIDIS) - 2)
+    f = (x - i)[..., None]
+    return np.rint(_VIRIDIS[i] * (1.0 - f) + _VIRIDIS[i + 1] * f).astype(np.uint8)
+
+
+def _draw_text(img: np.ndarray, text: str, x: int, y: int, scale: int) -> None:
+    """Black text into an (H, W, 3) uint8 image at top-left (x, y), clipped at the borders."""
+    h, w = img.shape[:2]
+    for n, ch in enumerate(text):
+        glyph = _GLYPHS[ch]
+        for r, row in enumerate(glyph):
+            for c, bit in enumerate(row):
+                if bit == "1":
+                    x0 = x + (n * 4 + c) * scale
+                    y0 = y + r * scale
+                    img[max(y0, 0):min(y0 + scale, h), max(x0, 0):min(x0 + scale, w)] = 0
+
+
+def _label(hours: float) -> str:
+    return (f"{hours:.0f}" if hours == round(hours) else f"{hours:.1f}") + " h"
+
+
+def colour_map_png(hours: np.ndarray, vmax_h: float | None = None) -> np.ndarray:
+    """Colour-mapped sun-hours with a legend drawn below the map.
+
+    Parameters
+    ----------
+    hours : (H, W) float
+        Sun-hours; NaN = no surface (white).
+    vmax_h : float, optional
+        Hours at the top of the scale (default: the largest value, at least 1 h, rounded up
+        to a whole hour).
+
+    Returns
+    -------
+    (H + legend, max(W, 64), 3) uint8
+        Map on top, then a white legend band: a colour bar from 0 to ``vmax_h`` with labels
+        at 0, the middle and the top.
+    """
+    hours = np.asarray(hours, dtype=np.float64)
+    if hours.ndim != 2:
+        raise UsageError(f"hours must be (H, W), not {hours.shape}")
+    if vmax_h is None:
+        finite = hours[np.isfinite(hours)]
+        vmax_h = max(1.0, math.ceil(float(finite.max()) if finite.size else 1.0))
+    h, w = hours.shape
+    # Legend size follows the picture: glyph pixels of ~1/250 of the width, at least 1.
+    scale = max(1, w // 250)
+    width = max(w, 64)
+    bar_h = 6 * scale
+    band = 4 * scale + bar_h + 3 * scale + 5 * scale + 4 * scale
+    img = np.full((h + band, width, 3), 255, np.uint8)
+    rgb = _colours(np.nan_to_num(hours / vmax_h, nan=0.0))
+    rgb[~np.isfinite(hours)] = _NODATA_RGB
+    img[:h, :w] = rgb
+    margin = 4 * scale
+    x0, x1 = margin, width - margin - 1
+    y_bar = h + 4 * scale
+    ramp = _colours(np.linspace(0.0, 1.0, x1 - x0 + 1))
+    img[y_bar:y_bar + bar_h, x0:x1 + 1] = ramp[None, :, :]
+    y_text = y_bar + bar_h + 3 * scale
+    for value, anchor in ((0.0, 0.0), (vmax_h / 2, 0.5), (vmax_h, 1.0)):
+        text = _label(value)
+        text_w = (len(text) * 4 - 1) * scale
+        x = int(round(x0 + anchor * (x1 - x0) - anchor * text_w))
+        img[y_bar + bar_h:y_bar + bar_h + 2 * scale,
+            int(round(x0 + anchor * (x1 - x0))) - (scale // 2):
+            int(round(x0 + anchor * (x1 - x0))) - (scale // 2) + scale] = 0
+        _draw_text(img, text, x, y_text, scale)
+    return img
+
+
+def run_metadata(result: SunHours, scene, params: dict[str, Any]) -> dict[str, Any]:
+    """Provenance of a batch's outputs (DESIGN §13.10)."""
+    header = scene.header or {}
+    suns = [s for s in result.suns if s.instant_utc is not None]
+    meta = {
+        "cityshade:version": __version__,
+        "cityshade:kind": "sun-hours",
+        "cityshade:units": "hours",
+        "cityshade:steps": result.steps,
+        "cityshade:steps_below_horizon": result.steps_below_horizon,
+        "cityshade:sun_positions_computed": result.units,
+        "cityshade:hours_total": result.hours_total,
+        "cityshade:hours_sun_up": result.hours_sun_up,
+        "cityshade:source_sha256": header.get("source", {}).get("sha256", ""),
+        "cityshade:crs": scene.crs.name,
+        "cityshade:crs_epsg": scene.crs.horizontal_epsg or 0,
+        "cityshade:origin_m": " ".join(f"{v:.3f}" for v in scene.origin_m),
+        "cityshade:params": json.dumps(params, sort_keys=True),
+    }
+    if suns:
+        meta["cityshade:sun_source"] = suns[0].source
+        meta["cityshade:first_instant_utc"] = suns[0].instant_utc
+        meta["cityshade:last_instant_utc"] = suns[-1].instant_utc
+        meta["cityshade:delta_t_s"] = float(suns[0].delta_t_s)
+        meta["cityshade:refraction"] = "on" if suns[0].refraction else "off"
+    return meta
+
+
+def write_sun_hours(outdir, result: SunHours, scene, camera, meta: dict[str, Any],
+                    surfaces_csv: bool = False) -> list[Path]:
+    """Write ``sun_hours.exr`` (channels ``sun_hours``, ``objid``), ``sun_hours.png``
+    (colour-mapped, legend), for map views ``sun_hours.tif`` (+ .tfw, .prj; float32, NaN
+    nodata), and with ``surfaces_csv`` ``surfaces.csv``. Returns the paths written."""
+    from cityshade import imageio
+
+    outdir = Path(outdir)
+    written: list[Path] = []
+    if result.hours is not None:
+        exr = outdir / "sun_hours.exr"
+        imageio.write_exr(exr, {"sun_hours": result.hours,
+                                "objid": np.asarray(result.surfaces.obj_id)}, meta)
+        written.append(exr)
+        png = outdir / "sun_hours.png"
+        imageio.write_png_rgb(png, colour_map_png(result.hours),
+                              attributes={k: str(v) for k, v in meta.items()})
+        written.append(png)
+        if camera.kind == "map":
+            written += imageio.write_georeferenced(
+                outdir / "sun_hours.tif", result.hours, camera.geotransform(scene.origin_m),
+                epsg=scene.crs.horizontal_epsg, nodata=float("nan"),
+                attributes={k: str(v) for k, v in meta.items()})
+    if surfaces_csv and result.samples is not None:
+        from cityshade.surfaces import write_surface_csv
+
+        written.append(write_surface_csv(outdir / "surfaces.csv", scene, result.samples,
+                                         result.polygon_hours))
+    return written
+
+
+# --- manifest ------------------------------------------------------------------------------------
+
+def params_key(params: dict[str, Any]) -> str:
+    """SHA-256 of the parameters as canonical JSON."""
+    text = json.dumps(params, sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(text.encode("utf-8")).hexdigest()
+
+
+def read_manifest(outdir) -> dict[str, Any] | None:
+    """The manifest of OUTDIR, or None when there is none."""
+    path = Path(outdir) / MANIFEST_NAME
+    if not path.exists():
+        return None
+    try:
+        return json.loads(path.read_text(encoding="utf-8"))
+    except (OSError, ValueError) as exc:
+        raise UsageError(f"{path} cannot be read ({exc}); re-run with --overwrite") from None
+
+
+def write_manifest(outdir, manifest: dict[str, Any]) -> Path:
+    """Write ``OUTDIR/manifest.json`` atomically."""
+    path = Path(outdir) / MANIFEST_NAME
+    tmp = path.with_name(f".{path.name}.{uuid.uuid4().hex}.tmp")
+    try:
+        tmp.write_text(json.dumps(manifest, indent=2, sort_keys=True) + "\n", encoding="utf-8")
+        os.replace(tmp, path)
+    except OSError as exc:
+        tmp.unlink(missing_ok=True)
+        raise OutputError(f"cannot write the manifest: {exc.strerror or exc}",
+                          path=str(path)) from None
+    return path
