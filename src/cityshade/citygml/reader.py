@@ -146,6 +146,9 @@ class _Walker:
         self.exterior_tags = {t + n for t in gml_tags for n in ("exterior", "outerBoundaryIs")}
         self.interior_tags = {t + n for t in gml_tags for n in ("interior", "innerBoundaryIs")}
         self.poslist_tags = {t + "posList" for t in gml_tags}
+        self.uniform_tags = {t + n for t in gml_tags
+                             for n in ("MultiSurface", "CompositeSurface", "Shell")}
+        self.compile_member_paths()
     # -- classification -------------------------------------------------------------------
     def kind(self, tag: str) -> tuple[int, object]:
         """(kind, payload) of an element tag, cached: payload is a LoD, class code or type."""
@@ -203,6 +206,20 @@ class _Walker:
         # Only files declaring both GML versions need the second look-up of every id.
         self.other_gml_id = present[1][1] if len(present) > 1 else (
             None if present else ns.GML_ID_ATTRS[1])
+        self.compile_member_paths()
+
+    def compile_member_paths(self) -> None:
+        """XPaths of :meth:`uniform_members` in the file's GML namespace (members in the other
+        namespace make the selection come up short, and the generic walk reads them)."""
+        from lxml import etree
+
+        names = {"g": self.gml_ns, "x": XLINK_HREF[1:XLINK_HREF.index("}")]}
+        #: The xlinks of the members, in document order (plain strings, no elements made).
+        self.member_hrefs = etree.XPath("g:surfaceMember/@x:href", namespaces=names,
+                                        smart_strings=False)
+        #: The polygon of each member that has no attribute and no other child element.
+        self.member_polygons = etree.XPath("g:surfaceMember[not(@*)][count(*) = 1]/g:Polygon",
+                                           namespaces=names)
 
     def element_id(self, el) -> str | None:
         value = el.get(self.gml_id)
@@ -259,6 +276,7 @@ class _Walker:
         """
         m = self.m
         kinds = self.kinds
+        uniform_tags = self.uniform_tags
         gml_id, other_gml_id = self.gml_id, self.other_gml_id
         for child in el:
             tag = child.tag
@@ -269,10 +287,12 @@ class _Walker:
                 entry = self.kind(tag)
             kind, payload = entry
             if kind == K_AGG:
+                uniform = tag in uniform_tags
                 if not len(child.attrib):
                     # The usual member: no reference, CRS or id of its own (counting the
                     # attributes makes no strings; the look-ups below would find nothing).
-                    self.walk(child, obj, cls, lod, flip)
+                    if not (uniform and self.uniform_members(child, obj, cls, lod, flip)):
+                        self.walk(child, obj, cls, lod, flip)
                     continue
                 href = child.get(XLINK_HREF)
                 if href is not None:
@@ -285,11 +305,10 @@ class _Walker:
                 agg_id = child.get(gml_id)
                 if agg_id is None and other_gml_id is not None:
                     agg_id = child.get(other_gml_id)
-                if agg_id is None:
+                p0, r0 = len(self.polys), len(self.refs)
+                if not (uniform and self.uniform_members(child, obj, cls, lod, flip)):
                     self.walk(child, obj, cls, lod, flip)
-                else:
-                    p0, r0 = len(self.polys), len(self.refs)
-                    self.walk(child, obj, cls, lod, flip)
+                if agg_id is not None:
                     m.aggregates.setdefault(agg_id, (p0, len(self.polys), r0, len(self.refs)))
             elif kind == K_POLYGON:
                 self.polygon(child, obj, cls, lod, flip)
@@ -340,6 +359,35 @@ class _Walker:
                 m.counters["cavity_polygons"] += sum(
                     1 for p in child.iter() if isinstance(p.tag, str)
                     and p.tag[p.tag.rfind("}") + 1:] in ns.POLYGON_ELEMENTS)
+
+    def uniform_members(self, el, obj: int, cls: int, lod: int, flip: int) -> bool:
+        """Read a surface aggregate whose members are all alike in bulk; False if they are not.
+
+        Two layouts make most of the members of large files: the ``CompositeSurface`` (or
+        ``Shell``) of a Solid whose ``surfaceMember``s are all xlinks, and a ``MultiSurface``
+        whose members each hold one ``Polygon`` and nothing else. lxml selects those members in
+        C (no element or tag string is made per xlink member, no dispatch per polygon member).
+        Each child of ``el`` yields at most one entry, so the selection stands for the whole
+        aggregate exactly when it has one entry per child node; the generic :meth:`walk` would
+        then do the same — reference every xlink in order, or read every polygon in order in
+        the context of ``el``. Otherwise nothing has been recorded and the walk does the work.
+        """
+        n_children = len(el)  # elements, processing instructions and entity references
+        if n_children < 2:
+            return False  # nothing to gain, and the selection would cost a look
+        if el[0].get(XLINK_HREF) is not None:
+            hrefs = self.member_hrefs(el)
+            if len(hrefs) != n_children:
+                return False
+            self.refs.extend([(obj, cls, lod, flip)] * n_children)
+            self.m.ref_target.extend([h[1:] if h.startswith("#") else h for h in hrefs])
+            return True
+        polygons = self.member_polygons(el)
+        if len(polygons) != n_children:
+            return False
+        for polygon in polygons:
+            self.polygon(polygon, obj, cls, lod, flip)
+        return True
 
     def reference(self, href: str, obj: int, cls: int, lod: int, flip: int) -> None:
         self.refs.append((obj, cls, lod, flip))
