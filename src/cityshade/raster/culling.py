@@ -9,7 +9,9 @@ what has been drawn so far, and skipped when every pixel it could cover already 
 strictly nearer than the box's nearest point. Leaves emit their triangles in stored order, which
 the kd-tree layout sorts by material ("draw batches").
 
-The walk is resumable: :func:`walk` stops after emitting about ``max_out`` triangles, the
+A subtree that lies entirely inside the frustum and is too small to be queried is emitted by
+one linear scan of its references, which the layout keeps contiguous (depth-first order), with
+the records' own validity as the time filter. The walk is resumable: :func:`walk` stops after emitting about ``max_out`` triangles, the
 caller rasterizes them (which refines the max-depth buffer) and calls it again with the same
 stack. Culling never removes a visible triangle: a triangle's visible sample lies in some leaf
 cell the frustum test keeps (boxes are padded), and the occlusion test is strict and padded.
@@ -121,8 +123,8 @@ def tree_info(tree) -> tuple[np.ndarray, np.ndarray, int]:
 def frustum_planes(camera, pad_m: float) -> np.ndarray:
     """(6, 4) float64 planes ``(n, d)`` with unit ``n``; inside is ``n . p + d >= -pad``.
 
-    The side planes pass one pixel outside the image edges, so boxes touching the border are
-    kept. ``pad_m`` is stored in column 3 offsets (added to ``d``).
+    The side planes pass 1.5 pixels outside the image edges, so boxes touching the border
+    are kept, and ``pad_m`` metres are added to every ``d`` (the test is conservative).
     """
     right, up, fwd = camera.frame()
     eye = np.asarray(camera.eye_m, np.float64)
