@@ -26,6 +26,7 @@ import os
 import re
 from collections import Counter
 from dataclasses import dataclass, field
+from itertools import chain
 from pathlib import Path
 from typing import Callable
 
@@ -504,15 +505,23 @@ class _Walker:
             m.ring_points = np.concatenate(self.points_chunks)
             m.ring_bad = np.concatenate(self.bad_chunks)
         self.xyz_chunks = self.points_chunks = self.bad_chunks = []
-        polys = np.array(self.polys, np.int64).reshape(-1, 5)
-        m.poly_obj, m.poly_cls, m.poly_lod, m.poly_flip, m.poly_ring0 = (
-            np.ascontiguousarray(polys[:, i]) for i in range(5))
-        refs = np.array(self.refs, np.int64).reshape(-1, 4)
-        m.ref_obj, m.ref_cls, m.ref_lod, m.ref_flip = (
-            np.ascontiguousarray(refs[:, i]) for i in range(4))
+        polys = _record_columns(self.polys, 5)
+        m.poly_obj, m.poly_cls, m.poly_lod, m.poly_flip, m.poly_ring0 = polys
+        m.ref_obj, m.ref_cls, m.ref_lod, m.ref_flip = _record_columns(self.refs, 4)
         self.polys, self.refs = [], []
         for namespace, count in sorted(self.ade_namespaces.items()):
             m.counters["ade_elements_skipped"] += count
+
+
+def _record_columns(records: list[tuple[int, ...]], width: int) -> list[np.ndarray]:
+    """Columns (int64, contiguous) of a list of equal-width integer tuples.
+
+    ``np.fromiter`` over the flattened tuples is about twice as fast as ``np.array`` of the
+    list, which inspects every tuple as a nested sequence.
+    """
+    flat = np.fromiter(chain.from_iterable(records), np.int64, count=width * len(records))
+    table = flat.reshape(-1, width)
+    return [np.ascontiguousarray(table[:, i]) for i in range(width)]
 
 
 def _member_tags(root_namespace: str) -> list[str]:
