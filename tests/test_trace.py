@@ -387,3 +387,11 @@ def test_tum_campus_agrees_with_brute_force_across_dates(tum_campus):
                 n_hits += 1
                 assert dist[i] == pytest.approx(t_ref, rel=1e-9, abs=1e-9)
     assert n_hits > 50
+
+
+def test_brick_interleave_is_a_permutation():
+    from cityshade.trace.bricks import STRIPES, _brick_of
+    for n_bricks in (1, 5, STRIPES, STRIPES + 1, 1000):
+        n_iter = STRIPES * ((n_bricks + STRIPES - 1) // STRIPES)
+        bricks = [b for b in (_brick_of(j, n_bricks) for j in range(n_iter)) if b >= 0]
+        assert sorted(bricks) == list(range(n_bricks))

@@ -51,17 +51,20 @@ class KdTreeSettings:
     """Tunables of the kd-tree build (TOML table ``[kdtree]``).
 
     The defaults are the values measured fastest for our own traversal on the 1M-triangle
-    synthetic city of ``benchmarks/raytrace.py`` (``--sweep-sah`` repeats the measurement:
-    intersection_cost 1.0/1.5/2.5 x empty_bonus 0/0.2/0.5, map workload, one thread). On the
-    shared 2-core machine (Nov 2026) 1.5/0 and 1.5/0.2 tied (4.2 Mrays/s closest hit,
-    1.9-2.0 Mrays/s shadow rays), 2.5 was 2-5 % slower and a bonus of 0.5 10-25 % slower;
-    1.5/0.2 has the lower SAH cost. Treat differences under ~5 % as noise on that machine.
+    synthetic city of ``benchmarks/raytrace.py`` (``--sweep-sah`` repeats the measurement;
+    CPU time of one thread, camera and map shadow rays and camera closest hits, Nov 2026):
+    intersection_cost 0.5-2.5 and empty_bonus 0-0.5 were tried. intersection_cost 0.7-1.5
+    with a bonus of 0.1-0.2 are within the ~5 % noise of each other (camera shadow rays
+    7.1-7.5 Mrays/s, map 2.1-2.4, closest hits 4.0-4.5); a bonus of 0.5 is 10-20 % slower.
+    0.7 / 0.2 builds a third fewer nodes than 1.5 (1.37 M vs 2.04 M for 1 M triangles) at
+    the same speed, so it is the default: traversal steps are memory-latency bound here and
+    cost more than a ray/triangle test on a cached record.
     """
 
     #: Cost of one traversal step, relative to ``intersection_cost``.
     traversal_cost: float = 1.0
     #: Cost of one ray/triangle test.
-    intersection_cost: float = 1.5
+    intersection_cost: float = 0.7
     #: Fraction of a split's cost forgiven when one child is empty: cutting off empty space
     #: lets rays skip it entirely, which the plain SAH under-rates.
     empty_bonus: float = 0.2

@@ -19,6 +19,20 @@ from cityshade.trace.kernels import STACK_SIZE, any_hit, closest_hit
 #: balance on uneven scenes (thousands of bricks per frame). Not tuned further.
 DEFAULT_BRICK_SIZE = 256
 
+#: Stripes of the brick interleave: ``prange`` hands each thread a contiguous range of
+#: iterations, and costs vary smoothly over an image (sky at the top, near city at the bottom),
+#: so iteration j is mapped to the brick ``(j % STRIPES) * per_stripe + j // STRIPES``: every
+#: thread then takes part of every stripe of the image, and the two cores finish together.
+STRIPES = 64
+
+
+@njit(cache=True, inline="always")
+def _brick_of(j, n_bricks):
+    """Brick traced at prange iteration j (a permutation of 0..n_bricks-1; -1 = padding)."""
+    per_stripe = (n_bricks + STRIPES - 1) // STRIPES
+    b = (j % STRIPES) * per_stripe + j // STRIPES
+    return b if b < n_bricks else -1
+
 
 @njit(cache=True, parallel=True)
 def occluded_bricks(nodes, splits, recs, recs_f64, box_lo, box_hi, origins, directions,
@@ -29,7 +43,11 @@ def occluded_bricks(nodes, splits, recs, recs_f64, box_lo, box_hi, origins, dire
     """
     n = origins.shape[0]
     n_bricks = (n + brick_size - 1) // brick_size
-    for b in prange(n_bricks):
+    n_iter = STRIPES * ((n_bricks + STRIPES - 1) // STRIPES)
+    for j in prange(n_iter):
+        b = _brick_of(j, n_bricks)
+        if b < 0:
+            continue
         st_node = np.empty(STACK_SIZE, np.int64)
         st_t0 = np.empty(STACK_SIZE)
         st_t1 = np.empty(STACK_SIZE)
@@ -51,7 +69,11 @@ def intersect_bricks(nodes, splits, recs, recs_f64, box_lo, box_hi, origins, dir
     n = origins.shape[0]
     n_bricks = (n + brick_size - 1) // brick_size
     rec_ids = recs.view(np.int32)
-    for b in prange(n_bricks):
+    n_iter = STRIPES * ((n_bricks + STRIPES - 1) // STRIPES)
+    for j in prange(n_iter):
+        b = _brick_of(j, n_bricks)
+        if b < 0:
+            continue
         st_node = np.empty(STACK_SIZE, np.int64)
         st_t0 = np.empty(STACK_SIZE)
         st_t1 = np.empty(STACK_SIZE)
