@@ -1,0 +1,644 @@
+"""Shadow maps: light views, the light-space depth pass, lookups, and the ``shadowmap``,
+``pcf`` and ``vsm`` techniques.
+
+Conventions
+-----------
+* A :class:`LightView` is an OpenGL-style ``clip_from_world`` matrix (render space → light clip
+  space; x, y, z in [-w, w] inside) and a map size. Texel ``(col, row)`` covers NDC
+  ``x in [2 col / W - 1, 2 (col + 1) / W - 1]``, row 0 at the top (NDC y = +1), exactly like
+  :meth:`cityshade.raster.camera.Camera.clip_from_world`. :func:`project` returns continuous
+  texel coordinates ``u_px = (x/w + 1) W / 2`` (texel ``floor(u_px)``; centres at ``+0.5``)
+  and ``v_px = (1 - y/w) H / 2``, and the NDC depth ``z/w``.
+* Depth maps store NDC depth ``z/w`` as float32: -1 at the near plane (toward the sun), +1 at the
+  far plane, smaller is nearer the sun; ``+inf`` where no caster. Casters nearer than the near
+  plane are clamped to -1 (they still cast).
+* The uniform view (:func:`fit_uniform`) is orthographic along the sun's rays, so its NDC depth
+  is affine in metres along the rays: one NDC unit is ``metres_per_ndc(view)`` metres.
+
+Bias (the receiver side, so it works unchanged on warped and cascaded maps): a facing receiver
+``p`` with oriented unit normal ``n`` is looked up at
+
+    p' = p + bias_m · s + min(slope_bias · t · sinθ · (1 + r), max_bias_m) · n
+
+where ``s`` is the unit vector toward the sun, ``θ`` the angle between ``n`` and ``s``, ``t`` the
+light-space texel size at ``p`` (metres, perpendicular to the rays) and ``r`` the filter radius in
+texels. The normal offset equals the classic slope-scaled depth bias ``slope_bias · t · tanθ``
+(measured along the ray) but also moves the lookup toward the caster, so a shadow still starts
+at the foot of a wall: a plane's depth within one texel differs from the texel centre's by at
+most ``t/√2 · tanθ``, which an offset ``δ ≥ t/√2 · sinθ`` along the normal covers for every θ
+(so ``slope_bias ≥ 0.71`` removes acne; the default adds margin for float32 depth).
+"""
+from __future__ import annotations
+
+import dataclasses
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Any
+
+import numba
+import numpy as np
+
+from cityshade.errors import UsageError
+from cityshade.shadows import ShadowContext, ShadowResult, facing_sun
+from cityshade.shadows import lightraster as lr
+
+#: Largest shadow-map side: 16384² float32 depth + int32 ids is 2 GiB.
+MAX_MAP_PX = 16384
+#: Smallest extent (metres) of a fitted light view across or along the rays: a single visible
+#: point still gets a non-degenerate map.
+MIN_EXTENT_M = 0.01
+#: Depth margin of the fitted view beyond the receivers and casters, relative to the depth range
+#: (plus MIN_EXTENT_M): float32 rounding of vertices never pushes a surface out of the range.
+DEPTH_MARGIN_REL = 1e-3
+#: Padding of light-frustum planes for caster culling, relative to the scene size: node boxes
+#: are float32-rounded, plane evaluation float64, so the test stays conservative.
+FRUSTUM_PAD_REL = 1e-5
+#: Walk stack entries (the build caps the tree depth at 60; the walk holds one entry per level
+#: plus one).
+_STACK_SIZE = 128
+
+
+@dataclass(frozen=True)
+class ShadowMapSettings:
+    """Tunables of the shadow-map family (option names of ``ctx.options`` in brackets).
+
+    The defaults keep acne and peter-panning low on the sample city and on a box at 3° sun
+    elevation (tests/test_shadowmap.py).
+    """
+
+    #: [map_px] Side of the shadow map in texels (square).
+    map_px: int = 2048
+    #: [bias] Constant offset of receivers toward the sun, metres: covers float32 rounding of
+    #: the vertices and the depth (a few 1e-4 m at km coordinates) with a wide margin, and stays
+    #: far below a texel so no shadow detaches from its caster.
+    bias_m: float = 0.02
+    #: [slope_bias] Normal offset in light-space texels times sinθ (see module docstring);
+    #: ≥ 0.71 removes acne, 1.5 leaves room for the depth's float32 rounding and non-square
+    #: texels.
+    slope_bias: float = 1.5
+    #: [max_bias] Largest normal offset, metres: with very coarse maps an unbounded offset would
+    #: lift receivers over real occluders (light leaks).
+    max_bias_m: float = 1.0
+    #: [pcf_kernel] PCF taps per side (odd): 3 gives a 3×3 box of texels around the receiver.
+    pcf_kernel: int = 3
+    #: [vsm_blur] VSM filter radius in texels (0: no filter).
+    vsm_blur: int = 2
+    #: [vsm_filter] "gaussian" (σ = radius / 2) or "box".
+    vsm_filter: str = "gaussian"
+    #: [min_variance] Variance floor of the VSM Chebyshev bound, m²: larger than the float
+    #: rounding of the moments (float64 here) and than a plane's in-texel depth spread would
+    #: need; the normal offset handles slopes, so a small value keeps contact shadows dark.
+    min_variance_m2: float = 1e-4
+    #: [bleed_reduction] VSM light-bleeding reduction: bounds below this are shadow and the rest
+    #: is rescaled to [0, 1] (Lauritzen); 0 disables.
+    bleed_reduction: float = 0.2
+    #: [fit_pad_px] Texels of margin around the receivers in a fitted view, so that filter
+    #: kernels and offset lookups at the border stay inside the map.
+    fit_pad_px: int = 4
+
+    _OPTION_NAMES = {"map_px": "map_px", "bias": "bias_m", "slope_bias": "slope_bias",
+                     "max_bias": "max_bias_m", "pcf_kernel": "pcf_kernel",
+                     "vsm_blur": "vsm_blur", "vsm_filter": "vsm_filter",
+                     "min_variance": "min_variance_m2", "bleed_reduction": "bleed_reduction",
+                     "fit_pad_px": "fit_pad_px"}
+
+    def __post_init__(self) -> None:
+        if not (isinstance(self.map_px, (int, np.integer)) and 1 <= self.map_px <= MAX_MAP_PX):
+            raise UsageError(f"map_px must be an integer in [1, {MAX_MAP_PX}], not {self.map_px!r}")
+        for name in ("bias_m", "slope_bias", "max_bias_m", "min_variance_m2"):
+            value = getattr(self, name)
+            if not (isinstance(value, (int, float)) and math.isfinite(value) and value >= 0):
+                raise UsageError(f"{name} must be a finite number >= 0, not {value!r}")
+        if not (isinstance(self.pcf_kernel, (int, np.integer)) and self.pcf_kernel >= 1
+                and self.pcf_kernel % 2 == 1 and self.pcf_kernel <= 63):
+            raise UsageError(f"pcf_kernel must be an odd integer in [1, 63], "
+                             f"not {self.pcf_kernel!r}")
+        if not (isinstance(self.vsm_blur, (int, np.integer)) and 0 <= self.vsm_blur <= 64):
+            raise UsageError(f"vsm_blur must be an integer in [0, 64], not {self.vsm_blur!r}")
+        if self.vsm_filter not in ("gaussian", "box"):
+            raise UsageError(f"vsm_filter must be 'gaussian' or 'box', not {self.vsm_filter!r}")
+        if not (isinstance(self.bleed_reduction, (int, float))
+                and 0.0 <= self.bleed_reduction < 1.0):
+            raise UsageError(f"bleed_reduction must be in [0, 1), not {self.bleed_reduction!r}")
+        if not (isinstance(self.fit_pad_px, (int, np.integer)) and 0 <= self.fit_pad_px
+                and 2 * self.fit_pad_px < self.map_px):
+            raise UsageError(f"fit_pad_px must be an integer in [0, map_px / 2), "
+                             f"not {self.fit_pad_px!r}")
+
+    @classmethod
+    def from_options(cls, options: dict | None, base: "ShadowMapSettings | None" = None
+                     ) -> "ShadowMapSettings":
+        """Settings with the known keys of a technique options dict applied (other keys belong
+        to other techniques and are ignored here)."""
+        base = base or cls()
+        changes = {field_name: options[key] for key, field_name in cls._OPTION_NAMES.items()
+                   if options and key in options and options[key] is not None}
+        return dataclasses.replace(base, **changes) if changes else base
+
+
+@dataclass(frozen=True, eq=False)
+class LightView:
+    """A shadow-map view.
+
+    Attributes
+    ----------
+    clip_from_world : (4, 4) float64
+        Render space → light clip space (OpenGL-style: inside is x, y, z in [-w, w]); may be
+        projective (warps).
+    width_px, height_px : int
+        Map size in texels.
+    name : str
+        "uniform", "psm", "lispsm", "xpsm", "csm-k", ...
+    """
+
+    clip_from_world: np.ndarray
+    width_px: int
+    height_px: int
+    name: str = "uniform"
+
+    def __post_init__(self) -> None:
+        m = np.asarray(self.clip_from_world, dtype=np.float64)
+        if m.shape != (4, 4) or not np.isfinite(m).all():
+            raise UsageError(f"a light view needs a finite (4, 4) clip_from_world, "
+                             f"not shape {m.shape}")
+        object.__setattr__(self, "clip_from_world", m)
+        for name in ("width_px", "height_px"):
+            value = getattr(self, name)
+            if not (isinstance(value, (int, np.integer)) and 1 <= value <= MAX_MAP_PX):
+                raise UsageError(f"light view {name} must be an integer in [1, {MAX_MAP_PX}], "
+                                 f"not {value!r}")
+            object.__setattr__(self, name, int(value))
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        """(H, W)."""
+        return self.height_px, self.width_px
+
+
+@dataclass(eq=False)
+class DepthMap:
+    """The light-space depth pass of one :class:`LightView`.
+
+    Attributes
+    ----------
+    view : LightView
+    depth : (H, W) float32
+        NDC depth ``z/w`` of the caster nearest the sun at each texel centre, in [-1, 1]
+        (nearer casters clamped to -1); ``+inf`` where no caster.
+    prim_id : (H, W) int32
+        Triangle id of that caster, -1 where none.
+    stats : dict
+        ``casters_drawn``, ``frustum_refs_removed``, ``time_refs_removed``, ``texels``,
+        ``texels_covered``, ``culling``, ``threads`` and ``timings_s`` (walk, setup, bin,
+        raster, total).
+    """
+
+    view: LightView
+    depth: np.ndarray
+    prim_id: np.ndarray
+    stats: dict = field(default_factory=dict)
+
+
+# --- light views ------------------------------------------------------------------------------
+
+def light_basis(sun_direction) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Unit (right, up, forward) of a light looking along the sun's rays (forward = -sun).
+
+    ``right`` is horizontal (perpendicular to the sun's azimuth); with the sun at the zenith
+    the frame is east/north.
+    """
+    s = _unit_sun(sun_direction)
+    fwd = -s
+    side = np.cross(fwd, np.array([0.0, 0.0, 1.0]))
+    if np.linalg.norm(side) < 1e-9:
+        side = np.array([1.0, 0.0, 0.0])
+    right = side / np.linalg.norm(side)
+    up = np.cross(right, fwd)
+    return right, up / np.linalg.norm(up), fwd
+
+
+def ortho_view(sun_direction, x_range_m, y_range_m, depth_range_m, width_px: int,
+               height_px: int, name: str = "uniform") -> LightView:
+    """Orthographic light view along the sun's rays.
+
+    Parameters
+    ----------
+    sun_direction : (3,) unit vector toward the sun.
+    x_range_m, y_range_m : (lo, hi) along the light basis' right / up axes (metres, render
+        space dot products).
+    depth_range_m : (near, far) along the rays (``p · forward``); near is toward the sun.
+    """
+    right, up, fwd = light_basis(sun_direction)
+    (x0, x1), (y0, y1), (n, f) = x_range_m, y_range_m, depth_range_m
+    if not (x1 > x0 and y1 > y0 and f > n):
+        raise UsageError(f"empty light view ranges {x_range_m}, {y_range_m}, {depth_range_m}")
+    m = np.zeros((4, 4))
+    m[0, :3] = 2.0 * right / (x1 - x0)
+    m[0, 3] = -(x1 + x0) / (x1 - x0)
+    m[1, :3] = 2.0 * up / (y1 - y0)
+    m[1, 3] = -(y1 + y0) / (y1 - y0)
+    m[2, :3] = 2.0 * fwd / (f - n)
+    m[2, 3] = -(f + n) / (f - n)
+    m[3, 3] = 1.0
+    return LightView(m, int(width_px), int(height_px), name)
+
+
+def _unit_sun(sun_direction) -> np.ndarray:
+    s = np.asarray(sun_direction, dtype=np.float64).reshape(3)
+    norm = float(np.linalg.norm(s))
+    if not (math.isfinite(norm) and norm > 0.0):
+        raise UsageError(f"sun direction must be a finite non-zero vector, not {sun_direction}")
+    return s / norm
+
+
+def _size_px(size_px) -> tuple[int, int]:
+    if isinstance(size_px, (int, np.integer)):
+        w = h = int(size_px)
+    else:
+        try:
+            w, h = (int(v) for v in size_px)
+        except (TypeError, ValueError):
+            raise UsageError(f"map size must be an integer or (width, height), not {size_px!r}") \
+                from None
+    if not (1 <= w <= MAX_MAP_PX and 1 <= h <= MAX_MAP_PX):
+        raise UsageError(f"map size must be in [1, {MAX_MAP_PX}] texels, not {w}x{h}")
+    return w, h
+
+
+def scene_bounds(scene) -> np.ndarray:
+    """(2, 3) float64 render-space box of all triangles (the kd-tree's when there is one)."""
+    tree = getattr(scene, "kdtree", None)
+    if tree is not None:
+        return np.asarray(tree.bounds[:, :3], np.float64)
+    v = np.asarray(scene.vertices, np.float64)
+    if v.shape[0] == 0:
+        return np.zeros((2, 3))
+    return np.stack([v.min(axis=0), v.max(axis=0)])
+
+
+def receiver_points(ctx: ShadowContext) -> np.ndarray:
+    """(N, 3) float64 points a fitted view must cover: the visible pixels facing the sun (the
+    only ones a map is read at), else all visible pixels, else none."""
+    surfaces = ctx.surfaces
+    _, faces = facing_sun(surfaces, ctx.camera, ctx.sun.direction)
+    points = surfaces.position_m[faces]
+    if points.shape[0] == 0:
+        points = surfaces.position_m[np.asarray(surfaces.valid, bool)]
+    return np.asarray(points, np.float64)
+
+
+def fit_uniform(scene, ctx: ShadowContext, size_px, *, pad_px: int | None = None) -> LightView:
+    """Uniform orthographic light view fitted to the visible receivers and their casters.
+
+    Across the rays the view covers the light-space box of the visible receivers facing the sun
+    (:func:`receiver_points`) plus ``pad_px`` texels on each side; along the rays it reaches from
+    the scene's point nearest the sun (every caster that can shade a receiver lies in the
+    receivers' box extruded toward the sun, and the depth pass culls the rest by the view's
+    side planes) to the farthest receiver. Without receivers the whole scene box is covered.
+
+    Parameters
+    ----------
+    scene : Scene
+    ctx : ShadowContext
+        Its surfaces, camera and sun are used.
+    size_px : int or (width, height)
+        Map size in texels.
+    pad_px : int, optional
+        Margin in texels (default ``ShadowMapSettings.fit_pad_px``).
+    """
+    w, h = _size_px(size_px)
+    pad = ShadowMapSettings().fit_pad_px if pad_px is None else int(pad_px)
+    if not 0 <= 2 * pad < min(w, h):
+        raise UsageError(f"pad_px must be in [0, {min(w, h) // 2}), not {pad}")
+    right, up, fwd = light_basis(ctx.sun.direction)
+    box = scene_bounds(scene)
+    corners = np.array([[box[i, 0], box[j, 1], box[k, 2]]
+                        for i in (0, 1) for j in (0, 1) for k in (0, 1)])
+    points = receiver_points(ctx)
+    if points.shape[0] == 0:
+        points = corners
+    basis = np.stack([right, up, fwd], axis=1)
+    light = points @ basis
+    lo, hi = light.min(axis=0), light.max(axis=0)
+    near = min(float((corners @ fwd).min()), float(lo[2]))
+    far = float(hi[2])
+    margin = DEPTH_MARGIN_REL * (far - near) + MIN_EXTENT_M
+    near, far = near - margin, far + margin
+    ranges = []
+    for axis, n_px in ((0, w), (1, h)):
+        extent = max(float(hi[axis] - lo[axis]), MIN_EXTENT_M)
+        centre = 0.5 * float(hi[axis] + lo[axis])
+        texel = extent / (n_px - 2 * pad)
+        half = 0.5 * n_px * texel
+        ranges.append((centre - half, centre + half))
+    return ortho_view(ctx.sun.direction, ranges[0], ranges[1], (near, far), w, h, "uniform")
+
+
+def metres_per_ndc(view: LightView) -> float:
+    """Metres along the rays per unit of NDC depth (exact for orthographic views, the value at
+    ``w = 1`` for projective ones)."""
+    return 1.0 / float(np.linalg.norm(view.clip_from_world[2, :3]))
+
+
+# --- projections and measures -----------------------------------------------------------------
+
+def project(view: LightView, points_m) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """Project render-space points into the map.
+
+    Parameters
+    ----------
+    view : LightView
+    points_m : (N, 3) array_like
+        Render-space points, metres.
+
+    Returns
+    -------
+    u_px, v_px, depth : (N,) float64
+        Continuous texel coordinates (texel ``floor(u_px), floor(v_px)``; column, row from the
+        top-left corner) and NDC depth ``z/w``. Points with ``w <= 0`` get NaN.
+    """
+    p = np.asarray(points_m, dtype=np.float64).reshape(-1, 3)
+    m = view.clip_from_world
+    clip = p @ m[:, :3].T + m[:, 3]
+    w = clip[:, 3]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inv = np.where(w > 0.0, 1.0 / np.where(w > 0.0, w, 1.0), np.nan)
+    u = (clip[:, 0] * inv + 1.0) * (0.5 * view.width_px)
+    v = (1.0 - clip[:, 1] * inv) * (0.5 * view.height_px)
+    return u, v, clip[:, 2] * inv
+
+
+def _pixel_jacobian(m, width_px, height_px, points) -> np.ndarray:
+    """(N, 2, 3) derivatives of (column, row) of a clip matrix's image w.r.t. world position."""
+    clip = points @ m[:, :3].T + m[:, 3]
+    w = clip[:, 3:4]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        dx = (m[0, :3][None] * w - clip[:, 0:1] * m[3, :3][None]) / (w * w)
+        dy = (m[1, :3][None] * w - clip[:, 1:2] * m[3, :3][None]) / (w * w)
+    return np.stack([0.5 * width_px * dx, -0.5 * height_px * dy], axis=1)
+
+
+def _tangents(normals) -> tuple[np.ndarray, np.ndarray]:
+    """Two unit tangents (N, 3) of each plane with the given normals."""
+    n = np.asarray(normals, dtype=np.float64).reshape(-1, 3)
+    n = n / np.maximum(np.linalg.norm(n, axis=1, keepdims=True), 1e-300)
+    helper = np.where((np.abs(n[:, 2]) < 0.9)[:, None], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0])
+    t1 = np.cross(n, helper)
+    t1 /= np.linalg.norm(t1, axis=1, keepdims=True)
+    return t1, np.cross(n, t1)
+
+
+def _tangent_jacobian(m, width_px, height_px, points, t1, t2) -> np.ndarray:
+    """(N, 2, 2): (column, row) derivatives along the tangents ``t1``, ``t2``."""
+    jw = _pixel_jacobian(m, width_px, height_px, points)
+    return np.stack([np.einsum("nij,nj->ni", jw, t1), np.einsum("nij,nj->ni", jw, t2)], axis=2)
+
+
+def _inverse_2x2(j) -> np.ndarray:
+    det = j[:, 0, 0] * j[:, 1, 1] - j[:, 0, 1] * j[:, 1, 0]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        inv_det = np.where(det != 0.0, 1.0 / np.where(det != 0.0, det, 1.0), np.inf)
+    inv = np.empty_like(j)
+    inv[:, 0, 0] = j[:, 1, 1]
+    inv[:, 1, 1] = j[:, 0, 0]
+    inv[:, 0, 1] = -j[:, 0, 1]
+    inv[:, 1, 0] = -j[:, 1, 0]
+    with np.errstate(invalid="ignore"):
+        return inv * inv_det[:, None, None]
+
+
+def texel_footprint_m(view: LightView, points_m, normals) -> np.ndarray:
+    """Size of one texel on the receiver surface, metres.
+
+    The two edges of the texel at each point, mapped onto the plane through the point with the
+    given normal (inverse Jacobian of texel coordinates on that plane); the longer edge is
+    returned. With ``normals`` along the sun's rays this is the light-space texel size; on a
+    surface inclined by θ to the rays the texel stretches by 1/cosθ. ``inf`` for a plane that
+    contains the texel's ray.
+
+    Parameters
+    ----------
+    view : LightView
+    points_m : (N, 3) render-space points; normals : (N, 3) or (3,) plane normals.
+
+    Returns
+    -------
+    (N,) float64 metres.
+    """
+    p = np.asarray(points_m, dtype=np.float64).reshape(-1, 3)
+    n = np.broadcast_to(np.asarray(normals, dtype=np.float64), p.shape)
+    if p.shape[0] == 0:
+        return np.zeros(0)
+    t1, t2 = _tangents(n)
+    inv = _inverse_2x2(_tangent_jacobian(view.clip_from_world, view.width_px, view.height_px,
+                                         p, t1, t2))
+    with np.errstate(invalid="ignore"):
+        edges = np.sqrt((inv * inv).sum(axis=1))          # column norms: metres per texel edge
+    out = edges.max(axis=1)
+    return np.where(np.isfinite(out), out, np.inf)
+
+
+def aliasing_m(view: LightView, camera, surfaces, mask=None) -> dict[str, float]:
+    """Aliasing measure m (Lloyd et al. 2008): screen extent of one shadow-map texel.
+
+    At each visible pixel (``mask``, default: all valid pixels), the two edges of the texel
+    that covers the pixel's surface point are mapped onto the surface and then onto the screen
+    (Jacobians of texel and screen coordinates on the surface's tangent plane); m is the longer
+    of the two, in pixels. m > 1: one texel covers several pixels (undersampling, blocky shadow
+    edges); m < 1: several texels per pixel.
+
+    Returns
+    -------
+    dict
+        ``max``, ``mean`` (over pixels with a finite m; 0 without any) and ``pixels``.
+    """
+    valid = np.asarray(surfaces.valid, bool) if mask is None else np.asarray(mask, bool)
+    p = np.asarray(surfaces.position_m)[valid].astype(np.float64)
+    if p.shape[0] == 0:
+        return {"max": 0.0, "mean": 0.0, "pixels": 0}
+    n = np.asarray(surfaces.normal)[valid].astype(np.float64)
+    t1, t2 = _tangents(n)
+    j_light = _tangent_jacobian(view.clip_from_world, view.width_px, view.height_px, p, t1, t2)
+    h, w = camera.shape
+    j_screen = _tangent_jacobian(camera.clip_from_world(), w, h, p, t1, t2)
+    with np.errstate(invalid="ignore", over="ignore"):
+        screen_per_texel = np.einsum("nij,njk->nik", j_screen, _inverse_2x2(j_light))
+        edge_px = np.sqrt((screen_per_texel * screen_per_texel).sum(axis=1)).max(axis=1)
+    finite = edge_px[np.isfinite(edge_px)]
+    if finite.shape[0] == 0:
+        return {"max": 0.0, "mean": 0.0, "pixels": 0}
+    return {"max": float(finite.max()), "mean": float(finite.mean()),
+            "pixels": int(finite.shape[0])}
+
+
+# --- the depth pass ---------------------------------------------------------------------------
+
+def frustum_planes(view: LightView, pad_m: float) -> np.ndarray:
+    """(5, 4) float64 planes ``(n, d)`` (unit ``n``) of the view's side and far planes; inside
+    is ``n . p + d >= -pad_m`` (Gribb and Hartmann's extraction from the clip matrix). The near
+    plane is left out on purpose: casters nearer the sun are clamped, not clipped."""
+    m = view.clip_from_world
+    rows = [m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[3] - m[2]]
+    planes = []
+    for r in rows:
+        norm = float(np.linalg.norm(r[:3]))
+        if norm > 0.0:
+            planes.append(np.r_[r[:3] / norm, r[3] / norm + pad_m])
+    return np.array(planes).reshape(-1, 4)
+
+
+def box_planes(box, pad_m: float) -> np.ndarray:
+    """(6, 4) planes of an axis-aligned box ``[[x0, y0, z0], [x1, y1, z1]]`` (inside >= -pad)."""
+    b = np.asarray(box, dtype=np.float64)
+    if b.shape != (2, 3) or not np.isfinite(b).all() or (b[1] < b[0]).any():
+        raise UsageError(f"casters_box must be [[x0, y0, z0], [x1, y1, z1]] with lo <= hi")
+    planes = np.zeros((6, 4))
+    for a in range(3):
+        planes[2 * a, a] = 1.0
+        planes[2 * a, 3] = -b[0, a] + pad_m
+        planes[2 * a + 1, a] = -1.0
+        planes[2 * a + 1, 3] = b[1, a] + pad_m
+    return planes
+
+
+def render_depth_map(scene, view: LightView, t_days: float, *, casters_box=None,
+                     culling: bool = True, tile_px: int = lr.TILE_PX) -> DepthMap:
+    """Rasterize the triangles present at ``t_days`` into the light view's depth map.
+
+    Parameters
+    ----------
+    scene : Scene
+        Render-space triangles (arrays may be read-only memory maps) and its kd-tree.
+    view : LightView
+        Any 4×4 projective light view.
+    t_days : float
+        City time, days since 1970-01-01 UTC; triangles with ``begin <= t_days < end`` cast.
+    casters_box : (2, 3) array_like, optional
+        Only casters intersecting this render-space box are drawn (in addition to the view's
+        own side and far planes).
+    culling : bool
+        Walk the kd-tree with time filtering and light-frustum culling
+        (:func:`cityshade.raster.culling.walk`); False, a scene without kd-tree, or a view
+        that holds the whole model draws the triangles present at ``t_days`` linearly. The
+        map is the same either way.
+    tile_px : int
+        Tile side in texels (does not change the map).
+
+    Returns
+    -------
+    DepthMap
+    """
+    from cityshade.raster import culling as cull
+
+    if not isinstance(view, LightView):
+        raise UsageError(f"expected a LightView, not {type(view).__name__}")
+    t = float(t_days)
+    if math.isnan(t):
+        raise UsageError("t_days must be a number of days since 1970-01-01, not NaN")
+    if not (isinstance(tile_px, (int, np.integer)) and 8 <= tile_px <= 4096):
+        raise UsageError(f"tile_px must be an integer in [8, 4096], not {tile_px!r}")
+    vertices, triangles = scene.vertices, scene.triangles
+    if vertices.ndim != 2 or vertices.shape[1] != 3 or vertices.dtype != np.float32:
+        raise UsageError(f"scene vertices must be (V, 3) float32, not {vertices.shape} "
+                         f"{vertices.dtype}")
+    if triangles.ndim != 2 or triangles.shape[1] != 3 or triangles.dtype != np.int32:
+        raise UsageError(f"scene triangles must be (T, 3) int32, not {triangles.shape} "
+                         f"{triangles.dtype}")
+    started = time.perf_counter()
+    h, w = view.shape
+    tile = int(tile_px)
+    tiles_x, tiles_y = -(-w // tile), -(-h // tile)
+    m = np.ascontiguousarray(view.clip_from_world.reshape(16))
+    xs, ys, to_px = lr.texel_params(w, h)
+    depth = np.full((h, w), np.inf, np.float32)
+    prim = np.full((h, w), -1, np.int32)
+    timings = {"walk_s": 0.0, "setup_s": 0.0, "bin_s": 0.0, "raster_s": 0.0}
+    tree = getattr(scene, "kdtree", None)
+    recs = tree.tri_records if tree is not None else np.zeros((1, 16), np.float32)
+    stats: dict[str, Any] = {"triangles": int(triangles.shape[0]), "casters_drawn": 0,
+                             "frustum_refs_removed": 0, "time_refs_removed": 0}
+
+    def draw(items, from_records):
+        n = items.shape[0]
+        if n == 0:
+            return
+        t0 = time.perf_counter()
+        ids = np.empty(n, np.int32)
+        coef = np.empty((n, lr._SETUP_WORDS))
+        bbox = np.empty((n, 4), np.int32)
+        lr.setup_triangles(vertices, triangles, recs, from_records, items, m, to_px,
+                           float(w), float(h), ids, coef, bbox)
+        t1 = time.perf_counter()
+        start, binned = lr.bin_triangles(bbox, tile, tiles_x, tiles_y)
+        t2 = time.perf_counter()
+        lr.raster_depth_tiles(start, binned, ids, coef, bbox, xs, ys, tile, tiles_x, depth,
+                              prim)
+        t3 = time.perf_counter()
+        timings["setup_s"] += t1 - t0
+        timings["bin_s"] += t2 - t1
+        timings["raster_s"] += t3 - t2
+        stats["casters_drawn"] += n
+
+    use_tree = bool(culling) and tree is not None
+    if use_tree:
+        lo = np.asarray(tree.bounds[0, :3], np.float64)
+        hi = np.asarray(tree.bounds[1, :3], np.float64)
+        size = max(float(np.max(hi - lo)), float(np.max(np.abs(np.r_[lo, hi]))), 1.0)
+        pad = FRUSTUM_PAD_REL * size
+        planes = frustum_planes(view, pad)
+        if casters_box is not None:
+            planes = np.vstack([planes, box_planes(casters_box, pad)])
+        full = (1 << planes.shape[0]) - 1
+        outside, inside_mask = cull.box_outside(planes, lo, hi, full)
+        if outside:
+            use_tree = False
+            stats["culling"] = "the model lies outside the light view"
+            stats["frustum_refs_removed"] = int(tree.prim_indices.shape[0])
+        elif inside_mask == 0:
+            # The whole model is in the view: a linear time filter beats the walk.
+            use_tree = False
+            stats["culling"] = "the model lies inside the light view"
+        else:
+            stats["culling"] = "kd-tree walk"
+            refs, first, biggest = cull.tree_info(tree)
+            st_node = np.zeros(_STACK_SIZE, np.int64)
+            st_box = np.zeros((_STACK_SIZE, 6))
+            st_mask = np.zeros(_STACK_SIZE, np.int64)
+            st_mask[0] = full
+            st_box[0, :3], st_box[0, 3:] = lo, hi
+            state = np.ones(1, np.int64)
+            drawn = np.zeros(triangles.shape[0], np.uint8)
+            walk_stats = np.zeros(cull.N_STATS, np.int64)
+            out = np.empty(lr.MAX_BATCH + biggest, np.int32)
+            # Walk order only affects memory locality: start from the sun's side.
+            cam = np.zeros(24)
+            cam[1:4] = 0.5 * (lo + hi)
+            dummy = np.zeros((1, 1), np.float32)
+            while state[0] > 0:
+                w0 = time.perf_counter()
+                n = cull.walk(tree.nodes, tree.node_splits, tree.prim_indices, tree.records_f64,
+                              refs, first, t, planes, False, 0, cam, dummy, dummy, 8, 8,
+                              st_node, st_box, st_mask, state, drawn, out, lr.MAX_BATCH,
+                              walk_stats)
+                timings["walk_s"] += time.perf_counter() - w0
+                draw(out[:n], True)
+            named = dict(zip(cull.STAT_NAMES, (int(v) for v in walk_stats)))
+            stats["frustum_refs_removed"] = named["frustum_refs_removed"]
+            stats["time_refs_removed"] = named["time_refs_removed"]
+            stats["walk"] = named
+    if not use_tree and stats.get("culling") != "the model lies outside the light view":
+        if "culling" not in stats:
+            stats["culling"] = "off"
+        w0 = time.perf_counter()
+        ids = lr.present_triangles(np.asarray(scene.tri_t_begin_days, np.float64),
+                                   np.asarray(scene.tri_t_end_days, np.float64), t)
+        timings["walk_s"] += time.perf_counter() - w0
+        stats["time_refs_removed"] = int(triangles.shape[0] - ids.shape[0])
+        for b in range(0, ids.shape[0], lr.MAX_BATCH):
+            draw(ids[b:b + lr.MAX_BATCH], False)
+    timings["total_s"] = time.perf_counter() - started
+    stats.update({"texels": int(w * h), "texels_covered": int((prim >= 0).sum()),
+                  "tile_px": tile, "threads": int(numba.get_num_threads()),
+                  "timings_s": timings})
+    return DepthMap(view=view, depth=depth, prim_id=prim, stats=stats)
