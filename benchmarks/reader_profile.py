@@ -10,9 +10,9 @@ of:
 * scene — :func:`cityshade.geometry.scene.build_scene` of that model (no kd-tree).
 
 One warm-up read + build runs first (Numba kernels load from their cache) and is excluded.
-Peak memory of one read + build is measured in a fresh child process
-(``getrusage(RUSAGE_SELF).ru_maxrss``) so that the timing runs do not inflate it. With
-``--profile`` a cProfile of one read is printed instead (top functions by own time).
+Peak memory of one read + build is measured first, in a fresh child process (its ``VmHWM``),
+so that the timing runs do not inflate it. With ``--profile`` a cProfile of one read is
+printed instead (top functions by own time).
 
 MB are 10^6 bytes. Prints one JSON object (with the git commit) and a plain-text table.
 
@@ -44,17 +44,28 @@ MB = 1e6
 _MEMBER_TAGS = [f"{{http://www.opengis.net/citygml/{v}}}cityObjectMember"
                 for v in ("1.0", "2.0", "3.0")]
 
-#: Child program for the memory figure: one read + build in a fresh process, then its peak RSS
-#: (ru_maxrss is in KiB on Linux).
+#: Child program for the memory figure: one read + build in a fresh process, then its peak RSS.
+#: VmHWM of /proc/self/status belongs to the new process image; ru_maxrss (KiB on Linux) is kept
+#: across fork + exec and would report the parent's peak, so it is only the fallback.
 _MEMORY_CHILD = r"""
 import json, resource, sys
 from cityshade.citygml.reader import read_citygml
 from cityshade.geometry.scene import build_scene
+
+def peak_bytes():
+    try:
+        with open("/proc/self/status") as fh:
+            for line in fh:
+                if line.startswith("VmHWM:"):
+                    return int(line.split()[1]) * 1024
+    except OSError:
+        pass
+    return resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+
 raw = read_citygml(sys.argv[1])
-read_peak = resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024
+read_peak = peak_bytes()
 scene = build_scene(raw)
-print(json.dumps({"read_peak_rss_bytes": read_peak,
-                  "peak_rss_bytes": resource.getrusage(resource.RUSAGE_SELF).ru_maxrss * 1024,
+print(json.dumps({"read_peak_rss_bytes": read_peak, "peak_rss_bytes": peak_bytes(),
                   "triangles": int(len(scene.triangles))}))
 """
 
@@ -124,6 +135,11 @@ def main(argv: list[str] | None = None) -> int:
         pstats.Stats(profiler).sort_stats("tottime").print_stats(25)
         return 0
 
+    # Memory first, in a child started while this process is still small.
+    child = subprocess.run([sys.executable, "-c", _MEMORY_CHILD, str(path)], cwd=REPO,
+                           capture_output=True, text=True)
+    memory = (json.loads(child.stdout.strip().splitlines()[-1]) if child.returncode == 0
+              else {"error": (child.stderr.strip().splitlines() or ["failed"])[-1]})
     read_and_build(path)  # warm-up, excluded
     times_anchor, times_read, times_scene, times_total = [], [], [], []
     triangles = 0
@@ -133,10 +149,6 @@ def main(argv: list[str] | None = None) -> int:
         times_read.append(read_s)
         times_scene.append(scene_s)
         times_total.append(read_s + scene_s)
-    child = subprocess.run([sys.executable, "-c", _MEMORY_CHILD, str(path)], cwd=REPO,
-                           capture_output=True, text=True)
-    memory = (json.loads(child.stdout.strip().splitlines()[-1]) if child.returncode == 0
-              else {"error": (child.stderr.strip().splitlines() or ["failed"])[-1]})
 
     result = {
         "benchmark": "reader_profile",
