@@ -361,6 +361,41 @@ class SunHours:
     warnings: list[str] = field(default_factory=list)
 
 
+class _PixelRays:
+    """Sun-independent part of the exact shadow stage, computed once per batch: the normals of
+    the visible surfaces turned towards the camera and the shadow-ray origins pushed off the
+    surface along them (:func:`cityshade.trace.shadow_rays_from_surface` offsets along the
+    normal, not the sun). Per step the same rule as the ``raytrace`` technique applies: a pixel
+    facing away from the sun (N·L <= 0) is in shadow, the others are traced."""
+
+    def __init__(self, surfaces, camera, valid):
+        from cityshade.shadows import oriented_normals
+        from cityshade.trace import shadow_rays_from_surface
+
+        self.valid = valid
+        normal = oriented_normals(surfaces, camera)[valid]
+        # Degenerate triangles have a zero normal: they never face the sun and are not traced.
+        self.usable = np.flatnonzero(np.einsum("ij,ij->i", normal, normal) > 0.25)
+        self.normal = np.ascontiguousarray(normal[self.usable])
+        self.origins = shadow_rays_from_surface(surfaces.position_m[valid][self.usable],
+                                                self.normal, np.array([0.0, 0.0, 1.0]))
+
+    def lit(self, scene, sun, t_days: float) -> np.ndarray:
+        """(H, W) float32: 1 lit, 0 shadow or no surface."""
+        from cityshade.trace import occluded
+
+        flat = np.zeros(int(self.valid.sum()), np.float32)
+        direction = np.asarray(sun.direction, dtype=np.float64)
+        faces = np.flatnonzero(self.normal @ direction > 0.0)
+        if len(faces):
+            origins = self.origins[faces]
+            directions = np.ascontiguousarray(np.broadcast_to(direction, origins.shape))
+            flat[self.usable[faces]] = ~occluded(scene, origins, directions, t_days)
+        lit = np.zeros(self.valid.shape, np.float32)
+        lit[self.valid] = flat
+        return lit
+
+
 def _weights(instants: list, weights_h) -> np.ndarray:
     if weights_h is not None:
         w = np.asarray(weights_h, dtype=np.float64)
@@ -400,7 +435,7 @@ def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
               weights_h=None, technique: str = "raytrace", options: dict | None = None,
               ground: str | None = None, spa=None, suns: Sequence | None = None,
               samples_per_m2: float | None = None, checkpoint: Checkpoint | None = None,
-              on_step: Callable[[int, int, Unit], None] | None = None,
+              reuse_rays: bool = True, on_step: Callable[[int, int, Unit], None] | None = None,
               on_frame: Callable[[Unit, np.ndarray, np.ndarray], None] | None = None
               ) -> SunHours:
     """Sun-hours per pixel of a fixed camera (and per surface) over many sun positions.
@@ -433,6 +468,11 @@ def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
         With a value, also compute per-surface sun-hours from sample points at this density.
     checkpoint : Checkpoint, optional
         Resume from and save to this state after every sun position.
+    reuse_rays : bool
+        For ``raytrace`` without options: the oriented normals and shadow-ray origins of the
+        pixels do not depend on the sun, so they are computed once with the camera pass and
+        each step only selects the pixels facing the sun and traces them. The result is
+        identical to running the technique per step (``False``), which is tested.
     on_step : callable(units_done, units_total, unit), optional
         Called after each position is accumulated and saved (progress; an exception raised
         here, e.g. KeyboardInterrupt, stops the run with the state saved).
@@ -509,6 +549,9 @@ def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
                                      "pixels": filled}
         valid = np.asarray(surfaces.valid, bool)
         diagnostics["gbuffer"] = gbuf.stats
+        rays = None
+        if reuse_rays and technique == "raytrace" and not options:
+            rays = _PixelRays(surfaces, camera, valid)
         timings["camera_s"] = time.perf_counter() - t0
     samples = None
     if samples_per_m2 is not None:
@@ -533,10 +576,14 @@ def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
         unit = units[k]
         if camera is not None:
             t0 = time.perf_counter()
-            result = tech.run(ShadowContext(scene=scene, surfaces=surfaces, camera=camera,
-                                            sun=unit.sun, t_days=float(t_days),
-                                            options=options or {}))
-            lit = np.where(valid, np.nan_to_num(result.lit, nan=0.0), 0.0).astype(np.float32)
+            if rays is not None:
+                lit = rays.lit(scene, unit.sun, float(t_days))
+            else:
+                result = tech.run(ShadowContext(scene=scene, surfaces=surfaces, camera=camera,
+                                                sun=unit.sun, t_days=float(t_days),
+                                                options=options or {}))
+                lit = np.where(valid, np.nan_to_num(result.lit, nan=0.0),
+                               0.0).astype(np.float32)
             pixel_sum += unit.weight_h * lit.astype(np.float64)
             timings["shadow_s"] += time.perf_counter() - t0
             if on_frame is not None:
