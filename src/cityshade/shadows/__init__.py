@@ -22,6 +22,16 @@ from cityshade.errors import UsageError
 #: name → "module:class". Later techniques (shadow maps, hybrid) register here too.
 TECHNIQUES: dict[str, str] = {
     "raytrace": "cityshade.shadows.raytraced:RayTraced",
+    "shadowmap": "cityshade.shadows.shadowmap:ShadowMap",
+    "pcf": "cityshade.shadows.shadowmap:PCF",
+    "vsm": "cityshade.shadows.shadowmap:VSM",
+    "psm": "cityshade.shadows.warps:PSM",
+    "lispsm": "cityshade.shadows.warps:LiSPSM",
+    "xpsm": "cityshade.shadows.warps:XPSM",
+    "csm": "cityshade.shadows.cascades:Cascaded",
+    "csm:psm": "cityshade.shadows.cascades:CascadedPSM",
+    "csm:lispsm": "cityshade.shadows.cascades:CascadedLiSPSM",
+    "csm:xpsm": "cityshade.shadows.cascades:CascadedXPSM",
 }
 
 
@@ -57,11 +67,20 @@ def technique_names() -> list[str]:
 
 
 def get_technique(name: str) -> Technique:
-    """The technique registered under ``name`` (an instance ready to run)."""
+    """The technique registered under ``name`` (an instance ready to run).
+
+    ``NAME+smooth`` is technique NAME followed by the depth-aware screen-space smoothing
+    (:class:`cityshade.shadows.filtering.Smoothed`).
+    """
+    base, plus, suffix = name.partition("+")
+    if plus and suffix == "smooth" and base in TECHNIQUES:
+        from cityshade.shadows.filtering import Smoothed
+
+        return Smoothed(get_technique(base))
     entry = TECHNIQUES.get(name)
     if entry is None:
         raise UsageError(f"unknown shadow technique {name!r}; valid: "
-                         f"{', '.join(technique_names())}")
+                         f"{', '.join(technique_names())} (each also as NAME+smooth)")
     module, cls = entry.split(":")
     return getattr(importlib.import_module(module), cls)()
 
