@@ -228,11 +228,11 @@ def _split_probabilities(lo, hi, axis, p, t0, t1):
         return -1.0, -1.0
     # The two other extents give the area of the faces parallel to the split plane.
     if axis == 0:
-        e1, e2, ea = ey, ez, ex
+        e1, e2 = ey, ez
     elif axis == 1:
-        e1, e2, ea = ex, ez, ey
+        e1, e2 = ex, ez
     else:
-        e1, e2, ea = ex, ey, ez
+        e1, e2 = ex, ey
     el = p - lo[axis]
     er = hi[axis] - p
     cap = e1 * e2
