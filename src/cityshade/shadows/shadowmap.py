@@ -642,3 +642,146 @@ def render_depth_map(scene, view: LightView, t_days: float, *, casters_box=None,
                   "tile_px": tile, "threads": int(numba.get_num_threads()),
                   "timings_s": timings})
     return DepthMap(view=view, depth=depth, prim_id=prim, stats=stats)
+
+
+# --- lookups ----------------------------------------------------------------------------------
+
+def offset_receivers(view: LightView, points_m, normals, sun_direction,
+                     settings: ShadowMapSettings, filter_radius_px: float = 0.0) -> np.ndarray:
+    """Receivers moved by the constant and slope-scaled (normal-offset) bias.
+
+    ``p' = p + bias_m s + min(slope_bias · t · sinθ · (1 + r), max_bias_m) n`` (module
+    docstring), with ``t`` the light-space texel size at ``p`` (:func:`texel_footprint_m` on
+    the plane across the rays) and ``r = filter_radius_px``.
+
+    Parameters
+    ----------
+    points_m : (N, 3); normals : (N, 3) unit normals turned to the seen side (and facing the
+        sun); sun_direction : (3,) toward the sun.
+
+    Returns
+    -------
+    (N, 3) float64.
+    """
+    p = np.asarray(points_m, dtype=np.float64).reshape(-1, 3)
+    n = np.asarray(normals, dtype=np.float64).reshape(-1, 3)
+    s = _unit_sun(sun_direction)
+    if p.shape[0] == 0:
+        return p.copy()
+    texel = texel_footprint_m(view, p, s)
+    cos = np.clip(n @ s, -1.0, 1.0)
+    sin = np.sqrt(1.0 - cos * cos)
+    offset = np.minimum(settings.slope_bias * texel * sin * (1.0 + float(filter_radius_px)),
+                        settings.max_bias_m)
+    offset = np.where(np.isfinite(offset), offset, settings.max_bias_m)
+    return p + settings.bias_m * s + offset[:, None] * n
+
+
+def shadow_lookup(depth_map: DepthMap, points_m, normals, sun_direction,
+                  settings: ShadowMapSettings, mode: str = "hard") -> np.ndarray:
+    """Lit fraction (N,) float32 of receivers from one depth map.
+
+    ``mode``: "hard" (one texel), "pcf" (``settings.pcf_kernel``² texels) or "vsm" (moments
+    filtered with ``settings.vsm_blur``; Chebyshev bound, ``min_variance_m2``,
+    ``bleed_reduction``). Receivers are offset first (:func:`offset_receivers`; PCF and VSM
+    scale the slope term by their filter radius).
+    """
+    from cityshade.shadows import filtering as flt
+
+    view = depth_map.view
+    if mode == "hard":
+        radius = 0
+    elif mode == "pcf":
+        radius = settings.pcf_kernel // 2
+    elif mode == "vsm":
+        radius = settings.vsm_blur
+    else:
+        raise UsageError(f"shadow lookup mode must be hard, pcf or vsm, not {mode!r}")
+    q = offset_receivers(view, points_m, normals, sun_direction, settings, radius)
+    u, v, z = project(view, q)
+    if mode == "vsm":
+        weights = (flt.gaussian_weights(settings.vsm_blur / 2.0, settings.vsm_blur)
+                   if settings.vsm_filter == "gaussian" else flt.box_weights(settings.vsm_blur))
+        scale = metres_per_ndc(view)
+        moments = flt.vsm_moments(depth_map.depth, scale, weights)
+        return flt.vsm_lookup(moments, u, v, (z + 1.0) * scale, settings.min_variance_m2,
+                              settings.bleed_reduction)
+    return flt.pcf_lookup(depth_map.depth, u, v, z, 2 * radius + 1)
+
+
+def map_diagnostics(views, ctx: ShadowContext, points_m, normals, faces) -> dict[str, Any]:
+    """The diagnostics every map technique reports: ``map_px`` [(W, H)], ``texel_m`` (median
+    texel footprint on the receivers, metres; with several views, the finest view at each
+    receiver), ``texel_light_m`` (median light-space texel size) and ``aliasing_m``
+    {max, mean} (of the first view when there are several and no per-pixel assignment)."""
+    views = list(views)
+    out: dict[str, Any] = {"map_px": [(v.width_px, v.height_px) for v in views]}
+    p = np.asarray(points_m, np.float64)
+    if p.shape[0] == 0:
+        out.update({"texel_m": 0.0, "texel_light_m": 0.0,
+                    "aliasing_m": {"max": 0.0, "mean": 0.0, "pixels": 0}})
+        return out
+    s = _unit_sun(ctx.sun.direction)
+    surf = np.min([texel_footprint_m(v, p, normals) for v in views], axis=0)
+    light = np.min([texel_footprint_m(v, p, s) for v in views], axis=0)
+    out["texel_m"] = float(np.median(surf[np.isfinite(surf)])) if np.isfinite(surf).any() else 0.0
+    out["texel_light_m"] = float(np.median(light))
+    out["aliasing_m"] = aliasing_m(views[0], ctx.camera, ctx.surfaces, mask=faces)
+    return out
+
+
+# --- techniques -------------------------------------------------------------------------------
+
+class ShadowMap:
+    """``shadowmap``: one uniform orthographic map fitted to the visible receivers, hard test
+    with constant, slope-scaled (normal offset) and clamped bias."""
+
+    name = "shadowmap"
+    mode = "hard"
+
+    def run(self, ctx: ShadowContext) -> ShadowResult:
+        settings = ShadowMapSettings.from_options(ctx.options)
+        surfaces = ctx.surfaces
+        lit = np.zeros(surfaces.valid.shape, np.float32)
+        diagnostics: dict[str, Any] = {"technique": self.name, "map_px": [], "texel_m": 0.0,
+                                       "aliasing_m": {"max": 0.0, "mean": 0.0}, "shadow_s": 0.0}
+        if not ctx.sun.above_horizon:
+            diagnostics["note"] = "sun at or below the horizon: everything in shadow"
+            return ShadowResult(lit=lit, diagnostics=diagnostics)
+        t0 = time.perf_counter()
+        normal, faces = facing_sun(surfaces, ctx.camera, ctx.sun.direction)
+        diagnostics["self_shadowed_px"] = int((surfaces.valid & ~faces).sum())
+        points = surfaces.position_m[faces]
+        normals = normal[faces]
+        radius = {"hard": 0, "pcf": settings.pcf_kernel // 2, "vsm": settings.vsm_blur}[self.mode]
+        view = fit_uniform(ctx.scene, ctx, settings.map_px, pad_px=settings.fit_pad_px + radius)
+        t1 = time.perf_counter()
+        depth_map = render_depth_map(ctx.scene, view, ctx.t_days)
+        t2 = time.perf_counter()
+        if points.shape[0]:
+            lit[faces] = shadow_lookup(depth_map, points, normals, ctx.sun.direction, settings,
+                                       self.mode)
+        t3 = time.perf_counter()
+        diagnostics.update(map_diagnostics([view], ctx, points, normals, faces))
+        t4 = time.perf_counter()
+        diagnostics["shadow_s"] = t3 - t0
+        diagnostics["timings_s"] = {"fit_s": t1 - t0, "depth_s": t2 - t1, "lookup_s": t3 - t2,
+                                    "diagnostics_s": t4 - t3}
+        diagnostics["depth_map"] = depth_map.stats
+        diagnostics["settings"] = dataclasses.asdict(settings)
+        return ShadowResult(lit=lit, diagnostics=diagnostics)
+
+
+class PCF(ShadowMap):
+    """``pcf``: the ``shadowmap`` map with percentage-closer filtering (``pcf_kernel``)."""
+
+    name = "pcf"
+    mode = "pcf"
+
+
+class VSM(ShadowMap):
+    """``vsm``: variance shadow map on the uniform map (filtered moments, Chebyshev bound,
+    minimum variance, light-bleeding reduction)."""
+
+    name = "vsm"
+    mode = "vsm"
