@@ -103,6 +103,11 @@ def _split_tag(tag: str) -> tuple[str, str]:
     return "", tag
 
 
+def _href_target(href: str) -> str:
+    """The gml:id an ``xlink:href`` points at (``#id`` → ``id``; other forms kept whole)."""
+    return href[1:] if href.startswith("#") else href
+
+
 def _prescan(path: Path) -> None:
     """Refuse documents that declare entities or an external DTD, before lxml sees them."""
     with path.open("rb") as fh:
@@ -297,8 +302,7 @@ class _Walker:
                     continue
                 href = child.get(XLINK_HREF)
                 if href is not None:
-                    self.refs.append((obj, cls, lod, flip))
-                    m.ref_target.append(href[1:] if href.startswith("#") else href)
+                    self.reference(href, obj, cls, lod, flip)
                     continue
                 srs = child.get("srsName")
                 if srs is not None:
@@ -381,7 +385,7 @@ class _Walker:
             if len(hrefs) != n_children:
                 return False
             self.refs.extend([(obj, cls, lod, flip)] * n_children)
-            self.m.ref_target.extend([h[1:] if h.startswith("#") else h for h in hrefs])
+            self.m.ref_target.extend(map(_href_target, hrefs))
             return True
         polygons = self.member_polygons(el)
         if len(polygons) != n_children:
@@ -392,7 +396,7 @@ class _Walker:
 
     def reference(self, href: str, obj: int, cls: int, lod: int, flip: int) -> None:
         self.refs.append((obj, cls, lod, flip))
-        self.m.ref_target.append(href[1:] if href.startswith("#") else href)
+        self.m.ref_target.append(_href_target(href))
 
     def polygon(self, el, obj: int, cls: int, lod: int, flip: int) -> None:
         """Record one polygon-like element and the text of its rings (the hot path).
@@ -505,8 +509,8 @@ class _Walker:
             m.ring_points = np.concatenate(self.points_chunks)
             m.ring_bad = np.concatenate(self.bad_chunks)
         self.xyz_chunks = self.points_chunks = self.bad_chunks = []
-        polys = _record_columns(self.polys, 5)
-        m.poly_obj, m.poly_cls, m.poly_lod, m.poly_flip, m.poly_ring0 = polys
+        m.poly_obj, m.poly_cls, m.poly_lod, m.poly_flip, m.poly_ring0 = _record_columns(
+            self.polys, 5)
         m.ref_obj, m.ref_cls, m.ref_lod, m.ref_flip = _record_columns(self.refs, 4)
         self.polys, self.refs = [], []
         for namespace, count in sorted(self.ade_namespaces.items()):
