@@ -350,3 +350,160 @@ def reference_sun_hours(vertices, triangles, points, normals, sun_directions, we
             if t.size == 0:
                 hours[i] += w
     return hours
+
+
+# --- 2-D convex hull (twin of cityshade.shadows.warps.convex_hull_2d) ---------------------------
+
+def reference_convex_hull(points_xy):
+    """Vertices of the convex hull of 2-D points by brute force: a point is a hull vertex when
+    some pair (it, another point) has every point on one side (or on the line, then within
+    the segment) and it is not strictly between two other collinear extreme points. O(n³)."""
+    p = np.unique(np.asarray(points_xy, dtype=np.float64), axis=0)
+    n = len(p)
+    if n < 3:
+        return p
+    corners = set()
+    for i in range(n):
+        for j in range(n):
+            if i == j:
+                continue
+            a, b = p[i], p[j]
+            cross = (b[0] - a[0]) * (p[:, 1] - a[1]) - (b[1] - a[1]) * (p[:, 0] - a[0])
+            if (cross >= 0).all():
+                # a-b lies on the hull boundary; its extreme points along the line are corners.
+                on = p[cross == 0]
+                t = (on - a) @ (b - a)
+                corners.add(tuple(on[np.argmin(t)]))
+                corners.add(tuple(on[np.argmax(t)]))
+    return np.array(sorted(corners))
+
+
+# --- shadow maps (twins of cityshade.shadows.lightraster / shadowmap / filtering) --------------
+
+def reference_depth_map(vertices, triangles, t_begin_days, t_end_days, clip_from_world,
+                        width_px, height_px, t_days=0.0):
+    """Light-space depth map by ray casting: for every texel centre, the world segment between
+    its NDC points z = -1 and z = +1 (through the inverse matrix) is intersected with every
+    triangle valid at ``t_days`` (Moller-Trumbore); the nearest hit's NDC depth z/w is kept
+    (ties to the lower triangle id). Casters nearer than the near plane are not seen (the
+    fast path clamps them to -1; test scenes keep casters inside the depth range).
+
+    Returns (depth (H, W) float64, +inf where empty; prim (H, W) int64, -1 where empty).
+    """
+    m = np.asarray(clip_from_world, dtype=np.float64)
+    inv = np.linalg.inv(m)
+    depth = np.full((height_px, width_px), np.inf)
+    prim = np.full((height_px, width_px), -1, np.int64)
+    for row in range(height_px):
+        y = 1.0 - 2.0 * (row + 0.5) / height_px
+        for col in range(width_px):
+            x = 2.0 * (col + 0.5) / width_px - 1.0
+            a = inv @ np.array([x, y, -1.0, 1.0])
+            b = inv @ np.array([x, y, 1.0, 1.0])
+            a, b = a[:3] / a[3], b[:3] / b[3]
+            ts, ids = reference_ray_hits(vertices, triangles, t_begin_days, t_end_days, a, b - a,
+                                         t_days, 1.0)
+            for t, tri in sorted(zip(ts, ids), key=lambda h: (h[0], h[1])):
+                p = a + t * (b - a)
+                c = m @ np.r_[p, 1.0]
+                z = c[2] / c[3]
+                if z < depth[row, col] or (z == depth[row, col] and tri < prim[row, col]):
+                    depth[row, col] = z
+                    prim[row, col] = tri
+    return depth, prim
+
+
+def reference_pcf(depth, u_px, v_px, z, kernel):
+    """Percentage-closer filtering with plain loops: share of the kernel × kernel texels around
+    texel (floor u, floor v) that are outside the map or not nearer than ``z``."""
+    depth = np.asarray(depth)
+    h, w = depth.shape
+    r = kernel // 2
+    out = []
+    for u, v, zz in zip(u_px, v_px, z):
+        c0, r0 = int(np.floor(u)), int(np.floor(v))
+        lit = 0
+        for rr in range(r0 - r, r0 + r + 1):
+            for cc in range(c0 - r, c0 + r + 1):
+                inside = 0 <= rr < h and 0 <= cc < w
+                lit += (not inside) or zz <= depth[rr, cc]
+        out.append(lit / kernel ** 2)
+    return np.array(out)
+
+
+def reference_separable_filter(image, weights):
+    """Rows then columns convolved with ``weights`` (odd length), borders clamped: np.convolve
+    on edge-padded lines."""
+    img = np.asarray(image, dtype=np.float64)
+    flat = img.ndim == 2
+    if flat:
+        img = img[..., None]
+    k = np.asarray(weights, dtype=np.float64)
+    r = len(k) // 2
+
+    def line(a):
+        return np.convolve(np.pad(a, r, mode="edge"), k[::-1], mode="valid")
+
+    rows = np.apply_along_axis(line, 1, img)
+    out = np.apply_along_axis(line, 0, rows)
+    return out[..., 0] if flat else out
+
+
+def reference_vsm_lookup(moments, u_px, v_px, depth_m, min_variance, bleed_reduction):
+    """VSM with plain arithmetic: bilinear moments at (u - 0.5, v - 0.5) (indices clamped),
+    Chebyshev's bound for receivers behind the mean, then (p - a) / (1 - a) clipped."""
+    mom = np.asarray(moments, dtype=np.float64)
+    h, w = mom.shape[:2]
+    out = []
+    for u, v, d in zip(u_px, v_px, depth_m):
+        x, y = u - 0.5, v - 0.5
+        c0, r0 = int(np.floor(x)), int(np.floor(y))
+        fx, fy = x - c0, y - r0
+        m = np.zeros(2)
+        for rr, wy in ((r0, 1 - fy), (r0 + 1, fy)):
+            for cc, wx in ((c0, 1 - fx), (c0 + 1, fx)):
+                m += wy * wx * mom[min(max(rr, 0), h - 1), min(max(cc, 0), w - 1)]
+        if d <= m[0]:
+            out.append(1.0)
+            continue
+        var = max(m[1] - m[0] ** 2, min_variance)
+        p = var / (var + (d - m[0]) ** 2)
+        if bleed_reduction > 0:
+            p = min(max((p - bleed_reduction) / (1 - bleed_reduction), 0.0), 1.0)
+        out.append(p)
+    return np.array(out)
+
+
+def reference_smooth_lit(lit, depth, ok, sigma_px, threshold_rel):
+    """Depth-aware separable Gaussian with plain loops (per-pixel σ ``sigma_px`` (H, W)):
+    along each row, then each column, a neighbour k steps away contributes exp(-k²/2σ²) when
+    every pixel from the centre to it is ``ok`` and each consecutive depth step is at most
+    ``threshold_rel`` times the previous depth; pixels that are not ``ok`` keep their value."""
+    lit = np.asarray(lit, dtype=np.float64)
+    h, w = lit.shape
+
+    def one_pass(values, horizontal):
+        out = values.copy()
+        for y in range(h):
+            for x in range(w):
+                s = sigma_px[y, x]
+                if not ok[y, x] or s <= 0:
+                    continue
+                r = int(np.ceil(3.0 * s))
+                num, den = values[y, x], 1.0
+                for step in (-1, 1):
+                    prev = depth[y, x]
+                    for k in range(1, r + 1):
+                        yy, xx = (y, x + step * k) if horizontal else (y + step * k, x)
+                        if not (0 <= yy < h and 0 <= xx < w) or not ok[yy, xx]:
+                            break
+                        if abs(depth[yy, xx] - prev) > threshold_rel * abs(prev):
+                            break
+                        prev = depth[yy, xx]
+                        g = np.exp(-k * k / (2 * s * s))
+                        num += g * values[yy, xx]
+                        den += g
+                out[y, x] = num / den
+        return out
+
+    return np.clip(one_pass(one_pass(lit, True), False), 0, 1)
