@@ -237,7 +237,8 @@ def test_lispsm_lowers_mean_aliasing_below_uniform_at_equal_map_size(grid_city, 
 
     view_az = sun_az + (180.0 if relation == "along" else 90.0)
     a = math.radians(view_az)
-    cam = _camera_looking(np.array([-math.sin(a), -math.cos(a), 0.0]) * 150.0 + [0, 0, 12.0],
+    cam = _camera_looking(np.array([-math.sin(a), -math.cos(a), 0.0]) * 150.0 + [0, 0, 12.0]
+                          - grid_city.origin_m,
                           view_az, 8.0)
     ctx = _context(grid_city, cam, sun_from_angles(sun_az, sun_el))
     faces, receivers, _, casters = W.focus(ctx)
@@ -268,7 +269,8 @@ def agreement(scene, cam, t_days, sun, technique, options=None):
 def test_psm_with_the_sun_behind_the_camera_matches_raytrace(grid_city):
     from cityshade.sun import sun_from_angles
 
-    cam = _camera_looking((-5.0, -30.0, 14.0), 0.0, 12.0)        # inside the city, looking north
+    # Inside the city (render space is relative to the model's origin), looking north.
+    cam = _camera_looking(np.array([-5.0, -30.0, 14.0]) - grid_city.origin_m, 0.0, 12.0)
     sun = sun_from_angles(180.0, 25.0)                         # from the south: behind the eye
     share, frame = agreement(grid_city, cam, 0.0, sun, "psm")
     info = frame.diagnostics["warp"]
