@@ -237,7 +237,7 @@ def test_lispsm_lowers_mean_aliasing_below_uniform_at_equal_map_size(grid_city, 
 
     view_az = sun_az + (180.0 if relation == "along" else 90.0)
     a = math.radians(view_az)
-    cam = _camera_looking(np.array([-math.sin(a), -math.cos(a), 0.0]) * 150.0 + [0, 0, 12.0]
+    cam = _camera_looking(np.array([-math.sin(a), -math.cos(a), 0.0]) * 150.0 + [0, 0, 20.0]
                           - grid_city.origin_m,
                           view_az, 8.0)
     ctx = _context(grid_city, cam, sun_from_angles(sun_az, sun_el))

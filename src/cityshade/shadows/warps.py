@@ -545,10 +545,9 @@ def lookup(dmap, points_m, normals, sun_direction, map_settings, options=None
            ) -> tuple[np.ndarray, np.ndarray]:
     """Hard shadow test of receivers against a depth map (any projective view).
 
-    The receiver-side bias of :mod:`cityshade.shadows.shadowmap` (its module docstring): the
-    point looked up is ``p + bias_m s + min(slope_bias t sinθ, max_bias_m) n`` with ``t`` the
-    light-space texel size at ``p`` (so the same rule holds on warped maps, where ``t`` varies
-    across the map), then lit when its NDC depth is not beyond the stored one.
+    Delegates to :func:`cityshade.shadows.shadowmap.shadow_lookup` (receiver-side constant and
+    normal-offset bias with ``t`` the light-space texel size at each receiver, so the same rule
+    holds on warped maps where ``t`` varies across the map).
 
     Parameters
     ----------
@@ -565,27 +564,11 @@ def lookup(dmap, points_m, normals, sun_direction, map_settings, options=None
     from cityshade.shadows import shadowmap as sm
 
     p = np.asarray(points_m, dtype=np.float64).reshape(-1, 3)
-    n = np.asarray(normals, dtype=np.float64).reshape(-1, 3)
-    s = _unit(sun_direction)
-    view = dmap.view
     if p.shape[0] == 0:
         return np.zeros(0, np.float32), np.zeros(0)
-    texel_m = sm.texel_footprint_m(view, p, s)
-    cos_t = np.clip(n @ s, -1.0, 1.0)
-    sin_t = np.sqrt(1.0 - cos_t * cos_t)
-    offset = np.minimum(map_settings.slope_bias * np.where(np.isfinite(texel_m), texel_m, 0.0)
-                        * sin_t, map_settings.max_bias_m)
-    q = p + map_settings.bias_m * s + offset[:, None] * n
-    u, v, z = sm.project(view, q)
-    h, w = dmap.depth.shape
-    # Offsets may step just past the fitted border: read the edge texel there.
-    col = np.clip(np.floor(np.nan_to_num(u, nan=0.0)), 0, w - 1).astype(np.int64)
-    row = np.clip(np.floor(np.nan_to_num(v, nan=0.0)), 0, h - 1).astype(np.int64)
-    stored = np.asarray(dmap.depth)[row, col]
-    # float32 stored depth against the float64 receiver depth: compare in float32 too, so a
-    # receiver that is itself the nearest caster ties instead of failing by rounding.
-    lit = ~(z.astype(np.float32) > stored) | ~np.isfinite(z)
-    return lit.astype(np.float32), texel_m
+    s = _unit(sun_direction)
+    lit = sm.shadow_lookup(dmap, p, normals, s, map_settings, "hard")
+    return np.asarray(lit, np.float32), sm.texel_footprint_m(dmap.view, p, s)
 
 
 def focus(ctx) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
