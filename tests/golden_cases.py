@@ -64,3 +64,7 @@ def _render_case_with_technique(scene, name: str, technique: str):
 def render_case(scene, name: str):  # noqa: F811 - extends the definition above with techniques
     """8-bit image of one case, with the case's technique (``CASE_TECHNIQUE``, else raytrace)."""
     return _render_case_with_technique(scene, name, CASE_TECHNIQUE.get(name, "raytrace"))
+CASES["shadowmap_overview_1990"] = ("1990", "overview", (256, 160), 135.0, 30.0, "png")
+CASE_TECHNIQUE["shadowmap_overview_1990"] = "shadowmap"
+CASES["vsm_map_1990_mask"] = ("1990", "map", 2.0, 200.0, 25.0, "mask")
+CASE_TECHNIQUE["vsm_map_1990_mask"] = "vsm"

@@ -515,8 +515,9 @@ def render_depth_map(scene, view: LightView, t_days: float, *, casters_box=None,
     t_days : float
         City time, days since 1970-01-01 UTC; triangles with ``begin <= t_days < end`` cast.
     casters_box : (2, 3) array_like, optional
-        Only casters intersecting this render-space box are drawn (in addition to the view's
-        own side and far planes).
+        Render-space box ``[[x0, y0, z0], [x1, y1, z1]]``: every caster meeting it is drawn,
+        the kd-tree walk skips nodes outside it (so some casters outside it may be drawn too;
+        without a kd-tree it has no effect).
     culling : bool
         Walk the kd-tree with time filtering and light-frustum culling
         (:func:`cityshade.raster.culling.walk`); False, a scene without kd-tree, or a view

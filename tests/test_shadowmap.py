@@ -1,0 +1,294 @@
+"""Shadow maps: the light-space depth pass against a ray-cast twin, fitting, projections and
+measures against analytic values, bias (acne and peter-panning) at a 3° sun, VSM light
+bleeding, and every map technique against ``raytrace`` on the sample city."""
+from __future__ import annotations
+
+import math
+from types import SimpleNamespace
+
+import numpy as np
+import pytest
+
+from citygml_snippets import box_polygons, building, city, ground
+from golden_cases import sample_scene
+from reference import reference_depth_map
+
+from cityshade.build import build_file
+from cityshade.citygml.namespaces import SURFACE_CODE
+from cityshade.errors import UsageError
+from cityshade.raster import camera as cams
+from cityshade.render import render_frame
+from cityshade.scenefile import load_scene
+from cityshade.shadows import ShadowContext, facing_sun, get_technique
+from cityshade.shadows import shadowmap as sm
+from cityshade.sun import sun_from_angles
+
+T_1990 = 7305.0          # 1990-01-01 in days since 1970 (the sample city stands then)
+MAP_TECHNIQUES = ("shadowmap", "pcf", "vsm")
+
+
+def _build(tmp_path_factory, name, *members, half=150):
+    tmp = tmp_path_factory.mktemp(name)
+    src = tmp / f"{name}.gml"
+    src.write_text(city(ground(-half, -half, half, half), *members))
+    out, _, _ = build_file(src, tmp / f"{name}.cityshade")
+    return load_scene(out)
+
+
+@pytest.fixture(scope="module")
+def sample(tmp_path_factory):
+    return sample_scene(tmp_path_factory.mktemp("sample"))
+
+
+@pytest.fixture(scope="module")
+def one_box(tmp_path_factory):
+    """A 10 × 10 × 20 m box on a 300 × 300 m plane."""
+    return _build(tmp_path_factory, "box", building("b", box_polygons(-5, -5, 0, 10, 10, 20, "b")))
+
+
+def _soup(seed=11, n=30):
+    """A tiny scene without kd-tree: random triangles in a 20 m cube, one absent at t = 0."""
+    rng = np.random.default_rng(seed)
+    centres = rng.uniform(-8, 8, (n, 1, 3))
+    verts = (centres + rng.normal(0, 3, (n, 3, 3))).reshape(-1, 3).astype(np.float32)
+    begin = np.zeros(n)
+    begin[3] = 10.0
+    return SimpleNamespace(vertices=verts, triangles=np.arange(3 * n, dtype=np.int32).reshape(n, 3),
+                           tri_t_begin_days=begin, tri_t_end_days=np.full(n, np.inf), kdtree=None)
+
+
+def _compare_with_twin(scene, view):
+    dm = sm.render_depth_map(scene, view, 0.0)
+    depth, prim = reference_depth_map(scene.vertices, scene.triangles, scene.tri_t_begin_days,
+                                      scene.tri_t_end_days, view.clip_from_world,
+                                      view.width_px, view.height_px)
+    same = dm.prim_id == prim
+    # Texel centres exactly on a shared edge may go either way in the twin (its edges are
+    # closed): allow a handful of texels, never more.
+    assert same.mean() >= 0.99, f"{(~same).sum()} of {same.size} texels differ"
+    both = same & (prim >= 0)
+    assert both.sum() > 0.1 * same.size
+    np.testing.assert_allclose(dm.depth[both], depth[both], atol=2e-6)
+    assert np.isinf(dm.depth[dm.prim_id < 0]).all()
+    return dm
+
+
+def test_depth_map_matches_ray_cast_twin_orthographic():
+    scene = _soup()
+    view = sm.ortho_view(sun_from_angles(200.0, 35.0).direction, (-14, 14), (-12, 12),
+                         (-40, 40), 40, 32)
+    dm = _compare_with_twin(scene, view)
+    assert 3 not in set(dm.prim_id.ravel())          # absent at t = 0: never drawn
+    assert dm.stats["casters_drawn"] == 29
+
+
+def test_depth_map_matches_ray_cast_twin_projective():
+    scene = _soup(seed=12)
+    cam = cams.perspective([12.0, -15.0, 20.0], [0.0, 0.0, 0.0], vfov_deg=60, width_px=36,
+                           height_px=28, near_m=5.0, far_m=120.0)
+    view = sm.LightView(cam.clip_from_world(), 36, 28, "test")
+    _compare_with_twin(scene, view)
+
+
+def test_depth_map_culled_equals_unculled(sample):
+    sun = sun_from_angles(135.0, 30.0)
+    box = sm.scene_bounds(sample)
+    centre = box.mean(axis=0)
+    right, up, fwd = sm.light_basis(sun.direction)
+    # A view over the middle third of the city: the walk has something to cull.
+    half = 0.2 * float(np.max(box[1] - box[0]))
+    c = centre @ np.stack([right, up], axis=1)
+    view = sm.ortho_view(sun.direction, (c[0] - half, c[0] + half), (c[1] - half, c[1] + half),
+                         (-500, 500), 256, 256)
+    culled = sm.render_depth_map(sample, view, T_1990)
+    full = sm.render_depth_map(sample, view, T_1990, culling=False)
+    assert culled.stats["culling"] == "kd-tree walk"
+    assert culled.stats["frustum_refs_removed"] > 0
+    np.testing.assert_array_equal(culled.prim_id, full.prim_id)
+    np.testing.assert_array_equal(culled.depth, full.depth)
+    # Restricting casters to a box: every caster meeting the box is drawn (others may be,
+    # culling is per kd-tree node), so where the full map's nearest caster meets the box the
+    # restricted map has the same caster.
+    cb = np.array([[centre[0] - 30, centre[1] - 30, box[0, 2]], [centre[0], centre[1], box[1, 2]]])
+    part = sm.render_depth_map(sample, view, T_1990, casters_box=cb)
+    corners = sample.vertices[sample.triangles[np.maximum(full.prim_id, 0)]]
+    meets = ((full.prim_id >= 0) & (corners.min(axis=2) >= cb[0]).all(axis=-1)
+             & (corners.max(axis=2) <= cb[1]).all(axis=-1))      # casters inside the box
+    assert meets.sum() > 300
+    np.testing.assert_array_equal(part.prim_id[meets], full.prim_id[meets])
+    assert part.stats["casters_drawn"] < full.stats["casters_drawn"]
+
+
+def _context(scene, cam, sun, t=0.0, options=None):
+    from cityshade.raster.gbuffer import resolve
+    from cityshade.raster.rasterize import rasterize
+
+    surfaces = resolve(scene, rasterize(scene, cam, t))
+    return ShadowContext(scene=scene, surfaces=surfaces, camera=cam, sun=sun, t_days=t,
+                         options=options or {})
+
+
+def test_fit_uniform_covers_receivers_and_casters(sample):
+    cam = cams.overview(sample, 200, 120)
+    sun = sun_from_angles(135.0, 20.0)
+    ctx = _context(sample, cam, sun, T_1990)
+    view = sm.fit_uniform(sample, ctx, (300, 200), pad_px=3)
+    _, faces = facing_sun(ctx.surfaces, cam, sun.direction)
+    u, v, z = sm.project(view, ctx.surfaces.position_m[faces])
+    # Tight across the rays: the receivers span the map minus the padding on each side.
+    assert u.min() == pytest.approx(3.0, abs=1e-6) and u.max() == pytest.approx(297.0, abs=1e-6)
+    assert v.min() == pytest.approx(3.0, abs=1e-6) and v.max() == pytest.approx(197.0, abs=1e-6)
+    assert z.max() < 1.0 and z.min() > -1.0
+    # Every scene point is at or behind the near plane (casters are never clamped).
+    _, _, zs = sm.project(view, sample.vertices.astype(np.float64))
+    assert zs.min() >= -1.0
+
+
+def test_project_and_texel_measures_analytic(one_box):
+    el, az = 40.0, 210.0
+    sun = sun_from_angles(az, el)
+    view = sm.ortho_view(sun.direction, (-10, 10), (-10, 10), (-100, 100), 100, 100)
+    right, up, fwd = sm.light_basis(sun.direction)
+    # The point at light coordinates (x, y) = (3, -5) lands at texel (65, 75).
+    p = 3.0 * right - 5.0 * up + 7.0 * fwd
+    u, v, z = sm.project(view, p[None])
+    assert (u[0], v[0]) == pytest.approx((65.0, 75.0))
+    assert z[0] == pytest.approx(7.0 / 100.0)
+    # Texel 0.2 m across the rays; on the ground it stretches to 0.2 / sin(el) along the sun.
+    assert sm.texel_footprint_m(view, p[None], sun.direction)[0] == pytest.approx(0.2)
+    assert sm.texel_footprint_m(view, p[None], [0, 0, 1.0])[0] == pytest.approx(
+        0.2 / math.sin(math.radians(el)))
+    assert sm.metres_per_ndc(view) == pytest.approx(100.0)
+
+
+def test_aliasing_measure_analytic(one_box):
+    """Map camera with 0.5 m pixels, sun at the zenith, 0.25 m texels: one texel is half a
+    pixel (m = 0.5); with 2 m texels, m = 4."""
+    cam = cams.map_view(one_box, 0.5)
+    sun = sun_from_angles(0.0, 90.0)
+    ctx = _context(one_box, cam, sun)
+    for texel, m in ((0.25, 0.5), (2.0, 4.0)):
+        n = 200
+        view = sm.ortho_view(sun.direction, (-n * texel / 2, n * texel / 2),
+                             (-n * texel / 2, n * texel / 2), (-100, 100), n, n)
+        a = sm.aliasing_m(view, cam, ctx.surfaces)
+        assert a["max"] == pytest.approx(m, rel=1e-6) and a["mean"] == pytest.approx(m, rel=1e-6)
+
+
+@pytest.mark.parametrize("kind", ["overview", "map"])
+@pytest.mark.parametrize("el", [5.0, 30.0, 70.0])
+def test_techniques_agree_with_raytrace(sample, kind, el):
+    cam = cams.overview(sample, 256, 160) if kind == "overview" else cams.map_view(sample, 2.0)
+    sun = sun_from_angles(135.0, el)
+    ref = render_frame(sample, cam, T_1990, sun, "raytrace")
+    valid = ref.surfaces.valid
+    for name in MAP_TECHNIQUES:
+        frame = render_frame(sample, cam, T_1990, sun, name)
+        assert np.isfinite(frame.lit).all()
+        agree = ((frame.lit[valid] >= 0.5) == (ref.lit[valid] >= 0.5)).mean()
+        assert agree >= 0.95, f"{name}: {100 * agree:.2f} % of pixels agree with raytrace"
+        d = frame.diagnostics
+        assert d["map_px"] == [(2048, 2048)] and d["texel_m"] > 0 and d["shadow_s"] > 0
+        assert 0 < d["aliasing_m"]["mean"] <= d["aliasing_m"]["max"]
+
+
+@pytest.mark.parametrize("name", ["shadowmap+smooth", "vsm+smooth"])
+def test_smoothed_techniques(sample, name):
+    cam = cams.overview(sample, 256, 160)
+    sun = sun_from_angles(135.0, 30.0)
+    ref = render_frame(sample, cam, T_1990, sun, "raytrace")
+    frame = render_frame(sample, cam, T_1990, sun, name)
+    valid = ref.surfaces.valid
+    assert np.isfinite(frame.lit).all() and frame.lit.min() >= 0 and frame.lit.max() <= 1
+    agree = ((frame.lit[valid] >= 0.5) == (ref.lit[valid] >= 0.5)).mean()
+    assert agree >= 0.95, f"{name}: {100 * agree:.2f} %"
+    _, faces = facing_sun(frame.surfaces, cam, sun.direction)
+    assert (frame.lit[valid & ~faces] == 0).all()          # the shared rule still holds
+    assert frame.diagnostics["technique"] == name
+    # Smoothing made some edge pixels fractional.
+    assert ((frame.lit > 0.02) & (frame.lit < 0.98)).sum() > 10
+    with pytest.raises(UsageError, match="unknown shadow technique"):
+        get_technique("nope+smooth")
+
+
+def test_bias_no_acne_no_gap_at_3_degrees(one_box):
+    """Sun at 3°: sunlit faces are lit on ≥ 99.9 % of their pixels (no acne) and the ground
+    shadow starts at the wall (no gap wider than 2 texels: no peter-panning)."""
+    az, el = 200.0, 3.0
+    sun = sun_from_angles(az, el)
+    views = [cams.overview(one_box, 320, 200),
+             cams.perspective([-40.0, -60.0, 12.0], [0.0, 0.0, 6.0], vfov_deg=50, width_px=320,
+                              height_px=200, scene=one_box)]
+    for cam in views:
+        ref = render_frame(one_box, cam, 0.0, sun, "raytrace")
+        frame = render_frame(one_box, cam, 0.0, sun, "shadowmap")
+        sunlit = ref.lit > 0.5
+        walls = sunlit & (ref.surfaces.cls == SURFACE_CODE["wall"])
+        assert walls.sum() > 50
+        share = (frame.lit[sunlit] > 0.5).mean()
+        assert share >= 0.999, f"only {100 * share:.3f} % of sunlit pixels lit (acne)"
+    # Along the shadow direction from the box centre on a 0.25 m map.
+    px = 0.25
+    cam = cams.map_view(one_box, px, bbox=(-40, -40, 40, 40))
+    frame = render_frame(one_box, cam, 0.0, sun, "shadowmap")
+    texel = frame.diagnostics["texel_light_m"]
+    d = -np.array([math.sin(math.radians(az)), math.cos(math.radians(az))])
+    exit_m = 5.0 / max(abs(d[0]), abs(d[1]))             # the wall, box half-size 5 m
+    first = None
+    for s in np.arange(exit_m, 39.0, px / 8):
+        x, y = s * d
+        col = int(math.floor((x - cam.x_left_m) / px))
+        row = int(math.floor((cam.y_top_m - y) / px))
+        if frame.surfaces.cls[row, col] == SURFACE_CODE["landuse"]:
+            if frame.lit[row, col] < 0.5:
+                first = s
+                break
+    assert first is not None
+    gap = first - exit_m
+    assert gap <= 2 * texel + px, f"shadow starts {gap:.3f} m from the wall (texel {texel:.3f} m)"
+
+
+@pytest.fixture(scope="module")
+def stacked(tmp_path_factory):
+    """Two plates south of a strip of ground, both shading it with the sun in the south at
+    45°: a wide one 4 m up and a narrow one (x in [-5, 5]) 30 m up."""
+    low = box_polygons(-15, -24, 4, 30, 20, 0.2, "l")
+    high = box_polygons(-5, -34, 30, 10, 8, 0.2, "h")
+    return _build(tmp_path_factory, "stacked", building("low", low), building("high", high),
+                  half=60)
+
+
+def test_vsm_light_bleeding_and_its_reduction(stacked):
+    """On the ground strip y in [-3, -1] both plates are in the way. Across the upper plate's
+    edges (x = ±5) the filtered moments mix two caster depths 26 m apart and Chebyshev's bound
+    lets light through although the lower plate shadows everything (light bleeding).
+    Bleeding reduction removes most of it; the hard map has none."""
+    cam = cams.map_view(stacked, 0.1, bbox=(-10, -4, 10, 2))
+    sun = sun_from_angles(180.0, 45.0)
+    ref = render_frame(stacked, cam, 0.0, sun, "raytrace")
+    s = ref.surfaces
+    y = s.position_m[..., 1]
+    strip = (s.cls == SURFACE_CODE["landuse"]) & (y > -3.0) & (y < -1.0)
+    assert strip.sum() > 3000 and (ref.lit[strip] == 0).all()
+    opts = {"map_px": 512, "vsm_blur": 6}
+    raw = render_frame(stacked, cam, 0.0, sun, "vsm", {**opts, "bleed_reduction": 0.0}).lit
+    cut = render_frame(stacked, cam, 0.0, sun, "vsm", {**opts, "bleed_reduction": 0.5}).lit
+    hard = render_frame(stacked, cam, 0.0, sun, "shadowmap").lit
+    # Measured on this scene: up to 0.59 leaks through at the edges without reduction (mean
+    # 0.016 over the strip); with reduction 0.5, 0.18 (mean 0.002).
+    assert raw[strip].max() > 0.4
+    assert cut[strip].max() < 0.5 * raw[strip].max()
+    assert cut[strip].mean() < 0.3 * raw[strip].mean()
+    assert hard[strip].max() == 0.0
+
+
+def test_sun_below_horizon_and_bad_options(one_box):
+    cam = cams.map_view(one_box, 2.0)
+    frame = render_frame(one_box, cam, 0.0, sun_from_angles(180.0, -3.0), "pcf")
+    assert (frame.lit == 0).all()
+    with pytest.raises(UsageError, match="pcf_kernel"):
+        render_frame(one_box, cam, 0.0, sun_from_angles(180.0, 30.0), "pcf", {"pcf_kernel": 4})
+    with pytest.raises(UsageError, match="map_px"):
+        sm.ShadowMapSettings.from_options({"map_px": 0})
+    with pytest.raises(UsageError, match="clip_from_world"):
+        sm.LightView(np.eye(3), 4, 4)
