@@ -78,7 +78,7 @@ def intersect_bricks(nodes, splits, recs, recs_f64, box_lo, box_hi, origins, dir
         st_t0 = np.empty(STACK_SIZE)
         st_t1 = np.empty(STACK_SIZE)
         for i in range(b * brick_size, min(n, (b + 1) * brick_size)):
-            t, k, u, v = closest_hit(nodes, splits, recs, recs_f64, box_lo, box_hi,
+            t, k, u, v = closest_hit(nodes, splits, recs, recs_f64, rec_ids, box_lo, box_hi,
                                      origins[i, 0], origins[i, 1], origins[i, 2],
                                      directions[i, 0], directions[i, 1], directions[i, 2],
                                      tmin, tmax[i], t_days, st_node, st_t0, st_t1)

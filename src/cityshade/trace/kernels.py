@@ -128,12 +128,14 @@ def clip_to_box(box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax):
 
 
 @njit(cache=True, inline="always")
-def closest_hit(nodes, splits, recs, recs_f64, box_lo, box_hi, ox, oy, oz, dx, dy, dz,
+def closest_hit(nodes, splits, recs, recs_f64, rec_ids, box_lo, box_hi, ox, oy, oz, dx, dy, dz,
                 tmin, tmax, t_days, st_node, st_t0, st_t1):
     """Closest hit of one ray in ``[tmin, tmax]`` at city time ``t_days``.
 
     Returns ``(t, k, u, v)`` with ``k`` the record index (-1 and ``t = inf`` on a miss).
-    ``st_*`` are scratch stacks of ``STACK_SIZE`` entries owned by the calling thread.
+    ``rec_ids`` is the int32 view of ``recs`` (made once by the caller: a view per ray would
+    cost an allocation). ``st_*`` are scratch stacks of ``STACK_SIZE`` entries owned by the
+    calling thread.
     """
     best_t = np.inf
     best_k = -1
@@ -150,7 +152,6 @@ def closest_hit(nodes, splits, recs, recs_f64, box_lo, box_hi, ox, oy, oz, dx, d
     inv_x = 1.0 / dx if dx != 0.0 else 0.0
     inv_y = 1.0 / dy if dy != 0.0 else 0.0
     inv_z = 1.0 / dz if dz != 0.0 else 0.0
-    rec_ids = recs.view(np.int32)
     node = 0
     sp = 0
     while True:
