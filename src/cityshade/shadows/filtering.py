@@ -8,6 +8,7 @@ A lookup outside the map is lit (no caster is known there).
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 import time
 from dataclasses import dataclass
@@ -385,7 +386,7 @@ class Smoothed:
         self.name = f"{inner.name}+smooth"
 
     def run(self, ctx):
-        from cityshade.shadows import ShadowResult, facing_sun
+        from cityshade.shadows import facing_sun
 
         result = self.inner.run(ctx)
         settings = SmoothSettings.from_options(ctx.options)
@@ -401,5 +402,5 @@ class Smoothed:
                                  "depth_threshold_rel": settings.depth_threshold_rel,
                                  "max_gain": settings.max_gain, "smooth_s": smooth_s}
         diagnostics["shadow_s"] = float(diagnostics.get("shadow_s", 0.0)) + smooth_s
-        return ShadowResult(lit=lit, diagnostics=diagnostics,
-                            extra_channels=dict(result.extra_channels))
+        # Keep every other field of the inner result (extra channels, maps used, ...).
+        return dataclasses.replace(result, lit=lit, diagnostics=diagnostics)

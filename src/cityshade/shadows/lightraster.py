@@ -27,6 +27,8 @@ the same as :meth:`cityshade.raster.camera.Camera.clip_from_world`.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 from numba import njit, prange
 
@@ -47,8 +49,9 @@ BOX_SLACK_PX = 1e-6
 #: tile lists).
 BIN_CHUNKS = 16
 #: Words per set-up triangle: 3 × (a, b, c) edge coefficients, 3 tie-ownership flags,
-#: clip Z and W at the three vertices.
-_SETUP_WORDS = 18
+#: clip Z and W at the three vertices, a flag for triangles crossing W = 0 and the NDC depth
+#: plane ``z = p x + q y + r`` of the others.
+_SETUP_WORDS = 22
 
 
 def texel_params(width_px: int, height_px: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -208,6 +211,22 @@ def setup_triangles(vertices, triangles, recs, from_records, items, m, to_px, wi
         coef[j, 15] = w0
         coef[j, 16] = w1
         coef[j, 17] = w2
+        coef[j, 18] = 1.0
+        if w0 > 0.0 and w1 > 0.0 and w2 > 0.0:
+            # NDC depth is affine in NDC x, y over a plane (the z-buffer's classic property):
+            # z = p x + q y + r through the three projected vertices; every point of the
+            # triangle has W > 0, so no per-texel W test is needed either.
+            nx0, ny0, nz0 = x0 / w0, y0 / w0, z0 / w0
+            ex1, ey1, ez1 = x1 / w1 - nx0, y1 / w1 - ny0, z1 / w1 - nz0
+            ex2, ey2, ez2 = x2 / w2 - nx0, y2 / w2 - ny0, z2 / w2 - nz0
+            den = ex1 * ey2 - ex2 * ey1
+            if den > 0.0 or den < 0.0:
+                pp = (ez1 * ey2 - ez2 * ey1) / den
+                qq = (ex1 * ez2 - ex2 * ez1) / den
+                coef[j, 18] = 0.0
+                coef[j, 19] = pp
+                coef[j, 20] = qq
+                coef[j, 21] = nz0 - pp * nx0 - qq * ny0
         bbox[j, 0] = int(c0)
         bbox[j, 1] = int(c1)
         bbox[j, 2] = int(r0)
@@ -255,7 +274,8 @@ def bin_triangles(bbox, tile_px, tiles_x, tiles_y):
 
 
 @njit(cache=True, parallel=True)
-def raster_depth_tiles(start, items, ids, coef, bbox, xs, ys, tile_px, tiles_x, depth, prim):
+def raster_depth_tiles(start, items, ids, coef, bbox, xs, ys, to_px, tile_px, tiles_x, depth,
+                       prim):
     """Depth-test the binned triangles into ``depth`` (H, W) float32 / ``prim`` (H, W) int32,
     one tile per work item (each tile owns its texels)."""
     n_tiles = start.shape[0] - 1
@@ -277,18 +297,36 @@ def raster_depth_tiles(start, items, ids, coef, bbox, xs, ys, tile_px, tiles_x, 
             own0 = coef[j, 9] != 0.0
             own1 = coef[j, 10] != 0.0
             own2 = coef[j, 11] != 0.0
+            general = coef[j, 18] != 0.0
             zv0 = coef[j, 12]
             dz1 = coef[j, 13] - zv0
             dz2 = coef[j, 14] - zv0
             wv0 = coef[j, 15]
             dw1 = coef[j, 16] - wv0
             dw2 = coef[j, 17] - wv0
+            pz = coef[j, 19]
+            qz = coef[j, 20]
+            rz = coef[j, 21]
+            cb0 = max(bbox[j, 0], tc0)
+            cb1 = min(bbox[j, 1], tc1)
             for r in range(max(bbox[j, 2], tr0), min(bbox[j, 3], tr1) + 1):
                 y = ys[r]
                 row0 = b0 * y + k0
                 row1 = b1 * y + k1
                 row2 = b2 * y + k2
-                for c in range(max(bbox[j, 0], tc0), min(bbox[j, 1], tc1) + 1):
+                # Columns where all three edge functions can be >= 0 (one column of slack on
+                # each side; the exact test below decides).
+                c_lo = cb0
+                c_hi = cb1
+                for a, row in ((a0, row0), (a1, row1), (a2, row2)):
+                    if a > 0.0:
+                        c_lo = max(c_lo, int(math.ceil(to_px[0] * (-row / a) + to_px[1])) - 1)
+                    elif a < 0.0:
+                        c_hi = min(c_hi, int(math.floor(to_px[0] * (-row / a) + to_px[1])) + 1)
+                    elif row < 0.0:
+                        c_hi = c_lo - 1
+                ypart = qz * y + rz
+                for c in range(c_lo, c_hi + 1):
                     x = xs[c]
                     # Coverage with the top-left rule for exact zeros.
                     e0 = a0 * x + row0
@@ -300,17 +338,20 @@ def raster_depth_tiles(start, items, ids, coef, bbox, xs, ys, tile_px, tiles_x, 
                     e2 = a2 * x + row2
                     if e2 < 0.0 or (e2 == 0.0 and not own2):
                         continue
-                    s = e0 + e1 + e2
-                    if not s > 0.0:
-                        continue
-                    # Exact barycentrics → clip Z and W of the plane point → NDC depth.
-                    inv = 1.0 / s
-                    u = e1 * inv
-                    v = e2 * inv
-                    wp = wv0 + u * dw1 + v * dw2
-                    if not wp > 0.0:
-                        continue
-                    zp = (zv0 + u * dz1 + v * dz2) / wp
+                    if general:
+                        # Crosses W = 0: exact barycentrics → clip Z and W of the plane point.
+                        s = e0 + e1 + e2
+                        if not s > 0.0:
+                            continue
+                        inv = 1.0 / s
+                        u = e1 * inv
+                        v = e2 * inv
+                        wp = wv0 + u * dw1 + v * dw2
+                        if not wp > 0.0:
+                            continue
+                        zp = (zv0 + u * dz1 + v * dz2) / wp
+                    else:
+                        zp = pz * x + ypart
                     if zp > 1.0:
                         continue
                     d = np.float32(max(zp, -1.0))

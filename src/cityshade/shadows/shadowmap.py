@@ -573,8 +573,8 @@ def render_depth_map(scene, view: LightView, t_days: float, *, casters_box=None,
         t1 = time.perf_counter()
         start, binned = lr.bin_triangles(bbox, tile, tiles_x, tiles_y)
         t2 = time.perf_counter()
-        lr.raster_depth_tiles(start, binned, ids, coef, bbox, xs, ys, tile, tiles_x, depth,
-                              prim)
+        lr.raster_depth_tiles(start, binned, ids, coef, bbox, xs, ys, to_px, tile, tiles_x,
+                              depth, prim)
         t3 = time.perf_counter()
         timings["setup_s"] += t1 - t0
         timings["bin_s"] += t2 - t1
