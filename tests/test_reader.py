@@ -248,3 +248,16 @@ def test_invalid_geometry_is_skipped_and_counted(tmp_path):
         scene_of(tmp_path, city('<bldg:Building gml:id="b"><bldg:lod2MultiSurface><gml:MultiSurface>'
                                 f"<gml:surfaceMember>{polygon(line)}</gml:surfaceMember>"
                                 "</gml:MultiSurface></bldg:lod2MultiSurface></bldg:Building>"))
+
+
+def test_empty_or_xlinked_exterior_is_skipped(tmp_path):
+    good = polygon([(0, 0, 0), (1, 0, 0), (1, 1, 0)])
+    doc = city('<bldg:Building gml:id="b"><bldg:lod2MultiSurface><gml:MultiSurface>'
+               f"<gml:surfaceMember>{good}</gml:surfaceMember>"
+               "<gml:surfaceMember><gml:Polygon><gml:exterior/></gml:Polygon></gml:surfaceMember>"
+               '<gml:surfaceMember><gml:Polygon><gml:exterior xlink:href="#r1"/></gml:Polygon>'
+               "</gml:surfaceMember></gml:MultiSurface></bldg:lod2MultiSurface></bldg:Building>")
+    scene = scene_of(tmp_path, doc)
+    assert scene.n_triangles == 1
+    assert scene.report["polygons"]["read"] == 3
+    assert scene.report["skipped"] == {"too_few_points": 2}

@@ -433,6 +433,10 @@ class _Walker:
             if btag in exterior_tags:
                 if has_exterior:
                     continue
+                if not len(boundary):
+                    # An empty or xlinked exterior: no ring to read (the polygon is skipped).
+                    m.counters["rings_without_coordinates"] += 1
+                    continue
                 has_exterior = True
             elif btag not in interior_tags or not len(boundary):
                 continue
