@@ -31,7 +31,8 @@ def _pcf(depth, u_px, v_px, z, radius, out):
     for i in prange(u_px.shape[0]):
         u = u_px[i]
         v = v_px[i]
-        if not (np.isfinite(u) and np.isfinite(v)):
+        # Non-finite or far outside the map (no int64 conversion of ±1e300): lit.
+        if not (-radius - 1.0 <= u < w + radius + 1.0 and -radius - 1.0 <= v < h + radius + 1.0):
             out[i] = 1.0
             continue
         c0 = int(math.floor(u))
@@ -196,11 +197,13 @@ def chebyshev_lit(mean, mean2, d, min_variance, bleed_reduction):
 def _vsm(moments, u_px, v_px, d, min_variance, bleed_reduction, out):
     h, w = moments.shape[0], moments.shape[1]
     for i in prange(u_px.shape[0]):
-        u = u_px[i] - 0.5
-        v = v_px[i] - 0.5
-        if not (np.isfinite(u) and np.isfinite(v)):
+        # Clamp far-away coordinates (the border texels are used there anyway) so the integer
+        # conversion stays defined; non-finite receivers are lit.
+        if not (np.isfinite(u_px[i]) and np.isfinite(v_px[i])):
             out[i] = 1.0
             continue
+        u = min(max(u_px[i] - 0.5, -1.0), w + 1.0)
+        v = min(max(v_px[i] - 0.5, -1.0), h + 1.0)
         # Bilinear moments of the four nearest texel centres (clamped to the map).
         c0 = int(math.floor(u))
         r0 = int(math.floor(v))

@@ -319,10 +319,16 @@ def raster_depth_tiles(start, items, ids, coef, bbox, xs, ys, to_px, tile_px, ti
                 c_lo = cb0
                 c_hi = cb1
                 for a, row in ((a0, row0), (a1, row1), (a2, row2)):
-                    if a > 0.0:
-                        c_lo = max(c_lo, int(math.ceil(to_px[0] * (-row / a) + to_px[1])) - 1)
-                    elif a < 0.0:
-                        c_hi = min(c_hi, int(math.floor(to_px[0] * (-row / a) + to_px[1])) + 1)
+                    if a > 0.0 or a < 0.0:
+                        # Clamp before the integer conversion: a nearly edge-on edge puts the
+                        # bound at ±1e300 (or NaN), which no int64 holds.
+                        col = min(max(to_px[0] * (-row / a) + to_px[1], -2.0), w + 1.0)
+                        if not col == col:
+                            continue
+                        if a > 0.0:
+                            c_lo = max(c_lo, int(math.ceil(col)) - 1)
+                        else:
+                            c_hi = min(c_hi, int(math.floor(col)) + 1)
                     elif row < 0.0:
                         c_hi = c_lo - 1
                 ypart = qz * y + rz
