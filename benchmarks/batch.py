@@ -38,7 +38,6 @@ import time
 from datetime import date
 from pathlib import Path
 
-import numpy as np
 
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -89,12 +88,12 @@ def main(argv=None) -> dict:
     instants = [s.centre_utc for s in steps]
     weights = [s.weight_h for s in steps]
     t = time.perf_counter()
-    suns = suns_from_instants(instants, scene.crs, scene.origin_m)
+    suns_from_instants(instants, scene.crs, scene.origin_m)  # SPA alone, for the table
     spa_s = time.perf_counter() - t
 
-    def run(checkpoint=None, suns_given=None):
+    def run(checkpoint=None):
         return B.sun_hours(scene, cam, instants, DAY_2000, weights_h=weights,
-                           suns=suns_given, checkpoint=checkpoint)
+                           checkpoint=checkpoint)
 
     # Warm-up: compile every kernel on two sun positions.
     B.sun_hours(scene, cam, instants[60:62], DAY_2000, weights_h=weights[60:62])

@@ -2,7 +2,6 @@
 from __future__ import annotations
 
 import json
-import math
 from datetime import date, datetime, timedelta, timezone
 
 import numpy as np

@@ -52,7 +52,6 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     --every (local time in --tz): sun_hours.exr/.png (+ .tif for the map view), optional
     frames and surfaces.csv in OUTDIR. Re-running the same command after an interruption
     continues where it stopped."""
-    import datetime as dt
     import sys
     import time
 
@@ -156,12 +155,6 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
                               SpaSettings(refraction=not no_refraction))
     units, below, _ = B.plan_units(suns, weights)
     finished.extend(below)  # nothing to compute for a sun below the horizon
-    if frames and below:
-        from cityshade.imageio import write_mask_png
-
-        nothing_lit = np.zeros((cam.height_px, cam.width_px), np.uint8)
-        for i in below:
-            write_mask_png(frames_dir / _frame_name(steps[i]), nothing_lit)
     done_before = state.units_done()
     for unit in units[:done_before]:
         finished.extend(unit.steps)
@@ -180,6 +173,13 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
             bar.__exit__(None, None, None)
     for warning in result.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
+    if frames and below:
+        from cityshade.imageio import mask_from_lit, write_mask_png
+
+        # The sun is down: every surface pixel is in shadow, the rest stays nodata.
+        nothing_lit = mask_from_lit(np.zeros(result.valid.shape), result.valid)
+        for i in below:
+            write_mask_png(frames_dir / _frame_name(steps[i]), nothing_lit)
     meta = B.run_metadata(result, scene, params)
     t1 = time.perf_counter()
     written = B.write_sun_hours(outdir, result, scene, cam, meta, surfaces_csv=surfaces)
