@@ -36,6 +36,8 @@ class Frame:
     timings_s: dict[str, float] = field(default_factory=dict)
     diagnostics: dict[str, Any] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    #: Technique-specific EXR channels (e.g. ``refined`` of ``hybrid``), (H, W) each.
+    extra_channels: dict[str, np.ndarray] = field(default_factory=dict)
 
 
 def city_time_range(scene) -> tuple[float, float] | None:
@@ -114,7 +116,8 @@ def render_frame(scene, camera, t_days: float, sun, technique: str = "raytrace",
         diagnostics["ground"] = ground_info
     return Frame(camera=camera, gbuffer=gbuf, surfaces=surfaces, lit=lit, rgb=rgb, sun=sun,
                  t_days=t_days, technique=technique, timings_s=timings,
-                 diagnostics=diagnostics, warnings=warnings)
+                 diagnostics=diagnostics, warnings=warnings,
+                 extra_channels=dict(result.extra_channels))
 
 
 def shadow_mask(frame: Frame) -> np.ndarray:
@@ -173,8 +176,8 @@ def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
             "N.x": normal[..., 0], "N.y": normal[..., 1], "N.z": normal[..., 2],
             "primid": frame.gbuffer.prim_id, "objid": s.obj_id,
         }
-        for name, values in frame.diagnostics.get("channels", {}).items():
-            channels[name] = values
+        for name, values in frame.extra_channels.items():
+            channels[name] = np.asarray(values, dtype=np.float32)
         imageio.write_exr(exr, channels, meta)
         written.append(Path(exr))
     if png is not None:

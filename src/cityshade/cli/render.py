@@ -122,7 +122,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
                        f"{sun.latitude_deg:.6f}° N {sun.longitude_deg:.6f}° E "
                        f"{sun.height_m:.1f} m", err=True)
         for key, value in frame.diagnostics.items():
-            if key != "channels":
+            if not isinstance(value, (bytes, bytearray)):
                 click.echo(f"{key:<8} {value}", err=True)
     click.echo(" ".join(str(p) for p in written))
 

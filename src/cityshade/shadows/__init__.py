@@ -48,12 +48,24 @@ class ShadowContext:
 
 
 @dataclass
+class MapUse:
+    """A depth map a map technique used, and for which pixels (what ``hybrid`` classifies with)."""
+
+    depth_map: Any              # cityshade.shadows.shadowmap.DepthMap
+    pixels: np.ndarray          # (H, W) bool: the facing pixels looked up in this map
+    filter_radius_px: int       # texels around the lookup the technique's filter reads
+    settings: Any               # ShadowMapSettings used for the bias
+
+
+@dataclass
 class ShadowResult:
     """Per-pixel lit fraction and diagnostics of one technique run."""
 
     lit: np.ndarray                       # (H, W) float32 in [0, 1]; 0 where no surface
     diagnostics: dict[str, Any] = field(default_factory=dict)
     extra_channels: dict[str, np.ndarray] = field(default_factory=dict)
+    #: Map techniques list the depth maps they used (empty for ``raytrace``).
+    maps: list[MapUse] = field(default_factory=list)
 
 
 class Technique(Protocol):
@@ -73,14 +85,19 @@ def get_technique(name: str) -> Technique:
     (:class:`cityshade.shadows.filtering.Smoothed`).
     """
     base, plus, suffix = name.partition("+")
-    if plus and suffix == "smooth" and base in TECHNIQUES:
+    if plus and suffix == "smooth" and (base in TECHNIQUES or base.startswith("hybrid")):
         from cityshade.shadows.filtering import Smoothed
 
         return Smoothed(get_technique(base))
+    if name == "hybrid" or name.startswith("hybrid:"):
+        from cityshade.shadows.hybrid import Hybrid
+
+        return Hybrid(name.partition(":")[2] or "vsm")
     entry = TECHNIQUES.get(name)
     if entry is None:
         raise UsageError(f"unknown shadow technique {name!r}; valid: "
-                         f"{', '.join(technique_names())} (each also as NAME+smooth)")
+                         f"{', '.join(technique_names())}, hybrid[:BASE] (each also as "
+                         f"NAME+smooth)")
     module, cls = entry.split(":")
     return getattr(importlib.import_module(module), cls)()
 
