@@ -24,6 +24,8 @@ object and then a table.
 Usage: python benchmarks/render.py [--repeat 5] [--size 1920x1080] [--views overview,street]
        [--no-llvmpipe]
        [--triangles 1000000] [--workdir bench_out] [--json out.json]
+       python benchmarks/render.py --shadow-map [--size 4096] [--repeat 5] [--sun 135,30]
+       (the light-space depth pass against llvmpipe depth-only; see shadow_map_main)
 """
 from __future__ import annotations
 
@@ -266,5 +268,133 @@ def _table(report: dict, view: str, out: dict, threads) -> None:
           "step; 'vs llvmpipe' = llvmpipe median / ours, >1 means we are faster)")
 
 
+# --- shadow-map depth pass (issue 5): python benchmarks/render.py --shadow-map ------------------
+_LLVMPIPE_DEPTH_CHILD = r"""
+import json, sys, time
+import numpy as np
+import moderngl
+data = np.load(sys.argv[1])
+width, height, repeat = int(sys.argv[2]), int(sys.argv[3]), int(sys.argv[4])
+ctx = moderngl.create_standalone_context(backend="egl")
+prog = ctx.program(
+    vertex_shader='''#version 330
+        uniform mat4 clip_from_world;
+        in vec3 pos;
+        void main() { gl_Position = clip_from_world * vec4(pos, 1.0); }''',
+    fragment_shader='''#version 330
+        void main() { }''')
+prog["clip_from_world"].write(data["clip"].astype("f4").T.tobytes())
+vbo = ctx.buffer(data["vertices"].astype("f4").tobytes())
+ibo = ctx.buffer(data["triangles"].astype("i4").tobytes())
+vao = ctx.vertex_array(prog, [(vbo, "3f", "pos")], ibo)
+fbo = ctx.framebuffer(depth_attachment=ctx.depth_texture((width, height)))
+fbo.use()
+ctx.enable(moderngl.DEPTH_TEST)
+def frame():
+    fbo.clear(depth=1.0)
+    vao.render(moderngl.TRIANGLES)
+    ctx.finish()
+t = time.perf_counter(); frame(); first = time.perf_counter() - t
+runs = []
+for _ in range(repeat):
+    t = time.perf_counter(); frame(); runs.append(time.perf_counter() - t)
+depth = np.frombuffer(fbo.read(attachment=-1, components=1, dtype="f4"), "f4").reshape(height, width)[::-1]
+print(json.dumps({"renderer": ctx.info["GL_RENDERER"], "first_s": first, "runs_s": runs,
+                  "covered": float((depth < 1.0).mean())}))
+"""
+#: DESIGN §12: Mesa llvmpipe, depth-only 4096² shadow map of the 1M-triangle city.
+SHADOW_ANCHOR_DESIGN_MS = {1: 303.0, 2: 195.0}
+
+
+def shadow_map_main(argv=None) -> dict:
+    """The light-space depth pass (:func:`cityshade.shadows.shadowmap.render_depth_map`) of the
+    whole benchmark city in a ``--size``² orthographic sun view, at 1 and 2 Numba threads
+    (first run apart, median of ``--repeat``), against llvmpipe drawing the same triangles with
+    the same matrix into a depth-only framebuffer (child process per thread count)."""
+    import numba
+
+    from cityshade.scenefile import load_scene
+    from cityshade.shadows import shadowmap as sm
+    from cityshade.sun import sun_from_angles
+
+    global _LLVMPIPE_CHILD
+    ap = argparse.ArgumentParser(description="shadow-map depth pass benchmark")
+    ap.add_argument("--size", type=int, default=4096)
+    ap.add_argument("--repeat", type=int, default=5)
+    ap.add_argument("--threads", default="1,2")
+    ap.add_argument("--sun", default="135,30", help="azimuth,elevation in degrees")
+    ap.add_argument("--triangles", type=int, default=1_000_000)
+    ap.add_argument("--seed", type=int, default=7)
+    ap.add_argument("--workdir", type=Path, default=REPO / "bench_out")
+    ap.add_argument("--date-days", type=float, default=DAY_2000)
+    ap.add_argument("--no-llvmpipe", action="store_true")
+    ap.add_argument("--json", type=Path)
+    args = ap.parse_args(argv)
+    threads = [int(v) for v in args.threads.split(",")]
+    az, el = (float(v) for v in args.sun.split(","))
+    scene = load_scene(ensure_scene(args.workdir, args.triangles, args.seed))
+    sun = sun_from_angles(az, el)
+    # The whole city: its box seen along the sun's rays.
+    box = sm.scene_bounds(scene)
+    corners = np.array([[box[i, 0], box[j, 1], box[k, 2]]
+                        for i in (0, 1) for j in (0, 1) for k in (0, 1)])
+    light = corners @ np.stack(sm.light_basis(sun.direction), axis=1)
+    lo, hi = light.min(axis=0), light.max(axis=0)
+    view = sm.ortho_view(sun.direction, (lo[0], hi[0]), (lo[1], hi[1]), (lo[2] - 1, hi[2] + 1),
+                         args.size, args.size)
+    report = {"benchmark": "shadow-map depth pass", "commit": _commit(), "machine": _machine(),
+              "size": args.size, "sun_deg": [az, el], "triangles": int(scene.triangles.shape[0]),
+              "ours": {}, "llvmpipe": {}}
+    for n in threads:
+        numba.set_num_threads(n)
+        first, runs, dm = time_runs(lambda: sm.render_depth_map(scene, view, args.date_days),
+                                    args.repeat)
+        report["ours"][n] = {"first_ms": 1000 * first,
+                             "median_ms": 1000 * statistics.median(runs),
+                             "runs_ms": [1000 * r for r in runs],
+                             "stages_ms": {k: 1000 * v for k, v in
+                                           dm.stats["timings_s"].items()},
+                             "casters_drawn": dm.stats["casters_drawn"],
+                             "texels_covered": dm.stats["texels_covered"]}
+    if not args.no_llvmpipe:
+        import tempfile
+
+        class _LightCamera:
+            width_px = height_px = args.size
+
+            def clip_from_world(self):
+                return view.clip_from_world
+
+        saved = _LLVMPIPE_CHILD
+        _LLVMPIPE_CHILD = _LLVMPIPE_DEPTH_CHILD
+        try:
+            with tempfile.TemporaryDirectory() as tmp:
+                report["llvmpipe"] = llvmpipe(scene, _LightCamera(), args.date_days,
+                                              args.repeat, threads, Path(tmp))
+        finally:
+            _LLVMPIPE_CHILD = saved
+    print(json.dumps(report, default=float))
+    if args.json:
+        args.json.write_text(json.dumps(report, indent=1, default=float))
+    lp = report["llvmpipe"]
+    print(f"\n{'':<12}{'threads':>8}{'first ms':>10}{'median ms':>11}{'vs llvmpipe':>13}")
+    for n, res in report["ours"].items():
+        ratio = f"{lp[n]['median_ms'] / res['median_ms']:.2f}x" if n in lp else ""
+        print(f"{'cityshade':<12}{n:>8}{res['first_ms']:>10.1f}{res['median_ms']:>11.1f}"
+              f"{ratio:>13}")
+    for n in threads:
+        if n in lp:
+            print(f"{'llvmpipe':<12}{n:>8}{lp[n]['first_ms']:>10.1f}{lp[n]['median_ms']:>11.1f}"
+                  f"   (DESIGN §12: {SHADOW_ANCHOR_DESIGN_MS.get(n, float('nan')):.0f} ms; "
+                  f"texels covered {lp[n]['covered']:.4f}, ours "
+                  f"{report['ours'][n]['texels_covered'] / args.size ** 2:.4f})")
+    if "unavailable" in lp:
+        print(f"llvmpipe unavailable: {lp['unavailable']}")
+    return report
+
+
 if __name__ == "__main__":
-    main()
+    if "--shadow-map" in sys.argv[1:]:
+        shadow_map_main([a for a in sys.argv[1:] if a != "--shadow-map"])
+    else:
+        main()

@@ -48,10 +48,15 @@ BOX_SLACK_PX = 1e-6
 #: Chunks of the parallel binning (several per thread for balance; any value gives the same
 #: tile lists).
 BIN_CHUNKS = 16
+#: An edge bounds the covered columns of a row only when ``|a| >= SPAN_MIN_SLOPE |b|``: the
+#: bound ``col = A y + B`` of a nearly row-parallel edge has huge A and B whose cancellation
+#: could exceed the one column of slack (the exact test still decides every texel).
+SPAN_MIN_SLOPE = 1e-6
 #: Words per set-up triangle: 3 × (a, b, c) edge coefficients, 3 tie-ownership flags,
-#: clip Z and W at the three vertices, a flag for triangles crossing W = 0 and the NDC depth
-#: plane ``z = p x + q y + r`` of the others.
-_SETUP_WORDS = 22
+#: clip Z and W at the three vertices, a flag for triangles crossing W = 0, the NDC depth
+#: plane ``z = p x + q y + r`` of the others, and per edge the column bound ``A y + B`` with
+#: its kind (1 lower, -1 upper, 0 none).
+_SETUP_WORDS = 31
 
 
 def texel_params(width_px: int, height_px: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -227,6 +232,17 @@ def setup_triangles(vertices, triangles, recs, from_records, items, m, to_px, wi
                 coef[j, 19] = pp
                 coef[j, 20] = qq
                 coef[j, 21] = nz0 - pp * nx0 - qq * ny0
+        # Column bound of each edge in a row at NDC y: e = a x + b y + c >= 0 gives
+        # x >= -(b y + c) / a (a > 0) or x <= ... (a < 0); in texel columns A y + B.
+        for i in range(3):
+            a = coef[j, 3 * i]
+            b = coef[j, 3 * i + 1]
+            kind = 0.0
+            if abs(a) >= SPAN_MIN_SLOPE * abs(b) and (a > 0.0 or a < 0.0):
+                kind = 1.0 if a > 0.0 else -1.0
+                coef[j, 22 + 3 * i] = -to_px[0] * b / a
+                coef[j, 23 + 3 * i] = -to_px[0] * coef[j, 3 * i + 2] / a + to_px[1]
+            coef[j, 24 + 3 * i] = kind
         bbox[j, 0] = int(c0)
         bbox[j, 1] = int(c1)
         bbox[j, 2] = int(r0)
@@ -315,24 +331,25 @@ def raster_depth_tiles(start, items, ids, coef, bbox, xs, ys, to_px, tile_px, ti
                 row1 = b1 * y + k1
                 row2 = b2 * y + k2
                 # Columns where all three edge functions can be >= 0 (one column of slack on
-                # each side; the exact test below decides).
-                c_lo = cb0
-                c_hi = cb1
-                for a, row in ((a0, row0), (a1, row1), (a2, row2)):
-                    if a > 0.0 or a < 0.0:
-                        # Clamp before the integer conversion: a nearly edge-on edge puts the
-                        # bound at ±1e300 (or NaN), which no int64 holds.
-                        col = min(max(to_px[0] * (-row / a) + to_px[1], -2.0), w + 1.0)
-                        if not col == col:
-                            continue
-                        if a > 0.0:
-                            c_lo = max(c_lo, int(math.ceil(col)) - 1)
-                        else:
-                            c_hi = min(c_hi, int(math.floor(col)) + 1)
-                    elif row < 0.0:
-                        c_hi = c_lo - 1
+                # each side; the exact test below decides). Bounds are clamped to the tile
+                # before the integer conversion (huge or NaN values have no int64).
+                c_lo = np.float64(cb0)
+                c_hi = np.float64(cb1)
+                for i in range(3):
+                    kind = coef[j, 24 + 3 * i]
+                    if kind != 0.0:
+                        col = coef[j, 22 + 3 * i] * y + coef[j, 23 + 3 * i]
+                        if kind > 0.0:
+                            if col - 1.0 > c_lo:
+                                c_lo = col - 1.0
+                        elif col + 1.0 < c_hi:
+                            c_hi = col + 1.0
+                if not c_lo <= c_hi:
+                    continue
+                c_first = int(math.ceil(c_lo))
+                c_last = int(math.floor(c_hi))
                 ypart = qz * y + rz
-                for c in range(c_lo, c_hi + 1):
+                for c in range(c_first, c_last + 1):
                     x = xs[c]
                     # Coverage with the top-left rule for exact zeros.
                     e0 = a0 * x + row0
