@@ -40,7 +40,7 @@ import numba
 import numpy as np
 
 from cityshade.errors import UsageError
-from cityshade.shadows import ShadowContext, ShadowResult, facing_sun
+from cityshade.shadows import MapUse, ShadowContext, ShadowResult, facing_sun
 from cityshade.shadows import lightraster as lr
 
 #: Largest shadow-map side: 16384² float32 depth + int32 ids is 2 GiB.
@@ -770,7 +770,8 @@ class ShadowMap:
                                     "diagnostics_s": t4 - t3}
         diagnostics["depth_map"] = depth_map.stats
         diagnostics["settings"] = dataclasses.asdict(settings)
-        return ShadowResult(lit=lit, diagnostics=diagnostics)
+        return ShadowResult(lit=lit, diagnostics=diagnostics,
+                            maps=[MapUse(depth_map, faces, radius, settings)])
 
 
 class PCF(ShadowMap):
