@@ -507,3 +507,49 @@ def reference_smooth_lit(lit, depth, ok, sigma_px, threshold_rel):
         return out
 
     return np.clip(one_pass(one_pass(lit, True), False), 0, 1)
+
+
+def _reference_tangents(n):
+    n = np.asarray(n, dtype=np.float64)
+    n = n / np.linalg.norm(n)
+    helper = np.array([0.0, 0.0, 1.0]) if abs(n[2]) < 0.9 else np.array([1.0, 0.0, 0.0])
+    t1 = np.cross(n, helper)
+    t1 /= np.linalg.norm(t1)
+    return t1, np.cross(n, t1)
+
+
+def _reference_image_jacobian(clip_from_world, width_px, height_px, p, t1, t2, h=1e-3):
+    """2×2 derivatives of (column, row) along two tangents by central differences."""
+    m = np.asarray(clip_from_world, dtype=np.float64)
+
+    def pixel(q):
+        c = m @ np.r_[q, 1.0]
+        return np.array([(c[0] / c[3] + 1) * width_px / 2, (1 - c[1] / c[3]) * height_px / 2])
+
+    cols = [(pixel(p + h * t) - pixel(p - h * t)) / (2 * h) for t in (t1, t2)]
+    return np.column_stack(cols)
+
+
+def reference_texel_footprint_m(clip_from_world, width_px, height_px, points, normals):
+    """Longer edge (metres) of the texel mapped onto each point's plane, by finite differences:
+    the texel's edges are the columns of the inverse of the tangent-plane Jacobian."""
+    out = []
+    for p, n in zip(np.asarray(points, np.float64), np.asarray(normals, np.float64)):
+        t1, t2 = _reference_tangents(n)
+        inv = np.linalg.inv(_reference_image_jacobian(clip_from_world, width_px, height_px, p,
+                                                      t1, t2))
+        out.append(np.linalg.norm(inv, axis=0).max())
+    return np.array(out)
+
+
+def reference_aliasing_px(light_clip, light_w, light_h, camera_clip, camera_w, camera_h,
+                          points, normals):
+    """Screen pixels spanned by the longer texel edge at each point (finite differences):
+    columns of J_screen @ inv(J_light) on the tangent plane."""
+    out = []
+    for p, n in zip(np.asarray(points, np.float64), np.asarray(normals, np.float64)):
+        t1, t2 = _reference_tangents(n)
+        jl = _reference_image_jacobian(light_clip, light_w, light_h, p, t1, t2)
+        js = _reference_image_jacobian(camera_clip, camera_w, camera_h, p, t1, t2)
+        out.append(np.linalg.norm(js @ np.linalg.inv(jl), axis=0).max())
+    return np.array(out)

@@ -292,3 +292,34 @@ def test_sun_below_horizon_and_bad_options(one_box):
         sm.ShadowMapSettings.from_options({"map_px": 0})
     with pytest.raises(UsageError, match="clip_from_world"):
         sm.LightView(np.eye(3), 4, 4)
+
+
+def test_texel_measures_match_finite_difference_twins():
+    """Footprint and aliasing kernels against finite differences, for an orthographic and a
+    projective light and a perspective camera, on random points and normals."""
+    from reference import reference_aliasing_px, reference_texel_footprint_m
+
+    rng = np.random.default_rng(4)
+    points = rng.uniform(-20, 20, (50, 3))
+    normals = rng.normal(size=(50, 3))
+    normals /= np.linalg.norm(normals, axis=1, keepdims=True)
+    sun = sun_from_angles(150.0, 35.0)
+    ortho = sm.ortho_view(sun.direction, (-30, 30), (-25, 25), (-80, 80), 300, 200)
+    persp = cams.perspective([60.0, -70.0, 80.0], [0.0, 0.0, 0.0], vfov_deg=50, width_px=256,
+                             height_px=256, near_m=10.0, far_m=300.0)
+    warped = sm.LightView(persp.clip_from_world(), 256, 256, "test")
+    camera = cams.perspective([-50.0, -40.0, 30.0], [0.0, 0.0, 0.0], vfov_deg=45, width_px=320,
+                              height_px=200, near_m=1.0, far_m=300.0)
+    for view in (ortho, warped):
+        fast = sm.texel_footprint_m(view, points, normals)
+        slow = reference_texel_footprint_m(view.clip_from_world, view.width_px, view.height_px,
+                                           points, normals)
+        np.testing.assert_allclose(fast, slow, rtol=1e-5)
+        surf = SimpleNamespace(valid=np.ones((1, 50), bool), position_m=points[None],
+                               normal=normals[None].astype(np.float32))
+        m = sm.aliasing_m(view, camera, surf)
+        slow_m = reference_aliasing_px(view.clip_from_world, view.width_px, view.height_px,
+                                       camera.clip_from_world(), 320, 200, points,
+                                       normals.astype(np.float32))
+        assert m["max"] == pytest.approx(slow_m.max(), rel=1e-5)
+        assert m["mean"] == pytest.approx(slow_m.mean(), rel=1e-5)

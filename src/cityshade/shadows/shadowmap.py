@@ -38,6 +38,7 @@ from typing import Any
 
 import numba
 import numpy as np
+from numba import njit, prange
 
 from cityshade.errors import UsageError
 from cityshade.shadows import MapUse, ShadowContext, ShadowResult, facing_sun
@@ -288,7 +289,8 @@ def receiver_points(ctx: ShadowContext) -> np.ndarray:
     return np.asarray(points, np.float64)
 
 
-def fit_uniform(scene, ctx: ShadowContext, size_px, *, pad_px: int | None = None) -> LightView:
+def fit_uniform(scene, ctx: ShadowContext, size_px, *, pad_px: int | None = None,
+                receivers_m=None) -> LightView:
     """Uniform orthographic light view fitted to the visible receivers and their casters.
 
     Across the rays the view covers the light-space box of the visible receivers facing the sun
@@ -306,6 +308,8 @@ def fit_uniform(scene, ctx: ShadowContext, size_px, *, pad_px: int | None = None
         Map size in texels.
     pad_px : int, optional
         Margin in texels (default ``ShadowMapSettings.fit_pad_px``).
+    receivers_m : (N, 3) array_like, optional
+        The receivers when the caller has them already (default :func:`receiver_points`).
     """
     w, h = _size_px(size_px)
     pad = ShadowMapSettings().fit_pad_px if pad_px is None else int(pad_px)
@@ -315,7 +319,8 @@ def fit_uniform(scene, ctx: ShadowContext, size_px, *, pad_px: int | None = None
     box = scene_bounds(scene)
     corners = np.array([[box[i, 0], box[j, 1], box[k, 2]]
                         for i in (0, 1) for j in (0, 1) for k in (0, 1)])
-    points = receiver_points(ctx)
+    points = (receiver_points(ctx) if receivers_m is None
+              else np.asarray(receivers_m, np.float64).reshape(-1, 3))
     if points.shape[0] == 0:
         points = corners
     basis = np.stack([right, up, fwd], axis=1)
@@ -369,43 +374,92 @@ def project(view: LightView, points_m) -> tuple[np.ndarray, np.ndarray, np.ndarr
     return u, v, clip[:, 2] * inv
 
 
-def _pixel_jacobian(m, width_px, height_px, points) -> np.ndarray:
-    """(N, 2, 3) derivatives of (column, row) of a clip matrix's image w.r.t. world position."""
-    clip = points @ m[:, :3].T + m[:, 3]
-    w = clip[:, 3:4]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        dx = (m[0, :3][None] * w - clip[:, 0:1] * m[3, :3][None]) / (w * w)
-        dy = (m[1, :3][None] * w - clip[:, 1:2] * m[3, :3][None]) / (w * w)
-    return np.stack([0.5 * width_px * dx, -0.5 * height_px * dy], axis=1)
+@njit(cache=True, inline="always")
+def _tangent_frame(nx, ny, nz):
+    """Two unit tangents of the plane with normal (nx, ny, nz) (helper axis z, or x when the
+    normal is nearly vertical)."""
+    norm = math.sqrt(nx * nx + ny * ny + nz * nz)
+    if norm > 0.0:
+        nx, ny, nz = nx / norm, ny / norm, nz / norm
+    if abs(nz) < 0.9:
+        hx, hy, hz = 0.0, 0.0, 1.0
+    else:
+        hx, hy, hz = 1.0, 0.0, 0.0
+    ax, ay, az = ny * hz - nz * hy, nz * hx - nx * hz, nx * hy - ny * hx
+    la = math.sqrt(ax * ax + ay * ay + az * az)
+    ax, ay, az = ax / la, ay / la, az / la
+    return ax, ay, az, ny * az - nz * ay, nz * ax - nx * az, nx * ay - ny * ax
 
 
-def _tangents(normals) -> tuple[np.ndarray, np.ndarray]:
-    """Two unit tangents (N, 3) of each plane with the given normals."""
-    n = np.asarray(normals, dtype=np.float64).reshape(-1, 3)
-    n = n / np.maximum(np.linalg.norm(n, axis=1, keepdims=True), 1e-300)
-    helper = np.where((np.abs(n[:, 2]) < 0.9)[:, None], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0])
-    t1 = np.cross(n, helper)
-    t1 /= np.linalg.norm(t1, axis=1, keepdims=True)
-    return t1, np.cross(n, t1)
+@njit(cache=True, inline="always")
+def _image_jacobian(m, width, height, px, py, pz, t1x, t1y, t1z, t2x, t2y, t2z):
+    """Derivatives of (column, row) of the image of clip matrix ``m`` (16,) along two tangents:
+    (dc/dt1, dc/dt2, dr/dt1, dr/dt2)."""
+    x = m[0] * px + m[1] * py + m[2] * pz + m[3]
+    y = m[4] * px + m[5] * py + m[6] * pz + m[7]
+    w = m[12] * px + m[13] * py + m[14] * pz + m[15]
+    sc = 0.5 * width / (w * w)
+    sr = -0.5 * height / (w * w)
+    # d(x/w)/dp = (m0 w - x m3) / w², per axis.
+    cx = sc * (m[0] * w - x * m[12])
+    cy = sc * (m[1] * w - x * m[13])
+    cz = sc * (m[2] * w - x * m[14])
+    rx = sr * (m[4] * w - y * m[12])
+    ry = sr * (m[5] * w - y * m[13])
+    rz = sr * (m[6] * w - y * m[14])
+    return (cx * t1x + cy * t1y + cz * t1z, cx * t2x + cy * t2y + cz * t2z,
+            rx * t1x + ry * t1y + rz * t1z, rx * t2x + ry * t2y + rz * t2z)
 
 
-def _tangent_jacobian(m, width_px, height_px, points, t1, t2) -> np.ndarray:
-    """(N, 2, 2): (column, row) derivatives along the tangents ``t1``, ``t2``."""
-    jw = _pixel_jacobian(m, width_px, height_px, points)
-    return np.stack([np.einsum("nij,nj->ni", jw, t1), np.einsum("nij,nj->ni", jw, t2)], axis=2)
+@njit(cache=True, parallel=True)
+def _footprint_kernel(m, width, height, points, normals, out):
+    """Longer texel edge on each point's plane (metres); inf where the plane holds the ray."""
+    for i in prange(points.shape[0]):
+        t1x, t1y, t1z, t2x, t2y, t2z = _tangent_frame(normals[i, 0], normals[i, 1],
+                                                      normals[i, 2])
+        a, b, c, d = _image_jacobian(m, width, height, points[i, 0], points[i, 1],
+                                     points[i, 2], t1x, t1y, t1z, t2x, t2y, t2z)
+        det = a * d - b * c
+        if not (det > 0.0 or det < 0.0):
+            out[i] = np.inf
+            continue
+        # Columns of the inverse Jacobian: the texel's edges in tangent coordinates.
+        e1 = math.sqrt(d * d + c * c) / abs(det)
+        e2 = math.sqrt(b * b + a * a) / abs(det)
+        v = max(e1, e2)
+        out[i] = v if v == v else np.inf
 
 
-def _inverse_2x2(j) -> np.ndarray:
-    det = j[:, 0, 0] * j[:, 1, 1] - j[:, 0, 1] * j[:, 1, 0]
-    with np.errstate(divide="ignore", invalid="ignore"):
-        inv_det = np.where(det != 0.0, 1.0 / np.where(det != 0.0, det, 1.0), np.inf)
-    inv = np.empty_like(j)
-    inv[:, 0, 0] = j[:, 1, 1]
-    inv[:, 1, 1] = j[:, 0, 0]
-    inv[:, 0, 1] = -j[:, 0, 1]
-    inv[:, 1, 0] = -j[:, 1, 0]
-    with np.errstate(invalid="ignore"):
-        return inv * inv_det[:, None, None]
+@njit(cache=True, parallel=True)
+def _aliasing_kernel(ml, wl, hl, mc, wc, hc, points, normals, out):
+    """Screen pixels spanned by the longer edge of the texel at each point (inf if
+    undefined)."""
+    for i in prange(points.shape[0]):
+        t1x, t1y, t1z, t2x, t2y, t2z = _tangent_frame(normals[i, 0], normals[i, 1],
+                                                      normals[i, 2])
+        a, b, c, d = _image_jacobian(ml, wl, hl, points[i, 0], points[i, 1], points[i, 2],
+                                     t1x, t1y, t1z, t2x, t2y, t2z)
+        det = a * d - b * c
+        if not (det > 0.0 or det < 0.0):
+            out[i] = np.inf
+            continue
+        # Inverse of the light Jacobian, then screen Jacobian @ inverse: texel edges on screen.
+        ia, ib, ic, id_ = d / det, -b / det, -c / det, a / det
+        sa, sb, sc, sd = _image_jacobian(mc, wc, hc, points[i, 0], points[i, 1], points[i, 2],
+                                         t1x, t1y, t1z, t2x, t2y, t2z)
+        k11 = sa * ia + sb * ic
+        k12 = sa * ib + sb * id_
+        k21 = sc * ia + sd * ic
+        k22 = sc * ib + sd * id_
+        v = max(math.sqrt(k11 * k11 + k21 * k21), math.sqrt(k12 * k12 + k22 * k22))
+        out[i] = v if v == v else np.inf
+
+
+def _points_normals(points_m, normals) -> tuple[np.ndarray, np.ndarray]:
+    p = np.ascontiguousarray(np.asarray(points_m, dtype=np.float64).reshape(-1, 3))
+    n = np.asarray(normals, dtype=np.float64)
+    n = np.ascontiguousarray(np.broadcast_to(n.reshape(-1, 3) if n.ndim > 1 else n, p.shape))
+    return p, n
 
 
 def texel_footprint_m(view: LightView, points_m, normals) -> np.ndarray:
@@ -426,17 +480,12 @@ def texel_footprint_m(view: LightView, points_m, normals) -> np.ndarray:
     -------
     (N,) float64 metres.
     """
-    p = np.asarray(points_m, dtype=np.float64).reshape(-1, 3)
-    n = np.broadcast_to(np.asarray(normals, dtype=np.float64), p.shape)
-    if p.shape[0] == 0:
-        return np.zeros(0)
-    t1, t2 = _tangents(n)
-    inv = _inverse_2x2(_tangent_jacobian(view.clip_from_world, view.width_px, view.height_px,
-                                         p, t1, t2))
-    with np.errstate(invalid="ignore"):
-        edges = np.sqrt((inv * inv).sum(axis=1))          # column norms: metres per texel edge
-    out = edges.max(axis=1)
-    return np.where(np.isfinite(out), out, np.inf)
+    p, n = _points_normals(points_m, normals)
+    out = np.empty(p.shape[0])
+    if p.shape[0]:
+        _footprint_kernel(np.ascontiguousarray(view.clip_from_world.reshape(16)),
+                          float(view.width_px), float(view.height_px), p, n, out)
+    return out
 
 
 def aliasing_m(view: LightView, camera, surfaces, mask=None) -> dict[str, float]:
@@ -454,17 +503,16 @@ def aliasing_m(view: LightView, camera, surfaces, mask=None) -> dict[str, float]
         ``max``, ``mean`` (over pixels with a finite m; 0 without any) and ``pixels``.
     """
     valid = np.asarray(surfaces.valid, bool) if mask is None else np.asarray(mask, bool)
-    p = np.asarray(surfaces.position_m)[valid].astype(np.float64)
+    p, n = _points_normals(np.asarray(surfaces.position_m)[valid],
+                           np.asarray(surfaces.normal)[valid])
     if p.shape[0] == 0:
         return {"max": 0.0, "mean": 0.0, "pixels": 0}
-    n = np.asarray(surfaces.normal)[valid].astype(np.float64)
-    t1, t2 = _tangents(n)
-    j_light = _tangent_jacobian(view.clip_from_world, view.width_px, view.height_px, p, t1, t2)
     h, w = camera.shape
-    j_screen = _tangent_jacobian(camera.clip_from_world(), w, h, p, t1, t2)
-    with np.errstate(invalid="ignore", over="ignore"):
-        screen_per_texel = np.einsum("nij,njk->nik", j_screen, _inverse_2x2(j_light))
-        edge_px = np.sqrt((screen_per_texel * screen_per_texel).sum(axis=1)).max(axis=1)
+    edge_px = np.empty(p.shape[0])
+    _aliasing_kernel(np.ascontiguousarray(view.clip_from_world.reshape(16)),
+                     float(view.width_px), float(view.height_px),
+                     np.ascontiguousarray(np.asarray(camera.clip_from_world(), np.float64)
+                                          .reshape(16)), float(w), float(h), p, n, edge_px)
     finite = edge_px[np.isfinite(edge_px)]
     if finite.shape[0] == 0:
         return {"max": 0.0, "mean": 0.0, "pixels": 0}
@@ -755,7 +803,8 @@ class ShadowMap:
         points = surfaces.position_m[faces]
         normals = normal[faces]
         radius = {"hard": 0, "pcf": settings.pcf_kernel // 2, "vsm": settings.vsm_blur}[self.mode]
-        view = fit_uniform(ctx.scene, ctx, settings.map_px, pad_px=settings.fit_pad_px + radius)
+        view = fit_uniform(ctx.scene, ctx, settings.map_px, pad_px=settings.fit_pad_px + radius,
+                           receivers_m=points if points.shape[0] else None)
         t1 = time.perf_counter()
         depth_map = render_depth_map(ctx.scene, view, ctx.t_days)
         t2 = time.perf_counter()
