@@ -286,6 +286,15 @@ def test_sun_below_horizon_and_bad_options(one_box):
     cam = cams.map_view(one_box, 2.0)
     frame = render_frame(one_box, cam, 0.0, sun_from_angles(180.0, -3.0), "pcf")
     assert (frame.lit == 0).all()
+    # Nothing visible: no map is drawn at all.
+    sky = cams.perspective([0, 0, 500.0], [0, 0, 900.0], vfov_deg=30, width_px=32, height_px=24,
+                           scene=one_box)
+    frame = render_frame(one_box, sky, 0.0, sun_from_angles(180.0, 30.0), "vsm")
+    assert (frame.lit == 0).all() and frame.diagnostics["map_px"] == []
+    # Tiny maps with wide filters still work (the padding shrinks to fit).
+    frame = render_frame(one_box, cam, 0.0, sun_from_angles(180.0, 30.0), "vsm",
+                         {"map_px": 8, "vsm_blur": 6})
+    assert np.isfinite(frame.lit).all()
     with pytest.raises(UsageError, match="pcf_kernel"):
         render_frame(one_box, cam, 0.0, sun_from_angles(180.0, 30.0), "pcf", {"pcf_kernel": 4})
     with pytest.raises(UsageError, match="map_px"):

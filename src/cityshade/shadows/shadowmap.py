@@ -802,15 +802,19 @@ class ShadowMap:
         diagnostics["self_shadowed_px"] = int((surfaces.valid & ~faces).sum())
         points = surfaces.position_m[faces]
         normals = normal[faces]
+        if points.shape[0] == 0:
+            # No visible surface faces the sun: nothing to look up, no map to draw.
+            diagnostics["note"] = "no visible surface faces the sun: no map drawn"
+            diagnostics["shadow_s"] = time.perf_counter() - t0
+            return ShadowResult(lit=lit, diagnostics=diagnostics)
         radius = {"hard": 0, "pcf": settings.pcf_kernel // 2, "vsm": settings.vsm_blur}[self.mode]
-        view = fit_uniform(ctx.scene, ctx, settings.map_px, pad_px=settings.fit_pad_px + radius,
-                           receivers_m=points if points.shape[0] else None)
+        pad = min(settings.fit_pad_px + radius, (settings.map_px - 1) // 2)
+        view = fit_uniform(ctx.scene, ctx, settings.map_px, pad_px=pad, receivers_m=points)
         t1 = time.perf_counter()
         depth_map = render_depth_map(ctx.scene, view, ctx.t_days)
         t2 = time.perf_counter()
-        if points.shape[0]:
-            lit[faces] = shadow_lookup(depth_map, points, normals, ctx.sun.direction, settings,
-                                       self.mode)
+        lit[faces] = shadow_lookup(depth_map, points, normals, ctx.sun.direction, settings,
+                                   self.mode)
         t3 = time.perf_counter()
         diagnostics.update(map_diagnostics([view], ctx, points, normals, faces))
         t4 = time.perf_counter()
