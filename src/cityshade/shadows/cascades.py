@@ -27,7 +27,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from cityshade.errors import UsageError
-from cityshade.shadows import ShadowContext, ShadowResult, facing_sun
+from cityshade.shadows import MapUse, ShadowContext, ShadowResult, facing_sun
 
 
 @dataclass(frozen=True)
@@ -158,6 +158,7 @@ class Cascaded:
         texel_all = np.zeros(receivers.shape[0])
         face_rows, face_cols = np.nonzero(faces)
         views = []
+        map_uses = []
         for k in range(count):
             sel = slice_of == k
             entry = {"cascade": k, "near_m": float(splits[k]), "far_m": float(splits[k + 1]),
@@ -180,6 +181,7 @@ class Cascaded:
             texel_all[sel] = texel_k
             mask = np.zeros(surfaces.valid.shape, bool)
             mask[face_rows[sel], face_cols[sel]] = True
+            map_uses.append(MapUse(dmap, mask, 0, map_settings))
             alias = sm.aliasing_m(view, ctx.camera, surfaces, mask=mask)
             entry.update({"map_px": (size, size), "warp": info,
                           "texel_m": float(np.median(texel_k)),
@@ -201,7 +203,7 @@ class Cascaded:
         diagnostics["shadow_s"] = time.perf_counter() - started
         # Kept for callers that inspect the maps (tests, hybrid): the texture array and views.
         self.layers, self.views = layers, views
-        return ShadowResult(lit=lit, diagnostics=diagnostics)
+        return ShadowResult(lit=lit, diagnostics=diagnostics, maps=map_uses)
 
 
 class CascadedPSM(Cascaded):

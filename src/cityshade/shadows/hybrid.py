@@ -8,12 +8,14 @@ pixels were traced) as the EXR channel ``refined``.
 Classifiers (option ``classifier``):
 
 ``bracket`` (default)
-    For each receiver, look at the depth-map texels within ``1 + r`` texels of its lookup
-    (``r`` = the base's filter radius). Surely lit: every texel there is empty or behind the
-    receiver. Surely in shadow: every texel is in front of it and all belong to one city
-    object (one caster covering the whole neighbourhood, so no gap between casters can let
-    light through). Everything else — casters both in front and behind (a shadow edge), or
-    different casters in front (a possible gap) — is uncertain. This is the slides' "better
+    For each receiver, look at the base's depth-map texels within one texel of its true surface
+    point. Surely lit: no texel there holds a caster in front of the point (casters of its own
+    polygon aside), also in a second map of the triangles thinner than two texels in light
+    space (walls edge-on to a low sun fall between texel centres of a point-sampled map).
+    Surely in shadow: every texel holds a caster in front and all belong to one city object
+    (one caster covering the whole neighbourhood, so no gap between casters lets light
+    through). Everything else — casters in front and clear texels (a shadow edge), or
+    different casters (a possible gap) — is uncertain. This is the slides' "better
     shadow edge detection": it looks at the map's depth discontinuities, not at the filtered
     answer.
 ``vsm``
@@ -54,8 +56,8 @@ class HybridSettings:
     #: [low] / [high] "vsm" classifier thresholds on the base's lit fraction.
     low: float = 0.02
     high: float = 0.98
-    #: [extra_texels] Texels added to the base's filter radius for the bracket neighbourhood:
-    #: one texel covers the rasterization's half-texel position error on either side.
+    #: [extra_texels] Radius (texels) of the bracket neighbourhood around the surface point:
+    #: one texel covers point sampling's position error of up to one texel on either side.
     extra_texels: int = 1
     #: [max_boundary_passes] Bound on the boundary-following passes (each traces one layer).
     max_boundary_passes: int = 64
@@ -73,19 +75,85 @@ class HybridSettings:
         return settings
 
 
+#: Triangles whose light-space height (2·area / longest edge) is below this many texels can fall
+#: between texel centres and vanish from a point-sampled depth map: they go into the thin-caster
+#: map too (2 leaves a texel of margin over the 1-texel worst case).
+THIN_TEXELS = 2.0
+
+
 @njit(cache=True)
-def _bracket_kernel(depth, texel_obj, u_px, v_px, z, radius, state):
-    """Classify receivers from the depth-map texels around their lookup (see module doc)."""
+def _splat_thin(u, v, z, poly, width, height, thin_depth, thin_poly):
+    """Write each thin triangle's nearest depth over its texel bounding box grown by one texel."""
+    for i in range(u.shape[0]):
+        c0 = max(int(np.floor(min(u[i, 0], u[i, 1], u[i, 2]))) - 1, 0)
+        c1 = min(int(np.floor(max(u[i, 0], u[i, 1], u[i, 2]))) + 1, width - 1)
+        r0 = max(int(np.floor(min(v[i, 0], v[i, 1], v[i, 2]))) - 1, 0)
+        r1 = min(int(np.floor(max(v[i, 0], v[i, 1], v[i, 2]))) + 1, height - 1)
+        zmin = np.float32(min(z[i, 0], z[i, 1], z[i, 2]))
+        for r in range(r0, r1 + 1):
+            for c in range(c0, c1 + 1):
+                if zmin < thin_depth[r, c]:
+                    thin_depth[r, c] = zmin
+                    thin_poly[r, c] = poly[i]
+
+
+def thin_caster_map(scene, view, t_days: float) -> tuple[np.ndarray, np.ndarray]:
+    """(depth (H, W) float32, polygon (H, W) int32) of the triangles present at ``t_days`` that
+    are thinner than :data:`THIN_TEXELS` in the light view — the casters a point-sampled depth
+    map may miss entirely (walls seen edge-on by a low sun)."""
+    from cityshade.shadows.shadowmap import project
+
+    h, w = view.height_px, view.width_px
+    thin_depth = np.full((h, w), np.inf, np.float32)
+    thin_poly = np.full((h, w), -1, np.int32)
+    present = ((np.asarray(scene.tri_t_begin_days) <= t_days)
+               & (t_days < np.asarray(scene.tri_t_end_days)))
+    tri = np.asarray(scene.triangles)[present]
+    if not len(tri):
+        return thin_depth, thin_poly
+    u, v, z = project(view, np.asarray(scene.vertices, np.float64)[tri.ravel()])
+    u, v, z = u.reshape(-1, 3), v.reshape(-1, 3), z.reshape(-1, 3)
+    # Light-space height of each triangle in texels: 2·area / longest edge.
+    e1u, e1v = u[:, 1] - u[:, 0], v[:, 1] - v[:, 0]
+    e2u, e2v = u[:, 2] - u[:, 0], v[:, 2] - v[:, 0]
+    area2 = np.abs(e1u * e2v - e2u * e1v)
+    longest = np.sqrt(np.maximum.reduce([e1u ** 2 + e1v ** 2, e2u ** 2 + e2v ** 2,
+                                         (u[:, 2] - u[:, 1]) ** 2 + (v[:, 2] - v[:, 1]) ** 2]))
+    with np.errstate(invalid="ignore", divide="ignore"):
+        height_texels = np.where(longest > 0, area2 / longest, 0.0)
+    finite = np.isfinite(u).all(axis=1) & np.isfinite(v).all(axis=1) & np.isfinite(z).all(axis=1)
+    thin = finite & (height_texels < THIN_TEXELS) & (z.min(axis=1) <= 1.0)
+    if thin.any():
+        poly = np.asarray(scene.tri_polygon)[present][thin].astype(np.int32)
+        _splat_thin(np.ascontiguousarray(u[thin]), np.ascontiguousarray(v[thin]),
+                    np.ascontiguousarray(z[thin]), poly, w, h, thin_depth, thin_poly)
+    return thin_depth, thin_poly
+
+
+@njit(cache=True)
+def _bracket_kernel(depth, texel_obj, texel_poly, thin_depth, thin_poly, u_s, v_s, z_surface,
+                    own_poly, radius, state):
+    """Classify receivers from the depth-map texels around their true surface points.
+
+    A texel occludes a receiver when its caster lies in front of the receiver's surface point
+    (``z_surface``, the shadow-ray origin) and belongs to another polygon (a planar polygon
+    cannot shadow itself; its texels straddle the true depth on a slope). Surely lit: no texel
+    within ``radius`` occludes, in the depth map nor in the thin-caster map. Surely in shadow:
+    every texel within ``radius`` occludes and all belong to one object (so no gap between
+    casters lets light through). Else uncertain. No bias is involved: the decision is about the
+    exact surface point, within the map's one-texel position accuracy.
+    """
     h, w = depth.shape
-    for i in range(u_px.shape[0]):
-        # Locate the receiver's texel; a non-finite lookup cannot be decided from the map.
-        if not (np.isfinite(u_px[i]) and np.isfinite(v_px[i]) and np.isfinite(z[i])):
+    for i in range(u_s.shape[0]):
+        # A non-finite lookup cannot be decided from the map.
+        if not (np.isfinite(u_s[i]) and np.isfinite(v_s[i]) and np.isfinite(z_surface[i])):
             state[i] = UNCERTAIN
             continue
-        cu = int(np.floor(u_px[i]))
-        cv = int(np.floor(v_px[i]))
-        front = 0
-        behind = 0
+        cu = int(np.floor(u_s[i]))
+        cv = int(np.floor(v_s[i]))
+        occluding = 0
+        clear = 0
+        thin_occluding = 0
         first_obj = -2
         mixed = False
         for dv in range(-radius, radius + 1):
@@ -94,40 +162,49 @@ def _bracket_kernel(depth, texel_obj, u_px, v_px, z, radius, state):
                 col = cu + du
                 # Outside the map nothing was drawn: empty, i.e. no caster there.
                 if row < 0 or row >= h or col < 0 or col >= w:
-                    behind += 1
+                    clear += 1
                     continue
-                d = depth[row, col]
-                if d <= z[i]:
-                    front += 1
+                if thin_depth[row, col] <= z_surface[i] and thin_poly[row, col] != own_poly[i]:
+                    thin_occluding += 1
+                if depth[row, col] <= z_surface[i] and texel_poly[row, col] != own_poly[i]:
+                    occluding += 1
                     obj = texel_obj[row, col]
                     if first_obj == -2:
                         first_obj = obj
                     elif obj != first_obj:
                         mixed = True
                 else:
-                    behind += 1
-        if front == 0:
+                    clear += 1
+        if occluding == 0 and thin_occluding == 0:
             state[i] = SURE_LIT
-        elif behind == 0 and not mixed:
+        elif clear == 0 and not mixed:
             state[i] = SURE_SHADOW
         else:
             state[i] = UNCERTAIN
 
 
-def bracket_states(depth_map, scene, points_m, normals, sun_direction, map_settings,
-                   radius_texels: int) -> np.ndarray:
-    """(N,) uint8 receiver states from one depth map (biased exactly like the base lookup)."""
-    from cityshade.shadows.shadowmap import offset_receivers, project
+def bracket_states(depth_map, scene, points_m, normals, own_poly, sun_direction,
+                   radius_texels: int, thin_map) -> np.ndarray:
+    """(N,) uint8 receiver states from one depth map.
 
-    q = offset_receivers(depth_map.view, points_m, normals, sun_direction, map_settings,
-                         max(radius_texels - 1, 0))
-    u, v, z = project(depth_map.view, q)
+    ``own_poly`` (N,) are the receivers' polygon indices (-1 for the ground plane); the surface
+    point is the shadow-ray origin (pushed off its surface by the tracer's tiny offset);
+    ``thin_map`` is :func:`thin_caster_map` of the same view.
+    """
+    from cityshade.shadows.shadowmap import project
+    from cityshade.trace import shadow_rays_from_surface
+
+    u_s, v_s, z_surface = project(depth_map.view,
+                                  shadow_rays_from_surface(points_m, normals, sun_direction))
     prim = np.asarray(depth_map.prim_id)
-    texel_obj = np.where(prim >= 0, np.asarray(scene.tri_object)[np.maximum(prim, 0)], -1)
-    state = np.empty(len(u), np.uint8)
-    _bracket_kernel(np.asarray(depth_map.depth), texel_obj.astype(np.int32),
-                    np.ascontiguousarray(u, np.float64), np.ascontiguousarray(v, np.float64),
-                    np.ascontiguousarray(z, np.float64), int(radius_texels), state)
+    safe = np.maximum(prim, 0)
+    texel_obj = np.where(prim >= 0, np.asarray(scene.tri_object)[safe], -1).astype(np.int32)
+    texel_poly = np.where(prim >= 0, np.asarray(scene.tri_polygon)[safe], -1).astype(np.int32)
+    state = np.empty(len(u_s), np.uint8)
+    _bracket_kernel(np.asarray(depth_map.depth), texel_obj, texel_poly, thin_map[0], thin_map[1],
+                    np.ascontiguousarray(u_s, np.float64), np.ascontiguousarray(v_s, np.float64),
+                    np.ascontiguousarray(z_surface, np.float64),
+                    np.ascontiguousarray(own_poly, np.int32), int(radius_texels), state)
     return state
 
 
@@ -183,12 +260,16 @@ class Hybrid:
         state = np.full(shape, SURE_SHADOW, np.uint8)
         maps = getattr(base, "maps", None) or []
         if settings.classifier == "bracket" and maps:
+            prim = np.asarray(surfaces.prim_id)
+            own_poly = np.where(prim >= 0, np.asarray(ctx.scene.tri_polygon)[np.maximum(prim, 0)],
+                                -1)
             for use in maps:
                 mask = use.pixels & faces
                 if mask.any():
+                    thin = thin_caster_map(ctx.scene, use.depth_map.view, ctx.t_days)
                     state[mask] = bracket_states(
                         use.depth_map, ctx.scene, surfaces.position_m[mask], normal[mask],
-                        ctx.sun.direction, use.settings, use.filter_radius_px + settings.extra_texels)
+                        own_poly[mask], ctx.sun.direction, settings.extra_texels, thin)
             classifier_used = "bracket"
         else:
             b = base.lit

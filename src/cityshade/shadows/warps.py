@@ -592,7 +592,7 @@ class Warped:
     def run(self, ctx):
         import time
 
-        from cityshade.shadows import ShadowResult
+        from cityshade.shadows import MapUse, ShadowResult
         from cityshade.shadows import shadowmap as sm
 
         map_settings = sm.ShadowMapSettings.from_options(ctx.options)
@@ -620,7 +620,8 @@ class Warped:
                             "warp": info, "depth_map": dmap.stats})
         diagnostics["shadow_s"] = time.perf_counter() - started
         self.view, self.depth_map = view, dmap
-        return ShadowResult(lit=lit, diagnostics=diagnostics)
+        return ShadowResult(lit=lit, diagnostics=diagnostics,
+                            maps=[MapUse(dmap, faces, 0, map_settings)])
 
 
 class PSM(Warped):
