@@ -61,6 +61,8 @@ def main(argv=None) -> dict:
     ap.add_argument("--side", type=int, default=0,
                     help="square window of this many pixels centred on the model (0: extent)")
     ap.add_argument("--every", default="10min")
+    ap.add_argument("--shadows", default="raytrace",
+                    help="technique: raytrace (exact) or e.g. hybrid:shadowmap (exact to 99.99 %%)")
     ap.add_argument("--triangles", type=int, default=1_000_000)
     ap.add_argument("--seed", type=int, default=7)
     ap.add_argument("--workdir", type=Path, default=REPO / "bench_out")
@@ -93,10 +95,11 @@ def main(argv=None) -> dict:
 
     def run(checkpoint=None):
         return B.sun_hours(scene, cam, instants, DAY_2000, weights_h=weights,
-                           checkpoint=checkpoint)
+                           checkpoint=checkpoint, technique=args.shadows)
 
     # Warm-up: compile every kernel on two sun positions.
-    B.sun_hours(scene, cam, instants[60:62], DAY_2000, weights_h=weights[60:62])
+    B.sun_hours(scene, cam, instants[60:62], DAY_2000, weights_h=weights[60:62],
+                technique=args.shadows)
     runs = [run() for _ in range(args.repeat)]
     totals = [r.timings_s["total_s"] for r in runs]
     shadow = [r.timings_s["shadow_s"] for r in runs]
@@ -114,6 +117,7 @@ def main(argv=None) -> dict:
         "machine": {"cpu_count": os.cpu_count(), "platform": platform.platform(),
                     "python": platform.python_version(), "numba_threads": numba.get_num_threads()},
         "scene": {"triangles": scene.n_triangles, "city_date": "2000-01-01"},
+        "technique": args.shadows,
         "map": {"width_px": cam.width_px, "height_px": cam.height_px,
                 "pixel_size_m": cam.pixel_size_m, "surface_px": valid_px},
         "day": {"date": "2024-06-21", "tz": "Europe/Berlin", "every": args.every,
