@@ -539,7 +539,7 @@ def box_planes(box, pad_m: float) -> np.ndarray:
     """(6, 4) planes of an axis-aligned box ``[[x0, y0, z0], [x1, y1, z1]]`` (inside >= -pad)."""
     b = np.asarray(box, dtype=np.float64)
     if b.shape != (2, 3) or not np.isfinite(b).all() or (b[1] < b[0]).any():
-        raise UsageError(f"casters_box must be [[x0, y0, z0], [x1, y1, z1]] with lo <= hi")
+        raise UsageError("casters_box must be [[x0, y0, z0], [x1, y1, z1]] with lo <= hi")
     planes = np.zeros((6, 4))
     for a in range(3):
         planes[2 * a, a] = 1.0
