@@ -332,3 +332,27 @@ def test_texel_measures_match_finite_difference_twins():
                                        normals.astype(np.float32))
         assert m["max"] == pytest.approx(slow_m.max(), rel=1e-5)
         assert m["mean"] == pytest.approx(slow_m.mean(), rel=1e-5)
+
+
+def test_depth_map_same_for_any_thread_count_and_tile_size(sample):
+    import numba
+
+    sun = sun_from_angles(250.0, 12.0)
+    box = sm.scene_bounds(sample)
+    corners = np.array([[box[i, 0], box[j, 1], box[k, 2]]
+                        for i in (0, 1) for j in (0, 1) for k in (0, 1)])
+    light = corners @ np.stack(sm.light_basis(sun.direction), axis=1)
+    lo, hi = light.min(axis=0), light.max(axis=0)
+    view = sm.ortho_view(sun.direction, (lo[0], hi[0]), (lo[1], hi[1]), (lo[2] - 1, hi[2] + 1),
+                         300, 200)
+    before = numba.get_num_threads()
+    try:
+        maps = []
+        for threads, tile in ((1, 64), (2, 64), (2, 16)):
+            numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
+            maps.append(sm.render_depth_map(sample, view, T_1990, tile_px=tile))
+    finally:
+        numba.set_num_threads(before)
+    for other in maps[1:]:
+        np.testing.assert_array_equal(other.prim_id, maps[0].prim_id)
+        np.testing.assert_array_equal(other.depth, maps[0].depth)
