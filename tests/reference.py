@@ -553,3 +553,17 @@ def reference_aliasing_px(light_clip, light_w, light_h, camera_clip, camera_w, c
         js = _reference_image_jacobian(camera_clip, camera_w, camera_h, p, t1, t2)
         out.append(np.linalg.norm(js @ np.linalg.inv(jl), axis=0).max())
     return np.array(out)
+
+
+def reference_nearest_feature_distance2(feature):
+    """Squared pixel distance from every pixel to the nearest True pixel of ``feature`` by brute
+    force over all feature pixels (-1 everywhere when there is none); twin of
+    :func:`cityshade.evaluate.nearest_feature`."""
+    feature = np.asarray(feature, bool)
+    h, w = feature.shape
+    fr, fc = np.nonzero(feature)
+    if fr.size == 0:
+        return np.full((h, w), -1, np.int64)
+    rows, cols = np.mgrid[0:h, 0:w]
+    d2 = (rows[..., None] - fr) ** 2 + (cols[..., None] - fc) ** 2
+    return d2.min(axis=-1).astype(np.int64)

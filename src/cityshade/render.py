@@ -112,6 +112,11 @@ def render_frame(scene, camera, t_days: float, sun, technique: str = "raytrace",
     warnings += list(shade_report.get("texture_warnings", []))
     diagnostics = dict(result.diagnostics)
     diagnostics["gbuffer"] = gbuf.stats
+    # What this scene and request let the frame leave out (`render -v`, one item per line).
+    from cityshade.evaluate import skipped_work
+
+    diagnostics["skipped"] = "\n         ".join(
+        skipped_work(scene, gbuf.stats, result.diagnostics, surfaces, sun)) or "nothing"
     if ground_info is not None:
         diagnostics["ground"] = ground_info
     return Frame(camera=camera, gbuffer=gbuf, surfaces=surfaces, lit=lit, rgb=rgb, sun=sun,

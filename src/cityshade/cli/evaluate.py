@@ -1,0 +1,135 @@
+"""``cityshade evaluate FILE``: shadow error against run time, and the stress set."""
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import click
+
+
+class _Bar:
+    """A one-line progress bar on a terminal's stderr (silent when stderr is not a terminal)."""
+
+    WIDTH = 30
+
+    def __init__(self, enabled: bool | None = None):
+        self.enabled = sys.stderr.isatty() if enabled is None else enabled
+        self.shown = False
+
+    def __call__(self, done: int, total: int, label: str) -> None:
+        if not self.enabled:
+            return
+        fill = int(self.WIDTH * done / max(total, 1))
+        sys.stderr.write(f"\r\033[K[{'#' * fill}{'.' * (self.WIDTH - fill)}] {done}/{total}  "
+                         f"{label[:60]}")
+        sys.stderr.flush()
+        self.shown = True
+
+    def close(self) -> None:
+        if self.shown:
+            sys.stderr.write("\r\033[K")
+            sys.stderr.flush()
+
+
+def _int_list(text: str, what: str) -> tuple[int, ...]:
+    try:
+        values = tuple(int(v) for v in text.split(",") if v.strip())
+    except ValueError:
+        raise click.BadParameter(f"{what} must be comma-separated integers, not {text!r}")
+    if not values:
+        raise click.BadParameter(f"{what} needs at least one value")
+    return values
+
+
+@click.command("evaluate")
+@click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
+@click.option("--views", default="overview,map", show_default=True,
+              help="Comma list: overview, map, or presets of configs/cameras.toml.")
+@click.option("--sun", "sun_text", help="Sun positions 'AZ,EL;AZ,EL' in degrees (azimuth "
+              "clockwise from true north). Default: '135,45;240,15'.")
+@click.option("--date", "date_text", help="City state (YYYY[-MM-DD]); with --times, the day "
+              "of the sun positions (default: today).")
+@click.option("--times", help="Local times HH:MM,HH:MM of --date: suns computed by SPA.")
+@click.option("--tz", help="IANA time zone of --times, e.g. Europe/Berlin.")
+@click.option("--shadows", "shadows", default="all", show_default=True,
+              help="'all' or a comma list of techniques (raytrace is always the reference).")
+@click.option("--sizes", default="1024,2048,4096", show_default=True,
+              help="Shadow-map sizes in texels (per cascade for csm).")
+@click.option("--size", default="1280x720", show_default=True,
+              help="WIDTHxHEIGHT of perspective views.")
+@click.option("--pixel-size", type=click.FloatRange(min=1e-3), help="Metres per pixel of the "
+              "map view (default: fits 2048 px).")
+@click.option("--repeat", type=click.IntRange(1, 100), default=3, show_default=True,
+              help="Timed runs after the warm-up run (median reported).")
+@click.option("--stress", is_flag=True, help="Run the fixed stress set and check its invariants "
+              "(FILE gives the model; PASS/FAIL per case; exit status 1 on any FAIL).")
+@click.option("--quick", is_flag=True, help="With --stress: small sizes, no 8192² maps.")
+@click.option("-o", "--output", type=click.Path(file_okay=False, path_type=Path),
+              help="Report folder (results.csv, report.md, plots, diff images); required "
+                   "without --stress.")
+def evaluate(file, views, sun_text, date_text, times, tz, shadows, sizes, size, pixel_size,
+             repeat, stress, quick, output):
+    """Error of every shadow technique against the exact ray-traced shadows of FILE (a
+    .cityshade scene or a CityGML file), and its run time, per view, sun and map size."""
+    from cityshade.cli.render import _size
+    from cityshade.errors import UsageError
+
+    if quick and not stress:
+        raise UsageError("--quick only applies to --stress")
+    bar = _Bar()
+    if stress:
+        from cityshade.stress import StressSettings, run_stress, stress_markdown
+
+        try:
+            report = run_stress(file, StressSettings.quick() if quick else StressSettings(),
+                                progress=bar, echo=lambda line: _echo_line(bar, line))
+        finally:
+            bar.close()
+        if output is not None:
+            output.mkdir(parents=True, exist_ok=True)
+            (output / "stress.md").write_text(stress_markdown(report) + "\n", encoding="utf-8")
+        failed = [c for c in report.cases if not c.passed]
+        click.echo(f"stress: {len(report.cases) - len(failed)} of {len(report.cases)} cases "
+                   f"passed" + (f"; FAILED: {', '.join(c.name for c in failed)}" if failed else ""))
+        if failed:
+            sys.exit(1)
+        return
+    if output is None:
+        raise UsageError("give the report folder with -o/--output")
+    import datetime as dt
+
+    from cityshade.citygml.temporal import days_to_iso, parse_user_date
+    from cityshade.evaluate import (EvaluateSettings, expand_techniques, make_camera, open_scene,
+                                    parse_suns, run_evaluation, suns_of_day, write_report)
+
+    if sun_text and times:
+        raise UsageError("give either --sun or --date/--times, not both")
+    techniques = expand_techniques(shadows)
+    settings = EvaluateSettings(repeat=repeat, sizes=_int_list(sizes, "--sizes"))
+    width, height = _size(size)
+    day = date_text or dt.date.today().isoformat()
+    city_days = parse_user_date(day.split("T")[0] if times else day, tz).city_days
+    scene = open_scene(file)
+    suns = (suns_of_day(day, times, tz, scene) if times
+            else parse_suns(sun_text or "135,45;240,15", scene))
+    cams = [(v, make_camera(scene, v, (width, height), pixel_size, city_days))
+            for v in (s.strip() for s in views.split(",")) if v]
+    if not cams:
+        raise UsageError("--views needs at least one view")
+    try:
+        evaluation = run_evaluation(scene, cams, suns, city_days, techniques, settings,
+                                    progress=bar, model=Path(file).name)
+    finally:
+        bar.close()
+    evaluation.meta["city_time"] = days_to_iso(city_days)
+    written = write_report(evaluation, output)
+    failed = [r for r in evaluation.rows if r.get("error")]
+    for r in failed:
+        click.echo(f"cityshade: warning: {r['technique']} map {r['map_px'] or '-'} on "
+                   f"{r['view']} {r['sun']}: {r['error']}", err=True)
+    click.echo(" ".join(str(p) for p in written))
+
+
+def _echo_line(bar: _Bar, line: str) -> None:
+    bar.close()
+    click.echo(line)
