@@ -159,6 +159,7 @@ class Cascaded:
         face_rows, face_cols = np.nonzero(faces)
         views = []
         map_uses = []
+        classify_only = bool(ctx.options.get("classify_only", False))
         for k in range(count):
             sel = slice_of == k
             entry = {"cascade": k, "near_m": float(splits[k]), "far_m": float(splits[k + 1]),
@@ -175,14 +176,19 @@ class Cascaded:
             view = sm.LightView(m, size, size, f"csm-{k}")
             dmap = sm.render_depth_map(ctx.scene, view, ctx.t_days)
             layers[k] = dmap.depth
-            lit_k, texel_k = warps.lookup(dmap, r, normals[sel], sun, map_settings,
-                                          ctx.options)
-            lit_faces[sel] = lit_k
-            texel_all[sel] = texel_k
             mask = np.zeros(surfaces.valid.shape, bool)
             mask[face_rows[sel], face_cols[sel]] = True
             map_uses.append(MapUse(dmap, mask, 0, map_settings))
-            alias = sm.aliasing_m(view, ctx.camera, surfaces, mask=mask)
+            # Under ``hybrid`` only the maps are wanted (option ``classify_only``).
+            if classify_only:
+                alias = {"max": 0.0, "mean": 0.0}
+                texel_k = np.zeros(int(sel.sum()))
+            else:
+                lit_k, texel_k = warps.lookup(dmap, r, normals[sel], sun, map_settings,
+                                              ctx.options)
+                lit_faces[sel] = lit_k
+                alias = sm.aliasing_m(view, ctx.camera, surfaces, mask=mask)
+            texel_all[sel] = texel_k
             entry.update({"map_px": (size, size), "warp": info,
                           "texel_m": float(np.median(texel_k)),
                           "aliasing_m": {"max": alias["max"], "mean": alias["mean"]},

@@ -33,6 +33,8 @@ those misses against ``raytrace``.
 """
 from __future__ import annotations
 
+import dataclasses
+import math
 import time
 from dataclasses import dataclass
 
@@ -82,18 +84,51 @@ THIN_TEXELS = 2.0
 
 
 @njit(cache=True)
-def _splat_thin(u, v, z, poly, width, height, thin_depth, thin_poly):
-    """Write each thin triangle's nearest depth over its texel bounding box grown by one texel."""
-    for i in range(u.shape[0]):
-        c0 = max(int(np.floor(min(u[i, 0], u[i, 1], u[i, 2]))) - 1, 0)
-        c1 = min(int(np.floor(max(u[i, 0], u[i, 1], u[i, 2]))) + 1, width - 1)
-        r0 = max(int(np.floor(min(v[i, 0], v[i, 1], v[i, 2]))) - 1, 0)
-        r1 = min(int(np.floor(max(v[i, 0], v[i, 1], v[i, 2]))) + 1, height - 1)
-        zmin = np.float32(min(z[i, 0], z[i, 1], z[i, 2]))
+def _thin_kernel(vertices, triangles, present, poly, m, width, height, thin_depth, thin_poly):
+    """Project every present triangle into the light view; splat the thin ones' nearest depth
+    over their texel bounding box grown by one texel (serial: the splats overlap)."""
+    for i in range(triangles.shape[0]):
+        if not present[i]:
+            continue
+        us = np.empty(3)
+        vs = np.empty(3)
+        zs = np.empty(3)
+        ok = True
+        for k in range(3):
+            q = triangles[i, k]
+            x = np.float64(vertices[q, 0])
+            y = np.float64(vertices[q, 1])
+            z = np.float64(vertices[q, 2])
+            cw = m[12] * x + m[13] * y + m[14] * z + m[15]
+            if not cw > 0.0:
+                ok = False
+                break
+            us[k] = ((m[0] * x + m[1] * y + m[2] * z + m[3]) / cw + 1.0) * 0.5 * width
+            vs[k] = (1.0 - (m[4] * x + m[5] * y + m[6] * z + m[7]) / cw) * 0.5 * height
+            zs[k] = (m[8] * x + m[9] * y + m[10] * z + m[11]) / cw
+        if not ok:
+            continue
+        # Light-space height in texels: 2·area / longest edge.
+        e1u, e1v = us[1] - us[0], vs[1] - vs[0]
+        e2u, e2v = us[2] - us[0], vs[2] - vs[0]
+        e3u, e3v = us[2] - us[1], vs[2] - vs[1]
+        area2 = abs(e1u * e2v - e2u * e1v)
+        longest = math.sqrt(max(e1u * e1u + e1v * e1v, e2u * e2u + e2v * e2v,
+                                e3u * e3u + e3v * e3v))
+        if longest > 0.0 and area2 / longest >= THIN_TEXELS:
+            continue
+        zmin = min(zs[0], zs[1], zs[2])
+        if not zmin <= 1.0:
+            continue
+        c0 = max(int(math.floor(min(us[0], us[1], us[2]))) - 1, 0)
+        c1 = min(int(math.floor(max(us[0], us[1], us[2]))) + 1, width - 1)
+        r0 = max(int(math.floor(min(vs[0], vs[1], vs[2]))) - 1, 0)
+        r1 = min(int(math.floor(max(vs[0], vs[1], vs[2]))) + 1, height - 1)
+        z32 = np.float32(zmin)
         for r in range(r0, r1 + 1):
             for c in range(c0, c1 + 1):
-                if zmin < thin_depth[r, c]:
-                    thin_depth[r, c] = zmin
+                if z32 < thin_depth[r, c]:
+                    thin_depth[r, c] = z32
                     thin_poly[r, c] = poly[i]
 
 
@@ -101,43 +136,27 @@ def thin_caster_map(scene, view, t_days: float) -> tuple[np.ndarray, np.ndarray]
     """(depth (H, W) float32, polygon (H, W) int32) of the triangles present at ``t_days`` that
     are thinner than :data:`THIN_TEXELS` in the light view — the casters a point-sampled depth
     map may miss entirely (walls seen edge-on by a low sun)."""
-    from cityshade.shadows.shadowmap import project
-
     h, w = view.height_px, view.width_px
     thin_depth = np.full((h, w), np.inf, np.float32)
     thin_poly = np.full((h, w), -1, np.int32)
     present = ((np.asarray(scene.tri_t_begin_days) <= t_days)
                & (t_days < np.asarray(scene.tri_t_end_days)))
-    tri = np.asarray(scene.triangles)[present]
-    if not len(tri):
-        return thin_depth, thin_poly
-    u, v, z = project(view, np.asarray(scene.vertices, np.float64)[tri.ravel()])
-    u, v, z = u.reshape(-1, 3), v.reshape(-1, 3), z.reshape(-1, 3)
-    # Light-space height of each triangle in texels: 2·area / longest edge.
-    e1u, e1v = u[:, 1] - u[:, 0], v[:, 1] - v[:, 0]
-    e2u, e2v = u[:, 2] - u[:, 0], v[:, 2] - v[:, 0]
-    area2 = np.abs(e1u * e2v - e2u * e1v)
-    longest = np.sqrt(np.maximum.reduce([e1u ** 2 + e1v ** 2, e2u ** 2 + e2v ** 2,
-                                         (u[:, 2] - u[:, 1]) ** 2 + (v[:, 2] - v[:, 1]) ** 2]))
-    with np.errstate(invalid="ignore", divide="ignore"):
-        height_texels = np.where(longest > 0, area2 / longest, 0.0)
-    finite = np.isfinite(u).all(axis=1) & np.isfinite(v).all(axis=1) & np.isfinite(z).all(axis=1)
-    thin = finite & (height_texels < THIN_TEXELS) & (z.min(axis=1) <= 1.0)
-    if thin.any():
-        poly = np.asarray(scene.tri_polygon)[present][thin].astype(np.int32)
-        _splat_thin(np.ascontiguousarray(u[thin]), np.ascontiguousarray(v[thin]),
-                    np.ascontiguousarray(z[thin]), poly, w, h, thin_depth, thin_poly)
+    _thin_kernel(scene.vertices, scene.triangles, present,
+                 np.asarray(scene.tri_polygon, np.int32),
+                 np.ascontiguousarray(view.clip_from_world.reshape(16)), w, h,
+                 thin_depth, thin_poly)
     return thin_depth, thin_poly
 
 
 @njit(cache=True)
 def _bracket_kernel(depth, texel_obj, texel_poly, thin_depth, thin_poly, u_s, v_s, z_surface,
-                    own_poly, radius, state):
+                    dz_du, dz_dv, tol, own_poly, radius, state):
     """Classify receivers from the depth-map texels around their true surface points.
 
-    A texel occludes a receiver when its caster lies in front of the receiver's surface point
-    (``z_surface``, the shadow-ray origin) and belongs to another polygon (a planar polygon
-    cannot shadow itself; its texels straddle the true depth on a slope). Surely lit: no texel
+    A texel occludes a receiver when its caster lies in front of the receiver's tangent plane
+    at that texel (``z_surface + dz_du Δu + dz_dv Δv - tol``) and belongs to another polygon.
+    Surfaces in the receiver's own plane (its polygon, coplanar neighbours on a roof slope)
+    therefore never count, while anything rising above the plane does. Surely lit: no texel
     within ``radius`` occludes, in the depth map nor in the thin-caster map. Surely in shadow:
     every texel within ``radius`` occludes and all belong to one object (so no gap between
     casters lets light through). Else uncertain. No bias is involved: the decision is about the
@@ -164,9 +183,12 @@ def _bracket_kernel(depth, texel_obj, texel_poly, thin_depth, thin_poly, u_s, v_
                 if row < 0 or row >= h or col < 0 or col >= w:
                     clear += 1
                     continue
-                if thin_depth[row, col] <= z_surface[i] and thin_poly[row, col] != own_poly[i]:
+                # The receiver's plane at this texel's centre.
+                plane = (z_surface[i] + dz_du[i] * (col + 0.5 - u_s[i])
+                         + dz_dv[i] * (row + 0.5 - v_s[i]) - tol[i])
+                if thin_depth[row, col] < plane and thin_poly[row, col] != own_poly[i]:
                     thin_occluding += 1
-                if depth[row, col] <= z_surface[i] and texel_poly[row, col] != own_poly[i]:
+                if depth[row, col] < plane and texel_poly[row, col] != own_poly[i]:
                     occluding += 1
                     obj = texel_obj[row, col]
                     if first_obj == -2:
@@ -183,6 +205,38 @@ def _bracket_kernel(depth, texel_obj, texel_poly, thin_depth, thin_poly, u_s, v_
             state[i] = UNCERTAIN
 
 
+#: Depth tolerance of the coplanarity test: the float32 depth map's rounding (≈ 1.2e-7 per NDC
+#: unit near 1) with margin, plus 1 % of the plane's depth change per texel (texel centres and
+#: the tangent-plane fit are exact only to that).
+_PLANE_TOL_NDC = 1e-6
+_PLANE_TOL_SLOPE = 0.01
+
+
+def _plane_gradient(view, points, normals, u0, v0, z0):
+    """(dz/du, dz/dv) of each receiver's tangent plane in the light view (texel units)."""
+    from cityshade.shadows.shadowmap import project
+
+    # Two tangents of each receiver's plane, ~1 cm long (local linearisation of warped views).
+    helper = np.where(np.abs(normals[:, 2:3]) < 0.9, [[0.0, 0.0, 1.0]], [[1.0, 0.0, 0.0]])
+    t1 = np.cross(normals, helper)
+    t1 /= np.linalg.norm(t1, axis=1, keepdims=True)
+    t2 = np.cross(normals, t1)
+    step = 0.01
+    u1, v1, z1 = project(view, points + step * t1)
+    u2, v2, z2 = project(view, points + step * t2)
+    a, b, c, d = u1 - u0, u2 - u0, v1 - v0, v2 - v0
+    det = a * d - b * c
+    with np.errstate(divide="ignore", invalid="ignore"):
+        gu = ((z1 - z0) * d - (z2 - z0) * c) / det
+        gv = ((z2 - z0) * a - (z1 - z0) * b) / det
+    # A plane holding the light's rays (seen edge-on) has no gradient: fall back to the
+    # own-polygon rule alone.
+    bad = ~(np.isfinite(gu) & np.isfinite(gv))
+    gu[bad] = 0.0
+    gv[bad] = 0.0
+    return gu, gv
+
+
 def bracket_states(depth_map, scene, points_m, normals, own_poly, sun_direction,
                    radius_texels: int, thin_map) -> np.ndarray:
     """(N,) uint8 receiver states from one depth map.
@@ -194,16 +248,19 @@ def bracket_states(depth_map, scene, points_m, normals, own_poly, sun_direction,
     from cityshade.shadows.shadowmap import project
     from cityshade.trace import shadow_rays_from_surface
 
-    u_s, v_s, z_surface = project(depth_map.view,
-                                  shadow_rays_from_surface(points_m, normals, sun_direction))
+    origins = shadow_rays_from_surface(points_m, normals, sun_direction)
+    u_s, v_s, z_surface = project(depth_map.view, origins)
+    gu, gv = _plane_gradient(depth_map.view, origins, np.asarray(normals, np.float64),
+                             u_s, v_s, z_surface)
+    tol = _PLANE_TOL_NDC + _PLANE_TOL_SLOPE * (np.abs(gu) + np.abs(gv))
     prim = np.asarray(depth_map.prim_id)
     safe = np.maximum(prim, 0)
     texel_obj = np.where(prim >= 0, np.asarray(scene.tri_object)[safe], -1).astype(np.int32)
     texel_poly = np.where(prim >= 0, np.asarray(scene.tri_polygon)[safe], -1).astype(np.int32)
     state = np.empty(len(u_s), np.uint8)
+    f64 = lambda a: np.ascontiguousarray(a, np.float64)  # noqa: E731
     _bracket_kernel(np.asarray(depth_map.depth), texel_obj, texel_poly, thin_map[0], thin_map[1],
-                    np.ascontiguousarray(u_s, np.float64), np.ascontiguousarray(v_s, np.float64),
-                    np.ascontiguousarray(z_surface, np.float64),
+                    f64(u_s), f64(v_s), f64(z_surface), f64(gu), f64(gv), f64(tol),
                     np.ascontiguousarray(own_poly, np.int32), int(radius_texels), state)
     return state
 
@@ -243,7 +300,11 @@ class Hybrid:
 
         settings = HybridSettings.from_options(ctx.options)
         t0 = time.perf_counter()
-        base = self.base.run(ctx)
+        # The bracket classifier needs the base's map(s) only, not its filtered answer.
+        base_ctx = ctx
+        if settings.classifier == "bracket":
+            base_ctx = dataclasses.replace(ctx, options={**ctx.options, "classify_only": True})
+        base = self.base.run(base_ctx)
         t1 = time.perf_counter()
         surfaces = ctx.surfaces
         shape = surfaces.valid.shape

@@ -812,10 +812,17 @@ class ShadowMap:
         t1 = time.perf_counter()
         depth_map = render_depth_map(ctx.scene, view, ctx.t_days)
         t2 = time.perf_counter()
-        lit[faces] = shadow_lookup(depth_map, points, normals, ctx.sun.direction, settings,
-                                   self.mode)
+        # Under ``hybrid`` only the map is wanted (option ``classify_only``): no lookup and no
+        # per-pixel diagnostics.
+        classify_only = bool(ctx.options.get("classify_only", False))
+        if not classify_only:
+            lit[faces] = shadow_lookup(depth_map, points, normals, ctx.sun.direction, settings,
+                                       self.mode)
         t3 = time.perf_counter()
-        diagnostics.update(map_diagnostics([view], ctx, points, normals, faces))
+        if classify_only:
+            diagnostics["map_px"] = [(view.width_px, view.height_px)]
+        else:
+            diagnostics.update(map_diagnostics([view], ctx, points, normals, faces))
         t4 = time.perf_counter()
         diagnostics["shadow_s"] = t3 - t0
         diagnostics["timings_s"] = {"fit_s": t1 - t0, "depth_s": t2 - t1, "lookup_s": t3 - t2,

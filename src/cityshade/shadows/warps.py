@@ -612,12 +612,15 @@ class Warped:
         m, info = warp_matrix(self.warp, ctx.camera, ctx.sun.direction, receivers, casters)
         view = sm.LightView(m, size, size, self.name)
         dmap = sm.render_depth_map(ctx.scene, view, ctx.t_days)
-        lit_faces, texel_m = lookup(dmap, receivers, normals, ctx.sun.direction, map_settings)
-        lit[faces] = lit_faces
-        alias = sm.aliasing_m(view, ctx.camera, ctx.surfaces, mask=faces)
-        diagnostics.update({"map_px": [(size, size)], "texel_m": float(np.median(texel_m)),
-                            "aliasing_m": {"max": alias["max"], "mean": alias["mean"]},
-                            "warp": info, "depth_map": dmap.stats})
+        diagnostics.update({"map_px": [(size, size)], "warp": info, "depth_map": dmap.stats})
+        # Under ``hybrid`` only the map is wanted (option ``classify_only``).
+        if not ctx.options.get("classify_only", False):
+            lit_faces, texel_m = lookup(dmap, receivers, normals, ctx.sun.direction,
+                                        map_settings)
+            lit[faces] = lit_faces
+            alias = sm.aliasing_m(view, ctx.camera, ctx.surfaces, mask=faces)
+            diagnostics.update({"texel_m": float(np.median(texel_m)),
+                                "aliasing_m": {"max": alias["max"], "mean": alias["mean"]}})
         diagnostics["shadow_s"] = time.perf_counter() - started
         self.view, self.depth_map = view, dmap
         return ShadowResult(lit=lit, diagnostics=diagnostics,
