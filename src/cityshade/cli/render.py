@@ -49,7 +49,21 @@ def _size(text: str) -> tuple[int, int]:
 @click.option("--pixel-size", type=click.FloatRange(min=1e-3, min_open=False),
               help="Metres per pixel of the map view (default: fits 2048 px).")
 @click.option("--shadows", "technique", default="raytrace", show_default=True,
-              help="Shadow technique (raytrace).")
+              help="Shadow technique: raytrace (exact reference); shadowmap, pcf, vsm (uniform "
+              "map: bias, percentage-closer filtering, variance shadow map); psm, lispsm, xpsm "
+              "(perspective warps); csm or csm:WARP (cascades); hybrid[:BASE] (a map classifies, "
+              "exact rays decide the uncertain pixels; default base vsm). Append +smooth for "
+              "the depth-aware screen-space Gaussian.")
+@click.option("--smooth", is_flag=True, help="Depth-aware screen-space smoothing of the shadow "
+              "(same as --shadows NAME+smooth).")
+@click.option("--map-px", type=click.IntRange(16, 16384),
+              help="Shadow-map side in texels (map techniques; default 2048).")
+@click.option("--bias", type=click.FloatRange(min=0), help="Constant depth bias in metres.")
+@click.option("--slope-bias", type=click.FloatRange(min=0), help="Slope-scaled bias (texels).")
+@click.option("--max-bias", type=click.FloatRange(min=0), help="Largest slope bias in metres.")
+@click.option("--pcf-kernel", type=click.IntRange(1, 63), help="PCF kernel side (odd).")
+@click.option("--vsm-blur", type=click.IntRange(0, 64), help="VSM filter radius in texels.")
+@click.option("--cascades", type=click.IntRange(1, 16), help="CSM cascade count (default 4).")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, path_type=Path), required=True,
               help="EXR with colour, shadow, Z, normals, primid, objid and provenance.")
 @click.option("--png", type=click.Path(dir_okay=False, path_type=Path), help="sRGB picture.")
@@ -62,7 +76,8 @@ def _size(text: str) -> tuple[int, int]:
 @click.option("--no-sky", is_flag=True, help="Black background instead of the sky gradient.")
 @click.option("-v", "--verbose", is_flag=True, help="Stage timings and technique diagnostics.")
 def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_elevation, camera,
-           eye, target, fov, size, pixel_size, technique, output, png, mask, geotiff, ground,
+           eye, target, fov, size, pixel_size, technique, smooth, map_px, bias, slope_bias,
+           max_bias, pcf_kernel, vsm_blur, cascades, output, png, mask, geotiff, ground,
            no_sky, verbose):
     """Render FILE (a .cityshade scene) as the city stood on --date, lit by the sun at
     --sun-azimuth/--sun-elevation or, for a --date with a time, by the sun computed for the
@@ -77,7 +92,12 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     from cityshade.shadows import get_technique
     from cityshade.sun import sun_from_angles
 
+    if smooth and not technique.endswith("+smooth"):
+        technique += "+smooth"
     get_technique(technique)  # unknown names fail before any work
+    options = {k: v for k, v in (("map_px", map_px), ("bias", bias), ("slope_bias", slope_bias),
+                                 ("max_bias", max_bias), ("pcf_kernel", pcf_kernel),
+                                 ("vsm_blur", vsm_blur), ("cascades", cascades)) if v is not None}
     if (sun_azimuth is None) != (sun_elevation is None):
         raise UsageError("give both --sun-azimuth and --sun-elevation")
     if (eye is None) != (target is None):
@@ -102,7 +122,8 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
 
         sun = sun_from_instant(user_date.instant_utc, scene.crs, scene.origin_m,
                                SpaSettings(refraction=not no_refraction))
-    frame = render_frame(scene, cam, user_date.city_days, sun, technique, sky=not no_sky,
+    frame = render_frame(scene, cam, user_date.city_days, sun, technique, options=options,
+                         sky=not no_sky,
                          ground=ground)
     for warning in frame.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
