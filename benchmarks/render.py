@@ -26,6 +26,9 @@ Usage: python benchmarks/render.py [--repeat 5] [--size 1920x1080] [--views over
        [--triangles 1000000] [--workdir bench_out] [--json out.json]
        python benchmarks/render.py --shadow-map [--size 4096] [--repeat 5] [--sun 135,30]
        (the light-space depth pass against llvmpipe depth-only; see shadow_map_main)
+       python benchmarks/render.py --techniques [--size 1920x1080] [--map-side 2048]
+       [--repeat 3] [--sun 135,30] (every technique: shadow-stage time and error against
+       raytrace, and the full raytrace frame; see techniques_main)
 """
 from __future__ import annotations
 
@@ -393,8 +396,102 @@ def shadow_map_main(argv=None) -> dict:
     return report
 
 
+# --- every technique: full frame, shadow stage and error against raytrace ---------------------
+
+TECHNIQUES = ["raytrace", "shadowmap", "pcf", "vsm", "psm", "lispsm", "xpsm", "csm",
+              "csm:lispsm", "vsm+smooth", "hybrid:shadowmap", "hybrid:vsm", "hybrid:lispsm",
+              "hybrid:csm"]
+
+
+def techniques_main(argv=None) -> dict:
+    """The overview at --size and the top-down map at --map-side² of the 1M-triangle city:
+    the full exact ``raytrace`` frame (G-buffer + resolve + shadow rays + shading, ms), and for
+    every technique its shadow-stage time (median of --repeat runs after a warm-up) and its
+    misclassified pixels against ``raytrace`` on the same pixels (false-lit, false-shadow)."""
+    ap = argparse.ArgumentParser(description=techniques_main.__doc__.split("\n")[0])
+    ap.add_argument("--size", default="1920x1080")
+    ap.add_argument("--map-side", type=int, default=2048)
+    ap.add_argument("--repeat", type=int, default=3)
+    ap.add_argument("--sun", default="135,30", help="azimuth,elevation in degrees")
+    ap.add_argument("--techniques", default=",".join(TECHNIQUES))
+    ap.add_argument("--triangles", type=int, default=1_000_000)
+    ap.add_argument("--seed", type=int, default=7)
+    ap.add_argument("--workdir", type=Path, default=REPO / "bench_out")
+    ap.add_argument("--date-days", type=float, default=DAY_2000)
+    ap.add_argument("--json", type=Path)
+    args = ap.parse_args(argv)
+    import numpy as np
+
+    from cityshade.raster.camera import map_view, overview
+    from cityshade.render import render_frame
+    from cityshade.scenefile import load_scene
+    from cityshade.sun import sun_from_angles
+
+    scene = load_scene(ensure_scene(args.workdir, args.triangles, args.seed), verify=False)
+    w, h = (int(v) for v in args.size.split("x"))
+    az, el = (float(v) for v in args.sun.split(","))
+    sun = sun_from_angles(az, el, scene.crs, scene.origin_m)
+    # A map of --map-side² pixels centred on the model.
+    lo = scene.vertices.min(axis=0).astype(float)
+    hi = scene.vertices.max(axis=0).astype(float)
+    side_m = float(max(hi[0] - lo[0], hi[1] - lo[1]))
+    px = side_m / args.map_side
+    cx, cy = 0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])
+    views = {"overview": overview(scene, w, h),
+             "map": map_view(scene, px, bbox=(cx - side_m / 2, cy - side_m / 2,
+                                              cx + side_m / 2, cy + side_m / 2))}
+    report = {"benchmark": "render-techniques", "commit": _commit(), "machine": _machine(),
+              "triangles": scene.n_triangles, "sun": [az, el], "views": {}}
+    for view_name, cam in views.items():
+        t_frame = []
+        ref = None
+        for _ in range(args.repeat + 1):
+            t0 = time.perf_counter()
+            ref = render_frame(scene, cam, args.date_days, sun, "raytrace")
+            t_frame.append(time.perf_counter() - t0)
+        valid = ref.surfaces.valid
+        truth = ref.lit >= 0.5
+        rows = {}
+        for name in args.techniques.split(","):
+            times, frame = [], None
+            for _ in range(args.repeat + 1):
+                frame = render_frame(scene, cam, args.date_days, sun, name)
+                times.append(frame.timings_s["shadow_s"])
+            got = frame.lit >= 0.5
+            d = frame.diagnostics
+            rows[name] = {
+                "shadow_ms_median": 1000 * statistics.median(times[1:]),
+                "first_run_ms": 1000 * times[0],
+                "wrong_pct": 100 * float(((got != truth) & valid).sum() / valid.sum()),
+                "false_lit_pct": 100 * float((got & ~truth & valid).sum() / valid.sum()),
+                "false_shadow_pct": 100 * float((~got & truth & valid).sum() / valid.sum()),
+                "traced_share": d.get("traced_share"),
+                "aliasing_m": d.get("aliasing_m"), "texel_m": d.get("texel_m"),
+                "map_px": d.get("map_px")}
+        report["views"][view_name] = {
+            "pixels": [cam.width_px, cam.height_px], "surface_px": int(valid.sum()),
+            "raytrace_frame_ms_median": 1000 * statistics.median(t_frame[1:]),
+            "raytrace_frame_stages_ms": {k: 1000 * v for k, v in ref.timings_s.items()},
+            "techniques": rows}
+    print(json.dumps(report, indent=2, default=float))
+    for view_name, v in report["views"].items():
+        print(f"\n{view_name} {v['pixels'][0]}x{v['pixels'][1]}, {v['surface_px']:,} surface px; "
+              f"full raytrace frame {v['raytrace_frame_ms_median']:.0f} ms")
+        print(f"{'technique':<18} {'shadow ms':>10} {'wrong %':>9} {'false-lit %':>12} "
+              f"{'false-shadow %':>15} {'traced %':>9}")
+        for name, r in v["techniques"].items():
+            traced = "" if r["traced_share"] is None else f"{100 * r['traced_share']:.1f}"
+            print(f"{name:<18} {r['shadow_ms_median']:>10.0f} {r['wrong_pct']:>9.4f} "
+                  f"{r['false_lit_pct']:>12.4f} {r['false_shadow_pct']:>15.4f} {traced:>9}")
+    if args.json:
+        args.json.write_text(json.dumps(report, indent=2, default=float))
+    return report
+
+
 if __name__ == "__main__":
     if "--shadow-map" in sys.argv[1:]:
         shadow_map_main([a for a in sys.argv[1:] if a != "--shadow-map"])
+    elif "--techniques" in sys.argv[1:] and sys.argv[1] == "--techniques":
+        techniques_main(sys.argv[2:])
     else:
         main()
