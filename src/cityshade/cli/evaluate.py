@@ -81,7 +81,7 @@ def evaluate(file, views, sun_text, date_text, times, tz, shadows, sizes, size, 
         from cityshade.stress import StressSettings, run_stress, stress_markdown
 
         try:
-            report = run_stress(file, StressSettings.quick() if quick else StressSettings(),
+            report = run_stress(file, StressSettings.quick_set() if quick else StressSettings(),
                                 progress=bar, echo=lambda line: _echo_line(bar, line))
         finally:
             bar.close()
