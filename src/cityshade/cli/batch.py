@@ -5,6 +5,8 @@ from pathlib import Path
 
 import click
 
+from cityshade.cli.options import camera_options, make_camera, parse_size, parse_triple
+
 
 @click.command("batch")
 @click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
@@ -22,15 +24,7 @@ import click
 @click.option("--every-day", type=int, default=1, show_default=True, help="Days between days.")
 @click.option("--city-date", help="State of the city (default: --date); the city does not "
               "change during a run.")
-@click.option("--camera", default="map", show_default=True,
-              help="map, overview, or a preset of configs/cameras.toml.")
-@click.option("--eye", help="Camera position X,Y,Z in the model CRS (metres); with --target.")
-@click.option("--target", help="Point looked at, X,Y,Z in the model CRS (metres).")
-@click.option("--fov", type=click.FloatRange(1, 170), default=45.0, show_default=True,
-              help="Vertical field of view in degrees (perspective).")
-@click.option("--size", default="1280x720", show_default=True, help="WIDTHxHEIGHT (perspective).")
-@click.option("--pixel-size", type=click.FloatRange(min=1e-3),
-              help="Metres per pixel of the map view (default: fits 2048 px).")
+@camera_options("map")
 @click.option("--shadows", "technique", default="raytrace", show_default=True,
               help="Shadow technique for the map (raytrace).")
 @click.option("--ground", help="Ground plane where the model has no surface: min, auto or a "
@@ -58,7 +52,6 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     import numpy as np
 
     from cityshade import batch as B
-    from cityshade.cli.render import _camera, _size, _triple
     from cityshade.citygml.temporal import parse_user_date
     from cityshade.errors import OutputError, UsageError
     from cityshade.scenefile import load_scene
@@ -72,8 +65,7 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
         SampleSettings(samples_per_m2=samples_per_m2)
     if (eye is None) != (target is None):
         raise UsageError("give both --eye and --target, or neither")
-    eye_v, target_v = _triple(eye, "--eye"), _triple(target, "--target")
-    width, height = _size(size)
+    parse_triple(eye, "--eye"), parse_triple(target, "--target"), parse_size(size)  # fail early
     first_day = _day(date_text, "--date")
     to_date = _day(to_date_text, "--to-date") if to_date_text else None
     every_s = B.parse_duration_s(every_text)
@@ -81,7 +73,7 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
                          every_s, tz, days=days, to_date=to_date, every_day=every_day)
     city = parse_user_date(city_date or first_day.isoformat())
     scene = load_scene(file)
-    cam = _camera(scene, camera, eye_v, target_v, fov, width, height, pixel_size)
+    cam = make_camera(scene, camera, eye, target, fov, size, pixel_size)
 
     params = {
         "file": Path(file).name,

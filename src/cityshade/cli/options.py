@@ -65,3 +65,72 @@ class Progress:
         if self.enabled and self.stage is not None:
             sys.stderr.write("\r\033[K")
             sys.stderr.flush()
+
+
+# --- camera options shared by render, batch and evaluate ---------------------------------------
+
+def camera_options(default_camera: str):
+    """Decorator adding --camera, --eye, --target, --fov, --size and --pixel-size."""
+    def decorate(func):
+        for option in reversed([
+            click.option("--camera", default=default_camera, show_default=True,
+                         help="overview, map, or a preset of configs/cameras.toml."),
+            click.option("--eye", help="Camera position X,Y,Z in the model CRS (metres); "
+                         "with --target."),
+            click.option("--target", help="Point looked at, X,Y,Z in the model CRS (metres)."),
+            click.option("--fov", type=click.FloatRange(1, 170), default=45.0, show_default=True,
+                         help="Vertical field of view in degrees (perspective)."),
+            click.option("--size", default="1280x720", show_default=True,
+                         help="WIDTHxHEIGHT (perspective)."),
+            click.option("--pixel-size", type=click.FloatRange(min=1e-3),
+                         help="Metres per pixel of the map view (default: fits 2048 px)."),
+        ]):
+            func = option(func)
+        return func
+    return decorate
+
+
+def parse_triple(text: str | None, what: str):
+    """'X,Y,Z' → [x, y, z] (None stays None)."""
+    if text is None:
+        return None
+    try:
+        values = [float(v) for v in text.split(",")]
+    except ValueError:
+        values = []
+    if len(values) != 3:
+        raise click.BadParameter(f"{what} must be X,Y,Z in metres, e.g. 690100,5336000,600")
+    return values
+
+
+def parse_size(text: str) -> tuple[int, int]:
+    """'WIDTHxHEIGHT' → (width, height) in pixels."""
+    try:
+        w, h = (int(v) for v in text.lower().split("x"))
+    except ValueError:
+        raise click.BadParameter(f"--size must be WIDTHxHEIGHT, e.g. 1280x720, not {text!r}")
+    if not (1 <= w <= 16384 and 1 <= h <= 16384):
+        raise click.BadParameter("--size must be between 1x1 and 16384x16384 pixels")
+    return w, h
+
+
+def make_camera(scene, name, eye, target, fov, size, pixel_size):
+    """The camera the shared options describe (eye/target in model CRS coordinates)."""
+    import numpy as np
+
+    from cityshade.errors import UsageError
+    from cityshade.raster import camera as cams
+
+    eye_v, target_v = parse_triple(eye, "--eye"), parse_triple(target, "--target")
+    if (eye_v is None) != (target_v is None):
+        raise UsageError("give both --eye and --target, or neither")
+    width, height = parse_size(size)
+    if eye_v is not None:
+        return cams.perspective(np.asarray(eye_v) - scene.origin_m,
+                                np.asarray(target_v) - scene.origin_m, vfov_deg=fov,
+                                width_px=width, height_px=height, scene=scene)
+    if name == "overview":
+        return cams.overview(scene, width, height)
+    if name == "map":
+        return cams.map_view(scene, pixel_size)
+    return cams.preset(name, scene, width, height)

@@ -5,27 +5,7 @@ from pathlib import Path
 
 import click
 
-
-def _triple(text: str | None, what: str):
-    if text is None:
-        return None
-    try:
-        values = [float(v) for v in text.split(",")]
-    except ValueError:
-        values = []
-    if len(values) != 3:
-        raise click.BadParameter(f"{what} must be X,Y,Z in metres, e.g. 690100,5336000,600")
-    return values
-
-
-def _size(text: str) -> tuple[int, int]:
-    try:
-        w, h = (int(v) for v in text.lower().split("x"))
-    except ValueError:
-        raise click.BadParameter(f"--size must be WIDTHxHEIGHT, e.g. 1280x720, not {text!r}")
-    if not (1 <= w <= 16384 and 1 <= h <= 16384):
-        raise click.BadParameter("--size must be between 1x1 and 16384x16384 pixels")
-    return w, h
+from cityshade.cli.options import camera_options, make_camera, parse_size, parse_triple
 
 
 @click.command("render")
@@ -39,15 +19,7 @@ def _size(text: str) -> tuple[int, int]:
               "atmospheric refraction).")
 @click.option("--sun-azimuth", type=float, help="Degrees clockwise from true north.")
 @click.option("--sun-elevation", type=float, help="Degrees above the horizon.")
-@click.option("--camera", default="overview", show_default=True,
-              help="overview, map, or a preset of configs/cameras.toml.")
-@click.option("--eye", help="Camera position X,Y,Z in the model CRS (metres); with --target.")
-@click.option("--target", help="Point looked at, X,Y,Z in the model CRS (metres).")
-@click.option("--fov", type=click.FloatRange(1, 170), default=45.0, show_default=True,
-              help="Vertical field of view in degrees (perspective).")
-@click.option("--size", default="1280x720", show_default=True, help="WIDTHxHEIGHT (perspective).")
-@click.option("--pixel-size", type=click.FloatRange(min=1e-3, min_open=False),
-              help="Metres per pixel of the map view (default: fits 2048 px).")
+@camera_options("overview")
 @click.option("--shadows", "technique", default="raytrace", show_default=True,
               help="Shadow technique: raytrace (exact reference); shadowmap, pcf, vsm (uniform "
               "map: bias, percentage-closer filtering, variance shadow map); psm, lispsm, xpsm "
@@ -102,8 +74,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
         raise UsageError("give both --sun-azimuth and --sun-elevation")
     if (eye is None) != (target is None):
         raise UsageError("give both --eye and --target, or neither")
-    eye_v, target_v = _triple(eye, "--eye"), _triple(target, "--target")
-    width, height = _size(size)
+    parse_triple(eye, "--eye"), parse_triple(target, "--target"), parse_size(size)  # fail early
     date_text = _with_time(date_text or dt.date.today().isoformat(), time_text)
     user_date = parse_user_date(date_text, tz)
     if sun_azimuth is None and user_date.instant_utc is None:
@@ -113,7 +84,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     t0 = time.perf_counter()
     scene = load_scene(file)
     load_s = time.perf_counter() - t0
-    cam = _camera(scene, camera, eye_v, target_v, fov, width, height, pixel_size)
+    cam = make_camera(scene, camera, eye, target, fov, size, pixel_size)
     if sun_azimuth is not None:
         sun = sun_from_angles(sun_azimuth, sun_elevation, scene.crs, scene.origin_m)
     else:
@@ -161,18 +132,3 @@ def _with_time(date_text: str, time_text: str | None) -> str:
     if not re.fullmatch(r"\d{2}:\d{2}(:\d{2})?", time_text.strip()):
         raise UsageError(f"--time must be HH:MM or HH:MM:SS, not {time_text!r}")
     return f"{date_text.strip()}T{time_text.strip()}"
-
-
-def _camera(scene, name, eye, target, fov, width, height, pixel_size):
-    import numpy as np
-
-    from cityshade.raster import camera as cams
-
-    if eye is not None:
-        return cams.perspective(np.asarray(eye) - scene.origin_m, np.asarray(target) - scene.origin_m,
-                                vfov_deg=fov, width_px=width, height_px=height, scene=scene)
-    if name == "overview":
-        return cams.overview(scene, width, height)
-    if name == "map":
-        return cams.map_view(scene, pixel_size)
-    return cams.preset(name, scene, width, height)
