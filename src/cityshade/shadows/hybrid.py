@@ -212,31 +212,6 @@ _PLANE_TOL_NDC = 1e-6
 _PLANE_TOL_SLOPE = 0.01
 
 
-def _plane_gradient(view, points, normals, u0, v0, z0):
-    """(dz/du, dz/dv) of each receiver's tangent plane in the light view (texel units)."""
-    from cityshade.shadows.shadowmap import project
-
-    # Two tangents of each receiver's plane, ~1 cm long (local linearisation of warped views).
-    helper = np.where(np.abs(normals[:, 2:3]) < 0.9, [[0.0, 0.0, 1.0]], [[1.0, 0.0, 0.0]])
-    t1 = np.cross(normals, helper)
-    t1 /= np.linalg.norm(t1, axis=1, keepdims=True)
-    t2 = np.cross(normals, t1)
-    step = 0.01
-    u1, v1, z1 = project(view, points + step * t1)
-    u2, v2, z2 = project(view, points + step * t2)
-    a, b, c, d = u1 - u0, u2 - u0, v1 - v0, v2 - v0
-    det = a * d - b * c
-    with np.errstate(divide="ignore", invalid="ignore"):
-        gu = ((z1 - z0) * d - (z2 - z0) * c) / det
-        gv = ((z2 - z0) * a - (z1 - z0) * b) / det
-    # A plane holding the light's rays (seen edge-on) has no gradient: fall back to the
-    # own-polygon rule alone.
-    bad = ~(np.isfinite(gu) & np.isfinite(gv))
-    gu[bad] = 0.0
-    gv[bad] = 0.0
-    return gu, gv
-
-
 def bracket_states(depth_map, scene, points_m, normals, own_poly, sun_direction,
                    radius_texels: int, thin_map) -> np.ndarray:
     """(N,) uint8 receiver states from one depth map.
@@ -245,13 +220,13 @@ def bracket_states(depth_map, scene, points_m, normals, own_poly, sun_direction,
     point is the shadow-ray origin (pushed off its surface by the tracer's tiny offset);
     ``thin_map`` is :func:`thin_caster_map` of the same view.
     """
-    from cityshade.shadows.shadowmap import project
+    from cityshade.shadows.shadowmap import project, receiver_plane_gradient
     from cityshade.trace import shadow_rays_from_surface
 
     origins = shadow_rays_from_surface(points_m, normals, sun_direction)
     u_s, v_s, z_surface = project(depth_map.view, origins)
-    gu, gv = _plane_gradient(depth_map.view, origins, np.asarray(normals, np.float64),
-                             u_s, v_s, z_surface)
+    gu, gv = receiver_plane_gradient(depth_map.view, origins, np.asarray(normals, np.float64),
+                                     u_s, v_s, z_surface)
     tol = _PLANE_TOL_NDC + _PLANE_TOL_SLOPE * (np.abs(gu) + np.abs(gv))
     prim = np.asarray(depth_map.prim_id)
     safe = np.maximum(prim, 0)

@@ -171,6 +171,11 @@ class LightView:
             object.__setattr__(self, name, int(value))
 
     @property
+    def is_projective(self) -> bool:
+        """True for a warped view (its w row is not (0, 0, 0, 1))."""
+        return not np.array_equal(self.clip_from_world[3], [0.0, 0.0, 0.0, 1.0])
+
+    @property
     def shape(self) -> tuple[int, int]:
         """(H, W)."""
         return self.height_px, self.width_px
@@ -461,6 +466,34 @@ def _points_normals(points_m, normals) -> tuple[np.ndarray, np.ndarray]:
     return p, n
 
 
+def receiver_plane_gradient(view: LightView, points, normals, u0, v0, z0):
+    """(dz/du, dz/dv) of each receiver's tangent plane in the light view: NDC depth change
+    per texel along the map's columns and rows (Isidoro's receiver-plane depth gradient).
+
+    ``points`` (N, 3) and their unit ``normals``; ``u0, v0, z0`` = :func:`project` of the
+    points. A plane holding the light's rays (seen edge-on) gets 0.
+    """
+    # Two tangents of each receiver's plane, ~1 cm long (local linearisation of warped views).
+    helper = np.where(np.abs(normals[:, 2:3]) < 0.9, [[0.0, 0.0, 1.0]], [[1.0, 0.0, 0.0]])
+    t1 = np.cross(normals, helper)
+    t1 /= np.linalg.norm(t1, axis=1, keepdims=True)
+    t2 = np.cross(normals, t1)
+    step = 0.01
+    u1, v1, z1 = project(view, points + step * t1)
+    u2, v2, z2 = project(view, points + step * t2)
+    a, b, c, d = u1 - u0, u2 - u0, v1 - v0, v2 - v0
+    det = a * d - b * c
+    with np.errstate(divide="ignore", invalid="ignore"):
+        gu = ((z1 - z0) * d - (z2 - z0) * c) / det
+        gv = ((z2 - z0) * a - (z1 - z0) * b) / det
+    # A plane holding the light's rays (seen edge-on) has no gradient: fall back to the
+    # own-polygon rule alone.
+    bad = ~(np.isfinite(gu) & np.isfinite(gv))
+    gu[bad] = 0.0
+    gv[bad] = 0.0
+    return gu, gv
+
+
 def texel_footprint_m(view: LightView, points_m, normals) -> np.ndarray:
     """Size of one texel on the receiver surface, metres.
 
@@ -747,6 +780,14 @@ def shadow_lookup(depth_map: DepthMap, points_m, normals, sun_direction,
         raise UsageError(f"shadow lookup mode must be hard, pcf or vsm, not {mode!r}")
     q = offset_receivers(view, points_m, normals, sun_direction, settings, radius)
     u, v, z = project(view, q)
+    if view.is_projective:
+        # In a warped (projective) map a plane's NDC depth varies across a texel even when the
+        # plane faces the light squarely (a flat roof under a high sun gets no slope bias):
+        # subtract the receiver plane's depth change over the texels the filter reads
+        # (receiver-plane depth bias, Isidoro 2006).
+        gu, gv = receiver_plane_gradient(view, q, np.asarray(normals, np.float64).reshape(-1, 3),
+                                         u, v, z)
+        z = z - (np.abs(gu) + np.abs(gv)) * (0.5 + radius)
     if mode == "vsm":
         weights = (flt.gaussian_weights(settings.vsm_blur / 2.0, settings.vsm_blur)
                    if settings.vsm_filter == "gaussian" else flt.box_weights(settings.vsm_blur))
