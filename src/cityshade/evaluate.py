@@ -548,6 +548,8 @@ def evaluate_frame(scene, camera, view: str, sun, t_days: float, techniques: Seq
             err = compare(result.lit, ref, settings.edge_percentile)
             d = result.diagnostics
             alias = d.get("aliasing_m") or {}
+            if not (alias.get("max") or alias.get("mean")):
+                alias = {}   # not measured (e.g. hybrid's base in classify-only mode)
             row.update({
                 "warmup_s": secs[0], "shadow_s": _median(secs[1:]),
                 "valid_px": err["valid_px"], "wrong_px": err["wrong_px"],
