@@ -71,7 +71,7 @@ def evaluate(file, views, sun_text, date_text, times, tz, shadows, sizes, size, 
              repeat, stress, quick, output):
     """Error of every shadow technique against the exact ray-traced shadows of FILE (a
     .cityshade scene or a CityGML file), and its run time, per view, sun and map size."""
-    from cityshade.cli.render import _size
+    from cityshade.cli.options import parse_size
     from cityshade.errors import UsageError
 
     if quick and not stress:
@@ -106,7 +106,7 @@ def evaluate(file, views, sun_text, date_text, times, tz, shadows, sizes, size, 
         raise UsageError("give either --sun or --date/--times, not both")
     techniques = expand_techniques(shadows)
     settings = EvaluateSettings(repeat=repeat, sizes=_int_list(sizes, "--sizes"))
-    width, height = _size(size)
+    width, height = parse_size(size)
     day = date_text or dt.date.today().isoformat()
     city_days = parse_user_date(day.split("T")[0] if times else day, tz).city_days
     scene = open_scene(file)
