@@ -17,8 +17,6 @@ import numpy as np
 from cityshade import __version__
 from cityshade.errors import UsageError
 
-#: Mask values of the 8-bit shadow mask (DESIGN §14: "no surface" is neither lit nor shadow).
-MASK_LIT, MASK_SHADOW, MASK_NODATA = 255, 0, 128
 
 
 @dataclass
@@ -126,10 +124,10 @@ def render_frame(scene, camera, t_days: float, sun, technique: str = "raytrace",
 
 
 def shadow_mask(frame: Frame) -> np.ndarray:
-    """(H, W) uint8: 255 sunlit, 0 shadow, 128 no surface."""
-    mask = np.where(frame.lit >= 0.5, MASK_LIT, MASK_SHADOW).astype(np.uint8)
-    mask[~frame.surfaces.valid] = MASK_NODATA
-    return mask
+    """(H, W) uint8: 255 sunlit, 0 shadow, 128 no surface (:func:`imageio.mask_from_lit`)."""
+    from cityshade.imageio import mask_from_lit
+
+    return mask_from_lit(frame.lit, frame.surfaces.valid)
 
 
 def frame_metadata(frame: Frame, scene, date_text: str) -> dict[str, Any]:
@@ -197,5 +195,5 @@ def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
             raise UsageError("a georeferenced mask needs the map view (--camera map)")
         written += imageio.write_georeferenced(
             georef, mask_px, frame.camera.geotransform(scene.origin_m),
-            epsg=scene.crs.horizontal_epsg, nodata=MASK_NODATA, attributes=meta)
+            epsg=scene.crs.horizontal_epsg, nodata=imageio.MASK_NODATA, attributes=meta)
     return written

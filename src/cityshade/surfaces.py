@@ -179,7 +179,7 @@ def samples_lit(scene, samples: SurfaceSamples, sun, t_days: float) -> np.ndarra
 
     A sun at or below the horizon lights nothing.
     """
-    from cityshade.trace import occluded, shadow_rays_from_surface
+    from cityshade.trace import sunlit
 
     lit = np.zeros(samples.n, bool)
     if not sun.above_horizon or samples.n == 0:
@@ -187,10 +187,8 @@ def samples_lit(scene, samples: SurfaceSamples, sun, t_days: float) -> np.ndarra
     direction = np.asarray(sun.direction, dtype=np.float64)
     faces = np.flatnonzero(samples.normals @ direction > 0.0)
     if len(faces):
-        origins = shadow_rays_from_surface(samples.points_m[faces], samples.normals[faces],
-                                           direction)
-        directions = np.ascontiguousarray(np.broadcast_to(direction, origins.shape))
-        lit[faces] = ~occluded(scene, origins, directions, t_days)
+        lit[faces] = sunlit(scene, samples.points_m[faces], samples.normals[faces], direction,
+                            t_days)
     return lit
 
 

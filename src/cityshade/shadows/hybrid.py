@@ -271,7 +271,7 @@ class Hybrid:
         self.name = f"hybrid:{base}"
 
     def run(self, ctx: ShadowContext) -> ShadowResult:
-        from cityshade.trace import occluded, shadow_rays_from_surface
+        from cityshade.trace import sunlit
 
         settings = HybridSettings.from_options(ctx.options)
         t0 = time.perf_counter()
@@ -320,9 +320,8 @@ class Hybrid:
             points = surfaces.position_m[mask]
             if not len(points):
                 return 0
-            origins = shadow_rays_from_surface(points, normal[mask], ctx.sun.direction)
-            directions = np.ascontiguousarray(np.broadcast_to(ctx.sun.direction, origins.shape))
-            lit[mask] = (~occluded(ctx.scene, origins, directions, ctx.t_days)).astype(np.float32)
+            lit[mask] = sunlit(ctx.scene, points, normal[mask], ctx.sun.direction,
+                               ctx.t_days).astype(np.float32)
             refined[mask] = True
             return len(points)
 

@@ -14,7 +14,7 @@ class RayTraced:
     name = "raytrace"
 
     def run(self, ctx: ShadowContext) -> ShadowResult:
-        from cityshade.trace import occluded, shadow_rays_from_surface
+        from cityshade.trace import sunlit
 
         surfaces = ctx.surfaces
         shape = surfaces.valid.shape
@@ -28,10 +28,8 @@ class RayTraced:
         diagnostics["self_shadowed_px"] = int((surfaces.valid & ~faces).sum())
         points = surfaces.position_m[faces]
         if len(points):
-            origins = shadow_rays_from_surface(points, normal[faces], ctx.sun.direction)
-            directions = np.broadcast_to(ctx.sun.direction, origins.shape)
-            blocked = occluded(ctx.scene, origins, np.ascontiguousarray(directions), ctx.t_days)
-            lit[faces] = (~blocked).astype(np.float32)
+            lit[faces] = sunlit(ctx.scene, points, normal[faces], ctx.sun.direction,
+                                ctx.t_days).astype(np.float32)
         diagnostics["rays"] = int(len(points))
         diagnostics["shadow_s"] = time.perf_counter() - t0
         return ShadowResult(lit=lit, diagnostics=diagnostics)

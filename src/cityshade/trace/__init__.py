@@ -14,7 +14,7 @@ from cityshade.errors import UsageError
 from cityshade.trace.bricks import (DEFAULT_BRICK_SIZE, intersect_bricks, occluded_bricks,
                                     tile_order)
 
-__all__ = ["TraceInputError", "intersect", "occluded", "shadow_rays_from_surface",
+__all__ = ["TraceInputError", "intersect", "occluded", "shadow_rays_from_surface", "sunlit",
            "tile_order", "SHADOW_OFFSET_REL", "SHADOW_OFFSET_MIN_SCALE_M"]
 
 #: Shadow-ray origin offset per metre of coordinate magnitude. Surface points and vertices are
@@ -225,3 +225,28 @@ def shadow_rays_from_surface(points, normals, sun_dir) -> np.ndarray:
     if np.abs(np.linalg.norm(normals, axis=1) - 1.0).max(initial=0.0) > UNIT_LENGTH_TOL:
         raise TraceInputError("normals must be unit length")
     return points + normals * shadow_offset_m(points)[:, None]
+
+
+def sunlit(tree, points, normals, sun_direction, t_days: float = 0.0) -> np.ndarray:
+    """Whether each surface point sees the sun: one shadow ray per point, from the point
+    pushed off its surface (:func:`shadow_rays_from_surface`) toward the sun, to the scene
+    bounds.
+
+    Parameters
+    ----------
+    tree : KdTree or scene with ``.kdtree``
+    points, normals : (N, 3) float arrays
+        Surface points (render space, metres) and their unit normals on the side facing the sun.
+    sun_direction : (3,) float array
+        Unit direction toward the sun.
+    t_days : float
+        City time.
+
+    Returns
+    -------
+    (N,) bool array, True where nothing blocks the sun.
+    """
+    origins = shadow_rays_from_surface(points, normals, sun_direction)
+    directions = np.ascontiguousarray(
+        np.broadcast_to(np.asarray(sun_direction, dtype=np.float64), origins.shape))
+    return ~occluded(tree, origins, directions, t_days)
