@@ -255,8 +255,9 @@ class _Reader:
         self.lod_cache: dict[Any, int] = {}
         self.obj_index: dict[str, int] = {}
         self.parent_ids: list[str | None] = []
-        self.material_records: dict[tuple[int, str, int], MaterialRecord] = {}
-        self.texture_records: dict[tuple[int, str, int], TextureRecord] = {}
+        # Keyed by (appearance, theme, index) and by (theme, encoded definition).
+        self.material_records: dict[tuple, MaterialRecord] = {}
+        self.texture_records: dict[tuple, TextureRecord] = {}
         self.transform: tuple[np.ndarray, np.ndarray] | None = None
         self.templates: list = []
         self.template_vertices = np.empty((0, 3))
@@ -577,6 +578,7 @@ class _Reader:
         return key
 
     def material_target(self, app: _Appearance, theme: str, index: int, poly: int) -> None:
+        # Records are shared by equal definitions (CityJSONSeq repeats them in every feature).
         key = (app.key, theme, index)
         rec = self.material_records.get(key)
         if rec is None:
@@ -584,6 +586,13 @@ class _Reader:
                 self.m.counters["bad_material_references"] += 1
                 return
             spec = app.materials[index]
+            same = (theme, msgspec.json.encode(spec))
+            rec = self.material_records.get(same)
+            if rec is not None:
+                self.material_records[key] = rec
+                rec.targets.append(self.poly_key(poly))
+                self.m.appearance.theme_targets[theme] += 1
+                return
             rec = MaterialRecord(
                 theme=theme, diffuse=_color(spec.get("diffuseColor"), (0.8, 0.8, 0.8)),
                 ambient_intensity=_number(spec.get("ambientIntensity"), 0.2),
@@ -591,7 +600,7 @@ class _Reader:
                 emissive=_color(spec.get("emissiveColor"), (0.0, 0.0, 0.0)),
                 shininess=_number(spec.get("shininess"), 0.2),
                 transparency=_number(spec.get("transparency"), 0.0))
-            self.material_records[key] = rec
+            self.material_records[key] = self.material_records[same] = rec
             self.m.appearance.materials.append(rec)
         rec.targets.append(self.poly_key(poly))
         self.m.appearance.theme_targets[theme] += 1
@@ -610,6 +619,9 @@ class _Reader:
                 m.counters["bad_texture_references"] += 1
                 return
             spec = app.textures[index]
+            same = (theme, msgspec.json.encode(spec))
+            rec = self.texture_records.get(same)
+        if rec is None:
             wrap = spec.get("wrapMode")
             border = spec.get("borderColor")
             rec = TextureRecord(theme=theme, kind="parameterized",
@@ -617,11 +629,14 @@ class _Reader:
                                 wrap_mode=wrap if isinstance(wrap, str) else "none",
                                 border_color=tuple(float(c) for c in border)
                                 if isinstance(border, list) else ())
-            self.texture_records[key] = rec
+            self.texture_records[same] = rec
             m.appearance.textures.append(rec)
+        self.texture_records[key] = rec
         uv = app.uv
         ring_uvs = []
         for r, (ring, entry) in enumerate(zip(surface, rings)):
+            if isinstance(entry, list) and entry and entry[0] is None:
+                continue  # [null]: this ring has no texture
             if not isinstance(entry, list) or len(entry) != len(ring) + 1 or not ring:
                 m.counters["texture_coordinate_count_mismatch"] += 1
                 continue

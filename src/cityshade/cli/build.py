@@ -16,8 +16,8 @@ def _lod_option(ctx, param, value: str | None) -> int | str | None:
     whole, dot, tenth = text.partition(".")
     if not (len(whole) == 1 and whole in "01234" and (not dot or (len(tenth) == 1
                                                                    and tenth.isdigit()))):
-        raise click.BadParameter(f"{value!r} is not a LoD: 0 to 4, or for CityJSON 0.0 to 4.9 "
-                                 f"such as 2.2")
+        raise click.BadParameter(f"{value} is not in the range 0 to 4 (whole LoDs; CityJSON "
+                                 f"also has refined ones such as 2.2)")
     return text if dot else int(whole)
 
 
