@@ -196,18 +196,29 @@ def test_multi_lod_selection():
     raw = read_cityjson(path)
     assert set(per_lod) == {"1.2", "1.3", "2.2"}
     for lod in ("1.2", "1.3", "2.2"):
-        scene = build_scene(raw, BuildSettings(lod=lod))
+        scene = build_scene(raw, BuildSettings(lod=float(lod)))
         assert scene.report["polygons"]["drawn"] + sum(scene.report["skipped"].values()) \
             == per_lod[lod]
         assert scene.report["lods_drawn"] == {lod: 10}
     default = build_scene(raw)
     assert default.report["lods_drawn"] == {"2.2": 10}
     assert default.report["lods"] == {"1.2": 10, "1.3": 10, "2.2": 10}
-    assert np.array_equal(default.triangles, build_scene(raw, BuildSettings(lod="2.2")).triangles)
+    assert np.array_equal(default.triangles, build_scene(raw, BuildSettings(lod=2.2)).triangles)
     # A whole LoD takes the highest refinement of it each object has.
     assert build_scene(raw, BuildSettings(lod=1)).report["lods_drawn"] == {"1.3": 10}
     with pytest.raises(EmptyModelError, match="at LoD 3"):
         build_scene(raw, BuildSettings(lod=3))
+
+
+def test_lod_setting_from_toml_and_cli_values():
+    from cityshade.config import settings_from_mapping
+    from cityshade.errors import ConfigError
+
+    assert settings_from_mapping({"build": {"lod": 2.2}}).build.lod == 2.2
+    with pytest.raises(ConfigError, match="one decimal"):
+        BuildSettings(lod=2.25)
+    with pytest.raises(ConfigError, match="one decimal"):
+        BuildSettings(lod=5.0)
 
 
 def test_lod_request_range():

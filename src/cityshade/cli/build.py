@@ -8,8 +8,8 @@ import click
 from cityshade.config import TIME_SOURCES
 
 
-def _lod_option(ctx, param, value: str | None) -> int | str | None:
-    """``--lod 2`` → 2; ``--lod 2.2`` → "2.2" (CityJSON's refined LoDs)."""
+def _lod_option(ctx, param, value: str | None) -> int | float | None:
+    """``--lod 2`` → 2; ``--lod 2.2`` → 2.2 (CityJSON's refined LoDs)."""
     if value is None:
         return None
     text = value.strip()
@@ -18,7 +18,7 @@ def _lod_option(ctx, param, value: str | None) -> int | str | None:
                                                                    and tenth.isdigit()))):
         raise click.BadParameter(f"{value} is not in the range 0 to 4 (whole LoDs; CityJSON "
                                  f"also has refined ones such as 2.2)")
-    return text if dot else int(whole)
+    return float(text) if dot else int(whole)
 
 
 @click.command("build")
@@ -35,7 +35,7 @@ def _lod_option(ctx, param, value: str | None) -> int | str | None:
 @click.option("--config", "config_path", type=click.Path(dir_okay=False, path_type=Path),
               help="TOML settings file ([build], [kdtree] tables).")
 @click.option("-q", "--quiet", is_flag=True, help="No progress display and no summary.")
-def build(city: Path, output: Path | None, lod: int | str | None, theme: str | None, crs: str | None,
+def build(city: Path, output: Path | None, lod: int | float | None, theme: str | None, crs: str | None,
           time_source: str, config_path: Path | None, quiet: bool) -> None:
     """Read CITY (CityGML 1.0/2.0/3.0, CityJSON 1.0/1.1/2.0 or CityJSONSeq, told apart by
     the content), triangulate it, build its kd-tree, and write one versioned,

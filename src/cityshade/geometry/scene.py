@@ -244,7 +244,8 @@ def lod_label(raw: RawModel, code: int) -> str:
     return label
 
 
-def lod_request_range(request: int | str | None, lod_scale: int) -> tuple[int, int] | None:
+def lod_request_range(request: int | float | str | None, lod_scale: int
+                      ) -> tuple[int, int] | None:
     """The LoD codes ``--lod`` selects: (lowest, highest), None for "the highest of each object".
 
     CityGML (``lod_scale`` 1) has whole LoDs: ``2`` selects 2. CityJSON (``lod_scale`` 10)
