@@ -202,6 +202,9 @@ def main_cityjson(args) -> int:
                "mtriangles_per_s": round(triangles / 1e6 / median, 3),
                "peak_rss_mb": round(peak / MB, 1)}
         if key in cities:
+            reads = [r["stage_s"].get("read_s") for r in items]
+            if all(v is not None for v in reads):
+                row["read_s"] = round(statistics.median(reads), 3)
             out_bytes = items[-1]["output_bytes"]
             budget = 1.5 * out_bytes + 300 * MB
             row.update(output_mb=round(out_bytes / MB, 1), memory_goal_mb=round(budget / MB, 1),
@@ -224,8 +227,8 @@ def main_cityjson(args) -> int:
     print(f"build of the {triangles:,}-triangle city in three formats (commit "
           f"{result['commit'][:10]}, median of {args.repeat}); JSON libraries read the "
           f"CityJSON file whole")
-    print(f"{'':30s}{'file MB':>8s}{'s':>8s}{'MB/s':>8s}{'Mtri/s':>8s}{'peak MB':>9s}"
-          f"{'goal MB':>9s}")
+    print(f"{'':30s}{'file MB':>8s}{'s':>8s}{'read s':>8s}{'MB/s':>8s}{'Mtri/s':>8s}"
+          f"{'peak MB':>9s}{'goal MB':>9s}")
     names = {"json": "json.loads (stdlib)", "msgspec": "msgspec.json.decode",
              "orjson": "orjson.loads", "citygml": "cityshade build .gml",
              "cityjson": "cityshade build .city.json", "cityjsonseq": "cityshade build .jsonl"}
@@ -235,8 +238,10 @@ def main_cityjson(args) -> int:
             continue
         goal = (f"{row['memory_goal_mb']:9.0f}{'' if row['memory_goal_met'] else ' NOT met'}"
                 if "memory_goal_mb" in row else "")
-        print(f"{names[key]:30s}{row['file_mb']:8.1f}{row['median_s']:8.2f}{row['mb_per_s']:8.1f}"
-              f"{row['mtriangles_per_s']:8.3f}{row['peak_rss_mb']:9.0f}{goal}")
+        read = f"{row['read_s']:8.2f}" if "read_s" in row else f"{'':8s}"
+        print(f"{names[key]:30s}{row['file_mb']:8.1f}{row['median_s']:8.2f}{read}"
+              f"{row['mb_per_s']:8.1f}{row['mtriangles_per_s']:8.3f}{row['peak_rss_mb']:9.0f}"
+              f"{goal}")
     for k, v in result.get("ratios", {}).items():
         print(f"{k}: {v:.2f}")
     return 0
@@ -258,6 +263,12 @@ def ours(path: Path, out: Path) -> dict:
     if not out.exists():
         return {"error": f"no output file {out}"}
     run["output_bytes"] = out.stat().st_size
+    try:  # the build's own stage timings (read, triangulate, kd-tree) from the file header
+        from cityshade.scenefile import read_header
+
+        run["stage_s"] = read_header(out).get("report", {}).get("timings", {})
+    except Exception:  # an older file layout: the stage timings are only missing
+        run["stage_s"] = {}
     return run
 
 

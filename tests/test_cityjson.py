@@ -405,6 +405,21 @@ def test_bad_cityjson_fails_with_one_line_and_writes_nothing(tmp_path, content, 
     assert not out.exists() and [p.name for p in tmp_path.iterdir()] == ["city.json"]
 
 
+def test_format_is_told_from_the_content(tmp_path):
+    """A CityJSON named .gml (with a UTF-8 BOM), and a CityJSONSeq named .json, build."""
+    odd = tmp_path / "cube.gml"
+    odd.write_bytes(b"\xef\xbb\xbf" + json.dumps(_CUBE, indent=1).encode())
+    assert detect_format(odd) == "cityjson"
+    assert build_scene(read_model(odd)).n_triangles == 12
+    header = {k: v for k, v in _CUBE.items() if k != "CityObjects"}
+    feature = {"type": "CityJSONFeature", "id": "b1", "CityObjects": _CUBE["CityObjects"],
+               "vertices": _CUBE["vertices"]}
+    seq = _write(tmp_path, json.dumps({**header, "CityObjects": {}, "vertices": []}) + "\n"
+                 + json.dumps(feature) + "\n", "seq.json")
+    assert detect_format(seq) == "cityjsonseq"
+    assert build_scene(read_model(seq)).report["format"] == "CityJSONSeq"
+
+
 def test_bad_sequence_line(tmp_path):
     header = {k: v for k, v in _CUBE.items() if k != "CityObjects"}
     feature = {"type": "CityJSONFeature", "id": "b1", "CityObjects": _CUBE["CityObjects"],

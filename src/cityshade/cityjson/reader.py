@@ -64,6 +64,7 @@ _TYPE_ALIASES = {"TransportSquare": "Square", "TunnelHollowSpace": "HollowSpace"
                  "BuildingStorey": "Storey"}
 
 _BYTE_POSITION = re.compile(r"\(byte (\d+)\)")
+_BOM = b"\xef\xbb\xbf"
 _BRACKETS_TO_SPACES = bytes.maketrans(b"[]", b"  ")
 
 
@@ -111,7 +112,7 @@ def detect_format(path: str | os.PathLike) -> str:
     try:
         with path.open("rb") as fh:
             head = fh.read(_SNIFF_BYTES)
-            start = len(head) - len(head.lstrip(b"\xef\xbb\xbf \t\r\n"))
+            start = len(head) - len(head.removeprefix(_BOM).lstrip(b" \t\r\n"))
             if start == len(head) or head[start:start + 1] != b"{":
                 if head[start:start + 1] not in (b"<", b"") and path.suffix.lower() in (
                         ".json", ".jsonl", ".cityjson", ".cjseq"):
@@ -366,9 +367,11 @@ class _Reader:
 
     def read_document(self) -> None:
         path = self.m.path
-        data = path.read_bytes()
+        data = path.read_bytes().removeprefix(_BOM)
+        # The raw members (vertices, objects) point into these bytes: the file stays in memory
+        # while it is read, its Python objects one object at a time.
         doc = self.decode(_DOCUMENT, data, None)
-        del data  # the raw vertices keep only their own bytes alive
+        del data
         self.header(doc, None)
         xyz = self.vertices(doc.vertices, None, "file")
         doc.vertices = msgspec.Raw()
@@ -389,7 +392,7 @@ class _Reader:
                 if not line.strip():
                     continue
                 if not have_header:
-                    doc = self.decode(_DOCUMENT, line, lineno)
+                    doc = self.decode(_DOCUMENT, line.removeprefix(_BOM), lineno)
                     self.header(doc, lineno)
                     header_app = self.appearance(doc.appearance)
                     have_header = True
