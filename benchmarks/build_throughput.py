@@ -21,6 +21,12 @@ Usage (from the repository root)::
     python benchmarks/build_throughput.py                       # 1M triangles, 3 repeats
     python benchmarks/build_throughput.py --triangles 50000 --repeat 1   # quick smoke run
     python benchmarks/build_throughput.py --city path/to/file.gml       # any CityGML file
+    python benchmarks/build_throughput.py --format cityjson --workdir /tmp/cj   # CityJSON
+
+``--format cityjson`` writes the same city also as CityJSON 2.0 and CityJSONSeq (sample
+generator) and measures, alternating: ``cityshade build`` of all three (MB/s, million
+triangles/s, peak RSS, the memory goal) and ``json``, ``msgspec`` and (if installed) ``orjson``
+reading the CityJSON file whole into Python objects (seconds inside the child, peak RSS).
 """
 from __future__ import annotations
 
@@ -75,20 +81,23 @@ def _generator_digest() -> str:
     return hashlib.sha256(source).hexdigest()[:16]
 
 
-def ensure_city(workdir: Path, triangles: int, seed: int) -> tuple[Path, dict]:
+def ensure_city(workdir: Path, triangles: int, seed: int, output_format: str = "citygml"
+                ) -> tuple[Path, dict]:
     """The cached benchmark city; regenerated when missing or made by another generator."""
     from cityshade.samplegen import generate_city
 
     workdir.mkdir(parents=True, exist_ok=True)
-    gml = workdir / f"city_{triangles}_s{seed}.gml"
-    meta_path = gml.with_suffix(".json")
+    suffix = {"citygml": ".gml", "cityjson": ".city.json", "cityjsonseq": ".city.jsonl"}
+    gml = workdir / f"city_{triangles}_s{seed}{suffix[output_format]}"
+    meta_path = (gml.with_suffix(".json") if output_format == "citygml"
+                 else gml.with_name(gml.name + ".meta"))
     digest = _generator_digest()
     if gml.exists() and meta_path.exists():
         meta = json.loads(meta_path.read_text())
         if meta.get("generator") == digest and meta.get("size_bytes") == gml.stat().st_size:
             return gml, meta
     t0 = time.perf_counter()
-    info = generate_city(gml, target_triangles=triangles, seed=seed)
+    info = generate_city(gml, target_triangles=triangles, seed=seed, output_format=output_format)
     meta = {k: (str(v) if isinstance(v, Path) else v) for k, v in asdict(info).items()}
     meta.update(generator=digest, generate_seconds=round(time.perf_counter() - t0, 2))
     meta_path.write_text(json.dumps(meta, indent=1))
@@ -120,6 +129,124 @@ def anchor_b(path: Path) -> tuple[float, int]:
     return time.perf_counter() - t0, values
 
 
+#: One JSON library reading a whole file into Python objects (timed inside the child, after
+#: the import); the wrapper around it reports the child's peak RSS.
+_JSON_CHILD = r"""
+import json, sys, time
+lib, path = sys.argv[1], sys.argv[2]
+if lib == "orjson":
+    import orjson
+    loads = orjson.loads
+elif lib == "msgspec":
+    import msgspec
+    loads = msgspec.json.decode
+else:
+    loads = json.loads
+t0 = time.perf_counter()
+with open(path, "rb") as fh:
+    obj = loads(fh.read())
+print(json.dumps({"seconds": time.perf_counter() - t0}))
+"""
+
+
+def json_anchor(lib: str, path: Path) -> dict:
+    """Seconds (inside the child) and peak RSS of reading ``path`` whole with ``lib``."""
+    cmd = [sys.executable, "-c", _WRAPPER, sys.executable, "-c", _JSON_CHILD, lib, str(path)]
+    proc = subprocess.run(cmd, capture_output=True, text=True, cwd=REPO)
+    if proc.returncode != 0:
+        return {"error": (proc.stderr.strip().splitlines() or ["wrapper failed"])[-1]}
+    run = json.loads(proc.stdout.strip().splitlines()[-1])
+    if run["returncode"] != 0:
+        return {"error": run["stderr_tail"][0] or f"exit status {run['returncode']}"}
+    return {"seconds": json.loads(run["stdout_tail"][0])["seconds"],
+            "peak_rss_bytes": run["peak_rss_bytes"]}
+
+
+def _available(module: str) -> bool:
+    import importlib.util
+
+    return importlib.util.find_spec(module) is not None
+
+
+def main_cityjson(args) -> int:
+    """``--format cityjson``: the same city as CityGML, CityJSON and CityJSONSeq, and plain
+    JSON libraries reading the CityJSON file, alternating in one run."""
+    workdir = args.workdir.resolve()
+    cities = {fmt: ensure_city(workdir, args.triangles, args.seed, fmt)
+              for fmt in ("citygml", "cityjson", "cityjsonseq")}
+    triangles = cities["citygml"][1]["triangles"]
+    cj_path = cities["cityjson"][0]
+    libs = ["json", "msgspec"] + (["orjson"] if _available("orjson") else [])
+    outs = {fmt: workdir / f"{path.name}.cityshade" for fmt, (path, _) in cities.items()}
+    first = {fmt: ours(path, outs[fmt]) for fmt, (path, _) in cities.items()}  # warm-up
+    runs: dict[str, list[dict]] = {k: [] for k in [*cities, *libs]}
+    for _ in range(args.repeat):
+        for lib in libs:
+            runs[lib].append(json_anchor(lib, cj_path))
+        for fmt, (path, _) in cities.items():
+            runs[fmt].append(ours(path, outs[fmt]))
+    rows = {}
+    for key, items in runs.items():
+        path = cities[key][0] if key in cities else cj_path
+        size = path.stat().st_size
+        errors = [r["error"] for r in items if "error" in r] + (
+            [first[key]["error"]] if key in first and "error" in first[key] else [])
+        if errors:
+            rows[key] = {"file": path.name, "unavailable": errors[0]}
+            continue
+        median = statistics.median(r["seconds"] for r in items)
+        peak = statistics.median(r["peak_rss_bytes"] for r in items)
+        row = {"file": path.name, "file_mb": round(size / MB, 1), "median_s": round(median, 3),
+               "runs_s": [round(r["seconds"], 3) for r in items],
+               "mb_per_s": round(size / MB / median, 1),
+               "mtriangles_per_s": round(triangles / 1e6 / median, 3),
+               "peak_rss_mb": round(peak / MB, 1)}
+        if key in cities:
+            reads = [r["stage_s"].get("read_s") for r in items]
+            if all(v is not None for v in reads):
+                row["read_s"] = round(statistics.median(reads), 3)
+            out_bytes = items[-1]["output_bytes"]
+            budget = 1.5 * out_bytes + 300 * MB
+            row.update(output_mb=round(out_bytes / MB, 1), memory_goal_mb=round(budget / MB, 1),
+                       memory_goal_met=bool(peak <= budget),
+                       first_run_s=round(first[key]["seconds"], 3))
+        rows[key] = row
+    result = {"benchmark": "build_throughput", "format": "cityjson", "commit": _git_commit(),
+              "machine": {"python": platform.python_version(), "platform": platform.platform(),
+                          "cpus": os.cpu_count(), "numpy": np.__version__},
+              "city": {fmt: meta for fmt, (_, meta) in cities.items()}, "triangles": triangles,
+              "repeat": args.repeat, "results": rows}
+    gml_row, cj_row = rows.get("citygml", {}), rows.get("cityjson", {})
+    if "mtriangles_per_s" in gml_row and "mtriangles_per_s" in cj_row:
+        result["ratios"] = {
+            f"{k}_over_citygml_per_triangle": round(rows[k]["mtriangles_per_s"]
+                                                    / gml_row["mtriangles_per_s"], 3)
+            for k in ("cityjson", "cityjsonseq") if "mtriangles_per_s" in rows[k]}
+    print(json.dumps(result, indent=1))
+    print()
+    print(f"build of the {triangles:,}-triangle city in three formats (commit "
+          f"{result['commit'][:10]}, median of {args.repeat}); JSON libraries read the "
+          f"CityJSON file whole")
+    print(f"{'':30s}{'file MB':>8s}{'s':>8s}{'read s':>8s}{'MB/s':>8s}{'Mtri/s':>8s}"
+          f"{'peak MB':>9s}{'goal MB':>9s}")
+    names = {"json": "json.loads (stdlib)", "msgspec": "msgspec.json.decode",
+             "orjson": "orjson.loads", "citygml": "cityshade build .gml",
+             "cityjson": "cityshade build .city.json", "cityjsonseq": "cityshade build .jsonl"}
+    for key, row in rows.items():
+        if "unavailable" in row:
+            print(f"{names[key]:30s} unavailable: {row['unavailable']}")
+            continue
+        goal = (f"{row['memory_goal_mb']:9.0f}{'' if row['memory_goal_met'] else ' NOT met'}"
+                if "memory_goal_mb" in row else "")
+        read = f"{row['read_s']:8.2f}" if "read_s" in row else f"{'':8s}"
+        print(f"{names[key]:30s}{row['file_mb']:8.1f}{row['median_s']:8.2f}{read}"
+              f"{row['mb_per_s']:8.1f}{row['mtriangles_per_s']:8.3f}{row['peak_rss_mb']:9.0f}"
+              f"{goal}")
+    for k, v in result.get("ratios", {}).items():
+        print(f"{k}: {v:.2f}")
+    return 0
+
+
 def ours(path: Path, out: Path) -> dict:
     """One ``cityshade build`` in a wrapper process: seconds, peak RSS, output size."""
     if out.exists():
@@ -136,6 +263,12 @@ def ours(path: Path, out: Path) -> dict:
     if not out.exists():
         return {"error": f"no output file {out}"}
     run["output_bytes"] = out.stat().st_size
+    try:  # the build's own stage timings (read, triangulate, kd-tree) from the file header
+        from cityshade.scenefile import read_header
+
+        run["stage_s"] = read_header(out).get("report", {}).get("timings", {})
+    except Exception:  # an older file layout: the stage timings are only missing
+        run["stage_s"] = {}
     return run
 
 
@@ -155,9 +288,16 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--seed", type=int, default=7, help="generator seed (7)")
     parser.add_argument("--city", type=Path, default=None,
                         help="measure this CityGML file instead of the generated city")
+    parser.add_argument("--format", choices=("citygml", "cityjson"), default="citygml",
+                        help="cityjson: the same city as CityGML, CityJSON and CityJSONSeq, "
+                             "next to json/msgspec/orjson reading the CityJSON file")
     args = parser.parse_args(argv)
     if args.repeat < 1:
         parser.error("--repeat must be at least 1")
+    if args.format == "cityjson":
+        if args.city is not None:
+            parser.error("--city measures one CityGML file; --format cityjson generates its own")
+        return main_cityjson(args)
 
     if args.city is not None:
         gml, city = args.city.resolve(), {"path": str(args.city)}

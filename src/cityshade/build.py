@@ -1,4 +1,4 @@
-"""``cityshade build``: CityGML file → triangulated scene (+ kd-tree) → ``.cityshade`` file."""
+"""``cityshade build``: CityGML/CityJSON file → triangulated scene (+ kd-tree) → ``.cityshade`` file."""
 from __future__ import annotations
 
 import hashlib
@@ -28,23 +28,38 @@ def default_output(source: str | os.PathLike) -> Path:
     return Path(source).with_suffix(".cityshade")
 
 
+def read_model(source: str | os.PathLike, progress: Callable[[int, int], None] | None = None):
+    """Read a CityGML, CityJSON or CityJSONSeq file (told apart by its content) into a
+    :class:`~cityshade.citygml.reader.RawModel`."""
+    from cityshade.cityjson.reader import detect_format
+
+    kind = detect_format(source)
+    if kind == "citygml":
+        from cityshade.citygml.reader import read_citygml
+
+        return read_citygml(source, progress=progress)
+    from cityshade.cityjson.reader import read_cityjson
+
+    return read_cityjson(source, progress=progress, seq=kind == "cityjsonseq")
+
+
 def build_scene_from_file(source: str | os.PathLike, settings: Settings | None = None,
                           progress: Callable[[str, int, int], None] | None = None) -> Scene:
-    """Read, triangulate and (when the scene needs one) build the kd-tree of a CityGML file.
+    """Read, triangulate and (when the scene needs one) build the kd-tree of a city model file
+    (CityGML, CityJSON or CityJSONSeq).
 
     Parameters
     ----------
     progress : callable(stage, done, total), optional
         Called while reading (bytes) and at the start of later stages.
     """
-    from cityshade.citygml.reader import read_citygml
     from cityshade.geometry.scene import build_scene
 
     settings = settings or Settings()
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
     read_progress = (lambda done, total: progress("read", done, total)) if progress else None
-    raw = read_citygml(source, progress=read_progress)
+    raw = read_model(source, progress=read_progress)
     timings["read_s"] = time.perf_counter() - t0
     if progress:
         progress("triangulate", 0, 1)
@@ -72,7 +87,7 @@ def _build_tree(scene: Scene, settings: Settings, progress, timings: dict):
 def build_file(source: str | os.PathLike, output: str | os.PathLike | None = None,
                settings: Settings | None = None,
                progress: Callable[[str, int, int], None] | None = None) -> tuple[Path, Scene, int]:
-    """Build the ``.cityshade`` file of a CityGML file; returns (output path, scene, bytes)."""
+    """Build the ``.cityshade`` file of a CityGML/CityJSON file; returns (output path, scene, bytes)."""
     from cityshade.scenefile import save_scene
 
     settings = settings or Settings()

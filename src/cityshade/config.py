@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import re
 import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -17,13 +18,17 @@ from cityshade.errors import ConfigError
 
 TIME_SOURCES = ("auto", "valid", "construction", "creation")
 
+#: A LoD as text: whole (CityGML and CityJSON) or refined (CityJSON "2.2").
+_LOD_TEXT = re.compile(r"^[0-4](\.[0-9])?$")
+
 
 @dataclass(frozen=True)
 class BuildSettings:
     """Reading and triangulating a CityGML file."""
 
-    #: LoD to take from every object; None takes the highest LoD each object has.
-    lod: int | None = None
+    #: LoD to take from every object: 0–4, or for CityJSON a refined LoD such as 2.2 (then 2
+    #: takes the highest 2.x each object has); None takes the highest LoD each object has.
+    lod: int | float | None = None
     #: Appearance theme; None takes the theme with the most targeted surfaces.
     theme: str | None = None
     #: Override of the file's CRS, e.g. "EPSG:25832" (needed for files without srsName).
@@ -49,8 +54,12 @@ class BuildSettings:
         if self.time_source not in TIME_SOURCES:
             raise ConfigError(f"time_source must be one of {', '.join(TIME_SOURCES)}, "
                               f"not {self.time_source!r}")
-        if self.lod is not None and not 0 <= self.lod <= 4:
-            raise ConfigError(f"lod must be between 0 and 4, not {self.lod}")
+        if self.lod is not None and (
+                isinstance(self.lod, bool) or not isinstance(self.lod, (int, float, str))
+                or (isinstance(self.lod, int) and not 0 <= self.lod <= 4)
+                or (not isinstance(self.lod, int) and not _LOD_TEXT.match(str(self.lod)))):
+            raise ConfigError(f"lod must be between 0 and 4 (or a CityJSON LoD with one "
+                              f"decimal such as 2.2), not {self.lod!r}")
         for name in ("merge_distance_m", "collinear_rel_tol", "area_rel_tol", "min_rel_area",
                      "nonplanar_rel_tol"):
             value = getattr(self, name)

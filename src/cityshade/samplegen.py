@@ -989,8 +989,9 @@ def generate_city(path: str | os.PathLike, *, n_buildings: int = 40, seed: int =
                   origin_xy_m: tuple[float, float] = (690_000.0, 5_336_000.0),
                   texture: bool = True, terrain: bool = True,
                   target_triangles: int | None = None, detail: int | None = None,
-                  settings: SampleCitySettings | None = None) -> CityInfo:
-    """Write a synthetic CityGML 2.0 city, deterministically from ``seed``.
+                  settings: SampleCitySettings | None = None,
+                  output_format: str = "citygml") -> CityInfo:
+    """Write a synthetic CityGML 2.0 (or CityJSON 2.0) city, deterministically from ``seed``.
 
     Parameters
     ----------
@@ -1013,6 +1014,9 @@ def generate_city(path: str | os.PathLike, *, n_buildings: int = 40, seed: int =
         holes and window polygons. Default 0, or chosen from ``target_triangles``.
     settings : SampleCitySettings, optional
         Layout parameters.
+    output_format : {"citygml", "cityjson", "cityjsonseq"}
+        The same city as CityGML 2.0, as one CityJSON 2.0 document, or as CityJSONSeq (a
+        header line, then one CityJSONFeature line per building with its part).
 
     Returns
     -------
@@ -1027,6 +1031,9 @@ def generate_city(path: str | os.PathLike, *, n_buildings: int = 40, seed: int =
         The file cannot be written.
     """
     _validate(n_buildings, seed, target_triangles, detail)
+    if output_format not in OUTPUT_FORMATS:
+        raise UsageError(f"output_format must be one of {', '.join(OUTPUT_FORMATS)}, "
+                         f"not {output_format!r}")
     s = settings or SampleCitySettings()
     ox, oy = (float(v) for v in origin_xy_m)
     if not (math.isfinite(ox) and math.isfinite(oy)):
@@ -1061,8 +1068,12 @@ def generate_city(path: str | os.PathLike, *, n_buildings: int = 40, seed: int =
     sink = _AppearanceSink(folder, texture)
     try:
         with open(tmp, "w", encoding="utf-8", newline="\n", buffering=1 << 20) as out:
-            _write_city(out, plans, tin, terrain, ox, oy, detail, seed, s, counts, sink,
-                        texture_uri)
+            if output_format == "citygml":
+                _write_city(out, plans, tin, terrain, ox, oy, detail, seed, s, counts, sink,
+                            texture_uri)
+            else:
+                _write_cityjson(out, plans, tin, terrain, ox, oy, detail, seed, s, counts,
+                                texture_uri, seq=output_format == "cityjsonseq")
         os.replace(tmp, path)
     except OSError as exc:
         raise SampleGenError(f"cannot write sample city: {exc.strerror}", path=str(path)) \
@@ -1120,11 +1131,168 @@ def _write_city(out, plans: list[_Plan], tin: _Terrain, terrain: bool, ox: float
     out.write("</CityModel>\n")
 
 
+OUTPUT_FORMATS = ("citygml", "cityjson", "cityjsonseq")
+
+
+class _CityJSONSink:
+    """Vertices (integer millimetres, deduplicated), texture coordinates and appearance
+    indices of one CityJSON document or CityJSONSeq feature."""
+
+    def __init__(self, ox: float, oy: float):
+        self.ox, self.oy = ox, oy
+        self.index: dict[tuple[int, int, int], int] = {}
+        self.vertices: list[tuple[int, int, int]] = []
+        self.uv: list[tuple[float, float]] = []
+        self.materials_used: dict[str, int] = {}
+
+    def vertex(self, p: Point) -> int:
+        key = (round((p[0] - self.ox) * 1000.0), round((p[1] - self.oy) * 1000.0),
+               round(p[2] * 1000.0))
+        i = self.index.get(key)
+        if i is None:
+            i = self.index[key] = len(self.vertices)
+            self.vertices.append(key)
+        return i
+
+    def material(self, key: str) -> int | None:
+        if key not in dict(_MATERIALS):
+            return None
+        return self.materials_used.setdefault(key, len(self.materials_used))
+
+    def vertices_json(self) -> str:
+        return "[" + ",".join(f"[{x},{y},{z}]" for x, y, z in self.vertices) + "]"
+
+    def appearance(self, texture_uri: str | None) -> dict:
+        colours = dict(_MATERIALS)
+        app: dict = {"materials": [
+            {"name": key, "diffuseColor": [float(c) for c in colours[key].split()]}
+            for key in self.materials_used]}
+        if texture_uri is not None and self.uv:
+            app["textures"] = [{"type": "PNG", "image": texture_uri, "wrapMode": "wrap"}]
+            app["vertices-texture"] = self.uv
+        return app
+
+
+def _cityjson_objects(plan: _Plan, obj_type: str, detail: int, s: SampleCitySettings,
+                      counts: _Counts, sink: _CityJSONSink, textured: bool,
+                      parent: str | None) -> dict[str, dict]:
+    """The CityObjects of one Building (or BuildingPart) and its parts: one lod 2 MultiSurface
+    with semantics, materials and the facade texture, attributes as in the CityGML writer."""
+    boundaries, sem_values, mat_values, tex_values = [], [], [], []
+    kinds: dict[str, int] = {}
+    for surface in _building_surfaces(plan, detail, s):
+        sem = kinds.setdefault(surface.kind, len(kinds))
+        for poly in surface.polys:
+            rings = [[sink.vertex(p) for p in ring] for ring in [poly.exterior] + poly.interiors]
+            boundaries.append(rings)
+            sem_values.append(sem)
+            mat_values.append(sink.material(poly.material))
+            if poly.tex is not None and textured:
+                first = len(sink.uv)
+                sink.uv.extend([round(u, 4), round(v, 4)] for u, v in poly.tex)
+                tex_values.append([[0] + list(range(first, first + len(poly.tex)))] +
+                                  [[None]] * len(poly.interiors))
+            else:
+                tex_values.append([[None]] * (1 + len(poly.interiors)))
+            counts.polygons += 1
+            counts.interiors += len(poly.interiors)
+            counts.triangles += poly.triangles
+            counts.textured += poly.tex is not None
+    geometry = {"type": "MultiSurface", "lod": "2", "boundaries": boundaries,
+                "semantics": {"surfaces": [{"type": k} for k in kinds], "values": sem_values},
+                "material": {"rgbTexture": {"values": mat_values}}}
+    if any(v != [[None]] * len(v) for v in tex_values):
+        geometry["texture"] = {"rgbTexture": {"values": tex_values}}
+    years = [plan.year_built] + ([plan.year_demolished] if plan.year_demolished else [])
+    counts.year_min = min(counts.year_min, *years)
+    counts.year_max = max(counts.year_max, *years)
+    counts.demolished += plan.year_demolished is not None
+    attributes = {"Parzelle": plan.lot, "HoeheGrund": plan.ground_z,
+                  "function": "1010" if obj_type == "BuildingPart" else "1000",
+                  "yearOfConstruction": plan.year_built, "roofType": _ROOF_TYPE_CODE[plan.roof],
+                  "measuredHeight": round(plan.eave_z(s.storey_m) + plan.roof_height_m
+                                          - plan.ground_z, 3),
+                  "storeysAboveGround": plan.storeys}
+    if plan.year_demolished is not None:
+        attributes["yearOfDemolition"] = plan.year_demolished
+    obj: dict = {"type": obj_type, "attributes": attributes, "geometry": [geometry]}
+    if parent is not None:
+        obj["parents"] = [parent]
+    objects = {plan.gml_id: obj}
+    if plan.part is not None:
+        counts.parts += 1
+        obj["children"] = [plan.part.gml_id]
+        objects.update(_cityjson_objects(plan.part, "BuildingPart", detail, s, counts, sink,
+                                         textured, plan.gml_id))
+    return objects
+
+
+def _terrain_cityjson(tin: _Terrain, ox: float, oy: float, sink: _CityJSONSink) -> dict:
+    c = tin.cell_m
+    boundaries = []
+    for j in range(tin.ny):
+        for i in range(tin.nx):
+            p = [sink.vertex((ox + tin.x0 + (i + di) * c, oy + tin.y0 + (j + dj) * c,
+                              tin.z[j + dj][i + di])) for di, dj in ((0, 0), (1, 0), (1, 1),
+                                                                       (0, 1))]
+            boundaries += [[[p[0], p[1], p[2]]], [[p[0], p[2], p[3]]]]
+    return {"SC_DEM": {"type": "TINRelief", "geometry": [
+        {"type": "CompositeSurface", "lod": "2", "boundaries": boundaries}]}}
+
+
+def _write_cityjson(out, plans: list[_Plan], tin: _Terrain, terrain: bool, ox: float,
+                    oy: float, detail: int, seed: int, s: SampleCitySettings, counts: _Counts,
+                    texture_uri: str | None, seq: bool) -> None:
+    """The city as CityJSON 2.0 (one document) or CityJSONSeq (one feature per building)."""
+    import json
+
+    header = {"type": "CityJSON", "version": "2.0",
+              "transform": {"scale": [0.001, 0.001, 0.001], "translate": [ox, oy, 0.0]},
+              "metadata": {"referenceSystem": "https://www.opengis.net/def/crs/EPSG/0/25832",
+                           "title": f"cityshade sample city, seed {seed} (synthetic, not "
+                                    f"real data)"}}
+    dumps = json.JSONEncoder(separators=(",", ":")).encode
+    textured = texture_uri is not None
+    if seq:
+        out.write(dumps({**header, "CityObjects": {}, "vertices": []}) + "\n")
+
+        def feature(fid: str, objects: dict, sink: _CityJSONSink) -> None:
+            out.write('{"type":"CityJSONFeature","id":' + dumps(fid) + ',"CityObjects":'
+                      + dumps(objects) + ',"vertices":' + sink.vertices_json()
+                      + ',"appearance":' + dumps(sink.appearance(texture_uri)) + "}\n")
+
+        if terrain:
+            sink = _CityJSONSink(ox, oy)
+            feature("SC_DEM", _terrain_cityjson(tin, ox, oy, sink), sink)
+        for plan in plans:
+            sink = _CityJSONSink(ox, oy)
+            objects = _cityjson_objects(plan, "Building", detail, s, counts, sink, textured,
+                                        None)
+            counts.buildings += 1
+            feature(plan.gml_id, objects, sink)
+        return
+    sink = _CityJSONSink(ox, oy)
+    out.write(dumps(header)[:-1] + ',"CityObjects":{')
+    first = True
+    objects = _terrain_cityjson(tin, ox, oy, sink) if terrain else {}
+    for plan in [None] + plans:
+        if plan is not None:
+            objects = _cityjson_objects(plan, "Building", detail, s, counts, sink, textured,
+                                        None)
+            counts.buildings += 1
+        for oid, obj in objects.items():
+            out.write(("" if first else ",") + dumps(oid) + ":" + dumps(obj))
+            first = False
+    out.write('},"vertices":' + sink.vertices_json() + ',"appearance":'
+              + dumps(sink.appearance(texture_uri)) + "}\n")
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     """``python -m cityshade.samplegen OUT.gml [--buildings N | --triangles N] [--seed S]``."""
     parser = argparse.ArgumentParser(
         prog="python -m cityshade.samplegen",
-        description="Write a deterministic synthetic CityGML 2.0 city (and its facade PNG).")
+        description="Write a deterministic synthetic CityGML 2.0 or CityJSON 2.0 city (and its "
+                    "facade PNG).")
     parser.add_argument("out", type=Path, help="GML file to write")
     size = parser.add_mutually_exclusive_group()
     size.add_argument("--buildings", type=int, default=40, help="number of buildings (40)")
@@ -1137,12 +1305,14 @@ def main(argv: Sequence[str] | None = None) -> int:
                         metavar=("X", "Y"), help="south-west corner, EPSG:25832 metres")
     parser.add_argument("--no-texture", action="store_true", help="no facade texture")
     parser.add_argument("--no-terrain", action="store_true", help="no TIN terrain")
+    parser.add_argument("--format", choices=OUTPUT_FORMATS, default="citygml",
+                        help="citygml (default), cityjson (one 2.0 document) or cityjsonseq")
     args = parser.parse_args(argv)
     try:
         info = generate_city(args.out, n_buildings=args.buildings, seed=args.seed,
                              origin_xy_m=tuple(args.origin), texture=not args.no_texture,
                              terrain=not args.no_terrain, target_triangles=args.triangles,
-                             detail=args.detail)
+                             detail=args.detail, output_format=args.format)
     except CityshadeError as exc:
         parser.exit(2 if isinstance(exc, UsageError) else 1, f"error: {exc}\n")
     print(f"{info.path}: {info.buildings} buildings, {info.building_parts} parts, "

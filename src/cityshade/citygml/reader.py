@@ -58,6 +58,12 @@ class RawModel:
 
     path: Path
     versions: set[str] = field(default_factory=set)
+    #: Input format: "CityGML", or "CityJSON"/"CityJSONSeq" (:mod:`cityshade.cityjson`).
+    format: str = "CityGML"
+    #: LoD codes in poly_lod/ref_lod are LoD × lod_scale (CityJSON: 10, so "2.2" is 22), and
+    #: lod_labels spells a code as the file did where it is not simply the number.
+    lod_scale: int = 1
+    lod_labels: dict[int, str] = field(default_factory=dict)
     root_namespace: str = ""
     # Objects.
     obj_ids: list[str | None] = field(default_factory=list)
@@ -78,6 +84,9 @@ class RawModel:
     xyz: np.ndarray = field(default_factory=lambda: np.empty((0, 3)))
     ring_points: np.ndarray = field(default_factory=lambda: np.empty(0, np.int64))
     ring_bad: np.ndarray = field(default_factory=lambda: np.empty(0, np.uint8))
+    #: None: ring points are the rows of xyz in order. Else (CityJSON, whose vertex list is
+    #: shared) the row of xyz of every ring point, so no point is copied per ring.
+    point_vertex: np.ndarray | None = None
     # References (xlink:href in a geometry context); int64 arrays once reading is finished.
     ref_obj: np.ndarray = field(default_factory=lambda: np.empty(0, np.int64))
     ref_cls: np.ndarray = field(default_factory=lambda: np.empty(0, np.int64))

@@ -1,4 +1,4 @@
-"""``cityshade build CITY.gml``: write the .cityshade scene file."""
+"""``cityshade build CITY``: write the .cityshade scene file (CityGML or CityJSON input)."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -8,12 +8,26 @@ import click
 from cityshade.config import TIME_SOURCES
 
 
+def _lod_option(ctx, param, value: str | None) -> int | float | None:
+    """``--lod 2`` → 2; ``--lod 2.2`` → 2.2 (CityJSON's refined LoDs)."""
+    if value is None:
+        return None
+    text = value.strip()
+    whole, dot, tenth = text.partition(".")
+    if not (len(whole) == 1 and whole in "01234" and (not dot or (len(tenth) == 1
+                                                                   and tenth.isdigit()))):
+        raise click.BadParameter(f"{value} is not in the range 0 to 4 (whole LoDs; CityJSON "
+                                 f"also has refined ones such as 2.2)")
+    return float(text) if dot else int(whole)
+
+
 @click.command("build")
 @click.argument("city", type=click.Path(dir_okay=False, path_type=Path))
 @click.option("-o", "--output", type=click.Path(dir_okay=False, path_type=Path),
               help="Output file (default: CITY with suffix .cityshade).")
-@click.option("--lod", type=click.IntRange(0, 4),
-              help="LoD to take from every object (default: the highest each object has).")
+@click.option("--lod", callback=_lod_option, metavar="LOD",
+              help="LoD to take from every object: 0-4, or a CityJSON LoD such as 2.2 "
+                   "(default: the highest each object has).")
 @click.option("--theme", help="Appearance theme (default: the one with the most surfaces).")
 @click.option("--crs", help="CRS of the coordinates, e.g. EPSG:25832 (overrides srsName).")
 @click.option("--time-source", type=click.Choice(TIME_SOURCES), default="auto", show_default=True,
@@ -21,10 +35,11 @@ from cityshade.config import TIME_SOURCES
 @click.option("--config", "config_path", type=click.Path(dir_okay=False, path_type=Path),
               help="TOML settings file ([build], [kdtree] tables).")
 @click.option("-q", "--quiet", is_flag=True, help="No progress display and no summary.")
-def build(city: Path, output: Path | None, lod: int | None, theme: str | None, crs: str | None,
+def build(city: Path, output: Path | None, lod: int | float | None, theme: str | None, crs: str | None,
           time_source: str, config_path: Path | None, quiet: bool) -> None:
-    """Read CITY (CityGML 1.0/2.0/3.0), triangulate it, build its kd-tree, and write one
-    versioned, memory-mappable .cityshade file."""
+    """Read CITY (CityGML 1.0/2.0/3.0, CityJSON 1.0/1.1/2.0 or CityJSONSeq, told apart by
+    the content), triangulate it, build its kd-tree, and write one versioned,
+    memory-mappable .cityshade file."""
     import dataclasses
 
     from cityshade.build import build_file, default_output

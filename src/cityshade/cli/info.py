@@ -1,4 +1,5 @@
-"""``cityshade info FILE``: what a scene file (or a CityGML file, built in memory) contains."""
+"""``cityshade info FILE``: what a scene file (or a CityGML/CityJSON file, built in memory)
+contains."""
 from __future__ import annotations
 
 import json
@@ -46,6 +47,7 @@ def describe(scene) -> dict:
         "themes": rep.get("themes", []),
         "materials": len(scene.materials),
         "textures": [t["uri"] for t in scene.textures],
+        "input_format": rep.get("format", "CityGML"),
         "citygml_versions": rep.get("versions", []),
         "counters": rep.get("counters", {}),
         "warnings": rep.get("warnings", []),
@@ -60,7 +62,8 @@ def _text(d: dict) -> str:
     add = lines.append
     if d["file"]:
         add(f"source        {d['file']}")
-    add(f"CityGML       {', '.join(d['citygml_versions']) or '?'}")
+    # Versions of the input format (the key keeps its old name: CityJSON's are listed too).
+    add(f"{d['input_format']:<14}{', '.join(d['citygml_versions']) or '?'}")
     objs = ", ".join(f"{n} {t}" for t, n in d["objects"]["by_type"].items())
     add(f"objects       {d['objects']['total']:,} ({objs})")
     p = d["polygons"]
@@ -111,7 +114,8 @@ def info(file: Path, as_json: bool) -> None:
     """Describe FILE: objects by type, triangles, skipped polygons by reason, LoDs, time range
     and its source, CRS, origin, bounding box, materials, textures and the kd-tree.
 
-    FILE is a .cityshade file; a CityGML file is read and described without writing anything.
+    FILE is a .cityshade file; a CityGML, CityJSON or CityJSONSeq file is read and described
+    without writing anything.
     """
     from cityshade.errors import InputError
 

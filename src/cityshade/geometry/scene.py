@@ -26,7 +26,7 @@ from cityshade.citygml.crs import CrsInfo, GeographicProjector, resolve_model_cr
 from cityshade.citygml.reader import RawModel
 from cityshade.citygml.temporal import choose_interval, days_to_iso
 from cityshade.config import BuildSettings
-from cityshade.errors import EmptyModelError
+from cityshade.errors import EmptyModelError, UsageError
 
 #: Time-source codes stored per object (uint8).
 TIME_SOURCE_NAMES = ("none", "valid", "construction", "creation", "inherited")
@@ -233,6 +233,48 @@ def _polygon_targets(raw: RawModel, target: str, depth: int = 0) -> list[int]:
     return out
 
 
+def lod_label(raw: RawModel, code: int) -> str:
+    """How the report spells a LoD code: "2" (CityGML), "2.2" or "1" (CityJSON, as written)."""
+    if raw.lod_scale == 1:
+        return str(code)
+    label = raw.lod_labels.get(code)
+    if label is None:
+        whole, tenth = divmod(code, raw.lod_scale)
+        label = f"{whole}.{tenth}" if tenth else str(whole)
+    return label
+
+
+def lod_request_range(request: int | float | str | None, lod_scale: int
+                      ) -> tuple[int, int] | None:
+    """The LoD codes ``--lod`` selects: (lowest, highest), None for "the highest of each object".
+
+    CityGML (``lod_scale`` 1) has whole LoDs: ``2`` selects 2. CityJSON (``lod_scale`` 10)
+    also has refined ones: ``2.2`` selects exactly 2.2, and ``2`` selects the highest of 2,
+    2.0 … 2.9 each object has.
+
+    Raises
+    ------
+    UsageError
+        A refined LoD asked of a CityGML model, or a value that is no LoD.
+    """
+    if request is None:
+        return None
+    text = str(request).strip()
+    whole, dot, tenth = text.partition(".")
+    if not (whole.isdigit() and 0 <= int(whole) <= 4 and (not dot or tenth.isdigit()
+                                                           and len(tenth) == 1)):
+        raise UsageError(f"--lod {text}: a LoD is 0 to 4, or for CityJSON 0.0 to 4.9")
+    if dot:
+        if lod_scale == 1:
+            if int(tenth) == 0:
+                return int(whole), int(whole)
+            raise UsageError(f"--lod {text}: CityGML has whole LoDs 0 to 4 (refined LoDs "
+                             f"such as 2.2 exist in CityJSON only)")
+        code = int(whole) * lod_scale + int(tenth)
+        return code, code
+    return int(whole) * lod_scale, int(whole) * lod_scale + lod_scale - 1
+
+
 def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
     """Select, triangulate and assemble the scene of a read CityGML file.
 
@@ -268,21 +310,26 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
     upgrade = (poly_cls[ref_items[1]] == 0) & (ref_cls != 0)
     poly_cls[ref_items[1][upgrade]] = ref_cls[upgrade]
 
-    # 3. LoD per object: the requested one, else the highest it has.
+    # 3. LoD per object: the highest it has within the requested range, else the highest.
     n_obj = len(raw.obj_ids)
     obj_max_lod = np.full(n_obj, -1, np.int64)
     np.maximum.at(obj_max_lod, item_obj, item_lod)
     # Objects per LoD they have (an object with LoD 1 and 2 counts under both).
-    has = np.zeros((n_obj, 5), bool)
     known = item_lod >= 0
+    has = np.zeros((n_obj, max(5, int(obj_max_lod.max(initial=-1)) + 1)), bool)
     has[item_obj[known], item_lod[known]] = True
     lod_table = {lod: int(n) for lod, n in enumerate(has.sum(axis=0)) if n}
-    if settings.lod is None:
+    lod_range = lod_request_range(settings.lod, raw.lod_scale)
+    if lod_range is None:
         chosen = obj_max_lod
     else:
-        chosen = np.full(n_obj, settings.lod, np.int64)
-        has_lod = np.zeros(n_obj, bool)
-        has_lod[item_obj[(item_lod == settings.lod) | (item_lod < 0)]] = True
+        lo, hi = lod_range
+        in_range = (item_lod >= lo) & (item_lod <= hi)
+        chosen = np.full(n_obj, -1, np.int64)
+        np.maximum.at(chosen, item_obj[in_range], item_lod[in_range])
+        has_lod = chosen >= 0
+        has_lod[item_obj[item_lod < 0]] = True
+        chosen[chosen < 0] = lo
         has_geometry = np.zeros(n_obj, bool)
         has_geometry[item_obj] = True
         missing = int((has_geometry & ~has_lod).sum())
@@ -319,6 +366,8 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
         rings = _expand_ranges(poly_ring0[polys], p_nrings)
     ring_len = raw.ring_points[rings]
     point_idx = _expand_ranges(ring_start[rings], ring_len)
+    if raw.point_vertex is not None:
+        point_idx = raw.point_vertex[point_idx]  # a shared vertex list (CityJSON)
     coords = raw.xyz[point_idx]
     ring_offsets = np.concatenate([[0], np.cumsum(ring_len)]).astype(np.int64)
     poly_ring_offsets = np.concatenate([[0], np.cumsum(p_nrings)]).astype(np.int64)
@@ -401,12 +450,15 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
     p_obj_drawn = p_obj[drawn]
     tri_object = p_obj_drawn[tri_polygon]
     poly_class = poly_cls[orig_poly].astype(np.uint8)
-    obj_lod = np.where(obj_max_lod >= 0, chosen, -1).astype(np.int8)
+    obj_lod_code = np.where(obj_max_lod >= 0, chosen, -1)
+    # The cache keeps the whole LoD (0–4) in both formats; the report spells the codes.
+    obj_lod = np.where(obj_lod_code >= 0, obj_lod_code // raw.lod_scale, -1).astype(np.int8)
     finite = np.concatenate([obj_begin[np.isfinite(obj_begin)], obj_end[np.isfinite(obj_end)]])
     time_range = ([days_to_iso(float(finite.min())), days_to_iso(float(finite.max()))]
                   if finite.size else None)
     sources = Counter(TIME_SOURCE_NAMES[int(c)] for c in obj_source)
     report = {
+        "format": raw.format,
         "versions": sorted(raw.versions),
         "objects_by_type": dict(sorted(Counter(raw.obj_types).items())),
         "polygons": {"read": n_poly_all + cavities, "drawn": int(len(drawn)),
@@ -414,9 +466,9 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
                      "not_selected_lod": counters.pop("polygons_not_selected_lod")},
         "skipped": dict(sorted(skipped.items())),
         "repairs": dict(sorted(repairs.items())),
-        "lods": {str(k): v for k, v in sorted(lod_table.items())},
-        "lods_drawn": {str(k): int(v) for k, v in zip(*np.unique(obj_lod[obj_lod >= 0],
-                                                                 return_counts=True))},
+        "lods": {lod_label(raw, k): v for k, v in sorted(lod_table.items())},
+        "lods_drawn": {lod_label(raw, int(k)): int(v) for k, v in zip(
+            *np.unique(obj_lod_code[obj_lod_code >= 0], return_counts=True))},
         "lod_requested": settings.lod,
         "time_source": settings.time_source,
         "time_sources_used": dict(sorted(sources.items())),
