@@ -44,7 +44,12 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
     read_progress = (lambda done, total: progress("read", done, total)) if progress else None
-    raw = read_citygml(source, progress=read_progress)
+    generic = ()
+    if settings.build.time_attribute:
+        from cityshade.citygml.temporal import parse_time_attribute
+
+        generic = [n for n in parse_time_attribute(settings.build.time_attribute) if n]
+    raw = read_citygml(source, progress=read_progress, generic_attributes=generic)
     timings["read_s"] = time.perf_counter() - t0
     if progress:
         progress("triangulate", 0, 1)

@@ -6,6 +6,8 @@ from pathlib import Path
 
 import click
 
+from cityshade.cli.options import crs_option
+
 
 class _Bar:
     """A one-line progress bar on a terminal's stderr (silent when stderr is not a terminal)."""
@@ -67,8 +69,9 @@ def _int_list(text: str, what: str) -> tuple[int, ...]:
 @click.option("-o", "--output", type=click.Path(file_okay=False, path_type=Path),
               help="Report folder (results.csv, report.md, plots, diff images); required "
                    "without --stress.")
+@crs_option
 def evaluate(file, views, sun_text, date_text, times, tz, shadows, sizes, size, pixel_size,
-             repeat, stress, quick, output):
+             repeat, stress, quick, output, crs):
     """Error of every shadow technique against the exact ray-traced shadows of FILE (a
     .cityshade scene or a CityGML file), and its run time, per view, sun and map size."""
     from cityshade.cli.options import parse_size
@@ -109,7 +112,9 @@ def evaluate(file, views, sun_text, date_text, times, tz, shadows, sizes, size, 
     width, height = parse_size(size)
     day = date_text or dt.date.today().isoformat()
     city_days = parse_user_date(day.split("T")[0] if times else day, tz).city_days
-    scene = open_scene(file)
+    from cityshade.cli.options import settings_for_source
+
+    scene = open_scene(file, settings_for_source(file, crs))
     suns = (suns_of_day(day, times, tz, scene) if times
             else parse_suns(sun_text or "135,45;240,15", scene))
     cams = [(v, make_camera(scene, v, (width, height), pixel_size, city_days))

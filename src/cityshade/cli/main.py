@@ -52,12 +52,37 @@ def cli() -> None:
     """cityshade: exact, fast shadow pictures and shadow data from CityGML city models.
 
     \b
-    Typical use:
+    Typical use (every command; COMMAND --help for its options):
       cityshade build city.gml            # writes city.cityshade
       cityshade info city.cityshade       # what is in it
+      cityshade render city.cityshade --date 1850 --sun-azimuth 135 --sun-elevation 30 -o a.exr
+      cityshade batch city.cityshade --date 2024-06-21 --from 05:00 --to 21:00 --every 10min \\
+          --tz Europe/Berlin --camera map -o sunhours/
+      cityshade evaluate city.cityshade --shadows all -o report/
     """
 
 
 def main(argv: list[str] | None = None) -> None:
-    """Console-script entry point (``cityshade`` and ``python -m cityshade``)."""
-    cli.main(args=argv, prog_name="cityshade")
+    """Console-script entry point (``cityshade`` and ``python -m cityshade``).
+
+    Ctrl-C at any moment ends with one line, ``cityshade: interrupted``, and exit status 130:
+    inside a command :func:`~cityshade.cli.options.translate_errors` says so; while click
+    parses the arguments its own "Aborted!" is replaced here.
+    """
+    import sys
+
+    from cityshade.cli.options import Interrupted, install_sigint_handler
+
+    install_sigint_handler()
+    try:
+        status = cli.main(args=argv, prog_name="cityshade", standalone_mode=False)
+    except (KeyboardInterrupt, click.exceptions.Abort):
+        Interrupted().show()
+        sys.exit(130)
+    except click.ClickException as exc:
+        exc.show()
+        sys.exit(exc.exit_code)
+    except click.exceptions.Exit as exc:
+        sys.exit(exc.exit_code)
+    # Without standalone mode click returns the status of --help, --version and ctx.exit().
+    sys.exit(status if isinstance(status, int) else 0)
