@@ -27,7 +27,7 @@ __all__ = [
     "DAYS_OPEN_BEGIN", "DAYS_OPEN_END", "GENERIC_PREFIX", "Interval", "TIME_ATTRIBUTES",
     "TIME_SOURCES", "TIME_SOURCES_ORDER", "UserDate", "choose_interval", "datetime_to_days",
     "days_to_iso", "has_creation_dates", "lmt_warning", "parse_time_attribute",
-    "parse_user_date", "SOLAR_TIME_ZONES",
+    "parse_user_date", "SOLAR_TIME_ZONES", "zone_of",
     "parse_xsd_datetime_days",
 ]
 
@@ -421,6 +421,11 @@ def _zone(tz):
     except (ZoneInfoNotFoundError, ValueError):
         raise UsageError(f"unknown time zone {tz!r}; give an IANA name such as "
                          f"Europe/Berlin") from None
+
+
+def zone_of(tz):
+    """The tzinfo of a ``--tz`` value (an IANA name, or a tzinfo as is); UsageError if unknown."""
+    return _zone(tz)
 
 
 def parse_user_date(text: str, tz: str | None = None) -> UserDate:

@@ -71,6 +71,9 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     every_s = B.parse_duration_s(every_text)
     steps = B.plan_steps(first_day, B.parse_clock_s(from_text), B.parse_clock_s(to_text),
                          every_s, tz, days=days, to_date=to_date, every_day=every_day)
+    from cityshade.cli.options import warn_lmt
+
+    warn_lmt([step.start_utc for step in steps[:1]], tz)
     city = parse_user_date(city_date or first_day.isoformat())
     scene = load_scene(file)
     cam = make_camera(scene, camera, eye, target, fov, size, pixel_size)

@@ -69,20 +69,38 @@ def main(argv: list[str] | None = None) -> None:
     inside a command :func:`~cityshade.cli.options.translate_errors` says so; while click
     parses the arguments its own "Aborted!" is replaced here.
     """
+    import signal
     import sys
 
-    from cityshade.cli.options import Interrupted, install_sigint_handler
+    from cityshade.cli.options import Interrupted, install_sigint_handler, interrupt_seen
 
     install_sigint_handler()
     try:
         status = cli.main(args=argv, prog_name="cityshade", standalone_mode=False)
+        # Without standalone mode click returns the status of --help, --version, ctx.exit().
+        status = status if isinstance(status, int) else 0
+        if interrupt_seen():
+            # A Ctrl-C swallowed by a library (a bare except around an import) still stops.
+            raise Interrupted()
     except (KeyboardInterrupt, click.exceptions.Abort):
         Interrupted().show()
-        sys.exit(130)
+        status = 130
     except click.ClickException as exc:
         exc.show()
-        sys.exit(exc.exit_code)
+        status = exc.exit_code
     except click.exceptions.Exit as exc:
-        sys.exit(exc.exit_code)
-    # Without standalone mode click returns the status of --help, --version and ctx.exit().
-    sys.exit(status if isinstance(status, int) else 0)
+        status = exc.exit_code
+    finally:
+        # The interpreter's shutdown resets handlers to the default, which would kill the
+        # process on a late Ctrl-C (status -2 instead of ours); an ignored SIGINT stays ignored.
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+    if status == 130:
+        # After a KeyboardInterrupt inside code that a C library ran through PyRun_* the
+        # interpreter's epilogue kills itself with SIGINT (status -2, not 130) whatever
+        # sys.exit says; everything is written and closed here, so leave without it.
+        import os
+
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os._exit(130)
+    sys.exit(status)

@@ -44,6 +44,11 @@ def on_sigint(signum, frame) -> None:
     raise KeyboardInterrupt
 
 
+def interrupt_seen() -> bool:
+    """Whether a Ctrl-C arrived since :func:`install_sigint_handler`."""
+    return _interrupt["seen"]
+
+
 def install_sigint_handler() -> None:
     """Route Ctrl-C through :func:`on_sigint` (only in the main thread, e.g. not in tests)."""
     import threading
@@ -76,19 +81,14 @@ def translate_errors():
     except Exception as exc:
         if _caused_by_interrupt(exc):
             raise Interrupted() from None
-        _translate(exc)
-
-
-def _translate(exc: Exception) -> None:
-    try:
-        raise exc
-    except CityshadeError as exc:
-        raise LibraryFailure(str(exc), exc.exit_code) from None
-    except OSError as exc:
-        where = f"{exc.filename}: " if getattr(exc, "filename", None) else ""
-        raise LibraryFailure(f"{where}{exc.strerror or exc}") from None
-    except MemoryError:
-        raise LibraryFailure("out of memory") from None
+        if isinstance(exc, CityshadeError):
+            raise LibraryFailure(str(exc), exc.exit_code) from None
+        if isinstance(exc, OSError):
+            where = f"{exc.filename}: " if getattr(exc, "filename", None) else ""
+            raise LibraryFailure(f"{where}{exc.strerror or exc}") from None
+        if isinstance(exc, MemoryError):
+            raise LibraryFailure("out of memory") from None
+        raise
 
 
 class Progress:
@@ -177,6 +177,20 @@ def reparse_solar_date(user_date, tz, scene):
     from cityshade.sun import solar_time_zone
 
     return parse_user_date(user_date.text, solar_time_zone(tz, scene.crs, scene.origin_m))
+
+
+def warn_lmt(instants_utc, tz) -> None:
+    """Warn when ``--tz`` gives the tz database's local mean time at these instants."""
+    from cityshade.citygml.temporal import lmt_warning, zone_of
+
+    if not isinstance(tz, str):
+        return
+    zone = zone_of(tz)
+    for instant in instants_utc:
+        warning = lmt_warning(zone, instant.astimezone(zone), tz)
+        if warning:
+            click.echo(f"cityshade: warning: {warning}", err=True)
+            return
 
 
 def warn_geotiff_without_crs(scene, path) -> None:
