@@ -449,3 +449,28 @@ def test_readme_dates_of_the_sample_match_info():
     assert found and found.groups() == (first, last)
     sample = (REPO / "sample_data" / "README.md").read_text(encoding="utf-8")
     assert f"{first}–{last}" in sample
+
+
+def test_geotiff_of_a_model_without_crs_warns_and_evaluate_crs_needs_gml(tmp_path):
+    from cityshade.build import build_file
+    from cityshade.cli.main import cli
+    src = tmp_path / "u.gml"
+    src.write_text(city(building("b", box_polygons(500_000.0, 5_400_000.0, 0.0, 10, 10, 10),
+                                 srs="EPSG:23632")), encoding="utf-8")
+    scene_path = tmp_path / "u.cityshade"
+    build_file(src, scene_path)
+    result = CliRunner().invoke(cli, [
+        "render", str(scene_path), "--date", "2000", "--sun-azimuth", "135",
+        "--sun-elevation", "30", "--camera", "map", "--pixel-size", "1", "-o",
+        str(tmp_path / "m.exr"), "--geotiff", str(tmp_path / "m.tif")])
+    assert result.exit_code == 0, result.output
+    assert "m.tif has no .prj" in result.output and "--crs" in result.output
+    assert not (tmp_path / "m.prj").exists()
+    # A sun from a date needs the place: one line naming --crs.
+    result = CliRunner().invoke(cli, ["render", str(scene_path), "--date", "2000-06-21T12:00Z",
+                                      "-o", str(tmp_path / "d.exr")])
+    assert result.exit_code == 1 and "rebuild it with --crs" in result.output
+    assert len(result.output.strip().splitlines()) == 1
+    result = CliRunner().invoke(cli, ["evaluate", str(scene_path), "--crs", "EPSG:25832", "-o",
+                                      str(tmp_path / "rep")])
+    assert result.exit_code == 2 and "--crs applies to a CityGML file" in result.output

@@ -8,7 +8,12 @@ Conventions (DESIGN §3)
   the registry, but every CityGML file writes easting first. All pyproj calls therefore use
   ``always_xy=True``.
 * Geographic coordinates are reprojected to WGS 84 / UTM (:class:`GeographicProjector`); their
-  axis order is decided from the CRS definition *and* the coordinate ranges.
+  axis order is decided from the value ranges, the right angles of the footprints and the
+  srsName spelling (``EPSG:4326`` short form and CRS84 longitude first, URNs and http URIs
+  latitude first), with a warning, or forced by ``--axis-order``.
+* A CRS that cannot be used (an unknown spelling, a code that does not exist) makes the model
+  build with its CRS recorded as unknown (:func:`unknown_crs`); an unknown height system of a
+  compound CRS is dropped with a note (heights are kept as written anyway).
 * Heights are never transformed: a city model's z is kept as written (vertical datums differ by
   centimetres to a few metres, which does not move a shadow).
 * A compound code (``EPSG:5555``, ``EPSG:6697``) is split into its horizontal and vertical parts,

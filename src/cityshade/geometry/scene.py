@@ -373,7 +373,10 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
         axis_order = "latlon" if projector.axis_lat_first else "lonlat"
         coords = projector.project(coords)
         crs = projector.target
-    elif len(coords):
+    elif settings.axis_order is not None:
+        warnings.append(f"--axis-order {settings.axis_order} ignored: {crs.name} is not a "
+                        f"geographic CRS (its coordinates are read easting first)")
+    if not crs.is_geographic and len(coords):
         # A wrong CRS (or a 10^7 m offset) puts the model somewhere else on Earth: say so.
         area_warning = area_of_use_warning(crs, coords.min(axis=0), coords.max(axis=0))
         if area_warning:
