@@ -474,3 +474,25 @@ def test_geotiff_of_a_model_without_crs_warns_and_evaluate_crs_needs_gml(tmp_pat
     result = CliRunner().invoke(cli, ["evaluate", str(scene_path), "--crs", "EPSG:25832", "-o",
                                       str(tmp_path / "rep")])
     assert result.exit_code == 2 and "--crs applies to a CityGML file" in result.output
+
+
+def test_batch_and_evaluate_accept_solar_time(tmp_path):
+    from cityshade.build import build_file
+    from cityshade.cli.main import cli
+    from conftest import REPO
+    scene_path = tmp_path / "s.cityshade"
+    build_file(REPO / "sample_data" / "sample_city.gml", scene_path)
+    # One step of an hour around true solar noon: its sun (at the step's middle) is due south.
+    result = CliRunner().invoke(cli, [
+        "batch", str(scene_path), "--date", "1850-06-21", "--from", "11:30", "--to", "12:30",
+        "--every", "1h", "--tz", "local-apparent", "--camera", "map", "--pixel-size", "8",
+        "-o", str(tmp_path / "b"), "-v"])
+    assert result.exit_code == 0, result.output
+    first = next(line for line in result.output.splitlines() if line.startswith("first"))
+    assert float(first.split("azimuth ")[1].split("°")[0]) == pytest.approx(180.0, abs=0.05)
+    from cityshade.evaluate import suns_of_day
+    from cityshade.scenefile import load_scene
+    from cityshade.cli.options import solar_zone_of_scene
+    scene = load_scene(scene_path)
+    sun, = suns_of_day("2024-11-03", "12:00", solar_zone_of_scene("local-apparent", scene), scene)
+    assert sun.azimuth_true_deg == pytest.approx(180.0, abs=0.05)

@@ -415,7 +415,7 @@ def _zone(tz):
         return tz
     if tz in SOLAR_TIME_ZONES:
         raise UsageError(f"--tz {tz} is solar time at the model's longitude; it needs the "
-                         f"model (render, batch and evaluate resolve it)")
+                         f"model (the render, batch and evaluate commands resolve it)")
     try:
         return ZoneInfo(tz)
     except (ZoneInfoNotFoundError, ValueError):

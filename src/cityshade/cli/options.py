@@ -168,22 +168,42 @@ def solar_placeholder(tz):
     return "UTC" if tz in SOLAR_TIME_ZONES else tz
 
 
+def solar_zone_of_scene(tz, scene):
+    """``--tz`` as given, or the solar-time tzinfo at the model's longitude."""
+    from cityshade.citygml.temporal import SOLAR_TIME_ZONES
+
+    if tz not in SOLAR_TIME_ZONES:
+        return tz
+    from cityshade.sun import solar_time_zone
+
+    return solar_time_zone(tz, scene.crs, scene.origin_m)
+
+
+def solar_zone_of_file(tz, path):
+    """:func:`solar_zone_of_scene` for a scene file not loaded yet (loaded only for solar time)."""
+    from cityshade.citygml.temporal import SOLAR_TIME_ZONES
+
+    if tz not in SOLAR_TIME_ZONES:
+        return tz
+    from cityshade.scenefile import load_scene
+
+    return solar_zone_of_scene(tz, load_scene(path))
+
+
 def reparse_solar_date(user_date, tz, scene):
     """The date again in solar time at the model's longitude (unchanged for other zones)."""
     from cityshade.citygml.temporal import SOLAR_TIME_ZONES, parse_user_date
 
     if tz not in SOLAR_TIME_ZONES or user_date.instant_utc is None:
         return user_date
-    from cityshade.sun import solar_time_zone
-
-    return parse_user_date(user_date.text, solar_time_zone(tz, scene.crs, scene.origin_m))
+    return parse_user_date(user_date.text, solar_zone_of_scene(tz, scene))
 
 
 def warn_lmt(instants_utc, tz) -> None:
     """Warn when ``--tz`` gives the tz database's local mean time at these instants."""
-    from cityshade.citygml.temporal import lmt_warning, zone_of
+    from cityshade.citygml.temporal import SOLAR_TIME_ZONES, lmt_warning, zone_of
 
-    if not isinstance(tz, str):
+    if not isinstance(tz, str) or tz in SOLAR_TIME_ZONES:
         return
     zone = zone_of(tz)
     for instant in instants_utc:
