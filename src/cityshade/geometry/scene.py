@@ -178,11 +178,16 @@ MAX_SKIPPED_IDS = 1000
 
 
 def _note_ids(out: dict[str, list[str]], reason: str, raw: RawModel, polys) -> None:
-    """Add the gml:ids (first :data:`MAX_SKIPPED_IDS`) of skipped polygons under ``reason``
-    (``""`` for a polygon without one)."""
+    """Add the gml:ids (first :data:`MAX_SKIPPED_IDS`) of skipped polygons under ``reason``;
+    a polygon without one is named by its object: ``"(no id) in OBJECT_ID, line N"``."""
     ids = out.setdefault(reason, [])
     for p in polys[:max(0, MAX_SKIPPED_IDS - len(ids))]:
-        ids.append(raw.poly_ids[int(p)] or "")
+        pid = raw.poly_ids[int(p)]
+        if not pid:
+            o = int(raw.poly_obj[int(p)])
+            pid = (f"(no id) in {raw.obj_ids[o] or 'an object without id'}, line "
+                   f"{raw.obj_line[o]}" if o >= 0 else "(no id)")
+        ids.append(pid)
 
 
 def _resolve_references(raw: RawModel, counters: Counter):
