@@ -346,7 +346,8 @@ def reference_sun_hours(vertices, triangles, points, normals, sun_directions, we
         for i, (p, n) in enumerate(zip(points, normals)):
             if n @ d <= 0.0:
                 continue
-            t, _ = reference_ray_hits(vertices, triangles, begin, end, p + offset_m * n, d)
+            t, _ = reference_ray_hits(vertices, triangles, begin, end,
+                                      p + offset_m * (n + d), d)
             if t.size == 0:
                 hours[i] += w
     return hours

@@ -401,7 +401,7 @@ def test_cli_resumes_after_interruption(files, tmp_path, monkeypatch):
 
     monkeypatch.setattr(B.Checkpoint, "save", save_then_interrupt)
     cut = _run("batch", scene_path, *ARGS, "-o", out)
-    assert cut.exit_code == 1 and "Aborted" in cut.output
+    assert cut.exit_code == 130 and "cityshade: interrupted" in cut.output
     manifest = json.loads((out / "manifest.json").read_text())
     assert manifest["status"] == "running" and manifest.get("sun_positions_done") in (4, 5)
     monkeypatch.setattr(B.Checkpoint, "save", real_save)

@@ -432,3 +432,20 @@ def test_bad_sequence_line(tmp_path):
                     "line 3 of the CityJSONSeq is not a CityJSONFeature")
     _write(tmp_path, good + "\n" + json.dumps(feature)[:-9] + "\n", "city.jsonl")
     _one_line_error(_run("build", path, "-o", tmp_path / "o.cityshade"), ":3: malformed JSON")
+
+
+def test_time_attribute_and_creation_dates_follow_the_citygml_rules(tmp_path):
+    """``--time-attribute`` reads a producer's own attribute (3D BAG's construction year), and
+    ``creationDate`` (a database time) is used only with ``--time-source creation``."""
+    obj = dict(_CUBE["CityObjects"]["b1"])
+    obj["attributes"] = {"oorspronkelijkbouwjaar": 1905, "creationDate": "2015-12-14"}
+    path = _write(tmp_path, {**_CUBE, "CityObjects": {"b1": obj}})
+    out = tmp_path / "t.cityshade"
+    for args, first_day in ((("--time-attribute", "begin=oorspronkelijkbouwjaar"), "1905-01-01"),
+                            (("--time-source", "creation"), "2015-12-14")):
+        result = _run("build", path, "-o", out, *args)
+        assert result.exit_code == 0, result.output
+        assert json.loads(_run("info", out, "--json").output)["time_range"][0] == first_day
+    result = _run("build", path, "-o", out)
+    assert result.exit_code == 0 and "creationDate" in result.output  # the warning
+    assert json.loads(_run("info", out, "--json").output)["time_range"] is None

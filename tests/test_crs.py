@@ -179,10 +179,13 @@ def test_resolve_unknown_spellings():
     result = resolve_model_crs_detailed(["EPSG:25832"] * 3 + ["bogus"])
     assert result.crs.horizontal_epsg == 25832
     assert any("bogus" in w for w in result.warnings)
-    with pytest.raises(CRSError, match="bogus"):
-        resolve_model_crs(["EPSG:25832"] + ["bogus"] * 2)
-    with pytest.raises(CRSError, match="bogus"):
-        resolve_model_crs(["bogus", "#local-CRS-1"])
+    # A known CRS wins over unknown spellings whatever their counts (issue 13 point 3).
+    result = resolve_model_crs_detailed(["EPSG:25832"] + ["bogus"] * 2)
+    assert result.crs.horizontal_epsg == 25832 and any("bogus" in w for w in result.warnings)
+    # Only unknown spellings: the model builds with its CRS recorded as unknown.
+    result = resolve_model_crs_detailed(["bogus", "bogus", "#local-CRS-1"])
+    assert result.crs.local and result.crs.name == "unknown (bogus)"
+    assert len(result.warnings) == 1 and "--crs" in result.warnings[0]
 
 
 # --- every srsName of the real data ---------------------------------------------------------
@@ -225,8 +228,8 @@ def test_plateau_6697_projects_to_utm54(shared_data):
     xyz = _pos_lists(path, 50)
     crs = parse_srs_name("http://www.opengis.net/def/crs/EPSG/0/6697")
     projector = GeographicProjector(crs, xyz)
-    # Latitude first, as EPSG:6697 says: no warning.
-    assert projector.axis_lat_first and projector.warning is None
+    # Latitude first, as EPSG:6697 and the http spelling say (the warning says so).
+    assert projector.axis_lat_first and "read latitude first" in projector.warning
     # Longitude 139.7°E lies in UTM zone floor((139.7 + 180) / 6) + 1 = 54, north.
     assert projector.target.horizontal_epsg == 32654
     out = projector.project(xyz)
@@ -253,7 +256,7 @@ def test_longitude_first_under_4979_is_detected():
     p_lon = GeographicProjector(crs, lon_first)
     p_lat = GeographicProjector(crs, lat_first)
     assert not p_lon.axis_lat_first and "longitude first" in p_lon.warning
-    assert p_lat.axis_lat_first and p_lat.warning is None
+    assert p_lat.axis_lat_first and "beyond 75°" in p_lat.warning
     assert p_lon.target.horizontal_epsg == p_lat.target.horizontal_epsg == 32618
     a, b = p_lon.project(lon_first), p_lat.project(lat_first)
     np.testing.assert_allclose(a, b, rtol=0, atol=1e-6)
@@ -273,13 +276,16 @@ def test_jefferson_file_is_longitude_first(shared_data):
 
 
 def test_axis_order_heuristic_edges():
-    crs = parse_srs_name("EPSG:4326")
-    # Both orders fit and neither latitude is polar: the official order (lat first) is kept.
+    crs = parse_srs_name("urn:ogc:def:crs:EPSG::4326")
+    # Both orders fit and neither latitude is polar: the spelling decides (the URN: lat first;
+    # the short form: longitude first, GML 3.1 practice).
     assert GeographicProjector(crs, np.array([[50.0, 10.0, 0.0]])).axis_lat_first
+    assert not GeographicProjector(parse_srs_name("EPSG:4326"),
+                                   np.array([[50.0, 10.0, 0.0]])).axis_lat_first
     # A polar reading is rejected in favour of the city-like one: (80, 10) is lon 80°, lat 10°.
     p = GeographicProjector(crs, np.array([[80.0, 10.0, 0.0]]))
     assert not p.axis_lat_first and "longitude first" in p.warning
-    assert GeographicProjector(crs, np.array([[10.0, 80.0, 0.0]])).warning is None
+    assert GeographicProjector(crs, np.array([[10.0, 80.0, 0.0]])).axis_lat_first
     # Southern hemisphere: UTM south zone (Melbourne 144.96°E, 37.8°S → zone 55S).
     p = GeographicProjector(crs, np.array([[-37.8, 144.96, 0.0]]))
     assert p.target.horizontal_epsg == 32755

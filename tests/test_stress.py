@@ -19,8 +19,9 @@ def test_quick_stress_set_passes_on_the_sample_city(tmp_path):
     lines = [ln for ln in res.output.splitlines() if ln.startswith(("PASS", "FAIL"))]
     failed = [ln for ln in lines if ln.startswith("FAIL")]
     assert res.exit_code == 0 and not failed, "\n".join(failed) or res.output
-    # Every part of the set ran: 7 elevations, shift, geometry, time, sizes, cascades, street.
-    assert len(lines) == 13, res.output
+    # Every part of the set ran: 7 elevations, shift, geometry, wall foot, time, sizes,
+    # cascades, street.
+    assert len(lines) == 14, res.output
     table = (tmp_path / "stress.md").read_text()
     assert "identical pixels % 100" in table and "time splits 0" in table
 

@@ -151,8 +151,10 @@ def test_choose_interval_each_source(source, expected):
 def test_choose_interval_auto_order():
     no_valid = {k: v for k, v in ALL_FAMILIES.items() if not k.startswith("valid")}
     assert choose_interval(no_valid, "auto").source == "construction"
+    # creationDate is a database time (issue 13): auto never takes it, creation does.
     only_creation = {"creationDate": "2010-01-01"}
-    got = choose_interval(only_creation, "auto")
+    assert choose_interval(only_creation, "auto") == Interval(-math.inf, math.inf, "none", ())
+    got = choose_interval(only_creation, "creation")
     assert got == Interval(D(2010, 1, 1), DAYS_OPEN_END, "creation", ())
     # An end alone is enough to select a family; the begin is then open.
     got = choose_interval({"validTo": "1990-01-01", "creationDate": "2010-01-01"}, "auto")
@@ -192,17 +194,17 @@ def test_choose_interval_bad_values_are_reported_and_skipped():
 
 def test_interval_that_never_exists_is_kept():
     got = choose_interval({"creationDate": "2015-01-01", "terminationDate": "2000-01-01"},
-                          "auto")
+                          "creation")
     assert (got.begin_days, got.end_days) == (D(2015, 1, 1), D(2000, 1, 1))
     assert got.never_exists and not got.contains(D(2010, 1, 1))
     same = choose_interval({"creationDate": "1967-08-13", "terminationDate": "1967-08-13"},
-                           "auto")
+                           "creation")
     assert same.never_exists
     assert not choose_interval(ALL_FAMILIES, "auto").never_exists
 
 
 def test_choose_interval_unknown_source():
-    with pytest.raises(UsageError, match="auto, valid, construction, creation"):
+    with pytest.raises(UsageError, match="auto, valid, construction, attribute, creation"):
         choose_interval({}, "demolition")
 
 
@@ -222,7 +224,10 @@ def test_lyon_versioning_example(shared_data):
         attrs = {etree.QName(child).localname: child.text for child in building
                  if isinstance(child.tag, str)
                  and etree.QName(child).localname in TIME_ATTRIBUTES}
-        intervals[building.get(gml_id)] = choose_interval(attrs, "auto")
+        # The versioning module's dates are creationDate/terminationDate: database times,
+        # which only --time-source creation uses (auto leaves them open, with a warning).
+        assert choose_interval(attrs, "auto").source == "none"
+        intervals[building.get(gml_id)] = choose_interval(attrs, "creation")
     assert len(intervals) == 4
     old = intervals["BU_69381AL47_2000-01-01"]
     assert (old.begin_days, old.end_days, old.source) == (D(2000, 1, 1), D(2015, 1, 1),

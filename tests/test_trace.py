@@ -395,3 +395,32 @@ def test_brick_interleave_is_a_permutation():
         n_iter = STRIPES * ((n_bricks + STRIPES - 1) // STRIPES)
         bricks = [b for b in (_brick_of(j, n_bricks) for j in range(n_iter)) if b >= 0]
         assert sorted(bricks) == list(range(n_bricks))
+
+
+def test_shadow_ray_leaves_the_wall_at_the_foot_of_a_sun_facing_wall():
+    """Issue 13 point 12: points exactly on a roof-step edge lie in the plane of the step's
+    wall; offset only along the roof normal their shadow rays hit that wall at distance ≈ 0.
+    The stress set's case: every foot point of the sun-facing wall is lit, every foot point of
+    the wall facing away is in shadow."""
+    from cityshade.stress import wall_foot_case
+
+    case = wall_foot_case()
+    assert case.passed, case.failures
+    assert case.numbers["false shadow"] == 0 and case.numbers["false lit"] == 0
+
+
+def test_sample_pixel_at_a_roof_step_is_lit():
+    """The reported pixel: sample city, 1990, sun 135°/30°, map at 1 m, row 99, col 264
+    (centre 690244.5, 5336100.5, exactly on a roof-step edge in front of a sun-facing wall)."""
+    from conftest import REPO
+    from cityshade.build import build_scene_from_file
+    from cityshade.citygml.temporal import parse_user_date
+    from cityshade.raster import camera as cams
+    from cityshade.render import render_frame
+    from cityshade.sun import sun_from_angles
+
+    scene = build_scene_from_file(REPO / "sample_data" / "sample_city.gml")
+    cam = cams.map_view(scene, 1.0)
+    sun = sun_from_angles(135.0, 30.0, scene.crs, scene.origin_m)
+    frame = render_frame(scene, cam, parse_user_date("1990").city_days, sun, "raytrace")
+    assert frame.lit[99, 264] == 1.0, "the pixel at the foot of the sun-facing wall is in shadow"

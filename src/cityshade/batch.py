@@ -362,33 +362,32 @@ class SunHours:
 
 
 class _PixelRays:
-    """Sun-independent part of the exact shadow stage, computed once per batch: the normals of
-    the visible surfaces turned towards the camera and the shadow-ray origins pushed off the
-    surface along them (:func:`cityshade.trace.shadow_rays_from_surface` offsets along the
-    normal, not the sun). Per step the same rule as the ``raytrace`` technique applies: a pixel
-    facing away from the sun (N·L <= 0) is in shadow, the others are traced."""
+    """Sun-independent part of the exact shadow stage, computed once per batch: the visible
+    surface points and their normals turned towards the camera. Per step the same rule as the
+    ``raytrace`` technique applies: a pixel facing away from the sun (N·L <= 0) is in shadow,
+    the others are traced from :func:`cityshade.trace.shadow_rays_from_surface` (whose origin
+    steps along the normal and toward the sun, so it is made per step)."""
 
     def __init__(self, surfaces, camera, valid):
         from cityshade.shadows import oriented_normals
-        from cityshade.trace import shadow_rays_from_surface
 
         self.valid = valid
         normal = oriented_normals(surfaces, camera)[valid]
         # Degenerate triangles have a zero normal: they never face the sun and are not traced.
         self.usable = np.flatnonzero(np.einsum("ij,ij->i", normal, normal) > 0.25)
         self.normal = np.ascontiguousarray(normal[self.usable])
-        self.origins = shadow_rays_from_surface(surfaces.position_m[valid][self.usable],
-                                                self.normal, np.array([0.0, 0.0, 1.0]))
+        self.points = np.ascontiguousarray(surfaces.position_m[valid][self.usable],
+                                           dtype=np.float64)
 
     def lit(self, scene, sun, t_days: float) -> np.ndarray:
         """(H, W) float32: 1 lit, 0 shadow or no surface."""
-        from cityshade.trace import occluded
+        from cityshade.trace import occluded, shadow_rays_from_surface
 
         flat = np.zeros(int(self.valid.sum()), np.float32)
         direction = np.asarray(sun.direction, dtype=np.float64)
         faces = np.flatnonzero(self.normal @ direction > 0.0)
         if len(faces):
-            origins = self.origins[faces]
+            origins = shadow_rays_from_surface(self.points[faces], self.normal[faces], direction)
             directions = np.ascontiguousarray(np.broadcast_to(direction, origins.shape))
             flat[self.usable[faces]] = ~occluded(scene, origins, directions, t_days)
         lit = np.zeros(self.valid.shape, np.float32)

@@ -6,7 +6,7 @@ import os
 import time
 from dataclasses import asdict
 from pathlib import Path
-from typing import Callable
+from typing import Callable, Iterable
 
 from cityshade.config import Settings
 from cityshade.geometry.scene import Scene
@@ -28,19 +28,22 @@ def default_output(source: str | os.PathLike) -> Path:
     return Path(source).with_suffix(".cityshade")
 
 
-def read_model(source: str | os.PathLike, progress: Callable[[int, int], None] | None = None):
+def read_model(source: str | os.PathLike, progress: Callable[[int, int], None] | None = None,
+               generic_attributes: Iterable[str] = ()):
     """Read a CityGML, CityJSON or CityJSONSeq file (told apart by its content) into a
-    :class:`~cityshade.citygml.reader.RawModel`."""
+    :class:`~cityshade.citygml.reader.RawModel`; ``generic_attributes`` are the attribute
+    names ``--time-attribute`` asks for."""
     from cityshade.cityjson.reader import detect_format
 
     kind = detect_format(source)
     if kind == "citygml":
         from cityshade.citygml.reader import read_citygml
 
-        return read_citygml(source, progress=progress)
+        return read_citygml(source, progress=progress, generic_attributes=generic_attributes)
     from cityshade.cityjson.reader import read_cityjson
 
-    return read_cityjson(source, progress=progress, seq=kind == "cityjsonseq")
+    return read_cityjson(source, progress=progress, seq=kind == "cityjsonseq",
+                         generic_attributes=generic_attributes)
 
 
 def build_scene_from_file(source: str | os.PathLike, settings: Settings | None = None,
@@ -59,7 +62,12 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
     timings: dict[str, float] = {}
     t0 = time.perf_counter()
     read_progress = (lambda done, total: progress("read", done, total)) if progress else None
-    raw = read_model(source, progress=read_progress)
+    generic = ()
+    if settings.build.time_attribute:
+        from cityshade.citygml.temporal import parse_time_attribute
+
+        generic = [n for n in parse_time_attribute(settings.build.time_attribute) if n]
+    raw = read_model(source, progress=read_progress, generic_attributes=generic)
     timings["read_s"] = time.perf_counter() - t0
     if progress:
         progress("triangulate", 0, 1)

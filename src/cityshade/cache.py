@@ -103,6 +103,8 @@ def write_cache(path: str | os.PathLike, header: Mapping[str, Any],
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
         fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+        # mkstemp makes the file 0600; a scene file is shared like any output: the umask's mode.
+        os.fchmod(fd, 0o666 & ~_current_umask())
     except OSError as exc:
         raise OutputError(f"cannot write here: {exc.strerror}", path=str(path)) from None
     try:
@@ -125,6 +127,13 @@ def write_cache(path: str | os.PathLike, header: Mapping[str, Any],
             pass
         raise
     return data_start + offset
+
+
+def _current_umask() -> int:
+    """The process's umask (reading it means setting it: set it straight back)."""
+    mask = os.umask(0o022)
+    os.umask(mask)
+    return mask
 
 
 class CacheFile:

@@ -16,7 +16,8 @@ from typing import Any, Mapping
 
 from cityshade.errors import ConfigError
 
-TIME_SOURCES = ("auto", "valid", "construction", "creation")
+TIME_SOURCES = ("auto", "valid", "construction", "attribute", "creation")
+AXIS_ORDERS = ("lonlat", "latlon")
 
 #: A LoD as text: whole (CityGML and CityJSON) or refined (CityJSON "2.2").
 _LOD_TEXT = re.compile(r"^[0-4](\.[0-9])?$")
@@ -33,9 +34,15 @@ class BuildSettings:
     theme: str | None = None
     #: Override of the file's CRS, e.g. "EPSG:25832" (needed for files without srsName).
     crs: str | None = None
+    #: Axis order of geographic coordinates, "lonlat" or "latlon"; None decides from the
+    #: values, the footprints' right angles and the srsName spelling (DESIGN §3).
+    axis_order: str | None = None
     #: Where validity intervals come from (DESIGN §3); "auto" takes the first available of
-    #: valid → construction → creation per object.
+    #: valid → construction → attribute per object (database creation dates only with
+    #: "creation").
     time_source: str = "auto"
+    #: Generic attribute(s) holding years or dates, "begin=NAME[,end=NAME]" (``--time-attribute``).
+    time_attribute: str | None = None
     #: Points closer than this (metres) are one point; below GML files' usual mm precision.
     merge_distance_m: float = 1e-6
     #: A point farther than this from the line of its neighbours, relative to the polygon size,
@@ -54,6 +61,17 @@ class BuildSettings:
         if self.time_source not in TIME_SOURCES:
             raise ConfigError(f"time_source must be one of {', '.join(TIME_SOURCES)}, "
                               f"not {self.time_source!r}")
+        if self.axis_order is not None and self.axis_order not in AXIS_ORDERS:
+            raise ConfigError(f"axis_order must be one of {', '.join(AXIS_ORDERS)}, "
+                              f"not {self.axis_order!r}")
+        if self.time_attribute is not None:
+            from cityshade.citygml.temporal import parse_time_attribute
+            from cityshade.errors import UsageError
+
+            try:
+                parse_time_attribute(self.time_attribute)
+            except UsageError as exc:
+                raise ConfigError(str(exc)) from None
         if self.lod is not None and (
                 isinstance(self.lod, bool) or not isinstance(self.lod, (int, float, str))
                 or (isinstance(self.lod, int) and not 0 <= self.lod <= 4)

@@ -515,6 +515,48 @@ def case_geometry(s: StressSettings) -> CaseResult:
     return chk.done()
 
 
+def wall_foot_case() -> CaseResult:
+    """Points exactly at the foot of a sun-facing wall are lit, at the foot of a wall facing
+    away in shadow (issue 13 point 12: the lower roof's point lies in the wall's plane, so a
+    shadow ray offset only along the roof normal hit the wall at distance ≈ 0).
+
+    A block whose middle third rises from 10 m to 20 m; points on both lower roofs exactly on
+    the step edges, suns from the west at 5°–60° and from the north-west and south-west.
+    """
+    from cityshade.accel.kdtree_build import build_kdtree
+    from cityshade.sun import direction_from_angles
+    from cityshade.trace import sunlit
+
+    chk = _Checker("foot of a sun-facing wall (points on a roof-step edge)")
+    faces = (_box(-10.0, -10.0, 0.0, 10.0, 20.0, 10.0) + _box(0.0, -10.0, 0.0, 10.0, 20.0, 20.0)
+             + _box(10.0, -10.0, 0.0, 10.0, 20.0, 10.0))
+    quads = np.array([pts for _, pts in faces], np.float32)          # (F, 4, 3)
+    vertices = quads.reshape(-1, 3)
+    base = 4 * np.arange(len(quads))[:, None]
+    triangles = np.concatenate([base + [0, 1, 2], base + [0, 2, 3]]).astype(np.int32)
+    n = len(triangles)
+    tree = build_kdtree(vertices, triangles, np.full(n, -np.inf), np.full(n, np.inf),
+                        np.zeros(n, np.int32))
+    ys = np.arange(-9.5, 9.75, 0.25)
+    west = np.column_stack([np.zeros_like(ys), ys, np.full_like(ys, 10.0)])   # sunny foot
+    east = np.column_stack([np.full_like(ys, 10.0), ys, np.full_like(ys, 10.0)])
+    up = np.tile([0.0, 0.0, 1.0], (len(ys), 1))
+    wrong_lit = wrong_shadow = 0
+    for azimuth in (225.0, 270.0, 315.0):
+        for elevation in (5.0, 30.0, 60.0):
+            sun = direction_from_angles(azimuth, elevation)
+            wrong_shadow += int((~sunlit(tree, west, up, sun)).sum())
+            wrong_lit += int(sunlit(tree, east, up, sun).sum())
+    chk.case.numbers["points"] = 2 * 9 * len(ys)
+    chk.case.numbers["false shadow"] = wrong_shadow
+    chk.case.numbers["false lit"] = wrong_lit
+    if wrong_shadow:
+        chk.fail(f"{wrong_shadow} points at the foot of a sun-facing wall reported in shadow")
+    if wrong_lit:
+        chk.fail(f"{wrong_lit} points at the foot of a wall facing away reported lit")
+    return chk.done()
+
+
 def _model_dates(scene) -> list[float]:
     dates = np.concatenate([scene.obj_t_begin_days, scene.obj_t_end_days])
     return sorted(set(float(d) for d in dates[np.isfinite(dates)]))
@@ -675,6 +717,7 @@ def run_stress(path, settings: StressSettings | None = None,
     if source is not None:
         jobs.append(("shift", lambda: case_shift(source, scene, s, t_days)))
     jobs.append(("geometry", lambda: case_geometry(s)))
+    jobs.append(("wall foot", wall_foot_case))
     jobs.append(("time slices", lambda: case_time_slices(scene, s)))
     jobs.append(("map sizes", lambda: case_map_sizes(scene, s, t_days)))
     jobs.append(("cascades", lambda: case_cascades(scene, s, t_days)))

@@ -15,9 +15,10 @@ with explicit angles never loads them.
 """
 from __future__ import annotations
 
+import functools
 import math
 from dataclasses import asdict, dataclass, replace
-from datetime import datetime, timezone
+from datetime import date, datetime, timedelta, timezone, tzinfo
 
 import numpy as np
 
@@ -359,3 +360,100 @@ def sun_from_instant(instant, crs, origin_m, settings: SpaSettings | None = None
     """One sun position of an aware instant at the model's origin (see
     :func:`suns_from_instants`)."""
     return suns_from_instants([instant], crs, origin_m, settings)[0]
+
+
+# --- solar time at the model's longitude (--tz local-mean, --tz local-apparent) -------------
+
+def equation_of_time_min(unix_s) -> np.ndarray:
+    """Equation of time (apparent − mean solar time) in minutes, from NREL's SPA (pvlib).
+
+    Parameters
+    ----------
+    unix_s : (N,) float
+        Instants, seconds since 1970-01-01T00:00 UTC.
+
+    Returns
+    -------
+    (N,) float64
+        E.g. about +16.4 min in early November, −14.2 min in mid-February.
+    """
+    import pvlib.spa
+
+    unix = np.atleast_1d(np.asarray(unix_s, dtype=np.float64))
+    days = np.floor(unix / 86_400.0).astype(np.int64)
+    instants = [datetime.fromordinal(int(d) + _EPOCH_ORDINAL).replace(tzinfo=timezone.utc)
+                for d in days]
+    dt = delta_t_seconds(instants)
+    # The place does not enter the equation of time; SPA wants one anyway.
+    out = pvlib.spa.solar_position(unix, 0.0, 0.0, 0.0, 1013.25, 12.0, dt, 0.5667)
+    return np.asarray(out[5], dtype=np.float64)
+
+
+class SolarTime(tzinfo):
+    """Mean or apparent (true) solar time at a longitude, as a :class:`datetime.tzinfo`.
+
+    Local mean time is UTC + longitude / 15° h (Munich, 11.575° E: +0:46:18). Local apparent
+    time adds the equation of time, so the sun crosses the meridian at 12:00; the equation is
+    taken once per local day (at mean noon: it changes by at most 30 s a day).
+    """
+
+    def __init__(self, longitude_deg: float, apparent: bool):
+        if not (math.isfinite(longitude_deg) and -180.0 <= longitude_deg <= 360.0):
+            raise UsageError(f"longitude {longitude_deg} is not on Earth")
+        self.longitude_deg = float(((longitude_deg + 180.0) % 360.0) - 180.0)
+        self.apparent = bool(apparent)
+        self._mean = timedelta(seconds=self.longitude_deg * 240.0)
+
+    def _eot(self, day: date) -> timedelta:
+        return _eot_of_day(day.toordinal(), self.longitude_deg)
+
+    def utcoffset(self, dt):
+        if dt is None or not self.apparent:
+            return self._mean
+        return self._mean + self._eot(dt.date())
+
+    def dst(self, dt):
+        return timedelta(0)
+
+    def tzname(self, dt):
+        kind = "local apparent time" if self.apparent else "local mean time"
+        return f"{kind} at {self.longitude_deg:.4f}° E"
+
+    def fromutc(self, dt):
+        local_mean = dt + self._mean
+        if not self.apparent:
+            return local_mean
+        return local_mean + self._eot(local_mean.date())
+
+    def __repr__(self) -> str:
+        return f"SolarTime({self.longitude_deg!r}, apparent={self.apparent})"
+
+
+@functools.lru_cache(maxsize=4096)
+def _eot_of_day(ordinal: int, longitude_deg: float) -> timedelta:
+    # Evaluate at the UTC instant of local mean noon of that day.
+    unix = (ordinal - _EPOCH_ORDINAL) * 86_400.0 + 43_200.0 - longitude_deg * 240.0
+    minutes = float(equation_of_time_min([unix])[0])
+    return timedelta(microseconds=round(minutes * 60e6))
+
+
+def solar_time_zone(kind: str, crs, origin_m) -> SolarTime:
+    """The tzinfo of ``--tz local-mean`` or ``--tz local-apparent`` at the model's origin.
+
+    Raises
+    ------
+    CRSError
+        The model has no CRS (its longitude is unknown); the message names ``--crs``.
+    UsageError
+        ``kind`` is neither.
+    """
+    from cityshade.citygml.temporal import SOLAR_TIME_ZONES
+
+    if kind not in SOLAR_TIME_ZONES:
+        raise UsageError(f"solar time is one of {', '.join(SOLAR_TIME_ZONES)}, not {kind!r}")
+    if crs is None or crs.local or crs.horizontal_epsg is None:
+        name = "none" if crs is None else crs.name
+        raise CRSError(f"--tz {kind} needs the model's longitude, but the model has no CRS "
+                       f"({name}); rebuild the scene with --crs EPSG:nnnn")
+    _, lon_deg, _ = model_place(crs, origin_m)
+    return SolarTime(lon_deg, apparent=kind == "local-apparent")

@@ -8,7 +8,12 @@ Conventions (DESIGN §3)
   the registry, but every CityGML file writes easting first. All pyproj calls therefore use
   ``always_xy=True``.
 * Geographic coordinates are reprojected to WGS 84 / UTM (:class:`GeographicProjector`); their
-  axis order is decided from the CRS definition *and* the coordinate ranges.
+  axis order is decided from the value ranges, the right angles of the footprints and the
+  srsName spelling (``EPSG:4326`` short form and CRS84 longitude first, URNs and http URIs
+  latitude first), with a warning, or forced by ``--axis-order``.
+* A CRS that cannot be used (an unknown spelling, a code that does not exist) makes the model
+  build with its CRS recorded as unknown (:func:`unknown_crs`); an unknown height system of a
+  compound CRS is dropped with a note (heights are kept as written anyway).
 * Heights are never transformed: a city model's z is kept as written (vertical datums differ by
   centimetres to a few metres, which does not move a shadow).
 * A compound code (``EPSG:5555``, ``EPSG:6697``) is split into its horizontal and vertical parts,
@@ -32,12 +37,17 @@ import numpy as np
 from cityshade.errors import CRSError
 
 __all__ = [
-    "CrsInfo", "CrsResolution", "GeographicProjector", "grid_convergence_deg", "parse_srs_name",
-    "resolve_model_crs", "resolve_model_crs_detailed", "to_wgs84",
+    "AXIS_ORDERS", "CrsInfo", "CrsResolution", "GeographicProjector", "MAX_CONVERGENCE_DEG",
+    "area_of_use_warning", "grid_convergence_deg", "parse_srs_name", "resolve_model_crs",
+    "resolve_model_crs_detailed", "right_angle_share", "srs_name_notes", "to_wgs84",
+    "unknown_crs",
 ]
 
-#: Hint appended to every "cannot use this CRS" message.
-_CRS_HINT = "give the CRS explicitly, e.g. --crs EPSG:25832"
+#: Hint appended to every "cannot use this CRS" message. It names no example code: a code from
+#: another country, followed literally, builds London in UTM 32N with the sun in the north.
+_CRS_HINT = "give the CRS of the coordinates with --crs EPSG:nnnn"
+#: What a model with an unknown CRS cannot do, for the warning and the later errors.
+_REBUILD_HINT = "rebuild the scene with --crs EPSG:nnnn"
 
 
 @dataclass(frozen=True)
@@ -143,10 +153,17 @@ _ADV_VERTICAL = {
     "DE_SNN76_NH": 5785,
 }
 _ADV_HEAD = "urn:adv:crs:"
+#: OGC's longitude-first WGS 84 (CRS84, 2-D; CRS84h, 3-D), as EPSG codes of the same datum.
+_CRS84_RE = re.compile(r"(?:ogc:|urn:ogc:def:crs:ogc:[\w.]*:|"
+                       r"https?://www\.opengis\.net/def/crs/ogc/[^/]*/)?(crs84h?)/?")
+_CRS84_EPSG = {"crs84": 4326, "crs84h": 4979}
 
 
 def _single_code(part: str) -> int | None:
     """EPSG code of one single-code spelling, or None when ``part`` is not one."""
+    match = _CRS84_RE.fullmatch(part)
+    if match:
+        return _CRS84_EPSG[match.group(1)]
     for pattern in _SINGLE_CODE_RES:
         match = pattern.fullmatch(part)
         if match:
@@ -204,15 +221,22 @@ def _sub_code(sub) -> int | None:
     return int(code) if code is not None else None
 
 
+def _unknown_code_message(code: int, srs_name: str) -> str:
+    from pyproj import proj_version_str
+    return (f"EPSG:{code} does not exist (no such code in the EPSG registry of PROJ "
+            f"{proj_version_str}; given as {srs_name!r})")
+
+
 @functools.lru_cache(maxsize=1024)  # a file repeats the same srsName thousands of times
-def _parse_cached(srs_name: str) -> CrsInfo:
+def _parse_cached(srs_name: str) -> tuple[CrsInfo, tuple[str, ...]]:
+    """(CrsInfo, notes) of a spelling; notes say what was left out (an unknown height system)."""
     text = srs_name.strip()
     if not text:
         raise CRSError(f"empty srsName; {_CRS_HINT}")
     # Refer to a CRS defined inside the file (gml:EngineeringCRS) or elsewhere: local metres.
     if text.startswith("#"):
         return CrsInfo(srs_name=srs_name, horizontal_epsg=None, vertical_epsg=None,
-                       is_geographic=False, local=True, name=f"local CRS {text}")
+                       is_geographic=False, local=True, name=f"local CRS {text}"), ()
     codes = _codes_from_spelling(text)
     if codes is None:
         raise CRSError(f"unknown CRS spelling {srs_name!r} (not an EPSG code, OGC URN/URI or "
@@ -220,13 +244,18 @@ def _parse_cached(srs_name: str) -> CrsInfo:
     if len(codes) > 2:
         raise CRSError(f"CRS {srs_name!r} names {len(codes)} components; expected a horizontal "
                        f"CRS and at most one height system; {_CRS_HINT}")
+    notes: list[str] = []
     crss = []
-    for code in codes:
+    for k, code in enumerate(codes):
         crs = _pyproj_crs(code)
         if crs is None:
-            from pyproj import proj_version_str
-            raise CRSError(f"EPSG:{code} (from srsName {srs_name!r}) is not in the EPSG "
-                           f"registry of PROJ {proj_version_str}; {_CRS_HINT}")
+            if k == 0:
+                raise CRSError(f"{_unknown_code_message(code, srs_name)}; {_CRS_HINT}")
+            # Heights are kept as written anyway (module docstring): an unknown height system
+            # (UK producers write EPSG:5101, Newlyn, which PROJ lacks) loses nothing.
+            notes.append(f"height system EPSG:{code} of {srs_name!r} is unknown to PROJ; "
+                         f"using the horizontal part EPSG:{codes[0]}, heights as written")
+            continue
         crss.append((code, crs))
     h_code, h_crs = crss[0]
     v_code = None
@@ -252,7 +281,7 @@ def _parse_cached(srs_name: str) -> CrsInfo:
                        f"horizontal CRS; {_CRS_HINT}")
     if h_crs.is_engineering:
         return CrsInfo(srs_name=srs_name, horizontal_epsg=None, vertical_epsg=v_code,
-                       is_geographic=False, local=True, name=h_crs.name)
+                       is_geographic=False, local=True, name=h_crs.name), tuple(notes)
     if not (h_crs.is_projected or h_crs.is_geographic):
         raise CRSError(f"CRS {srs_name!r} is a {h_crs.type_name} ({h_crs.name}); cityshade "
                        f"needs a projected or geographic CRS; {_CRS_HINT}")
@@ -265,7 +294,18 @@ def _parse_cached(srs_name: str) -> CrsInfo:
                            f"projected CRSs and geographic CRSs only")
     name = h_crs.name if v_name is None else f"{h_crs.name} + {v_name}"
     return CrsInfo(srs_name=srs_name, horizontal_epsg=h_code, vertical_epsg=v_code,
-                   is_geographic=bool(h_crs.is_geographic), local=False, name=name)
+                   is_geographic=bool(h_crs.is_geographic), local=False, name=name), tuple(notes)
+
+
+def srs_name_notes(srs_name: str) -> tuple[str, ...]:
+    """What :func:`parse_srs_name` left out of a spelling (e.g. an unknown height system)."""
+    return _parse_cached(srs_name)[1] if isinstance(srs_name, str) else ()
+
+
+def unknown_crs(srs_name: str) -> CrsInfo:
+    """The record of a CRS cityshade cannot use: local metres, no place on Earth."""
+    return CrsInfo(srs_name=srs_name, horizontal_epsg=None, vertical_epsg=None,
+                   is_geographic=False, local=True, name=f"unknown ({srs_name})")
 
 
 def parse_srs_name(srs_name: str) -> CrsInfo:
@@ -299,7 +339,7 @@ def parse_srs_name(srs_name: str) -> CrsInfo:
     """
     if not isinstance(srs_name, str):
         raise CRSError(f"srsName must be text, not {type(srs_name).__name__}")
-    return _parse_cached(srs_name)
+    return _parse_cached(srs_name)[0]
 
 
 class CrsResolution(NamedTuple):
@@ -314,11 +354,11 @@ def resolve_model_crs_detailed(srs_names: Iterable[str],
     """Choose the CRS of a whole file and say what was odd about its ``srsName`` values.
 
     The rules of :func:`resolve_model_crs`; besides, the warnings name the other horizontal
-    CRSs found (with their counts) and the unknown spellings that were ignored because a known
-    CRS was more frequent.
+    CRSs found (with their counts), the unknown spellings that were ignored, a height system
+    PROJ does not know, and an unknown CRS the file was built without.
     """
     if override is not None:
-        return CrsResolution(parse_srs_name(override), ())
+        return CrsResolution(parse_srs_name(override), srs_name_notes(override))
     counts = Counter(srs_names)
     # Group the spellings by the CRS they name, so 'EPSG:25832' and its URN count together.
     by_crs: dict[int, Counter] = {}
@@ -338,20 +378,26 @@ def resolve_model_crs_detailed(srs_names: Iterable[str],
         by_crs.setdefault(info.horizontal_epsg, Counter())[name] += count
     if not by_crs:
         if unknown:
-            raise unknown_errors[unknown.most_common(1)[0][0]]
+            # Build anyway (DESIGN §3): what needs no geodesy works; the rest names --crs.
+            name = unknown.most_common(1)[0][0]
+            why = str(unknown_errors[name]).removesuffix(f"; {_CRS_HINT}")
+            warnings = [f"the CRS of the file is unknown: {why}; building in its coordinates "
+                        f"without a place on Earth (for a sun from a date, true north or a "
+                        f"GeoTIFF's CRS, {_REBUILD_HINT})"]
+            warnings += [f"ignored {c}× unknown srsName {n!r}: {unknown_errors[n]}"
+                         for n, c in unknown.items() if n != name]
+            return CrsResolution(unknown_crs(name), tuple(warnings))
         return CrsResolution(first_local or NO_CRS, ())
     # Take the most frequent horizontal CRS (ties: first seen); within it the most frequent
-    # spelling, preferring one that also names the height system.
+    # spelling, preferring one that also names the height system. A known CRS wins over
+    # unknown spellings, whatever their counts: a model placed on Earth is worth a warning.
     ranked = sorted(by_crs.items(), key=lambda item: -sum(item[1].values()))
     _, spellings = ranked[0]
     total = sum(spellings.values())
-    best_unknown = unknown.most_common(1)
-    if best_unknown and best_unknown[0][1] > total:
-        raise unknown_errors[best_unknown[0][0]]
     best = max(spellings.items(),
                key=lambda item: (item[1], parse_srs_name(item[0]).vertical_epsg is not None))[0]
     crs = parse_srs_name(best)
-    warnings = []
+    warnings = list(srs_name_notes(best))
     if len(ranked) > 1:
         others = ", ".join(f"{parse_srs_name(next(iter(s))).name} ({sum(s.values())}×)"
                            for _, s in ranked[1:])
@@ -375,15 +421,17 @@ def resolve_model_crs(srs_names: Iterable[str], override: str | None = None) -> 
     Returns
     -------
     CrsInfo
-        The override; else the most frequent non-local CRS (spellings of the same horizontal
-        EPSG code count together; with several horizontal CRSs the most frequent wins, see
-        :func:`resolve_model_crs_detailed` for the warnings); else the first local CRS; else
+        The override; else the most frequent known non-local CRS (spellings of the same
+        horizontal EPSG code count together; with several horizontal CRSs the most frequent
+        wins, see :func:`resolve_model_crs_detailed` for the warnings); else, when the file
+        only has unknown spellings or codes, :func:`unknown_crs` of the most frequent (local,
+        no place on Earth); else the first local CRS; else
         ``CrsInfo(local=True, name="none")`` for a file without any srsName.
 
     Raises
     ------
     CRSError
-        The override cannot be parsed, or the most frequent srsName is unknown.
+        The override cannot be parsed or names a code that does not exist.
     """
     return resolve_model_crs_detailed(srs_names, override).crs
 
@@ -402,7 +450,7 @@ def _require_projectable(crs: CrsInfo, purpose: str) -> None:
         raise CRSError(f"expected a CrsInfo, not {type(crs).__name__}")
     if crs.local or crs.horizontal_epsg is None:
         raise CRSError(f"the model has no CRS ({crs.name}: local coordinates), so {purpose} "
-                       f"is unknown; give --crs EPSG:nnnn")
+                       f"is unknown; {_REBUILD_HINT} (or give --crs EPSG:nnnn)")
 
 
 @functools.lru_cache(maxsize=64)
@@ -437,21 +485,108 @@ def _as_xyz(xyz: np.ndarray, what: str) -> np.ndarray:
     return arr
 
 
+#: Axis orders a user can force (``--axis-order``).
+AXIS_ORDERS = ("lonlat", "latlon")
+#: A corner counts as right-angled within this many degrees; footprints drawn by surveyors
+#: are right to well under a degree, a 1.5× stretch of the wrong order bends them by ~20°.
+_RIGHT_ANGLE_TOL_DEG = 2.0
+#: Corners nearer than this to straight or to a spike say nothing about right angles.
+_CORNER_MIN_SIN = math.sin(math.radians(60.0))
+#: Edges shorter than this (metres, horizontal) are ignored: walls seen from above.
+_CORNER_MIN_EDGE_M = 0.5
+#: The geometric test decides when one order has this many more right-angled corners (as a
+#: share of the corners counted) and at least this many corners were counted.
+_RIGHT_ANGLE_MIN_MARGIN = 0.2
+_RIGHT_ANGLE_MIN_CORNERS = 4
+#: Mean Earth radius for the local equirectangular projection of the corner test (angles
+#: only; the radius cancels).
+_EARTH_RADIUS_M = 6_371_000.0
+
+
+def _spelling_order(srs_name: str | None) -> tuple[bool | None, str]:
+    """(latitude first?, why) from the srsName spelling; None when it says nothing.
+
+    GML 3.1 practice writes the short forms ``EPSG:4326`` and GML 2's
+    ``…/gml/srs/epsg.xml#4326`` longitude first, like CRS84; the URN and the OGC http URI
+    forms mean the EPSG definition's own order.
+    """
+    if not srs_name:
+        return None, "no srsName"
+    text = srs_name.strip().lower()
+    if _CRS84_RE.fullmatch(text):
+        return False, f"{srs_name!r} is longitude first by definition"
+    if re.fullmatch(r"epsg::?\d+", text) or text.startswith("http://www.opengis.net/gml/srs/"):
+        return False, f"the short spelling {srs_name!r} means longitude first in GML 3.1 practice"
+    if text.startswith(("urn:", "http://", "https://")):
+        return True, f"the spelling {srs_name!r} means the EPSG order, latitude first"
+    return None, f"the spelling {srs_name!r} implies no order"
+
+
+def right_angle_share(lon_deg: np.ndarray, lat_deg: np.ndarray,
+                      ring_offsets: np.ndarray) -> tuple[float, int]:
+    """Share of the horizontal ring corners that are right angles, and how many were counted.
+
+    The rings are projected to a local equirectangular plane (conformal at the centre, so
+    angles within a city are true to ~1e-4 rad). A corner is counted when both its horizontal
+    edges are longer than 0.5 m (walls seen from above have none) and it is not near straight
+    or a spike (60°–120°); it is right when within 2° of 90°.
+
+    Parameters
+    ----------
+    lon_deg, lat_deg : (N,) float64
+        Ring points, degrees, in ring order.
+    ring_offsets : (R + 1,) int
+        Ring ``r`` is points ``ring_offsets[r]:ring_offsets[r + 1]``.
+    """
+    lat0 = math.radians(0.5 * (float(lat_deg.min()) + float(lat_deg.max())))
+    if abs(lat0) >= math.pi / 2:
+        return 0.0, 0
+    x = np.radians(lon_deg) * math.cos(lat0) * _EARTH_RADIUS_M
+    y = np.radians(lat_deg) * _EARTH_RADIUS_M
+    offsets = np.asarray(ring_offsets, np.int64)
+    # Edge i joins point i to i + 1 inside a ring; corner i joins edges i and i + 1.
+    n = x.shape[0]
+    ring_of = np.repeat(np.arange(len(offsets) - 1), np.diff(offsets))
+    same = ring_of[:-1] == ring_of[1:]
+    ex, ey = np.diff(x), np.diff(y)
+    length = np.hypot(ex, ey)
+    valid_edge = same & (length > _CORNER_MIN_EDGE_M)
+    if n < 3:
+        return 0.0, 0
+    a, b = slice(0, n - 2), slice(1, n - 1)
+    corner = valid_edge[a] & valid_edge[b] & same[a] & same[b]
+    with np.errstate(invalid="ignore", divide="ignore"):
+        cross = (ex[a] * ey[b] - ey[a] * ex[b]) / (length[a] * length[b])
+    counted = corner & (np.abs(cross) >= _CORNER_MIN_SIN)
+    k = int(counted.sum())
+    if k == 0:
+        return 0.0, 0
+    right = np.abs(cross[counted]) >= math.cos(math.radians(_RIGHT_ANGLE_TOL_DEG))
+    return float(right.mean()), k
+
+
 class GeographicProjector:
     """Project geographic coordinates (degrees) to a WGS 84 / UTM zone chosen from the data.
 
     The zone (EPSG:326zz north, 327zz south) is the one of the centre of the sample's bounding
     box. Heights are kept as written.
 
-    Axis order heuristic: a coordinate whose magnitude exceeds 90 can only be a longitude, so
-    an order under which any latitude would exceed 90 (or a longitude 180) is impossible. When
-    both orders fit every point, the order whose latitudes are not polar (all
-    |lat| <= 75°) wins, since city models are not near the poles; when that does not decide,
-    the CRS's official order (latitude first for EPSG:4326, 4979, 6697, 4258, ...) wins. When
-    the chosen order contradicts the official one, :attr:`warning` says so (the Jefferson
-    building example writes longitude first under EPSG:4979: x ≈ -77.005, y ≈ 38.888).
-    A file written longitude first at small longitudes and latitudes below 75° (e.g. lon 10,
-    lat 50) cannot be told apart from the official order and is read in the official order.
+    The axis order is decided, in this order (DESIGN §3):
+
+    1. ``axis_order`` (the user's ``--axis-order lonlat|latlon``), when given;
+    2. the value ranges, where they decide: |value| > 90 can only be a longitude; a reading
+       whose latitudes would be polar (> 75°) loses to one that is not (city models are not
+       on the ice);
+    3. geometry, where the values fit both orders (a German city at 8.4° E, 49.0° N does):
+       building footprints are mostly right-angled, and the wrong order stretches the model
+       by cos(lat)/cos(lon) across the diagonal, bending every corner not parallel to the axes.
+       Both readings are projected (:func:`right_angle_share`) and the clearly more
+       right-angled one wins;
+    4. the srsName spelling: ``EPSG:4326`` (short form), GML 2 URLs and CRS84 are longitude
+       first in practice; URNs and OGC http URIs latitude first as EPSG defines;
+    5. the CRS definition's order.
+
+    :attr:`warning` always says what was chosen and why.
 
     Parameters
     ----------
@@ -460,13 +595,19 @@ class GeographicProjector:
     sample_xyz : numpy.ndarray
         (N, 3) float64 coordinates as written in the file (first two columns in file order);
         non-finite rows are ignored.
+    axis_order : {"lonlat", "latlon"}, optional
+        Forced order; an order under which the values are no degrees is an error.
+    ring_offsets : (R + 1,) int array, optional
+        The rings of ``sample_xyz`` for the geometric test (without it, no geometric test).
 
     Attributes
     ----------
     axis_lat_first : bool
         True when the file's first coordinate is the latitude.
-    warning : str or None
-        Set when the file's order contradicts the CRS definition.
+    reason : str
+        Why this order.
+    warning : str
+        What was chosen and why, for the build report.
     target : CrsInfo
         The metric CRS the scene will be in.
     source : CrsInfo
@@ -475,46 +616,78 @@ class GeographicProjector:
     Raises
     ------
     CRSError
-        ``crs`` is not geographic, the sample is empty, or no axis order makes every point a
-        valid longitude/latitude (projected coordinates under a geographic srsName).
+        ``crs`` is not geographic, the sample is empty, no axis order makes every point a
+        valid longitude/latitude (projected coordinates under a geographic srsName), or the
+        forced order does not.
     """
 
-    def __init__(self, crs: CrsInfo, sample_xyz: np.ndarray):
+    def __init__(self, crs: CrsInfo, sample_xyz: np.ndarray, axis_order: str | None = None,
+                 ring_offsets: np.ndarray | None = None):
         _require_projectable(crs, "the place on Earth")
         if not crs.is_geographic:
             raise CRSError(f"{crs.name} is not a geographic CRS; nothing to project")
+        if axis_order is not None and axis_order not in AXIS_ORDERS:
+            raise CRSError(f"axis order must be one of {', '.join(AXIS_ORDERS)}, "
+                           f"not {axis_order!r}")
         sample = _as_xyz(sample_xyz, "sample_xyz")
-        sample = sample[np.isfinite(sample[:, 0]) & np.isfinite(sample[:, 1])]
-        if sample.shape[0] == 0:
+        finite = np.isfinite(sample[:, 0]) & np.isfinite(sample[:, 1])
+        if not finite.any():
             raise CRSError(f"no finite coordinates to decide the axis order of {crs.name}")
         self.source = crs
         axes = _pyproj_crs(crs.horizontal_epsg).axis_info
         official_lat_first = axes[0].direction.lower() == "north"
-        abs0 = np.abs(sample[:, 0]).max()
-        abs1 = np.abs(sample[:, 1]).max()
+        fin = sample[finite]
+        abs0 = np.abs(fin[:, 0]).max()
+        abs1 = np.abs(fin[:, 1]).max()
         # Decide which orders fit every point at all.
         lat_first_fits = abs0 <= 90.0 and abs1 <= 180.0
         lon_first_fits = abs0 <= 180.0 and abs1 <= 90.0
+        ranges = f"first axis up to |{abs0:.6g}|, second up to |{abs1:.6g}|"
         if not (lat_first_fits or lon_first_fits):
             raise CRSError(f"coordinates up to |{abs0:.6g}|, |{abs1:.6g}| are not degrees, "
                            f"but the srsName says {crs.name} (EPSG:{crs.horizontal_epsg}); "
                            f"{_CRS_HINT}")
-        if lat_first_fits and lon_first_fits:
-            lat_first_city = abs0 <= _MAX_CITY_LATITUDE_DEG
-            lon_first_city = abs1 <= _MAX_CITY_LATITUDE_DEG
-            lat_first = official_lat_first if lat_first_city == lon_first_city else lat_first_city
-        else:
+        lat_first: bool | None = None
+        if axis_order is not None:
+            lat_first = axis_order == "latlon"
+            if not (lat_first_fits if lat_first else lon_first_fits):
+                raise CRSError(f"--axis-order {axis_order} does not fit the coordinates "
+                               f"({ranges}): latitudes would exceed 90°")
+            reason = f"--axis-order {axis_order}"
+        elif not (lat_first_fits and lon_first_fits):
             lat_first = lat_first_fits
+            reason = f"only this order gives valid degrees ({ranges})"
+        elif (abs0 <= _MAX_CITY_LATITUDE_DEG) != (abs1 <= _MAX_CITY_LATITUDE_DEG):
+            lat_first = abs0 <= _MAX_CITY_LATITUDE_DEG
+            reason = (f"the other order puts the model beyond {_MAX_CITY_LATITUDE_DEG:g}° of "
+                      f"latitude ({ranges})")
+        spelled, spelled_why = _spelling_order(crs.srs_name)
+        if lat_first is None and ring_offsets is not None:
+            offsets = np.asarray(ring_offsets, np.int64)
+            share_lonlat, n_lonlat = right_angle_share(sample[:, 0], sample[:, 1], offsets)
+            share_latlon, n_latlon = right_angle_share(sample[:, 1], sample[:, 0], offsets)
+            if (min(n_lonlat, n_latlon) >= _RIGHT_ANGLE_MIN_CORNERS
+                    and abs(share_lonlat - share_latlon) >= _RIGHT_ANGLE_MIN_MARGIN):
+                lat_first = share_latlon > share_lonlat
+                reason = (f"building corners are right-angled in this order "
+                          f"({100 * max(share_lonlat, share_latlon):.0f} % of "
+                          f"{n_latlon if lat_first else n_lonlat} corners, against "
+                          f"{100 * min(share_lonlat, share_latlon):.0f} % in the other)")
+                if spelled is not None and spelled != lat_first:
+                    reason += f", although {spelled_why}"
+        if lat_first is None:
+            if spelled is not None:
+                lat_first, reason = spelled, spelled_why
+            else:
+                lat_first = official_lat_first
+                reason = f"{spelled_why}: the EPSG definition's order"
         self.axis_lat_first = bool(lat_first)
-        self.warning: str | None = None
-        if self.axis_lat_first != official_lat_first:
-            written = "latitude" if self.axis_lat_first else "longitude"
-            official = "latitude" if official_lat_first else "longitude"
-            self.warning = (
-                f"coordinates are written {written} first (first axis up to |{abs0:.6g}|, "
-                f"second up to |{abs1:.6g}|) although EPSG:{crs.horizontal_epsg} defines "
-                f"{official} first; reading them {written} first")
-        lon, lat = self._lon_lat(sample)
+        self.reason = reason
+        written = "latitude" if self.axis_lat_first else "longitude"
+        other = "lonlat" if self.axis_lat_first else "latlon"
+        self.warning = (f"{crs.name} coordinates read {written} first: {reason}; "
+                        f"override with --axis-order {other}")
+        lon, lat = self._lon_lat(fin)
         # Centre of the bounding box (not the mean: a few far-off objects must not drag it).
         centre_lon = 0.5 * (lon.min() + lon.max())
         centre_lat = 0.5 * (lat.min() + lat.max())
@@ -594,6 +767,78 @@ def to_wgs84(crs: CrsInfo, x: float, y: float, z: float = 0.0) -> tuple[float, f
     return float(lon_deg), float(lat_deg), float(z)
 
 
+#: Degrees by which a model may reach beyond its CRS's area of use before it is warned about:
+#: producers use UTM and Gauss-Krüger zones a little beyond their bands (the Netherlands in
+#: EPSG:25832); a wrong CRS or a 10^7 m offset misses by far more.
+_AREA_OF_USE_MARGIN_DEG = 3.0
+#: Largest meridian convergence accepted for true → grid north outside polar projections:
+#: transverse Mercator zones stay within ~3.5° and national conic grids within ~7° inside
+#: their areas of use; +139.8° (the sample shifted by 10^7 m) only comes from wrong places.
+MAX_CONVERGENCE_DEG = 15.0
+
+
+def _area_of_use(epsg: int):
+    crs = _pyproj_crs(epsg)
+    return None if crs is None else crs.area_of_use
+
+
+def area_of_use_warning(crs: CrsInfo, lo_m, hi_m) -> str | None:
+    """A warning when the model's bounding box lies outside its CRS's area of use.
+
+    Parameters
+    ----------
+    crs : CrsInfo
+        The model's (projected or geographic) CRS; local and unknown CRSs get None.
+    lo_m, hi_m : sequence of float
+        Lower and upper corners of the bounding box in CRS coordinates (x, y first).
+
+    Returns
+    -------
+    str or None
+        The warning (the box in degrees, the area of use, what goes wrong), or None when the
+        box lies within the area of use widened by 3°.
+    """
+    if crs.local or crs.horizontal_epsg is None:
+        return None
+    area = _area_of_use(crs.horizontal_epsg)
+    if area is None:
+        return None
+    xs = [float(lo_m[0]), float(hi_m[0])]
+    ys = [float(lo_m[1]), float(hi_m[1])]
+    if crs.is_geographic:
+        lons, lats = xs, ys
+    else:
+        with np.errstate(all="ignore"):
+            lons, lats = _transformer(crs.horizontal_epsg, 4326).transform(
+                np.array([xs[0], xs[1], xs[0], xs[1]]), np.array([ys[0], ys[0], ys[1], ys[1]]))
+        lons, lats = list(np.asarray(lons)), list(np.asarray(lats))
+    m = _AREA_OF_USE_MARGIN_DEG
+    west, south, east, north = area.west, area.south, area.east, area.north
+    finite = all(math.isfinite(v) for v in (*lons, *lats))
+    if finite and all(abs(v) <= 90.0 for v in lats):
+        if west > east:  # the area crosses the antimeridian
+            inside_lon = all(v >= west - m or v <= east + m for v in lons)
+        else:
+            inside_lon = all(west - m <= v <= east + m for v in lons)
+        if inside_lon and all(south - m <= v <= north + m for v in lats):
+            return None
+        where = (f"{min(lons):.3f}…{max(lons):.3f}° E, {min(lats):.3f}…{max(lats):.3f}° N")
+    else:
+        where = "no place on Earth"
+    return (f"the model's bounding box ({xs[0]:.0f}…{xs[1]:.0f}, {ys[0]:.0f}…{ys[1]:.0f}) "
+            f"lies outside the area of use of {crs.name} (EPSG:{crs.horizontal_epsg}: "
+            f"{west:.1f}…{east:.1f}° E, {south:.1f}…{north:.1f}° N, {area.name.split(':')[0]}): "
+            f"it maps to "
+            f"{where}, so the CRS (or the coordinates) are wrong and the sun would be wrong; "
+            f"{_REBUILD_HINT} naming the right CRS")
+
+
+def _is_polar_projection(epsg: int) -> bool:
+    operation = _pyproj_crs(epsg).coordinate_operation
+    method = (operation.method_name if operation is not None else "").lower()
+    return "polar" in method or "azimuthal" in method
+
+
 def grid_convergence_deg(crs: CrsInfo, x: float, y: float) -> float:
     """Meridian (grid) convergence at a point: the angle from true north to grid north.
 
@@ -617,8 +862,10 @@ def grid_convergence_deg(crs: CrsInfo, x: float, y: float) -> float:
     Raises
     ------
     CRSError
-        Local CRS or no CRS ("the model has no CRS; give --crs"), or a point outside the
-        projection's domain.
+        Local CRS or no CRS ("the model has no CRS; give --crs"), a point outside the
+        projection's domain, or an absurd convergence (beyond :data:`MAX_CONVERGENCE_DEG` in a
+        projection that is not polar): the point is far outside the CRS's area of use, and
+        turning a true azimuth by that angle would make shadows fall the wrong way.
     """
     _require_projectable(crs, "true north")
     if crs.is_geographic:
@@ -628,5 +875,13 @@ def grid_convergence_deg(crs: CrsInfo, x: float, y: float) -> float:
     factors = proj.get_factors(lon_deg, lat_deg)
     convergence_deg = float(factors.meridian_convergence)
     if not math.isfinite(convergence_deg):
-        raise CRSError(f"point ({x}, {y}) is outside the domain of {crs.name}")
+        raise CRSError(f"point ({x}, {y}) is outside the domain of {crs.name}; "
+                       f"{_REBUILD_HINT} naming the right CRS")
+    if abs(convergence_deg) > MAX_CONVERGENCE_DEG and not _is_polar_projection(
+            crs.horizontal_epsg):
+        raise CRSError(f"the meridian convergence of {crs.name} at the model's origin "
+                       f"({x:.0f}, {y:.0f}) is {convergence_deg:+.1f}°, which its projection "
+                       f"never gives in its area of use (at most ±{MAX_CONVERGENCE_DEG:g}° is "
+                       f"believable): the coordinates are not in {crs.name}, so true north "
+                       f"cannot be turned to grid north; {_REBUILD_HINT} naming the right CRS")
     return convergence_deg

@@ -28,7 +28,7 @@ from collections import Counter
 from dataclasses import dataclass, field
 from itertools import chain
 from pathlib import Path
-from typing import Callable
+from typing import Callable, Iterable
 
 import numpy as np
 
@@ -139,6 +139,9 @@ def _prescan(path: Path) -> None:
 
 class _Walker:
     """Turns one top-level member subtree into records of a :class:`RawModel`."""
+
+    #: Generic attribute names to keep (read_citygml's ``generic_attributes``).
+    generic_attributes: frozenset = frozenset()
 
     def __init__(self, model: RawModel):
         self.m = model
@@ -276,11 +279,37 @@ class _Walker:
             local = tag[tag.rfind("}") + 1:]
             if local in ns.TIME_ATTRIBUTES and child.text:
                 times[local] = child.text.strip()
+            elif self.generic_attributes and local in _GENERIC_ATTRIBUTE_TAGS:
+                self.generic_attribute(child, times)
             elif local == "lod" and child.text and child.text.strip().isdigit():
                 relief_lod = int(child.text.strip())  # dem:lod of a relief
         m.obj_time.append(times)
         default_cls = ns.SURFACE_CODE[ns.OBJECT_DEFAULT_CLASS.get(obj_type, "unclassified")]
         self.walk(el, index, default_cls, relief_lod, 0)
+
+    def generic_attribute(self, el, times: dict[str, str]) -> None:
+        """Keep a generic attribute named by ``--time-attribute``: 1.0/2.0
+        ``<gen:intAttribute name="N"><gen:value>…`` or 3.0
+        ``<genericAttribute><gen:IntAttribute><gen:name>N</gen:name><gen:value>…``."""
+        from cityshade.citygml.temporal import GENERIC_PREFIX
+
+        if el.get("name") is None:  # 3.0: the property wraps the typed attribute
+            inner = [c for c in el if isinstance(c.tag, str)]
+            if not inner:
+                return
+            el = inner[0]
+        name = el.get("name")
+        value = None
+        for child in el:
+            if not isinstance(child.tag, str):
+                continue
+            local = child.tag[child.tag.rfind("}") + 1:]
+            if local == "name" and name is None:
+                name = (child.text or "").strip()
+            elif local == "value":
+                value = (child.text or "").strip()
+        if name in self.generic_attributes and value:
+            times[GENERIC_PREFIX + name] = value
 
     def walk(self, el, obj: int, cls: int, lod: int, flip: int) -> None:
         """Walk the children of ``el`` in the context (object, class, LoD, orientation flip).
@@ -581,8 +610,14 @@ def _root_of(path: Path, recover: bool):
     raise XMLSyntaxError("no XML element found", path=str(path))
 
 
-def read_citygml(path: str | os.PathLike, progress: Callable[[int, int], None] | None = None
-                 ) -> RawModel:
+#: Elements holding one generic attribute (1.0/2.0 typed elements, the 3.0 property).
+_GENERIC_ATTRIBUTE_TAGS = frozenset({
+    "stringAttribute", "intAttribute", "doubleAttribute", "dateAttribute", "uriAttribute",
+    "measureAttribute", "genericAttribute"})
+
+
+def read_citygml(path: str | os.PathLike, progress: Callable[[int, int], None] | None = None,
+                 generic_attributes: Iterable[str] = ()) -> RawModel:
     """Read a CityGML file into flat records.
 
     Parameters
@@ -591,6 +626,10 @@ def read_citygml(path: str | os.PathLike, progress: Callable[[int, int], None] |
         A CityGML 1.0 / 2.0 / 3.0 file (GML 3.1.1 or 3.2).
     progress : callable(bytes_read, bytes_total), optional
         Called after each top-level member.
+    generic_attributes : iterable of str
+        Names of generic attributes (``gen:stringAttribute name=…``, 3.0 ``genericAttribute``)
+        whose values go into each object's time attributes under
+        ``temporal.GENERIC_PREFIX + name`` (``--time-attribute``).
 
     Raises
     ------
@@ -608,19 +647,22 @@ def read_citygml(path: str | os.PathLike, progress: Callable[[int, int], None] |
                               f"{'{' + root_ns + '}' if root_ns else ''}{root_local}, "
                               f"not a CityGML CityModel", path=str(path))
     try:
-        return _read(path, root_ns, progress, recover=False)
+        return _read(path, root_ns, progress, recover=False,
+                     generic=frozenset(generic_attributes))
     except XMLSyntaxError as exc:
         # Real files (PLATEAU) use undeclared namespace prefixes: recover with a warning rather
         # than refusing the whole model. Anything else that is malformed stays an error.
         if "Namespace prefix" not in exc.message:
             raise
-        model = _read(path, root_ns, progress, recover=True)
+        model = _read(path, root_ns, progress, recover=True,
+                      generic=frozenset(generic_attributes))
         detail = exc.message.removeprefix("malformed XML: ")
         model.warnings.insert(0, f"XML namespace error recovered: {detail}")
         return model
 
 
-def _read(path: Path, root_ns: str, progress, recover: bool) -> RawModel:
+def _read(path: Path, root_ns: str, progress, recover: bool,
+          generic: frozenset = frozenset()) -> RawModel:
     from lxml import etree
 
     model = RawModel(path=path, root_namespace=root_ns)
@@ -628,6 +670,7 @@ def _read(path: Path, root_ns: str, progress, recover: bool) -> RawModel:
     if version:
         model.versions.add(version)
     walker = _Walker(model)
+    walker.generic_attributes = generic
     total = path.stat().st_size
     members = 0
     with path.open("rb") as fh:

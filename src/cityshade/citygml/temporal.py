@@ -24,8 +24,10 @@ from typing import Mapping, NamedTuple
 from cityshade.errors import UsageError
 
 __all__ = [
-    "DAYS_OPEN_BEGIN", "DAYS_OPEN_END", "Interval", "TIME_ATTRIBUTES", "TIME_SOURCES_ORDER",
-    "UserDate", "choose_interval", "datetime_to_days", "days_to_iso", "parse_user_date",
+    "DAYS_OPEN_BEGIN", "DAYS_OPEN_END", "GENERIC_PREFIX", "Interval", "TIME_ATTRIBUTES",
+    "TIME_SOURCES", "TIME_SOURCES_ORDER", "UserDate", "choose_interval", "datetime_to_days",
+    "days_to_iso", "has_creation_dates", "lmt_warning", "parse_time_attribute",
+    "parse_user_date", "SOLAR_TIME_ZONES", "zone_of",
     "parse_xsd_datetime_days",
 ]
 
@@ -190,6 +192,9 @@ def days_to_iso(days: float) -> str:
 
 TIME_ATTRIBUTES = ("validFrom", "validTo", "yearOfConstruction", "yearOfDemolition",
                    "dateOfConstruction", "dateOfDemolition", "creationDate", "terminationDate")
+#: Key prefix of generic attributes (``gen:stringAttribute name="baujahr"``) in the attribute
+#: mapping of an object, so a generic "validFrom" never shadows the core one.
+GENERIC_PREFIX = "generic:"
 
 #: Families of attributes: (begin names, end names), each list in order of preference. The
 #: CityGML 3 ``dateOf*`` (a full date) is preferred over the 2.0 ``yearOf*`` (a year).
@@ -199,8 +204,46 @@ _FAMILIES = {
                      ("dateOfDemolition", "yearOfDemolition")),
     "creation": (("creationDate",), ("terminationDate",)),
 }
-#: Order in which ``source='auto'`` tries the families (DESIGN §3).
-TIME_SOURCES_ORDER = ("valid", "construction", "creation")
+#: Order in which ``source='auto'`` tries the families (DESIGN §3). ``creationDate`` and
+#: ``terminationDate`` are database times (CityGML 2.0 §6.1, 3.0 Core: when the feature was
+#: entered into or removed from the database), not the life of a building: 3DCityDB stamps
+#: the import day on every object, so only ``source='creation'`` uses them.
+TIME_SOURCES_ORDER = ("valid", "construction", "attribute")
+#: Every source a user can name.
+TIME_SOURCES = ("valid", "construction", "attribute", "creation")
+#: A year written as a number by a generic int or double attribute: ``1905``, ``1905.0``.
+_NUMERIC_YEAR_RE = re.compile(r"(\d{4})(?:\.0*)?")
+
+
+def parse_time_attribute(text: str) -> tuple[str, str | None]:
+    """``--time-attribute begin=NAME[,end=NAME]`` → (begin name, end name or None).
+
+    Raises
+    ------
+    UsageError
+        Not of that form (an unknown key, a key twice, an empty name, no ``begin``).
+    """
+    if not isinstance(text, str):
+        raise UsageError(f"--time-attribute must be text, not {type(text).__name__}")
+    names: dict[str, str] = {}
+    for part in text.split(","):
+        key, sep, name = part.partition("=")
+        key, name = key.strip(), name.strip()
+        if not sep or key not in ("begin", "end") or not name or key in names:
+            raise UsageError(f"--time-attribute must be begin=NAME[,end=NAME] (generic "
+                             f"attribute names, e.g. begin=baujahr), not {text!r}")
+        names[key] = name
+    if "begin" not in names:
+        raise UsageError(f"--time-attribute needs begin=NAME, not {text!r}")
+    return names["begin"], names.get("end")
+
+
+def _parse_attribute_value(raw: str) -> float:
+    """Days of a generic attribute's year or date (``1905``, ``1905.0``, ``1905-03-01``)."""
+    match = _NUMERIC_YEAR_RE.fullmatch(raw.strip())
+    if match:
+        return parse_xsd_datetime_days(match.group(1))
+    return parse_xsd_datetime_days(raw)
 
 
 class Interval(NamedTuple):
@@ -233,33 +276,38 @@ class Interval(NamedTuple):
 
 
 def _first_value(attrs: Mapping[str, str], names: tuple[str, ...],
-                 bad: list[str]) -> float | None:
+                 bad: list[str], parse=parse_xsd_datetime_days) -> float | None:
     """Days of the first parseable, non-empty value among ``names``; bad ones go to ``bad``."""
     for name in names:
         raw = attrs.get(name)
         if raw is None or not str(raw).strip():
             continue  # absent or empty (e.g. CityJSON's terminationDate "") means unknown
         try:
-            return parse_xsd_datetime_days(str(raw))
+            return parse(str(raw))
         except ValueError:
             bad.append(f"{name}={raw!r}")
     return None
 
 
-def choose_interval(attrs: Mapping[str, str], source: str) -> Interval:
+def choose_interval(attrs: Mapping[str, str], source: str,
+                    time_attribute: tuple[str, str | None] | None = None) -> Interval:
     """Validity interval of one city object from its time attributes.
 
     Parameters
     ----------
     attrs : mapping of str to str
         Local attribute names (those of :data:`TIME_ATTRIBUTES`; others are ignored) to their
-        raw text, for ONE city object.
+        raw text, for ONE city object; generic attributes under ``GENERIC_PREFIX + name``.
     source : str
         ``'valid'`` (``validFrom``/``validTo``), ``'construction'`` (``dateOf*``, else
         ``yearOf*``; a year Y means Y-01-01 for both ends, so a building demolished in 2021
-        does not stand at ``--date 2021``), ``'creation'`` (``creationDate``/
-        ``terminationDate``), or ``'auto'``: the first family, in the order valid →
-        construction → creation, that has a parseable begin or end.
+        does not stand at ``--date 2021``), ``'attribute'`` (the generic attributes named by
+        ``time_attribute``: years, also written ``1905.0``, or dates), ``'creation'``
+        (``creationDate``/``terminationDate``: database times, used only when asked for), or
+        ``'auto'``: the first family, in the order valid → construction → attribute, that has
+        a parseable begin or end.
+    time_attribute : (begin name, end name or None), optional
+        From :func:`parse_time_attribute`; without it the ``'attribute'`` family is empty.
 
     Returns
     -------
@@ -277,20 +325,33 @@ def choose_interval(attrs: Mapping[str, str], source: str) -> Interval:
     """
     if source == "auto":
         families = TIME_SOURCES_ORDER
-    elif source in _FAMILIES:
+    elif source in TIME_SOURCES:
         families = (source,)
     else:
         raise UsageError(f"unknown time source {source!r}; valid: auto, "
-                         f"{', '.join(TIME_SOURCES_ORDER)}")
+                         f"{', '.join(TIME_SOURCES)}")
     bad: list[str] = []
     for family in families:
-        begin_names, end_names = _FAMILIES[family]
-        begin = _first_value(attrs, begin_names, bad)
-        end = _first_value(attrs, end_names, bad)
+        parse = parse_xsd_datetime_days
+        if family == "attribute":
+            if time_attribute is None:
+                continue
+            begin_names = (GENERIC_PREFIX + time_attribute[0],)
+            end_names = (GENERIC_PREFIX + time_attribute[1],) if time_attribute[1] else ()
+            parse = _parse_attribute_value
+        else:
+            begin_names, end_names = _FAMILIES[family]
+        begin = _first_value(attrs, begin_names, bad, parse)
+        end = _first_value(attrs, end_names, bad, parse)
         if begin is not None or end is not None:
             return Interval(DAYS_OPEN_BEGIN if begin is None else begin,
                             DAYS_OPEN_END if end is None else end, family, tuple(bad))
     return Interval(DAYS_OPEN_BEGIN, DAYS_OPEN_END, "none", tuple(bad))
+
+
+def has_creation_dates(attrs: Mapping[str, str]) -> bool:
+    """Whether an object carries a (non-empty) ``creationDate`` or ``terminationDate``."""
+    return any(str(attrs.get(n) or "").strip() for n in ("creationDate", "terminationDate"))
 
 
 # --- the user's --date ----------------------------------------------------------------------
@@ -306,24 +367,65 @@ class UserDate(NamedTuple):
         The sun's instant as an aware UTC datetime; None when only a year or a date was given.
     text : str
         The text as given.
+    warnings : tuple of str
+        E.g. the zone resolved to the tz database's local mean time (:func:`lmt_warning`).
     """
 
     city_days: float
     instant_utc: datetime | None
     text: str
+    warnings: tuple[str, ...] = ()
+
+
+#: ``--tz`` names of solar time at the model's own longitude (:mod:`cityshade.sun`).
+SOLAR_TIME_ZONES = ("local-mean", "local-apparent")
+
+
+def lmt_warning(zone, local: datetime, tz_name: str | None = None) -> str | None:
+    """A warning when ``zone`` gives the tz database's local mean time (LMT) at ``local``.
+
+    Before standard time the tz database gives each zone the mean time of its reference city
+    (Europe/Berlin in 1850: +0:53:28, Berlin's), which is not the mean time of a model
+    elsewhere in the zone (Munich: +0:46:16): "15:00" then puts the sun ~1.8° off.
+    """
+    aware = local if local.tzinfo is not None else local.replace(tzinfo=zone)
+    if aware.tzname() != "LMT":
+        return None
+    offset = aware.utcoffset()
+    total_s = round(offset.total_seconds())
+    sign, total_s = ("+" if total_s >= 0 else "-"), abs(total_s)
+    text = f"{sign}{total_s // 3600}:{total_s // 60 % 60:02d}:{total_s % 60:02d}"
+    name = tz_name or str(zone)
+    return (f"{name} on {aware.date().isoformat()} is the tz database's local mean time "
+            f"(LMT {text}, the mean time of the zone's reference city), not the model's own; "
+            f"for historical local time give --tz local-mean (mean solar time at the model's "
+            f"longitude) or --tz local-apparent (true solar time)")
 
 
 _DATE_FORMS = ("YYYY, YYYY-MM-DD, or YYYY-MM-DDTHH:MM[:SS][Z|±HH:MM] "
                "(e.g. 1850, 1850-06-21, 1850-06-21T15:00+01:00)")
 
 
-def _zone(tz: str):
+def _zone(tz):
+    """tzinfo of ``--tz``: an IANA name, or a tzinfo given as is (solar time of a model)."""
+    from datetime import tzinfo
     from zoneinfo import ZoneInfo, ZoneInfoNotFoundError
+
+    if isinstance(tz, tzinfo):
+        return tz
+    if tz in SOLAR_TIME_ZONES:
+        raise UsageError(f"--tz {tz} is solar time at the model's longitude; it needs the "
+                         f"model (the render, batch and evaluate commands resolve it)")
     try:
         return ZoneInfo(tz)
     except (ZoneInfoNotFoundError, ValueError):
         raise UsageError(f"unknown time zone {tz!r}; give an IANA name such as "
                          f"Europe/Berlin") from None
+
+
+def zone_of(tz):
+    """The tzinfo of a ``--tz`` value (an IANA name, or a tzinfo as is); UsageError if unknown."""
+    return _zone(tz)
 
 
 def parse_user_date(text: str, tz: str | None = None) -> UserDate:
@@ -334,15 +436,17 @@ def parse_user_date(text: str, tz: str | None = None) -> UserDate:
     * ``'1850-06-21T15:00+01:00'`` (or ``Z``, ``±HHMM``, ``±HH``; seconds optional; a space
       instead of ``T``) → an aware instant, and the city at that instant;
     * ``'1850-06-21T15:00'`` without offset → local time in ``tz`` (an IANA name, resolved with
-      :mod:`zoneinfo`, so daylight saving time and historical local mean times apply); an
-      explicit offset in the text wins over ``tz``.
+      :mod:`zoneinfo`, so daylight saving time and historical local mean times apply, the
+      latter with a warning, :func:`lmt_warning`); an explicit offset in the text wins over
+      ``tz``.
 
     Parameters
     ----------
     text : str
         The option's value.
-    tz : str, optional
-        IANA time zone name (``--tz``).
+    tz : str or tzinfo, optional
+        IANA time zone name (``--tz``), or a tzinfo such as
+        :func:`cityshade.sun.solar_time_zone` of ``--tz local-mean|local-apparent``.
 
     Returns
     -------
@@ -382,12 +486,15 @@ def parse_user_date(text: str, tz: str | None = None) -> UserDate:
                              f"or give --tz ZONE")
         aware = naive.replace(tzinfo=tzinfo)
         instant_utc = aware.astimezone(timezone.utc)
-        # Map back: a local time skipped by a DST change does not survive the round trip.
-        skipped = (offset_text is None
+        # Map back: a local time skipped by a DST change does not survive the round trip
+        # (solar time has no such gaps: only IANA zones are checked).
+        skipped = (offset_text is None and isinstance(tz, str)
                    and instant_utc.astimezone(zone).replace(tzinfo=None) != naive)
     except (ValueError, OverflowError) as exc:
         raise UsageError(f"cannot read date {text!r}: {exc}; use {_DATE_FORMS}") from None
     if skipped:
         raise UsageError(f"local time {stripped} does not exist in {tz} (skipped by a "
                          f"daylight-saving change); give a UTC offset")
-    return UserDate(datetime_to_days(aware), instant_utc, text)
+    warning = lmt_warning(zone, aware, tz) if offset_text is None else None
+    return UserDate(datetime_to_days(aware), instant_utc, text,
+                    (warning,) if warning else ())

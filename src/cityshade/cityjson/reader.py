@@ -29,7 +29,7 @@ import os
 import re
 from array import array
 from pathlib import Path
-from typing import Any, Callable
+from typing import Any, Callable, Iterable
 
 import msgspec
 import numpy as np
@@ -39,7 +39,7 @@ from cityshade.citygml import namespaces as ns
 from cityshade.citygml.appearance import MaterialRecord, TextureRecord
 from cityshade.citygml.geometry import parse_ring_texts
 from cityshade.citygml.reader import RawModel
-from cityshade.citygml.temporal import TIME_ATTRIBUTES
+from cityshade.citygml.temporal import GENERIC_PREFIX, TIME_ATTRIBUTES
 from cityshade.errors import EmptyModelError, InputError
 
 #: CityJSON versions read (a "1.1.3"-style patch suffix is accepted).
@@ -140,7 +140,7 @@ def detect_format(path: str | os.PathLike) -> str:
 
 
 def read_cityjson(path: str | os.PathLike, progress: Callable[[int, int], None] | None = None,
-                  seq: bool | None = None) -> RawModel:
+                  seq: bool | None = None, generic_attributes: Iterable[str] = ()) -> RawModel:
     """Read a CityJSON or CityJSONSeq file into flat records.
 
     Parameters
@@ -149,6 +149,9 @@ def read_cityjson(path: str | os.PathLike, progress: Callable[[int, int], None] 
     progress : callable(bytes_read, bytes_total), optional
     seq : bool, optional
         True for CityJSONSeq, False for CityJSON; None detects it from the content.
+    generic_attributes : iterable of str
+        Further attribute names kept as time text (``--time-attribute``), stored under
+        ``temporal.GENERIC_PREFIX + name`` as the CityGML reader stores generic attributes.
 
     Raises
     ------
@@ -167,7 +170,7 @@ def read_cityjson(path: str | os.PathLike, progress: Callable[[int, int], None] 
         raise InputError("the file is empty", path=str(path))
     model = RawModel(path=path, format="CityJSONSeq" if seq else "CityJSON",
                      lod_scale=LOD_SCALE)
-    reader = _Reader(model)
+    reader = _Reader(model, generic_attributes)
     if progress is not None:
         progress(0, total)
     if seq:
@@ -247,8 +250,9 @@ def _time_text(value: Any) -> str | None:
 class _Reader:
     """Turns CityJSON documents and features into the records of a :class:`RawModel`."""
 
-    def __init__(self, model: RawModel):
+    def __init__(self, model: RawModel, generic_attributes: Iterable[str] = ()):
         self.m = model
+        self.generic_attributes = tuple(generic_attributes)
         self.polys: list[tuple[int, int, int, int, int]] = []
         self.flat = array("q")  # block-local vertex index of every ring point
         self.ring_points = array("q")
@@ -449,6 +453,10 @@ class _Reader:
                         text = _time_text(attrs[name])
                         if text is not None:
                             times[name] = text
+                for name in self.generic_attributes:
+                    text = _time_text(attrs.get(name))
+                    if text is not None:
+                        times[GENERIC_PREFIX + name] = text
             m.obj_time.append(times)
             default_cls = ns.SURFACE_CODE[ns.OBJECT_DEFAULT_CLASS.get(
                 _TYPE_ALIASES.get(obj_type, obj_type), "unclassified")]

@@ -18,7 +18,8 @@ from cityshade.cli.options import camera_options, make_camera, parse_size, parse
 @click.option("--every", "every_text", default="10min", show_default=True,
               help="Step length: 10min, 1h, 30s, 1h30min.")
 @click.option("--tz", required=True, help="IANA time zone of --from/--to, e.g. Europe/Berlin "
-              "(UTC for UTC).")
+              "(UTC for UTC); local-mean or local-apparent: mean or true solar time at the "
+              "model's longitude (for historical dates).")
 @click.option("--days", type=int, help="Number of days (default 1), --every-day apart.")
 @click.option("--to-date", "to_date_text", help="Last day (inclusive), YYYY-MM-DD.")
 @click.option("--every-day", type=int, default=1, show_default=True, help="Days between days.")
@@ -69,8 +70,14 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     first_day = _day(date_text, "--date")
     to_date = _day(to_date_text, "--to-date") if to_date_text else None
     every_s = B.parse_duration_s(every_text)
+    from cityshade.cli.options import solar_zone_of_file
+
     steps = B.plan_steps(first_day, B.parse_clock_s(from_text), B.parse_clock_s(to_text),
-                         every_s, tz, days=days, to_date=to_date, every_day=every_day)
+                         every_s, solar_zone_of_file(tz, file), days=days, to_date=to_date,
+                         every_day=every_day)
+    from cityshade.cli.options import warn_lmt
+
+    warn_lmt([step.start_utc for step in steps[:1]], tz)
     city = parse_user_date(city_date or first_day.isoformat())
     scene = load_scene(file)
     cam = make_camera(scene, camera, eye, target, fov, size, pixel_size)

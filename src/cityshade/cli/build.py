@@ -5,7 +5,8 @@ from pathlib import Path
 
 import click
 
-from cityshade.config import TIME_SOURCES
+from cityshade.cli.options import AXIS_ORDER_HELP, CRS_HELP, TIME_ATTRIBUTE_HELP
+from cityshade.config import AXIS_ORDERS, TIME_SOURCES
 
 
 def _lod_option(ctx, param, value: str | None) -> int | float | None:
@@ -29,14 +30,19 @@ def _lod_option(ctx, param, value: str | None) -> int | float | None:
               help="LoD to take from every object: 0-4, or a CityJSON LoD such as 2.2 "
                    "(default: the highest each object has).")
 @click.option("--theme", help="Appearance theme (default: the one with the most surfaces).")
-@click.option("--crs", help="CRS of the coordinates, e.g. EPSG:25832 (overrides srsName).")
+@click.option("--crs", help=CRS_HELP)
+@click.option("--axis-order", type=click.Choice(AXIS_ORDERS), help=AXIS_ORDER_HELP)
 @click.option("--time-source", type=click.Choice(TIME_SOURCES), default="auto", show_default=True,
-              help="Where object validity intervals come from.")
+              help="Where object validity intervals come from: auto = validFrom/validTo, else "
+                   "construction/demolition, else --time-attribute; creation = the database "
+                   "dates creationDate/terminationDate (only when asked for).")
+@click.option("--time-attribute", help=TIME_ATTRIBUTE_HELP)
 @click.option("--config", "config_path", type=click.Path(dir_okay=False, path_type=Path),
               help="TOML settings file ([build], [kdtree] tables).")
 @click.option("-q", "--quiet", is_flag=True, help="No progress display and no summary.")
-def build(city: Path, output: Path | None, lod: int | float | None, theme: str | None, crs: str | None,
-          time_source: str, config_path: Path | None, quiet: bool) -> None:
+def build(city: Path, output: Path | None, lod: int | float | None, theme: str | None,
+          crs: str | None, axis_order: str | None, time_source: str, time_attribute: str | None,
+          config_path: Path | None, quiet: bool) -> None:
     """Read CITY (CityGML 1.0/2.0/3.0, CityJSON 1.0/1.1/2.0 or CityJSONSeq, told apart by
     the content), triangulate it, build its kd-tree, and write one versioned,
     memory-mappable .cityshade file."""
@@ -48,7 +54,9 @@ def build(city: Path, output: Path | None, lod: int | float | None, theme: str |
     from cityshade.errors import UsageError
 
     settings = load_settings(config_path) if config_path else Settings()
-    overrides = {k: v for k, v in (("lod", lod), ("theme", theme), ("crs", crs)) if v is not None}
+    overrides = {k: v for k, v in (("lod", lod), ("theme", theme), ("crs", crs),
+                                   ("axis_order", axis_order), ("time_attribute", time_attribute))
+                 if v is not None}
     if time_source != "auto":
         overrides["time_source"] = time_source
     settings = dataclasses.replace(settings, build=dataclasses.replace(settings.build, **overrides))

@@ -6,6 +6,8 @@ from pathlib import Path
 
 import click
 
+from cityshade.cli.options import crs_option
+
 
 class _Bar:
     """A one-line progress bar on a terminal's stderr (silent when stderr is not a terminal)."""
@@ -50,7 +52,8 @@ def _int_list(text: str, what: str) -> tuple[int, ...]:
 @click.option("--date", "date_text", help="City state (YYYY[-MM-DD]); with --times, the day "
               "of the sun positions (default: today).")
 @click.option("--times", help="Local times HH:MM,HH:MM of --date: suns computed by SPA.")
-@click.option("--tz", help="IANA time zone of --times, e.g. Europe/Berlin.")
+@click.option("--tz", help="IANA time zone of --times, e.g. Europe/Berlin; local-mean or "
+              "local-apparent: solar time at the model's longitude.")
 @click.option("--shadows", "shadows", default="all", show_default=True,
               help="'all' or a comma list of techniques (raytrace is always the reference).")
 @click.option("--sizes", default="1024,2048,4096", show_default=True,
@@ -67,8 +70,9 @@ def _int_list(text: str, what: str) -> tuple[int, ...]:
 @click.option("-o", "--output", type=click.Path(file_okay=False, path_type=Path),
               help="Report folder (results.csv, report.md, plots, diff images); required "
                    "without --stress.")
+@crs_option
 def evaluate(file, views, sun_text, date_text, times, tz, shadows, sizes, size, pixel_size,
-             repeat, stress, quick, output):
+             repeat, stress, quick, output, crs):
     """Error of every shadow technique against the exact ray-traced shadows of FILE (a
     .cityshade scene or a CityGML file), and its run time, per view, sun and map size."""
     from cityshade.cli.options import parse_size
@@ -108,8 +112,13 @@ def evaluate(file, views, sun_text, date_text, times, tz, shadows, sizes, size, 
     settings = EvaluateSettings(repeat=repeat, sizes=_int_list(sizes, "--sizes"))
     width, height = parse_size(size)
     day = date_text or dt.date.today().isoformat()
-    city_days = parse_user_date(day.split("T")[0] if times else day, tz).city_days
-    scene = open_scene(file)
+    from cityshade.cli.options import (settings_for_source, solar_placeholder,
+                                       solar_zone_of_scene)
+
+    city_days = parse_user_date(day.split("T")[0] if times else day,
+                                solar_placeholder(tz)).city_days
+    scene = open_scene(file, settings_for_source(file, crs))
+    tz = solar_zone_of_scene(tz, scene)
     suns = (suns_of_day(day, times, tz, scene) if times
             else parse_suns(sun_text or "135,45;240,15", scene))
     cams = [(v, make_camera(scene, v, (width, height), pixel_size, city_days))

@@ -7,6 +7,8 @@ from pathlib import Path
 
 import click
 
+from cityshade.cli.options import crs_option
+
 
 def describe(scene) -> dict:
     """The ``info --json`` object of a scene."""
@@ -31,6 +33,7 @@ def describe(scene) -> dict:
         "objects": {"total": len(scene.obj_ids), "by_type": rep["objects_by_type"]},
         "polygons": rep["polygons"],
         "skipped": rep["skipped"],
+        "skipped_ids": rep.get("skipped_ids", {}),
         "repairs": rep["repairs"],
         "lods": rep["lods"],
         "lods_drawn": rep.get("lods_drawn", {}),
@@ -39,6 +42,9 @@ def describe(scene) -> dict:
         "time_range": rep["time_range"],
         "time_source": rep["time_source"],
         "time_sources_used": rep["time_sources_used"],
+        "time_attribute": rep.get("time_attribute"),
+        "creation_dates_unused": rep.get("creation_dates_unused", 0),
+        "axis_order": rep.get("axis_order"),
         "crs": scene.crs.to_json(),
         "source_crs": rep.get("source_crs"),
         "origin": [float(v) for v in scene.origin_m],
@@ -80,13 +86,19 @@ def _text(d: dict) -> str:
         + (", ".join(f"LoD{k}: {v}" for k, v in d["lods_drawn"].items()) or "none"))
     tr = d["time_range"]
     used = ", ".join(f"{k} {v}" for k, v in d["time_sources_used"].items())
+    attribute = f", attribute {d['time_attribute']}" if d.get("time_attribute") else ""
     add(f"time          {tr[0] + ' … ' + tr[1] if tr else 'no dates'} "
-        f"(source {d['time_source']}: {used})")
+        f"(source {d['time_source']}{attribute}; objects by source: {used})")
+    if d.get("creation_dates_unused"):
+        add(f"              creationDate/terminationDate of {d['creation_dates_unused']:,} "
+            f"objects unused (database times; --time-source creation uses them)")
     crs = d["crs"]
     src = d["source_crs"]
     crs_text = crs["name"] + (f" (EPSG:{crs['horizontal_epsg']})" if crs["horizontal_epsg"] else "")
     if src and src.get("is_geographic"):
         crs_text += f", projected from {src['name']}"
+        if d.get("axis_order"):
+            crs_text += f" read {'latitude' if d['axis_order'] == 'latlon' else 'longitude'} first"
     add(f"CRS           {crs_text}")
     add(f"origin        {d['origin'][0]:.3f} {d['origin'][1]:.3f} {d['origin'][2]:.3f}")
     if d["bbox"]["min"]:
@@ -110,7 +122,8 @@ def _text(d: dict) -> str:
 @click.command("info")
 @click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
-def info(file: Path, as_json: bool) -> None:
+@crs_option
+def info(file: Path, as_json: bool, crs: str | None) -> None:
     """Describe FILE: objects by type, triangles, skipped polygons by reason, LoDs, time range
     and its source, CRS, origin, bounding box, materials, textures and the kd-tree.
 
@@ -119,18 +132,19 @@ def info(file: Path, as_json: bool) -> None:
     """
     from cityshade.errors import InputError
 
+    from cityshade.cli.options import is_scene_file, settings_for_source
+
     if not file.is_file():
         raise InputError("no such file", path=str(file))
-    with file.open("rb") as fh:
-        head = fh.read(64)
-    if head.startswith(b"CITYSHD"):
+    settings = settings_for_source(file, crs)
+    if is_scene_file(file):
         from cityshade.scenefile import load_scene
 
         scene = load_scene(file)
     else:
         from cityshade.build import build_scene_from_file
 
-        scene = build_scene_from_file(file)
+        scene = build_scene_from_file(file, settings)
     d = describe(scene)
     if as_json:
         click.echo(json.dumps(d, indent=2, sort_keys=False))

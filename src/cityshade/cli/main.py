@@ -52,12 +52,55 @@ def cli() -> None:
     """cityshade: exact, fast shadow pictures and shadow data from CityGML city models.
 
     \b
-    Typical use:
+    Typical use (every command; COMMAND --help for its options):
       cityshade build city.gml            # writes city.cityshade
       cityshade info city.cityshade       # what is in it
+      cityshade render city.cityshade --date 1850 --sun-azimuth 135 --sun-elevation 30 -o a.exr
+      cityshade batch city.cityshade --date 2024-06-21 --from 05:00 --to 21:00 --every 10min \\
+          --tz Europe/Berlin --camera map -o sunhours/
+      cityshade evaluate city.cityshade --shadows all -o report/
     """
 
 
 def main(argv: list[str] | None = None) -> None:
-    """Console-script entry point (``cityshade`` and ``python -m cityshade``)."""
-    cli.main(args=argv, prog_name="cityshade")
+    """Console-script entry point (``cityshade`` and ``python -m cityshade``).
+
+    Ctrl-C at any moment ends with one line, ``cityshade: interrupted``, and exit status 130:
+    inside a command :func:`~cityshade.cli.options.translate_errors` says so; while click
+    parses the arguments its own "Aborted!" is replaced here.
+    """
+    import signal
+    import sys
+
+    from cityshade.cli.options import Interrupted, install_sigint_handler, interrupt_seen
+
+    install_sigint_handler()
+    try:
+        status = cli.main(args=argv, prog_name="cityshade", standalone_mode=False)
+        # Without standalone mode click returns the status of --help, --version, ctx.exit().
+        status = status if isinstance(status, int) else 0
+        if interrupt_seen():
+            # A Ctrl-C swallowed by a library (a bare except around an import) still stops.
+            raise Interrupted()
+    except (KeyboardInterrupt, click.exceptions.Abort):
+        Interrupted().show()
+        status = 130
+    except click.ClickException as exc:
+        exc.show()
+        status = exc.exit_code
+    except click.exceptions.Exit as exc:
+        status = exc.exit_code
+    finally:
+        # The interpreter's shutdown resets handlers to the default, which would kill the
+        # process on a late Ctrl-C (status -2 instead of ours); an ignored SIGINT stays ignored.
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+    if status == 130:
+        # After a KeyboardInterrupt inside code that a C library ran through PyRun_* the
+        # interpreter's epilogue kills itself with SIGINT (status -2, not 130) whatever
+        # sys.exit says; everything is written and closed here, so leave without it.
+        import os
+
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os._exit(130)
+    sys.exit(status)

@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import contextlib
+import signal
 import sys
 import time
 
@@ -21,20 +22,73 @@ class LibraryFailure(click.ClickException):
         click.echo(f"cityshade: error: {self.message}", err=True)
 
 
+class Interrupted(LibraryFailure):
+    """Ctrl-C: ``cityshade: interrupted`` and exit status 130 (128 + SIGINT)."""
+
+    def __init__(self):
+        super().__init__("interrupted", 130)
+
+    def show(self, file=None) -> None:
+        click.echo("cityshade: interrupted", err=True)
+
+
+#: Set by :func:`on_sigint`: every failure after a Ctrl-C is the interrupt's consequence.
+_interrupt = {"seen": False}
+
+
+def on_sigint(signum, frame) -> None:
+    """SIGINT handler of the command: raise KeyboardInterrupt once, ignore further Ctrl-Cs so
+    the clean-up (temporary files removed, nothing half-written) runs to its end."""
+    _interrupt["seen"] = True
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    raise KeyboardInterrupt
+
+
+def interrupt_seen() -> bool:
+    """Whether a Ctrl-C arrived since :func:`install_sigint_handler`."""
+    return _interrupt["seen"]
+
+
+def install_sigint_handler() -> None:
+    """Route Ctrl-C through :func:`on_sigint` (only in the main thread, e.g. not in tests)."""
+    import threading
+
+    if threading.current_thread() is threading.main_thread():
+        signal.signal(signal.SIGINT, on_sigint)
+
+
+def _caused_by_interrupt(exc: BaseException) -> bool:
+    """A KeyboardInterrupt inside a Numba kernel surfaces as ``SystemError: CPUDispatcher(...)
+    returned a result with an exception set`` (DESIGN §14): look through the chain."""
+    seen = set()
+    while exc is not None and id(exc) not in seen:
+        if isinstance(exc, KeyboardInterrupt):
+            return True
+        seen.add(id(exc))
+        exc = exc.__cause__ or exc.__context__
+    return _interrupt["seen"]
+
+
 @contextlib.contextmanager
 def translate_errors():
     """Turn every failure into one line and an exit status, never a traceback."""
     try:
         yield
-    except CityshadeError as exc:
-        raise LibraryFailure(str(exc), exc.exit_code) from None
     except KeyboardInterrupt:
-        raise click.Abort() from None
-    except OSError as exc:
-        where = f"{exc.filename}: " if getattr(exc, "filename", None) else ""
-        raise LibraryFailure(f"{where}{exc.strerror or exc}") from None
-    except MemoryError:
-        raise LibraryFailure("out of memory") from None
+        raise Interrupted() from None
+    except click.ClickException:
+        raise
+    except Exception as exc:
+        if _caused_by_interrupt(exc):
+            raise Interrupted() from None
+        if isinstance(exc, CityshadeError):
+            raise LibraryFailure(str(exc), exc.exit_code) from None
+        if isinstance(exc, OSError):
+            where = f"{exc.filename}: " if getattr(exc, "filename", None) else ""
+            raise LibraryFailure(f"{where}{exc.strerror or exc}") from None
+        if isinstance(exc, MemoryError):
+            raise LibraryFailure("out of memory") from None
+        raise
 
 
 class Progress:
@@ -65,6 +119,106 @@ class Progress:
         if self.enabled and self.stage is not None:
             sys.stderr.write("\r\033[K")
             sys.stderr.flush()
+
+
+# --- options of reading a CityGML file (build, and info/evaluate on a .gml) ----------------------
+
+CRS_HELP = ("CRS of the coordinates (overrides srsName), e.g. EPSG:25832, "
+            "urn:ogc:def:crs:EPSG::4326, OGC:CRS84.")
+AXIS_ORDER_HELP = ("Order of geographic coordinates (default: decided from the values, the "
+                   "footprints' right angles and the srsName spelling, with a warning).")
+TIME_ATTRIBUTE_HELP = ("Generic attribute(s) with construction/demolition years or dates, "
+                       "begin=NAME[,end=NAME], e.g. begin=baujahr.")
+
+
+def crs_option(func):
+    """``--crs`` for commands that accept a CityGML file as well as a scene file."""
+    return click.option("--crs", help=CRS_HELP + " Only for a CityGML FILE.")(func)
+
+
+def is_scene_file(path) -> bool:
+    """Whether ``path`` is a .cityshade file (by its magic bytes, not its name)."""
+    with open(path, "rb") as fh:
+        return fh.read(7) == b"CITYSHD"
+
+
+def settings_for_source(path, crs: str | None):
+    """Settings for building FILE in memory with the user's ``--crs`` (None: defaults)."""
+    import dataclasses
+
+    from cityshade.config import Settings
+    from cityshade.errors import UsageError
+
+    if crs is None:
+        return None
+    if is_scene_file(path):
+        raise UsageError(f"--crs applies to a CityGML file; {path} is a scene file built with "
+                         f"its CRS: rebuild it with cityshade build --crs")
+    settings = Settings()
+    return dataclasses.replace(settings, build=dataclasses.replace(settings.build, crs=crs))
+
+
+# --- --tz local-mean / local-apparent (solar time needs the model's longitude) -------------------
+
+def solar_placeholder(tz):
+    """``--tz`` for checking a date's text before the model is loaded: solar time is checked
+    as UTC (the date is parsed again with :func:`reparse_solar_date` once the model is there)."""
+    from cityshade.citygml.temporal import SOLAR_TIME_ZONES
+
+    return "UTC" if tz in SOLAR_TIME_ZONES else tz
+
+
+def solar_zone_of_scene(tz, scene):
+    """``--tz`` as given, or the solar-time tzinfo at the model's longitude."""
+    from cityshade.citygml.temporal import SOLAR_TIME_ZONES
+
+    if tz not in SOLAR_TIME_ZONES:
+        return tz
+    from cityshade.sun import solar_time_zone
+
+    return solar_time_zone(tz, scene.crs, scene.origin_m)
+
+
+def solar_zone_of_file(tz, path):
+    """:func:`solar_zone_of_scene` for a scene file not loaded yet (loaded only for solar time)."""
+    from cityshade.citygml.temporal import SOLAR_TIME_ZONES
+
+    if tz not in SOLAR_TIME_ZONES:
+        return tz
+    from cityshade.scenefile import load_scene
+
+    return solar_zone_of_scene(tz, load_scene(path))
+
+
+def reparse_solar_date(user_date, tz, scene):
+    """The date again in solar time at the model's longitude (unchanged for other zones)."""
+    from cityshade.citygml.temporal import SOLAR_TIME_ZONES, parse_user_date
+
+    if tz not in SOLAR_TIME_ZONES or user_date.instant_utc is None:
+        return user_date
+    return parse_user_date(user_date.text, solar_zone_of_scene(tz, scene))
+
+
+def warn_lmt(instants_utc, tz) -> None:
+    """Warn when ``--tz`` gives the tz database's local mean time at these instants."""
+    from cityshade.citygml.temporal import SOLAR_TIME_ZONES, lmt_warning, zone_of
+
+    if not isinstance(tz, str) or tz in SOLAR_TIME_ZONES:
+        return
+    zone = zone_of(tz)
+    for instant in instants_utc:
+        warning = lmt_warning(zone, instant.astimezone(zone), tz)
+        if warning:
+            click.echo(f"cityshade: warning: {warning}", err=True)
+            return
+
+
+def warn_geotiff_without_crs(scene, path) -> None:
+    """A GeoTIFF of a model without a (known) CRS has no .prj: GIS software cannot place it."""
+    if scene.crs.local or scene.crs.horizontal_epsg is None:
+        click.echo(f"cityshade: warning: {path} has no .prj and no CRS in its tags: the model's "
+                   f"CRS is {scene.crs.name}, so GIS software cannot place it; rebuild the "
+                   f"scene with --crs EPSG:nnnn", err=True)
 
 
 # --- camera options shared by render, batch and evaluate ---------------------------------------

@@ -12,7 +12,9 @@ from cityshade.cli.options import camera_options, make_camera, parse_size, parse
 @click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
 @click.option("--date", "date_text", help="City state: 1850, 1850-06-21 or 1850-06-21T15:00+01:00 "
               "(default: today).")
-@click.option("--tz", help="IANA time zone for a --date without UTC offset, e.g. Europe/Berlin.")
+@click.option("--tz", help="IANA time zone for a --date without UTC offset, e.g. Europe/Berlin; "
+              "local-mean or local-apparent: mean or true solar time at the model's longitude "
+              "(for historical dates).")
 @click.option("--time", "time_text", help="Local time HH:MM[:SS] combined with a --date day "
               "(the sun is then computed by SPA for the model's place).")
 @click.option("--no-refraction", is_flag=True, help="Geometric sun elevation (SPA without "
@@ -58,6 +60,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     import time
 
     from cityshade.citygml.temporal import parse_user_date
+    from cityshade.cli.options import reparse_solar_date, solar_placeholder
     from cityshade.errors import UsageError
     from cityshade.render import render_frame, write_frame
     from cityshade.scenefile import load_scene
@@ -76,7 +79,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
         raise UsageError("give both --eye and --target, or neither")
     parse_triple(eye, "--eye"), parse_triple(target, "--target"), parse_size(size)  # fail early
     date_text = _with_time(date_text or dt.date.today().isoformat(), time_text)
-    user_date = parse_user_date(date_text, tz)
+    user_date = parse_user_date(date_text, solar_placeholder(tz))  # fails early on bad text
     if sun_azimuth is None and user_date.instant_utc is None:
         raise UsageError("no sun position: give --sun-azimuth and --sun-elevation (degrees), "
                          "or a --date with a time of day (e.g. 2024-06-21T15:00+02:00, or "
@@ -84,6 +87,9 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     t0 = time.perf_counter()
     scene = load_scene(file)
     load_s = time.perf_counter() - t0
+    user_date = reparse_solar_date(user_date, tz, scene)
+    for warning in user_date.warnings:
+        click.echo(f"cityshade: warning: {warning}", err=True)
     cam = make_camera(scene, camera, eye, target, fov, size, pixel_size)
     if sun_azimuth is not None:
         sun = sun_from_angles(sun_azimuth, sun_elevation, scene.crs, scene.origin_m)
@@ -100,6 +106,10 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
         click.echo(f"cityshade: warning: {warning}", err=True)
     t1 = time.perf_counter()
     written = write_frame(frame, scene, date_text, exr=output, png=png, mask=mask, georef=geotiff)
+    if geotiff is not None:
+        from cityshade.cli.options import warn_geotiff_without_crs
+
+        warn_geotiff_without_crs(scene, geotiff)
     write_s = time.perf_counter() - t1
     if verbose:
         timings = {"load_s": load_s, **frame.timings_s, "write_s": write_s}

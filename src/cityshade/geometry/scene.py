@@ -22,14 +22,16 @@ import numpy as np
 from cityshade.citygml import namespaces as ns
 from cityshade.citygml.appearance import (georeferenced_uv, read_world_file,
                                           resolve_image_path)
-from cityshade.citygml.crs import CrsInfo, GeographicProjector, resolve_model_crs_detailed
+from cityshade.citygml.crs import (CrsInfo, GeographicProjector, area_of_use_warning,
+                                   resolve_model_crs_detailed)
 from cityshade.citygml.reader import RawModel
-from cityshade.citygml.temporal import choose_interval, days_to_iso
+from cityshade.citygml.temporal import (choose_interval, days_to_iso, has_creation_dates,
+                                        parse_time_attribute)
 from cityshade.config import BuildSettings
 from cityshade.errors import EmptyModelError, UsageError
 
-#: Time-source codes stored per object (uint8).
-TIME_SOURCE_NAMES = ("none", "valid", "construction", "creation", "inherited")
+#: Time-source codes stored per object (uint8); new sources are appended (codes are stored).
+TIME_SOURCE_NAMES = ("none", "valid", "construction", "creation", "inherited", "attribute")
 
 #: Depth limit when following references to aggregates that reference further aggregates:
 #: real files nest at most Solid → CompositeSurface → surfaceMember; 16 also stops cycles.
@@ -138,19 +140,26 @@ class Scene:
 
 
 # ---------------------------------------------------------------------------------------------
-def _object_intervals(raw: RawModel, source: str, counters: Counter):
+def _object_intervals(raw: RawModel, source: str, counters: Counter,
+                      time_attribute: str | None = None):
+    """Validity intervals per object, the source code of each, and the number of objects whose
+    creation/termination dates were left unused (database times, DESIGN §3)."""
     n = len(raw.obj_ids)
     begin = np.full(n, -np.inf)
     end = np.full(n, np.inf)
     used = np.zeros(n, np.uint8)
     code = {name: i for i, name in enumerate(TIME_SOURCE_NAMES)}
+    names = parse_time_attribute(time_attribute) if time_attribute else None
+    creation_unused = 0
     for i, attrs in enumerate(raw.obj_time):
         parent = raw.obj_parent[i]
         if attrs:
-            interval = choose_interval(attrs, source)
+            interval = choose_interval(attrs, source, names)
             b, e, src = interval.begin_days, interval.end_days, interval.source
             if interval.bad_values:
                 counters["unparseable_time_values"] += len(interval.bad_values)
+            if src != "creation" and has_creation_dates(attrs):
+                creation_unused += 1
         else:
             b, e, src = -np.inf, np.inf, "none"
         if parent >= 0:
@@ -161,7 +170,24 @@ def _object_intervals(raw: RawModel, source: str, counters: Counter):
         begin[i], end[i], used[i] = b, e, code[src]
         if e <= b:
             counters["objects_never_existing"] += 1
-    return begin, end, used
+    return begin, end, used, creation_unused
+
+
+#: gml:ids of skipped polygons kept per reason in the report (the counts are always complete).
+MAX_SKIPPED_IDS = 1000
+
+
+def _note_ids(out: dict[str, list[str]], reason: str, raw: RawModel, polys) -> None:
+    """Add the gml:ids (first :data:`MAX_SKIPPED_IDS`) of skipped polygons under ``reason``;
+    a polygon without one is named by its object: ``"(no id) in OBJECT_ID, line N"``."""
+    ids = out.setdefault(reason, [])
+    for p in polys[:max(0, MAX_SKIPPED_IDS - len(ids))]:
+        pid = raw.poly_ids[int(p)]
+        if not pid:
+            o = int(raw.poly_obj[int(p)])
+            pid = (f"(no id) in {raw.obj_ids[o] or 'an object without id'}, line "
+                   f"{raw.obj_line[o]}" if o >= 0 else "(no id)")
+        ids.append(pid)
 
 
 def _resolve_references(raw: RawModel, counters: Counter):
@@ -293,7 +319,21 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
     n_poly_all = raw.n_polygons
 
     # 1. Validity intervals.
-    obj_begin, obj_end, obj_source = _object_intervals(raw, settings.time_source, counters)
+    obj_begin, obj_end, obj_source, creation_unused = _object_intervals(
+        raw, settings.time_source, counters, settings.time_attribute)
+    dated = np.isin(obj_source, [TIME_SOURCE_NAMES.index(n)
+                                 for n in ("valid", "construction", "attribute")])
+    if creation_unused and not dated.any():
+        warnings.append(
+            f"the only dates in the file are creationDate/terminationDate ({creation_unused} "
+            f"objects): they are database times (when a feature entered or left the database), "
+            f"not the life of the buildings, so every object stands at every date; "
+            f"--time-source creation uses them, --time-attribute begin=NAME reads a year "
+            f"from a generic attribute")
+    if settings.time_attribute and not (obj_source == TIME_SOURCE_NAMES.index("attribute")).any():
+        begin_name = parse_time_attribute(settings.time_attribute)[0]
+        warnings.append(f"no object has the generic attribute {begin_name!r} named by "
+                        f"--time-attribute (or no value of it is a year or date)")
 
     # 2. Items: every polygon where it is defined, and where it is referenced.
     ref_items = _resolve_references(raw, counters)
@@ -359,8 +399,10 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
     poly_of_ring = np.repeat(np.arange(len(polys)), p_nrings)
     bad_poly = np.zeros(len(polys), bool)
     bad_poly[poly_of_ring[bad_ring]] = True
+    skipped_ids: dict[str, list[str]] = {}
     if bad_poly.any():
         counters["skipped_bad_coordinates"] = int(bad_poly.sum())
+        _note_ids(skipped_ids, "bad_coordinates", raw, polys[bad_poly])
         good = ~bad_poly
         polys, p_obj, p_flip, p_nrings = polys[good], p_obj[good], p_flip[good], p_nrings[good]
         rings = _expand_ranges(poly_ring0[polys], p_nrings)
@@ -377,12 +419,22 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
     crs = resolution.crs
     warnings += list(resolution.warnings)
     source_crs = crs
+    axis_order = None
     if crs.is_geographic:
-        projector = GeographicProjector(crs, coords)
-        if projector.warning:
-            warnings.append(projector.warning)
+        projector = GeographicProjector(crs, coords, axis_order=settings.axis_order,
+                                        ring_offsets=ring_offsets)
+        warnings.append(projector.warning)
+        axis_order = "latlon" if projector.axis_lat_first else "lonlat"
         coords = projector.project(coords)
         crs = projector.target
+    elif settings.axis_order is not None:
+        warnings.append(f"--axis-order {settings.axis_order} ignored: {crs.name} is not a "
+                        f"geographic CRS (its coordinates are read easting first)")
+    if not crs.is_geographic and len(coords):
+        # A wrong CRS (or a 10^7 m offset) puts the model somewhere else on Earth: say so.
+        area_warning = area_of_use_warning(crs, coords.min(axis=0), coords.max(axis=0))
+        if area_warning:
+            warnings.append(area_warning)
 
     # 7. Triangulate in float64.
     tri = triangulate_polygons(
@@ -393,6 +445,8 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
     for code, count in zip(*np.unique(tri.status, return_counts=True)):
         if code != 0:
             skipped[SKIP_REASONS[int(code)]] += int(count)
+            _note_ids(skipped_ids, SKIP_REASONS[int(code)], raw,
+                      polys[np.asarray(tri.status) == code])
     if counters.get("skipped_bad_coordinates"):
         skipped["bad_coordinates"] += counters.pop("skipped_bad_coordinates")
     cavities = counters.pop("cavity_polygons", 0)
@@ -465,6 +519,7 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
                      "skipped": int(sum(skipped.values())),
                      "not_selected_lod": counters.pop("polygons_not_selected_lod")},
         "skipped": dict(sorted(skipped.items())),
+        "skipped_ids": dict(sorted(skipped_ids.items())),
         "repairs": dict(sorted(repairs.items())),
         "lods": {lod_label(raw, k): v for k, v in sorted(lod_table.items())},
         "lods_drawn": {lod_label(raw, int(k)): int(v) for k, v in zip(
@@ -472,10 +527,13 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
         "lod_requested": settings.lod,
         "time_source": settings.time_source,
         "time_sources_used": dict(sorted(sources.items())),
+        "time_attribute": settings.time_attribute,
+        "creation_dates_unused": int(creation_unused),
         "time_range": time_range,
         "theme": theme,
         "themes": raw.appearance.themes(),
         "source_crs": source_crs.to_json(),
+        "axis_order": axis_order,
         "counters": {k: int(v) for k, v in sorted(counters.items())},
         "warnings": warnings,
     }

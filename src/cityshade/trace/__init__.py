@@ -203,9 +203,16 @@ def shadow_rays_from_surface(points, normals, sun_dir) -> np.ndarray:
     Returns
     -------
     (N, 3) float64 array
-        ``points + normals * offset`` with ``offset = SHADOW_OFFSET_REL * max(|p|_inf, 1 m)``:
-        the offset scales with coordinate magnitude, because float32 rounding does. Points
-        whose normal faces away from the sun are offset all the same; callers treat those as
+        ``points + (normals + sun_dir) * offset`` with
+        ``offset = SHADOW_OFFSET_REL * max(|p|_inf, 1 m)``: the offset scales with coordinate
+        magnitude, because float32 rounding does. The step along the normal leaves the
+        receiver's own surface; the step toward the sun leaves every *other* surface through
+        the point, which the normal step keeps the origin in: at the foot of a sun-facing wall
+        (a roof-step edge seen from above) the lower roof's point lies in the wall's plane, and
+        moving up keeps it there, so the ray hit the wall at distance ≈ 0; one step along
+        the ray itself puts it in front of any surface it crosses there (a surface it crosses
+        at t = 0 it leaves for t > 0, whichever way that surface faces). Points whose normal
+        faces away from the sun are offset all the same; callers treat those as
         self-shadowed (DESIGN §14).
     """
     points = np.asarray(points, dtype=np.float64)
@@ -224,7 +231,7 @@ def shadow_rays_from_surface(points, normals, sun_dir) -> np.ndarray:
         raise TraceInputError("sun_dir must be unit length")
     if np.abs(np.linalg.norm(normals, axis=1) - 1.0).max(initial=0.0) > UNIT_LENGTH_TOL:
         raise TraceInputError("normals must be unit length")
-    return points + normals * shadow_offset_m(points)[:, None]
+    return points + (normals + sun) * shadow_offset_m(points)[:, None]
 
 
 def sunlit(tree, points, normals, sun_direction, t_days: float = 0.0) -> np.ndarray:

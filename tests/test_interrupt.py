@@ -1,0 +1,118 @@
+"""Ctrl-C at any moment (issue 13 point 8): one line, exit status 130, no traceback, no
+half-written file. The CLI runs in a subprocess and gets a real SIGINT at several moments of a
+build, a render and a batch."""
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import sys
+import time
+
+import click
+import pytest
+
+from conftest import REPO
+
+SAMPLE = REPO / "sample_data" / "sample_city.gml"
+#: Seconds after the start at which SIGINT is sent: after Python's start-up (the handler is
+#: installed first thing in main()), then spread over imports, reading, kernels and writing.
+DELAYS_S = (0.6, 1.1, 1.7)
+
+pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
+
+
+def _interrupt(args, delay_s, cwd):
+    env = dict(os.environ, PYTHONUNBUFFERED="1")
+    proc = subprocess.Popen([sys.executable, "-m", "cityshade", *map(str, args)], cwd=cwd,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, text=True)
+    time.sleep(delay_s)
+    proc.send_signal(signal.SIGINT)
+    _, err = proc.communicate(timeout=300)
+    return proc.returncode, err
+
+
+def _check(rc, err, folder):
+    assert "Traceback" not in err, err
+    leftovers = [p.name for p in folder.iterdir() if p.name.startswith(".") or
+                 p.name.endswith(".tmp")]
+    assert not leftovers, f"partial files left: {leftovers}"
+    assert rc in (0, 130), f"exit status {rc}: {err}"
+    if rc == 130:
+        lines = [line for line in err.splitlines()
+                 if line.strip() and not line.startswith("cityshade: warning:")]
+        assert lines == ["cityshade: interrupted"], err
+    return rc == 130
+
+
+@pytest.fixture(scope="module")
+def scene_file(tmp_path_factory):
+    out = tmp_path_factory.mktemp("interrupt") / "city.cityshade"
+    done = subprocess.run([sys.executable, "-m", "cityshade", "build", str(SAMPLE), "-o",
+                           str(out), "-q"], capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stderr
+    return out
+
+
+def test_sigint_during_build(tmp_path):
+    from cityshade.cache import open_cache
+    interrupted = 0
+    for k, delay in enumerate(DELAYS_S):
+        folder = tmp_path / f"b{k}"
+        folder.mkdir()
+        out = folder / "city.cityshade"
+        rc, err = _interrupt(["build", SAMPLE, "-o", out], delay, folder)
+        interrupted += _check(rc, err, folder)
+        if out.exists():   # finished before the signal, or renamed just before it
+            open_cache(out)
+    assert interrupted, "no run was interrupted: the delays are too long for this machine"
+
+
+def test_sigint_during_render(tmp_path, scene_file):
+    interrupted = 0
+    for k, delay in enumerate(DELAYS_S):
+        folder = tmp_path / f"r{k}"
+        folder.mkdir()
+        rc, err = _interrupt(["render", scene_file, "--date", "1990", "--sun-azimuth", "135",
+                              "--sun-elevation", "30", "--size", "640x360", "-o",
+                              folder / "a.exr", "--png", folder / "a.png"], delay, folder)
+        if _check(rc, err, folder):
+            interrupted += 1
+            assert not (folder / "a.png").exists() or (folder / "a.exr").exists()
+    assert interrupted
+
+
+def test_sigint_during_batch(tmp_path, scene_file):
+    interrupted = 0
+    for k, delay in enumerate(DELAYS_S):
+        folder = tmp_path / f"s{k}"
+        rc, err = _interrupt(["batch", scene_file, "--date", "2024-06-21", "--from", "06:00",
+                              "--to", "20:00", "--every", "30min", "--tz", "Europe/Berlin",
+                              "--camera", "map", "--pixel-size", "2", "-o", folder], delay,
+                             tmp_path)
+        folder.mkdir(exist_ok=True)
+        interrupted += _check(rc, err, folder)
+    assert interrupted
+
+
+def test_numba_systemerror_from_an_interrupt_is_an_interrupt():
+    """Ctrl-C inside a Numba kernel surfaces as SystemError('CPUDispatcher(...) returned a
+    result with an exception set') chained to the KeyboardInterrupt."""
+    from cityshade.cli.options import Interrupted, translate_errors
+
+    def kernel_call():
+        try:
+            raise KeyboardInterrupt
+        except KeyboardInterrupt as exc:
+            raise SystemError("CPUDispatcher(<function _build_kernel>) returned a result "
+                              "with an exception set") from exc
+
+    with pytest.raises(Interrupted) as info:
+        with translate_errors():
+            kernel_call()
+    assert info.value.exit_code == 130
+    assert isinstance(info.value, click.ClickException)
+    # A SystemError that no interrupt caused stays what it is.
+    with pytest.raises(SystemError):
+        with translate_errors():
+            raise SystemError("something else")
