@@ -220,3 +220,21 @@ def test_render_night_warns_and_is_dark(built, tmp_path):
     assert result.exit_code == 0 and "below the horizon" in result.output
     channels, _ = imageio.read_exr(tmp_path / "n.exr")
     assert (channels["shadow"] == 0).all() and np.isfinite(channels["R"]).all()
+
+
+def test_internal_error_is_exit_70_with_traceback_only_under_verbose(monkeypatch, tmp_path):
+    # A contract error is a bug of the caller, not the user's: exit 70, "internal error".
+    import cityshade.scenefile
+    from cityshade.errors import ContractError
+
+    def broken(*args, **kwargs):
+        raise ContractError("scene arrays of the wrong dtype")
+
+    monkeypatch.setattr(cityshade.scenefile, "load_scene", broken)
+    args = ("render", tmp_path / "x.cityshade", "--sun-azimuth", "10", "--sun-elevation", "20",
+            "-o", tmp_path / "x.exr")
+    assert_one_line_error(run(*args), "internal error: scene arrays of the wrong dtype", code=70)
+    verbose = run(*args, "-v")
+    assert verbose.exit_code == 70 and "Traceback" in verbose.output
+    assert verbose.output.strip().splitlines()[-1] == (
+        "cityshade: error: internal error: scene arrays of the wrong dtype")

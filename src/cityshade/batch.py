@@ -22,10 +22,8 @@ from __future__ import annotations
 import hashlib
 import json
 import math
-import os
 import re
 import time
-import uuid
 from dataclasses import dataclass, field
 from datetime import date, datetime, timedelta, timezone
 from pathlib import Path
@@ -34,7 +32,7 @@ from typing import Any, Callable, Sequence
 import numpy as np
 
 from cityshade import __version__
-from cityshade.errors import OutputError, UsageError
+from cityshade.errors import UsageError
 
 __all__ = ["Step", "Unit", "SunHours", "Checkpoint", "parse_duration_s", "parse_clock_s",
            "plan_steps", "plan_units", "sun_hours", "surface_sun_hours", "write_sun_hours",
@@ -294,17 +292,12 @@ class Checkpoint:
 
     def save(self, units_done: int, pixel_sum: np.ndarray, sample_sum: np.ndarray) -> None:
         """Write the state to a temporary name and rename it over the previous one."""
+        from cityshade.util import atomic_write
+
         t0 = time.perf_counter()
-        tmp = self.path.with_name(f".{self.path.name}.{uuid.uuid4().hex}.tmp")
-        try:
-            with tmp.open("wb") as fh:
-                np.savez(fh, key=np.array(self.key), units_done=np.array(units_done),
-                         pixel_sum=pixel_sum, sample_sum=sample_sum)
-            os.replace(tmp, self.path)
-        except OSError as exc:
-            tmp.unlink(missing_ok=True)
-            raise OutputError(f"cannot save the batch state: {exc.strerror or exc}",
-                              path=str(self.path)) from None
+        with atomic_write(self.path, "wb", what="the batch state") as fh:
+            np.savez(fh, key=np.array(self.key), units_done=np.array(units_done),
+                     pixel_sum=pixel_sum, sample_sum=sample_sum)
         self.saves += 1
         self.save_s += time.perf_counter() - t0
 
@@ -808,13 +801,8 @@ def read_manifest(outdir) -> dict[str, Any] | None:
 
 def write_manifest(outdir, manifest: dict[str, Any]) -> Path:
     """Write ``OUTDIR/manifest.json`` atomically."""
-    path = Path(outdir) / MANIFEST_NAME
-    tmp = path.with_name(f".{path.name}.{uuid.uuid4().hex}.tmp")
-    try:
-        tmp.write_text(json.dumps(manifest, indent=2, sort_keys=True) + "\n", encoding="utf-8")
-        os.replace(tmp, path)
-    except OSError as exc:
-        tmp.unlink(missing_ok=True)
-        raise OutputError(f"cannot write the manifest: {exc.strerror or exc}",
-                          path=str(path)) from None
-    return path
+    from cityshade.util import write_text_atomic
+
+    return write_text_atomic(Path(outdir) / MANIFEST_NAME,
+                             json.dumps(manifest, indent=2, sort_keys=True) + "\n",
+                             what="the manifest")

@@ -22,7 +22,6 @@ import hashlib
 import json
 import os
 import struct
-import tempfile
 from pathlib import Path
 from typing import Any, Mapping
 
@@ -30,6 +29,7 @@ import numpy as np
 
 from cityshade.errors import (CacheCorruptError, CacheError, CacheVersionError, InputError,
                               OutputError)
+from cityshade.util import atomic_write
 
 MAGIC = b"CITYSHD\n"
 #: Bump on any change of layout or meaning of a stored array; old files are refused.
@@ -102,28 +102,17 @@ def write_cache(path: str | os.PathLike, header: Mapping[str, Any],
         raise OutputError(f"cannot write here: {path.parent} is not a folder", path=str(path))
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
     except OSError as exc:
         raise OutputError(f"cannot write here: {exc.strerror}", path=str(path)) from None
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(prefix)
-            fh.write(blob)
-            fh.write(b"\0" * (data_start - _PREFIX.size - len(blob)))
-            for name, a in prepared.items():
-                fh.write(memoryview(a).cast("B"))
-                pad = -a.nbytes % _ALIGN
-                if pad:
-                    fh.write(b"\0" * pad)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise
+    with atomic_write(path, "wb", fsync=True, what="here") as fh:
+        fh.write(prefix)
+        fh.write(blob)
+        fh.write(b"\0" * (data_start - _PREFIX.size - len(blob)))
+        for name, a in prepared.items():
+            fh.write(memoryview(a).cast("B"))
+            pad = -a.nbytes % _ALIGN
+            if pad:
+                fh.write(b"\0" * pad)
     return data_start + offset
 
 

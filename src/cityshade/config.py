@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import dataclasses
 import math
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Mapping
@@ -115,12 +114,6 @@ def settings_from_mapping(data: Mapping[str, Any], where: str = "config") -> Set
 
 def load_settings(path: str | Path) -> Settings:
     """Read a TOML configuration file; unknown keys are a :class:`ConfigError`."""
-    path = Path(path)
-    try:
-        with path.open("rb") as fh:
-            data = tomllib.load(fh)
-    except OSError as exc:
-        raise ConfigError(f"cannot read config: {exc.strerror}", path=str(path)) from None
-    except tomllib.TOMLDecodeError as exc:
-        raise ConfigError(f"invalid TOML: {exc}", path=str(path)) from None
-    return settings_from_mapping(data, where=str(path))
+    from cityshade.util import read_toml
+
+    return settings_from_mapping(read_toml(path, "config"), where=str(path))

@@ -685,14 +685,13 @@ def _cell(value) -> str:
 
 def write_csv(path, rows: Sequence[dict]) -> None:
     """``results.csv``: one row per view × sun × technique × map size (:data:`CSV_COLUMNS`)."""
-    path = Path(path)
-    tmp = path.with_name(path.name + ".part")
-    with open(tmp, "w", newline="", encoding="utf-8") as fh:
+    from cityshade.util import atomic_write
+
+    with atomic_write(path, newline="", what="the results table") as fh:
         writer = csv.writer(fh)
         writer.writerow(CSV_COLUMNS)
         for row in rows:
             writer.writerow([_cell(row.get(c)) for c in CSV_COLUMNS])
-    tmp.replace(path)
 
 
 def summary(rows: Sequence[dict]) -> dict[str, list[dict[str, Any]]]:
@@ -822,6 +821,7 @@ def write_report(evaluation: Evaluation, outdir, title: str | None = None) -> li
     """Write ``results.csv``, ``report.md``, ``error_vs_time_<view>.png`` and the worst cases'
     ``diff_<view>_<technique>_<size>.png`` into ``outdir`` (created). Returns the paths."""
     from cityshade import imageio
+    from cityshade.util import write_text_atomic
 
     outdir = Path(outdir)
     try:
@@ -850,7 +850,7 @@ def write_report(evaluation: Evaluation, outdir, title: str | None = None) -> li
             written.append(png)
             images.setdefault(view, []).append(png.name)
     md = outdir / "report.md"
-    md.write_text(report_markdown(evaluation, images, title) + "\n", encoding="utf-8")
+    write_text_atomic(md, report_markdown(evaluation, images, title) + "\n", what="the report")
     written.append(md)
     return written
 

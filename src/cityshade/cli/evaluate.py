@@ -79,6 +79,7 @@ def evaluate(file, views, sun_text, date_text, times, tz, shadows, sizes, size, 
     bar = _Bar()
     if stress:
         from cityshade.stress import StressSettings, run_stress, stress_markdown
+        from cityshade.util import write_text_atomic
 
         try:
             report = run_stress(file, StressSettings.quick_set() if quick else StressSettings(),
@@ -87,7 +88,8 @@ def evaluate(file, views, sun_text, date_text, times, tz, shadows, sizes, size, 
             bar.close()
         if output is not None:
             output.mkdir(parents=True, exist_ok=True)
-            (output / "stress.md").write_text(stress_markdown(report) + "\n", encoding="utf-8")
+            write_text_atomic(output / "stress.md", stress_markdown(report) + "\n",
+                              what="the stress report")
         failed = [c for c in report.cases if not c.passed]
         click.echo(f"stress: {len(report.cases) - len(failed)} of {len(report.cases)} cases "
                    f"passed" + (f"; FAILED: {', '.join(c.name for c in failed)}" if failed else ""))

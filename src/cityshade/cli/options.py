@@ -7,7 +7,7 @@ import time
 
 import click
 
-from cityshade.errors import CityshadeError
+from cityshade.errors import CityshadeError, ContractError
 
 
 class LibraryFailure(click.ClickException):
@@ -22,12 +22,22 @@ class LibraryFailure(click.ClickException):
 
 
 @contextlib.contextmanager
-def translate_errors():
-    """Turn every failure into one line and an exit status, never a traceback."""
+def translate_errors(verbose: bool = False):
+    """Turn every failure into one line and an exit status, never a traceback.
+
+    A :class:`~cityshade.errors.ContractError` is a bug, not a user error: "internal error"
+    and exit status 70, with the traceback on stderr only when ``verbose`` (``-v``).
+    """
     try:
         yield
     except CityshadeError as exc:
         raise LibraryFailure(str(exc), exc.exit_code) from None
+    except ContractError as exc:
+        if verbose:
+            import traceback
+
+            traceback.print_exc(file=sys.stderr)
+        raise LibraryFailure(f"internal error: {exc}", ContractError.exit_code) from None
     except KeyboardInterrupt:
         raise click.Abort() from None
     except OSError as exc:

@@ -19,7 +19,6 @@ Conventions
 from __future__ import annotations
 
 import math
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -463,14 +462,10 @@ def load_presets(path: str | Path | None = None) -> dict[str, dict[str, float]]:
         if not DEFAULT_PRESETS_PATH.exists():
             return {name: dict(values) for name, values in BUILTIN_PRESETS.items()}
         path = DEFAULT_PRESETS_PATH
+    from cityshade.util import read_toml
+
     path = Path(path)
-    try:
-        with path.open("rb") as fh:
-            data = tomllib.load(fh)
-    except OSError as exc:
-        raise ConfigError(f"cannot read camera presets: {exc.strerror}", path=str(path)) from None
-    except tomllib.TOMLDecodeError as exc:
-        raise ConfigError(f"invalid TOML: {exc}", path=str(path)) from None
+    data = read_toml(path, "camera presets")
     presets = {}
     for name, table in data.items():
         if not isinstance(table, dict):
