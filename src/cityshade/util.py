@@ -13,6 +13,9 @@ from typing import IO, Any, Iterator
 
 from cityshade.errors import CityshadeError, ConfigError, OutputError
 
+#: Why a plot or legend is missing when matplotlib is not installed.
+NO_MATPLOTLIB = "plot skipped: matplotlib is not installed (pip install 'cityshade[plot]')"
+
 
 @contextlib.contextmanager
 def atomic_path(path: str | os.PathLike, *, keep_suffix: bool = False,
@@ -85,6 +88,17 @@ def write_text_atomic(path: str | os.PathLike, text: str, *, encoding: str = "ut
     return Path(path)
 
 
+def make_folder(path: str | os.PathLike, what: str = "output folder") -> Path:
+    """Create ``path`` (and its parents) if needed; an :class:`OutputError` naming it when
+    that is impossible."""
+    path = Path(path)
+    try:
+        path.mkdir(parents=True, exist_ok=True)
+    except OSError as exc:
+        raise OutputError(f"cannot create the {what}: {exc.strerror}", path=str(path)) from None
+    return path
+
+
 def read_toml(path: str | os.PathLike, what: str = "config") -> dict[str, Any]:
     """The parsed TOML document at ``path``; unreadable or invalid files are a
     :class:`~cityshade.errors.ConfigError` naming the file (and the line for syntax errors)."""
@@ -96,3 +110,32 @@ def read_toml(path: str | os.PathLike, what: str = "config") -> dict[str, Any]:
         raise ConfigError(f"cannot read {what}: {exc.strerror}", path=str(path)) from None
     except tomllib.TOMLDecodeError as exc:
         raise ConfigError(f"invalid TOML: {exc}", path=str(path)) from None
+
+
+# --- matplotlib, the optional [plot] extra ----------------------------------------------------
+
+def have_matplotlib() -> bool:
+    """Whether the ``[plot]`` extra (matplotlib) is installed."""
+    try:
+        import matplotlib  # noqa: F401
+    except ImportError:
+        return False
+    return True
+
+
+def agg_canvas(width_px: int, height_px: int):
+    """(Figure, FigureCanvasAgg) of ``width_px`` × ``height_px`` pixels: matplotlib's object API
+    on an Agg canvas (no pyplot, no global backend state). Needs :func:`have_matplotlib`."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.figure import Figure
+
+    fig = Figure(figsize=(width_px / 100.0, height_px / 100.0), dpi=100)
+    return fig, FigureCanvasAgg(fig)
+
+
+def canvas_pixels(canvas) -> Any:
+    """(H, W, 3) uint8 RGB of a drawn :func:`agg_canvas`."""
+    import numpy as np
+
+    canvas.draw()
+    return np.array(canvas.buffer_rgba())[..., :3].copy()

@@ -317,7 +317,8 @@ _DATE_FORMS = ("YYYY, YYYY-MM-DD, or YYYY-MM-DDTHH:MM[:SS][Z|±HH:MM] "
                "(e.g. 1850, 1850-06-21, 1850-06-21T15:00+01:00)")
 
 
-def _zone(tz: str):
+def zone_info(tz: str):
+    """The :class:`zoneinfo.ZoneInfo` of an IANA name; unknown names are a UsageError."""
     from zoneinfo import ZoneInfo, ZoneInfoNotFoundError
     try:
         return ZoneInfo(tz)
@@ -358,7 +359,7 @@ def parse_user_date(text: str, tz: str | None = None) -> UserDate:
     """
     if not isinstance(text, str):
         raise UsageError(f"date must be text, not {type(text).__name__}")
-    zone = _zone(tz) if tz is not None else None
+    zone = zone_info(tz) if tz is not None else None
     stripped = text.strip()
     match = _USER_DATETIME_RE.fullmatch(stripped)
     if match is None:

@@ -487,8 +487,10 @@ def load_presets(path: str | Path | None = None) -> dict[str, dict[str, float]]:
 
 
 def preset(name: str, scene, width_px: int = 1280, height_px: int = 720, *,
-           path: str | Path | None = None, t_days: float | None = None) -> Camera:
-    """The named preset of ``configs/cameras.toml`` fitted to the scene's box.
+           path: str | Path | None = None, extra: str | Path | None = None,
+           t_days: float | None = None) -> Camera:
+    """The named preset of ``configs/cameras.toml`` (or ``path``), or of the user's preset
+    file ``extra`` (``--cameras``; its presets win), fitted to the scene's box.
 
     Raises
     ------
@@ -496,6 +498,8 @@ def preset(name: str, scene, width_px: int = 1280, height_px: int = 720, *,
         When ``name`` is not a preset; the message lists the valid names.
     """
     presets = load_presets(path)
+    if extra is not None:
+        presets.update(load_presets(extra))
     if name not in presets:
         raise UnknownPresetError(f"unknown camera {name!r}; valid: map, "
                                  f"{', '.join(sorted(presets))}")
