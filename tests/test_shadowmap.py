@@ -359,3 +359,26 @@ def test_depth_map_same_for_any_thread_count_and_tile_size(sample):
     for other in maps[1:]:
         np.testing.assert_array_equal(other.prim_id, maps[0].prim_id)
         np.testing.assert_array_equal(other.depth, maps[0].depth)
+
+
+def test_every_planner_works_with_every_lookup(sample):
+    """Techniques are planner + lookup: the short names are exactly their compositions, and
+    the warps and cascades take the filtered lookups too (not only the hard one)."""
+    cam = cams.overview(sample, 192, 120)
+    sun = sun_from_angles(135.0, 30.0)
+    ref = render_frame(sample, cam, T_1990, sun, "raytrace")
+    valid = ref.surfaces.valid
+    small = ShadowSettings().override(map_px=1024)
+    for alias, spelled in (("pcf", "shadowmap/pcf"), ("vsm", "shadowmap/vsm"),
+                           ("psm", "psm/hard"), ("csm:lispsm", "csm:lispsm/hard")):
+        a = render_frame(sample, cam, T_1990, sun, alias, small).lit
+        b = render_frame(sample, cam, T_1990, sun, spelled, small).lit
+        assert a.tobytes() == b.tobytes(), (alias, spelled)
+    for name in ("lispsm/pcf", "xpsm/vsm", "psm/pcf", "csm/vsm", "csm:xpsm/pcf"):
+        frame = render_frame(sample, cam, T_1990, sun, name, small)
+        assert np.isfinite(frame.lit).all() and frame.diagnostics.shadow["lookup"] in name
+        agree = ((frame.lit[valid] >= 0.5) == (ref.lit[valid] >= 0.5)).mean()
+        assert agree >= 0.95, f"{name}: {100 * agree:.2f} % of pixels agree with raytrace"
+        if name.endswith("/vsm"):  # a filtered lookup gives fractions, not only 0 and 1
+            soft = frame.lit[valid]
+            assert ((soft > 0.0) & (soft < 1.0)).any(), name

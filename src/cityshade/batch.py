@@ -36,6 +36,7 @@ from cityshade.config import ShadowSettings
 from cityshade.errors import UsageError
 
 if TYPE_CHECKING:
+    from cityshade.geometry.scene import Scene
     from cityshade.raster.camera import Camera
 
 __all__ = ["Step", "Unit", "SunHours", "Checkpoint", "parse_duration_s", "parse_clock_s",
@@ -426,7 +427,7 @@ def _city_changes(scene, instants, t_days) -> str | None:
     return None
 
 
-def sun_hours(scene, camera: "Camera | None", instants_utc: Sequence[datetime], t_days: float, *,
+def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[datetime], t_days: float, *,
               weights_h=None, technique: str = "raytrace",
               settings: ShadowSettings | None = None,
               ground: str | None = None, spa=None, suns: Sequence | None = None,
@@ -829,7 +830,7 @@ def camera_params(camera: "Camera") -> dict[str, Any]:
             "vfov_deg": float(camera.vfov_deg), "pixel_size_m": camera.pixel_size_m}
 
 
-def run_batch(outdir, scene, camera: "Camera", steps: Sequence[Step], t_days: float, *,
+def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t_days: float, *,
               request: dict[str, Any] | None = None, technique: str = "raytrace",
               settings=None, ground: str | None = None, frames: bool = False,
               surfaces_csv: bool = False, overwrite: bool = False,

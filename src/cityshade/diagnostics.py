@@ -10,9 +10,14 @@ from __future__ import annotations
 
 import statistics
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
+
+if TYPE_CHECKING:
+    from cityshade.geometry.scene import Scene
+    from cityshade.raster.gbuffer import Surfaces
+    from cityshade.sun import SunPosition
 
 
 @dataclass(frozen=True)
@@ -79,9 +84,9 @@ def _depth_map_skips(stats: dict, where: str) -> list[str]:
     return out
 
 
-def skipped_work(scene, gbuffer_stats: dict | None = None,
-                 shadow_diagnostics: dict | None = None, surfaces=None,
-                 sun=None) -> list[str]:
+def skipped_work(scene: "Scene", gbuffer_stats: dict | None = None,
+                 shadow_diagnostics: dict | None = None, surfaces: "Surfaces | None" = None,
+                 sun: "SunPosition | None" = None) -> list[str]:
     """What a frame left out because the scene or the request did not need it, with why and
     an estimate of the time it saved, one line per item.
 

@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass, field
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
 
 import numpy as np
 
@@ -27,6 +27,7 @@ from cityshade.diagnostics import FrameDiagnostics, GroundInfo, skipped_work
 from cityshade.errors import ContractError, UsageError
 
 if TYPE_CHECKING:
+    from cityshade.geometry.scene import Scene
     from cityshade.raster.camera import Camera
     from cityshade.raster.gbuffer import GBuffer, Surfaces
     from cityshade.shadows import ShadowContext, ShadowResult, Technique
@@ -54,7 +55,7 @@ class CameraPass:
         ``gbuffer_s``, ``resolve_s``.
     """
 
-    scene: Any
+    scene: "Scene"
     camera: "Camera"
     t_days: float
     gbuffer: "GBuffer"
@@ -78,7 +79,7 @@ class CameraPass:
                              settings=settings or ShadowSettings(), oriented_normal=self.normal)
 
 
-def camera_pass(scene, camera: "Camera", t_days: float, *, ground: str | None = None
+def camera_pass(scene: "Scene", camera: "Camera", t_days: float, *, ground: str | None = None
                 ) -> CameraPass:
     """Rasterize, resolve, add the ground plane: the camera pass of a frame.
 
@@ -143,7 +144,7 @@ class ShadowPass:
     result: "ShadowResult"
     lit: np.ndarray
     seconds: float
-    sun: Any = None
+    sun: "SunPosition | None" = None
 
     def diagnostics(self, cp: CameraPass) -> FrameDiagnostics:
         """The frame's typed diagnostics, with what it left out (:func:`skipped_work`)."""

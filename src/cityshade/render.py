@@ -20,6 +20,7 @@ from cityshade.diagnostics import FrameDiagnostics
 from cityshade.errors import UsageError
 
 if TYPE_CHECKING:
+    from cityshade.geometry.scene import Scene
     from cityshade.raster.camera import Camera
     from cityshade.sun import SunPosition
 
@@ -51,7 +52,7 @@ def city_time_range(scene) -> tuple[float, float] | None:
     return (float(np.min(scene.obj_t_begin_days)), float(np.max(scene.obj_t_end_days)))
 
 
-def render_frame(scene, camera: "Camera", t_days: float, sun: "SunPosition",
+def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosition",
                  technique: str = "raytrace", settings: ShadowSettings | None = None,
                  sky: bool = True, ground: str | None = None) -> Frame:
     """Render one frame: the pipeline's camera pass and shadow pass, then shading.

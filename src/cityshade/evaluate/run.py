@@ -22,6 +22,7 @@ from cityshade.errors import UsageError
 from cityshade.evaluate.metrics import compare, finite_check, make_reference, median_s
 
 if TYPE_CHECKING:
+    from cityshade.geometry.scene import Scene
     from cityshade.raster.camera import Camera
     from cityshade.sun import SunPosition
 
@@ -108,7 +109,7 @@ def _stage_medians(diags: list[dict]) -> dict[str, float]:
     return {k: median_s(v) for k, v in keys.items()}
 
 
-def evaluate_frame(scene, camera: "Camera", view: str, sun: "SunPosition", t_days: float,
+def evaluate_frame(scene: "Scene", camera: "Camera", view: str, sun: "SunPosition", t_days: float,
                    techniques: Sequence[str], sizes: Sequence[int], settings: EvaluateSettings,
                    evaluation: Evaluation, shadows: ShadowSettings | None = None,
                    progress: Callable[[str], None] | None = None,
@@ -257,7 +258,7 @@ def make_camera(scene, view: str, size: tuple[int, int] = (1280, 720),
     return cams.preset(view, scene, w, h, extra=cameras_file)
 
 
-def run_evaluation(scene, views: Sequence[tuple[str, Any]], suns: Sequence, t_days: float,
+def run_evaluation(scene: "Scene", views: Sequence[tuple[str, Any]], suns: Sequence, t_days: float,
                    techniques: Sequence[str], settings: EvaluateSettings | None = None,
                    shadows: ShadowSettings | None = None,
                    progress: Callable[[int, int, str], None] | None = None,

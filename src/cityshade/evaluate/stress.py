@@ -356,7 +356,7 @@ def _views(scene, s: StressSettings, t_days: float | None = None):
     side = float(np.max(box[1, :2] - box[0, :2]))
     w, h = s.view_px
     return [("overview", cams.overview(scene, w, h)),
-            ("map", cams.map_view(scene, cams._nice_ceil(side / s.map_side_px)))]
+            ("map", cams.map_view(scene, cams.nice_ceil(side / s.map_side_px)))]
 
 
 def _street_view(scene, s: StressSettings):
@@ -366,7 +366,7 @@ def _street_view(scene, s: StressSettings):
     box = cams.scene_box(scene)
     c = 0.5 * (box[0, :2] + box[1, :2])
     half = 0.1 * float(np.max(box[1, :2] - box[0, :2]))
-    px = cams._nice_ceil(2 * half / s.map_side_px)
+    px = cams.nice_ceil(2 * half / s.map_side_px)
     return cams.map_view(scene, px, bbox=(c[0] - half, c[1] - half, c[0] + half, c[1] + half))
 
 

@@ -383,7 +383,7 @@ def overview(scene, width_px: int = 1280, height_px: int = 720, *, t_days: float
                   name="overview")
 
 
-def _nice_ceil(x: float) -> float:
+def nice_ceil(x: float) -> float:
     """Smallest of 1, 2, 2.5, 5 × 10^k that is >= x (pixel sizes a GIS user would choose)."""
     k = math.floor(math.log10(x))
     for m in (1.0, 2.0, 2.5, 5.0, 10.0):
@@ -422,7 +422,7 @@ def map_view(scene, pixel_size_m: float | None = None, bbox=None,
         if not (np.isfinite([x0, y0, x1, y1]).all() and x1 > x0 and y1 > y0):
             raise UsageError(f"map bbox must have x0 < x1 and y0 < y1, not {bbox}")
     if pixel_size_m is None:
-        pixel_size_m = _nice_ceil(max(x1 - x0, y1 - y0, 1e-3) / DEFAULT_MAP_SIDE_PX)
+        pixel_size_m = nice_ceil(max(x1 - x0, y1 - y0, 1e-3) / DEFAULT_MAP_SIDE_PX)
     px = float(pixel_size_m)
     if not (math.isfinite(px) and px > 0.0):
         raise UsageError(f"map pixel size must be > 0 metres, not {pixel_size_m}")

@@ -28,12 +28,18 @@ from __future__ import annotations
 import functools
 import importlib
 from dataclasses import dataclass, field
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 import numpy as np
 
 from cityshade.config import ShadowSettings
 from cityshade.errors import UsageError
+
+if TYPE_CHECKING:
+    from cityshade.geometry.scene import Scene
+    from cityshade.raster.camera import Camera
+    from cityshade.raster.gbuffer import Surfaces
+    from cityshade.sun import SunPosition
 
 #: Techniques that are not map techniques: name → "module:Class" (registering one is one line).
 TECHNIQUES: dict[str, str] = {
@@ -57,10 +63,10 @@ class ShadowContext:
     smoothing, a hybrid) read it.
     """
 
-    scene: Any
-    surfaces: Any          # cityshade.raster.gbuffer.Surfaces
-    camera: Any            # cityshade.raster.camera.Camera
-    sun: Any               # cityshade.sun.SunPosition
+    scene: "Scene"
+    surfaces: "Surfaces"
+    camera: "Camera"
+    sun: "SunPosition"
     t_days: float
     settings: ShadowSettings = field(default_factory=ShadowSettings)
     oriented_normal: np.ndarray | None = None
@@ -168,7 +174,7 @@ def get_map_technique(name: str):
     return planners.MapTechnique(name, planner, lookups.make_lookup(lookup_name or "hard"))
 
 
-def oriented_normals(surfaces, camera) -> np.ndarray:
+def oriented_normals(surfaces: "Surfaces", camera: "Camera") -> np.ndarray:
     """Unit normals (H, W, 3) float64 turned to the side the camera sees.
 
     A pixel may show the back of a triangle (an open model, a wall seen from inside); its
@@ -190,7 +196,8 @@ def facing_mask(normal, valid, sun_direction) -> np.ndarray:
     return faces & np.asarray(valid, bool)
 
 
-def facing_sun(surfaces, camera, sun_direction) -> tuple[np.ndarray, np.ndarray]:
+def facing_sun(surfaces: "Surfaces", camera: "Camera", sun_direction
+               ) -> tuple[np.ndarray, np.ndarray]:
     """(oriented normals, mask of surface pixels that face the sun): the shared rule."""
     normal = oriented_normals(surfaces, camera)
     return normal, facing_mask(normal, surfaces.valid, sun_direction)
