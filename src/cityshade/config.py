@@ -104,7 +104,7 @@ class MapSettings:
 
     def __post_init__(self) -> None:
         if not (_is_int(self.px) and 1 <= self.px <= MAX_MAP_PX):
-            raise ConfigError(f"map_px must be an integer in [1, {MAX_MAP_PX}], not {self.px!r}")
+            raise ConfigError(f"px (map_px) must be an integer in [1, {MAX_MAP_PX}], not {self.px!r}")
         if not (_is_int(self.fit_pad_px) and 0 <= self.fit_pad_px <= 64):
             raise ConfigError(f"fit_pad_px must be an integer in [0, 64], "
                               f"not {self.fit_pad_px!r}")
@@ -134,7 +134,7 @@ class BiasSettings:
                            ("max_m", "max_bias")):
             value = getattr(self, name)
             if not (_is_number(value) and math.isfinite(value) and value >= 0):
-                raise ConfigError(f"{flag} must be a finite number >= 0, not {value!r}")
+                raise ConfigError(f"{name} ({flag}) must be a finite number >= 0, not {value!r}")
 
 
 @dataclass(frozen=True)
@@ -146,7 +146,7 @@ class PcfSettings:
 
     def __post_init__(self) -> None:
         if not (_is_int(self.kernel) and 1 <= self.kernel <= 63 and self.kernel % 2 == 1):
-            raise ConfigError(f"pcf_kernel must be an odd integer in [1, 63], "
+            raise ConfigError(f"kernel (pcf_kernel) must be an odd integer in [1, 63], "
                               f"not {self.kernel!r}")
 
 
@@ -168,12 +168,12 @@ class VsmSettings:
 
     def __post_init__(self) -> None:
         if not (_is_int(self.blur_px) and 0 <= self.blur_px <= 64):
-            raise ConfigError(f"vsm_blur must be an integer in [0, 64], not {self.blur_px!r}")
+            raise ConfigError(f"blur_px (vsm_blur) must be an integer in [0, 64], not {self.blur_px!r}")
         if self.filter not in ("gaussian", "box"):
-            raise ConfigError(f"vsm_filter must be 'gaussian' or 'box', not {self.filter!r}")
+            raise ConfigError(f"filter (vsm_filter) must be 'gaussian' or 'box', not {self.filter!r}")
         if not (_is_number(self.min_variance_m2) and math.isfinite(self.min_variance_m2)
                 and self.min_variance_m2 >= 0):
-            raise ConfigError(f"min_variance must be a finite number >= 0, "
+            raise ConfigError(f"min_variance_m2 (min_variance) must be a finite number >= 0, "
                               f"not {self.min_variance_m2!r}")
         if not (_is_number(self.bleed_reduction) and 0.0 <= self.bleed_reduction < 1.0):
             raise ConfigError(f"bleed_reduction must be in [0, 1), not {self.bleed_reduction!r}")
@@ -192,7 +192,7 @@ class CascadeSettings:
 
     def __post_init__(self) -> None:
         if not (_is_int(self.count) and 1 <= self.count <= 16):
-            raise ConfigError(f"cascades must be an integer in [1, 16], not {self.count!r}")
+            raise ConfigError(f"count (cascades) must be an integer in [1, 16], not {self.count!r}")
         if not (_is_number(self.split_lambda) and 0.0 <= self.split_lambda <= 1.0):
             raise ConfigError(f"split_lambda must be in [0, 1], not {self.split_lambda!r}")
 
