@@ -31,15 +31,13 @@ import numpy as np
 from numba import njit
 from numba.typed import List
 
+from cityshade.accel.kdtree_layout import (LEAF_CODE, TIME_AXIS, KdTree, pack_nodes,
+                                           triangle_records)
 from cityshade.errors import ConfigError, UsageError
 
 #: Deepest tree the layout and the fixed traversal stack support (the stack holds one entry
 #: per level, see ``cityshade.trace.kernels.STACK_SIZE``).
 MAX_DEPTH_LIMIT = 60
-#: Axis code of a time split; 0, 1, 2 are x, y, z.
-AXIS_T = 3
-#: Axis code stored for a leaf.
-LEAF = 4
 
 
 class KdTreeInputError(UsageError):
@@ -213,7 +211,7 @@ def _surface(lo, hi, has_time, t0, t1):
 @njit(cache=True)
 def _split_probabilities(lo, hi, axis, p, t0, t1):
     """(P_L, P_R) of a split of box (lo, hi) at ``p`` on ``axis``; (-1, -1) if undefined."""
-    if axis == AXIS_T:
+    if axis == TIME_AXIS:
         a = max(lo[3], t0)
         b = min(hi[3], t1)
         d = b - a
@@ -274,7 +272,7 @@ def _sweep_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, best):
     starts = np.sort(starts[:ns])
     ends = np.sort(ends[:ns])
     planars = np.sort(planars[:npl])
-    if axis == AXIS_T:
+    if axis == TIME_AXIS:
         a_lo = max(blo[3], t0)
         a_hi = min(bhi[3], t1)
     else:
@@ -330,7 +328,7 @@ def _sweep_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, best):
 def _binned_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, nbins, best):
     """Approximate SAH over ``nbins`` equal bins of one axis (counts per bin, O(n))."""
     n = lo.shape[0]
-    if axis == AXIS_T:
+    if axis == TIME_AXIS:
         a = max(blo[3], t0)
         b = min(bhi[3], t1)
     else:
@@ -486,7 +484,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
             prims = _grow_i64(prims, n_prims + n)
             for r in range(n):
                 prims[n_prims + r] = ids[order[r]]
-            node_axis[node] = LEAF
+            node_axis[node] = LEAF_CODE
             node_child[node] = n
             node_first[node] = n_prims
             node_split[node] = 0.0
@@ -503,7 +501,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         p = best[2]
         planar_left = best[3] > 0.5
         sah += ct * surf
-        if axis == AXIS_T:
+        if axis == TIME_AXIS:
             time_splits += 1
 
         # Classify: 1 = left only, 2 = right only, 3 = both (straddling, clipped below).
@@ -513,7 +511,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         for r in range(n):
             a = lo[r, axis]
             b = hi[r, axis]
-            if axis == AXIS_T:
+            if axis == TIME_AXIS:
                 s = (1 if a < p else 0) | (2 if b > p else 0)
             elif a == b and a == p:
                 s = 1 if planar_left else 2
@@ -549,7 +547,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
                 ids_l[il] = ids[r]
                 lo_l[il] = lo[r]
                 hi_l[il] = hi[r]
-                if s == 3 and axis != AXIS_T:
+                if s == 3 and axis != TIME_AXIS:
                     # Perfect split: the true extent of the triangle inside the child box.
                     if _clipped_box(tri_v, ids[r], blo_l, bhi_l, clo, chi, scratch):
                         for c in range(3):
@@ -562,7 +560,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
                 ids_r[ir] = ids[r]
                 lo_r[ir] = lo[r]
                 hi_r[ir] = hi[r]
-                if s == 3 and axis != AXIS_T:
+                if s == 3 and axis != TIME_AXIS:
                     if _clipped_box(tri_v, ids[r], blo_r, bhi_r, clo, chi, scratch):
                         for c in range(3):
                             lo_r[ir, c] = max(lo[r, c], max(blo_r[c], _f32_down(clo[c])))
@@ -659,8 +657,6 @@ def build_kdtree(vertices, triangles, t_begin_days, t_end_days, material,
     KdTreeInputError
         Arrays of the wrong shape, non-finite vertices, indices out of range or NaN times.
     """
-    from cityshade.accel.kdtree_layout import KdTree, pack_nodes, triangle_records
-
     settings = settings or KdTreeSettings()
     started = time.perf_counter()
     vertices = np.asarray(vertices)

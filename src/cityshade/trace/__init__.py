@@ -139,8 +139,7 @@ def occluded(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     if origins.shape[0] == 0 or kd.tri_records.shape[0] == 0:
         return out
     lo, hi = _padded_box(kd)
-    occluded_bricks(kd.nodes, kd.node_splits, kd.tri_records, kd.records_f64, lo, hi,
-                    origins, directions, 0.0, tmax_arr, t, brick, out)
+    occluded_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, out)
     return out
 
 
@@ -175,8 +174,8 @@ def intersect(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     if n == 0 or kd.tri_records.shape[0] == 0:
         return dist, tri, u, v
     lo, hi = _padded_box(kd)
-    intersect_bricks(kd.nodes, kd.node_splits, kd.tri_records, kd.records_f64, lo, hi,
-                     origins, directions, 0.0, tmax_arr, t, brick, dist, tri, u, v)
+    intersect_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, dist, tri,
+                     u, v)
     return dist, tri, u, v
 
 
