@@ -96,24 +96,17 @@ def projection_centre(clip_from_world) -> np.ndarray:
 def _raster_depth_tiles(start, items, ids, coef, bbox, xs, ys, tile_px, tiles_x, depth, prim):
     """Depth-test the binned triangles into ``depth`` (H, W) float32 / ``prim`` (H, W) int32,
     one tile per work item (each tile owns its texels)."""
-    n_tiles = start.shape[0] - 1
-    w = depth.shape[1]
-    h = depth.shape[0]
-    for tile in prange(n_tiles):
-        if start[tile] == start[tile + 1]:
+    for tile in prange(start.shape[0] - 1):
+        m0, m1, tc0, tc1, tr0, tr1 = tc.tile_span(start, tile, tiles_x, tile_px, depth.shape)
+        if m0 == m1:
             continue
-        tc0, tc1, tr0, tr1 = tc.tile_rect(tile, tiles_x, tile_px, w, h)
-        for mm in range(start[tile], start[tile + 1]):
+        for mm in range(m0, m1):
             j = items[mm]
-            tri = ids[j]
             a0, b0, k0, a1, b1, k1, a2, b2, k2, own0, own1, own2 = tc.edges(coef, j)
+            tri = ids[j]
             general = coef[j, tc.GENERAL_WORD] != 0.0
-            zv0 = coef[j, tc.Z_WORD]
-            dz1 = coef[j, tc.Z_WORD + 1] - zv0
-            dz2 = coef[j, tc.Z_WORD + 2] - zv0
-            wv0 = coef[j, tc.W_WORD]
-            dw1 = coef[j, tc.W_WORD + 1] - wv0
-            dw2 = coef[j, tc.W_WORD + 2] - wv0
+            zv0, dz1, dz2 = tc.vertex_words(coef, j, tc.Z_WORD)
+            wv0, dw1, dw2 = tc.vertex_words(coef, j, tc.W_WORD)
             pz = coef[j, tc.PLANE_WORD]
             qz = coef[j, tc.PLANE_WORD + 1]
             rz = coef[j, tc.PLANE_WORD + 2]
@@ -121,9 +114,7 @@ def _raster_depth_tiles(start, items, ids, coef, bbox, xs, ys, tile_px, tiles_x,
             cb1 = min(bbox[j, 1], tc1)
             for r in range(max(bbox[j, 2], tr0), min(bbox[j, 3], tr1) + 1):
                 y = ys[r]
-                row0 = b0 * y + k0
-                row1 = b1 * y + k1
-                row2 = b2 * y + k2
+                row0, row1, row2 = b0 * y + k0, b1 * y + k1, b2 * y + k2
                 # Columns where all three edge functions can be >= 0 (one column of slack on
                 # each side; the exact test below decides). Bounds are clamped to the tile
                 # before the integer conversion (huge or NaN values have no int64).
@@ -145,14 +136,9 @@ def _raster_depth_tiles(start, items, ids, coef, bbox, xs, ys, tile_px, tiles_x,
                 ypart = qz * y + rz
                 for c in range(c_first, c_last + 1):
                     x = xs[c]
-                    e0 = a0 * x + row0
-                    if not tc.edge_covers(e0, own0):
-                        continue
-                    e1 = a1 * x + row1
-                    if not tc.edge_covers(e1, own1):
-                        continue
-                    e2 = a2 * x + row2
-                    if not tc.edge_covers(e2, own2):
+                    inside, e0, e1, e2 = tc.covers(x, a0, row0, own0, a1, row1, own1, a2, row2,
+                                                   own2)
+                    if not inside:
                         continue
                     if general:
                         # Crosses W = 0: exact barycentrics → clip Z and W of the plane point.

@@ -106,35 +106,23 @@ def camera_view(camera: Camera) -> tuple[tc.ClipView, np.ndarray]:
 def _raster_tiles(start, items, ids, coef, bbox, xs, ys, near, far, ortho, tile_px, tiles_x,
                   prim, depth, bary, update_hiz, hiz_block, hiz_tile, block_px):
     """Rasterize the binned triangles, one tile per work item; refresh the max-depth buffer."""
-    n_tiles = start.shape[0] - 1
-    w = prim.shape[1]
-    h = prim.shape[0]
-    for tile in prange(n_tiles):
-        if start[tile] == start[tile + 1]:
+    for tile in prange(start.shape[0] - 1):
+        m0, m1, tc0, tc1, tr0, tr1 = tc.tile_span(start, tile, tiles_x, tile_px, prim.shape)
+        if m0 == m1:
             continue
-        tc0, tc1, tr0, tr1 = tc.tile_rect(tile, tiles_x, tile_px, w, h)
-        for m in range(start[tile], start[tile + 1]):
+        for m in range(m0, m1):
             j = items[m]
-            tri = ids[j]
             a0, b0, k0, a1, b1, k1, a2, b2, k2, own0, own1, own2 = tc.edges(coef, j)
-            z0 = coef[j, tc.Z_WORD]
-            dz1 = coef[j, tc.Z_WORD + 1] - z0
-            dz2 = coef[j, tc.Z_WORD + 2] - z0
+            tri = ids[j]
+            z0, dz1, dz2 = tc.vertex_words(coef, j, tc.Z_WORD)
             for r in range(max(bbox[j, 2], tr0), min(bbox[j, 3], tr1) + 1):
                 y = ys[r]
-                row0 = b0 * y + k0
-                row1 = b1 * y + k1
-                row2 = b2 * y + k2
+                row0, row1, row2 = b0 * y + k0, b1 * y + k1, b2 * y + k2
                 for c in range(max(bbox[j, 0], tc0), min(bbox[j, 1], tc1) + 1):
                     x = xs[c]
-                    e0 = a0 * x + row0
-                    if not tc.edge_covers(e0, own0):
-                        continue
-                    e1 = a1 * x + row1
-                    if not tc.edge_covers(e1, own1):
-                        continue
-                    e2 = a2 * x + row2
-                    if not tc.edge_covers(e2, own2):
+                    inside, e0, e1, e2 = tc.covers(x, a0, row0, own0, a1, row1, own1, a2, row2,
+                                                   own2)
+                    if not inside:
                         continue
                     s = e0 + e1 + e2
                     if not s > 0.0:

@@ -149,11 +149,35 @@ def edges(coef, j):
 
 
 @njit(cache=True, inline="always")
-def tile_rect(tile, tiles_x, tile_px, w, h):
-    """First and last column and row (inclusive) of a tile."""
+def covers(x, a0, row0, own0, a1, row1, own1, a2, row2, own2):
+    """Coverage of the pixel at screen x on a row (``row_i = b_i y + c_i``) by the three edges
+    under the top-left rule: ``(inside, e0, e1, e2)``; stops at the first edge that refuses."""
+    e0 = a0 * x + row0
+    if not edge_covers(e0, own0):
+        return False, e0, 0.0, 0.0
+    e1 = a1 * x + row1
+    if not edge_covers(e1, own1):
+        return False, e0, e1, 0.0
+    e2 = a2 * x + row2
+    return edge_covers(e2, own2), e0, e1, e2
+
+
+@njit(cache=True, inline="always")
+def vertex_words(coef, j, word):
+    """A per-vertex value of set-up triangle ``j`` (Z at ``Z_WORD``, W at ``W_WORD``) as
+    (value at v0, v1 - v0, v2 - v0), for interpolation with barycentrics (u, v)."""
+    v0 = coef[j, word]
+    return v0, coef[j, word + 1] - v0, coef[j, word + 2] - v0
+
+
+@njit(cache=True, inline="always")
+def tile_span(start, tile, tiles_x, tile_px, shape):
+    """A tile's entries ``[m0, m1)`` in the binned list and its first and last column and row
+    (inclusive) in an image of ``shape`` (H, W, ...)."""
     tc0 = (tile % tiles_x) * tile_px
     tr0 = (tile // tiles_x) * tile_px
-    return tc0, min(tc0 + tile_px, w) - 1, tr0, min(tr0 + tile_px, h) - 1
+    return (start[tile], start[tile + 1], tc0, min(tc0 + tile_px, shape[1]) - 1, tr0,
+            min(tr0 + tile_px, shape[0]) - 1)
 
 
 # --- setup ------------------------------------------------------------------------------------
@@ -349,6 +373,24 @@ def _depth_words(coef, j, x0, y0, z0, w0, x1, y1, z1, w1, x2, y2, z2, w2, to_px)
 # --- binning and the date filter --------------------------------------------------------------
 
 @njit(cache=True, parallel=True)
+def _bin_chunks(bbox, tile_px, tiles_x, acc, items, write):
+    """One binning pass over the ``BIN_CHUNKS`` consecutive chunks of triangles in parallel:
+    ``acc[chunk, tile] += 1`` for every tile a triangle's box meets, and first, when ``write``,
+    ``items[acc[chunk, tile]] = triangle`` (``acc`` then holds the fill positions)."""
+    n = bbox.shape[0]
+    for ch in prange(BIN_CHUNKS):
+        for j in range(ch * n // BIN_CHUNKS, (ch + 1) * n // BIN_CHUNKS):
+            if bbox[j, 0] > bbox[j, 1]:
+                continue
+            for ty in range(bbox[j, 2] // tile_px, bbox[j, 3] // tile_px + 1):
+                for tx in range(bbox[j, 0] // tile_px, bbox[j, 1] // tile_px + 1):
+                    t = ty * tiles_x + tx
+                    if write:
+                        items[acc[ch, t]] = j
+                    acc[ch, t] += 1
+
+
+@njit(cache=True)
 def bin_triangles(bbox, tile_px, tiles_x, tiles_y):
     """Tile lists in drawing order: ``(start (tiles + 1,) int64, items (M,) int32)``.
 
@@ -357,15 +399,8 @@ def bin_triangles(bbox, tile_px, tiles_x, tiles_y):
     number of threads.
     """
     n_tiles = tiles_x * tiles_y
-    n = bbox.shape[0]
     counts = np.zeros((BIN_CHUNKS, n_tiles), np.int64)
-    for ch in prange(BIN_CHUNKS):
-        for j in range(ch * n // BIN_CHUNKS, (ch + 1) * n // BIN_CHUNKS):
-            if bbox[j, 0] > bbox[j, 1]:
-                continue
-            for ty in range(bbox[j, 2] // tile_px, bbox[j, 3] // tile_px + 1):
-                for tx in range(bbox[j, 0] // tile_px, bbox[j, 1] // tile_px + 1):
-                    counts[ch, ty * tiles_x + tx] += 1
+    _bin_chunks(bbox, tile_px, tiles_x, counts, np.empty(0, np.int32), False)
     # Offsets: tile by tile, chunk by chunk.
     start = np.zeros(n_tiles + 1, np.int64)
     fill = np.empty((BIN_CHUNKS, n_tiles), np.int64)
@@ -377,15 +412,7 @@ def bin_triangles(bbox, tile_px, tiles_x, tiles_y):
             running += counts[ch, t]
     start[n_tiles] = running
     items = np.empty(running, np.int32)
-    for ch in prange(BIN_CHUNKS):
-        for j in range(ch * n // BIN_CHUNKS, (ch + 1) * n // BIN_CHUNKS):
-            if bbox[j, 0] > bbox[j, 1]:
-                continue
-            for ty in range(bbox[j, 2] // tile_px, bbox[j, 3] // tile_px + 1):
-                for tx in range(bbox[j, 0] // tile_px, bbox[j, 1] // tile_px + 1):
-                    t = ty * tiles_x + tx
-                    items[fill[ch, t]] = j
-                    fill[ch, t] += 1
+    _bin_chunks(bbox, tile_px, tiles_x, fill, items, True)
     return start, items
 
 

@@ -35,6 +35,21 @@ def _brick_of(j, n_bricks):
     return b if b < n_bricks else -1
 
 
+@njit(cache=True, inline="always")
+def _brick_rays(j, n, brick_size):
+    """Rays ``[i0, i1)`` of the brick traced at prange iteration j (empty for padding)."""
+    b = _brick_of(j, (n + brick_size - 1) // brick_size)
+    if b < 0:
+        return 0, 0
+    return b * brick_size, min(n, (b + 1) * brick_size)
+
+
+@njit(cache=True, inline="always")
+def _n_iter(n, brick_size):
+    """prange iterations over n rays: the bricks padded to a multiple of STRIPES."""
+    return STRIPES * (((n + brick_size - 1) // brick_size + STRIPES - 1) // STRIPES)
+
+
 @njit(cache=True, parallel=True)
 def occluded_bricks(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_days, brick_size,
                     out):
@@ -44,15 +59,13 @@ def occluded_bricks(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_day
     (N, 3) float64; ``tmin``: scalar; ``tmax``: (N,) float64.
     """
     n = origins.shape[0]
-    n_bricks = (n + brick_size - 1) // brick_size
-    n_iter = STRIPES * ((n_bricks + STRIPES - 1) // STRIPES)
-    for j in prange(n_iter):
-        b = _brick_of(j, n_bricks)
-        if b < 0:
+    for j in prange(_n_iter(n, brick_size)):
+        i0, i1 = _brick_rays(j, n, brick_size)
+        if i0 >= i1:
             continue
         stack = new_stack()
         cache_k = -1
-        for i in range(b * brick_size, min(n, (b + 1) * brick_size)):
+        for i in range(i0, i1):
             k = any_hit(tree, box_lo, box_hi, origins[i, 0], origins[i, 1], origins[i, 2],
                         directions[i, 0], directions[i, 1], directions[i, 2],
                         tmin, tmax[i], t_days, cache_k, stack)
@@ -66,14 +79,12 @@ def intersect_bricks(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_da
                      out_t, out_tri, out_u, out_v):
     """Closest hits of all rays; misses get ``t = inf``, ``tri = -1``, ``u = v = 0``."""
     n = origins.shape[0]
-    n_bricks = (n + brick_size - 1) // brick_size
-    n_iter = STRIPES * ((n_bricks + STRIPES - 1) // STRIPES)
-    for j in prange(n_iter):
-        b = _brick_of(j, n_bricks)
-        if b < 0:
+    for j in prange(_n_iter(n, brick_size)):
+        i0, i1 = _brick_rays(j, n, brick_size)
+        if i0 >= i1:
             continue
         stack = new_stack()
-        for i in range(b * brick_size, min(n, (b + 1) * brick_size)):
+        for i in range(i0, i1):
             t, k, u, v = closest_hit(tree, box_lo, box_hi, origins[i, 0], origins[i, 1],
                                      origins[i, 2], directions[i, 0], directions[i, 1],
                                      directions[i, 2], tmin, tmax[i], t_days, stack)

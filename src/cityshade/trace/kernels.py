@@ -126,16 +126,36 @@ def clip_to_box(box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax):
 
 
 @njit(cache=True, inline="always")
-def _on_axes(ox, oy, oz, kx, ky, kz):
-    """The coordinates of (ox, oy, oz) on axes kx, ky, kz."""
+def _sheared(ox, oy, oz, dx, dy, dz):
+    """The ray as :func:`hit_record` takes it: ``(okx, oky, okz, kx, ky, kz, sx, sy, sz)``,
+    the origin on the permuted axes and the shear of :func:`ray_shear`."""
+    kx, ky, kz, sx, sy, sz = ray_shear(dx, dy, dz)
     return (ox if kx == 0 else (oy if kx == 1 else oz), ox if ky == 0 else (oy if ky == 1 else oz),
-            ox if kz == 0 else (oy if kz == 1 else oz))
+            ox if kz == 0 else (oy if kz == 1 else oz), kx, ky, kz, sx, sy, sz)
 
 
 @njit(cache=True, inline="always")
 def _inverse(d):
     """1/d for the slab tests, 0 for a zero component (never used then: the ray is parallel)."""
     return 1.0 / d if d != 0.0 else 0.0
+
+
+@njit(cache=True, inline="always")
+def _hit_at(tree, k, t_days, tmin, tmax, ray):
+    """:func:`hit_record` of record ``k`` for the :func:`_sheared` ray when its triangle stands
+    at ``t_days``; a hit counts only inside ``[tmin, tmax]``. Returns ``(hit, t, u, v)``."""
+    if not record_present(tree, k, t_days):
+        return False, 0.0, 0.0, 0.0
+    okx, oky, okz, kx, ky, kz, sx, sy, sz = ray
+    hit, t, u, v = hit_record(tree.recs, k, okx, oky, okz, kx, ky, kz, sx, sy, sz)
+    return hit and tmin <= t <= tmax, t, u, v
+
+
+@njit(cache=True, inline="always")
+def _pop(stack, sp):
+    """Pop the next pending subtree: ``(sp, node, seg0, seg1)``."""
+    sp -= 1
+    return sp, stack[0][sp], stack[1][sp], stack[2][sp]
 
 
 @njit(cache=True, inline="always")
@@ -146,14 +166,15 @@ def _descend(tree, node, seg0, seg1, sp, ox, oy, oz, dx, dy, dz, inv_x, inv_y, i
     Time nodes send the ray to the child holding ``t_days``; a spatial split the segment
     crosses pushes its far child with the far part of the segment on ``stack`` (the tuple
     ``(node, t0, t1)`` of ``STACK_SIZE`` arrays) and goes on in the near child. Returns
-    ``(leaf, its word 0, seg1, sp)``; ``seg0`` is unchanged.
+    ``(first, count, seg1, sp)``: the leaf's record range and the new segment end and stack
+    pointer (``seg0`` is unchanged).
     """
     st_node, st_t0, st_t1 = stack
     while True:
         w0 = node_word(tree, node)
         axis = word_axis(w0)
         if axis == LEAF_CODE:
-            return node, w0, seg1, sp
+            return leaf_first(tree, node), word_payload(w0), seg1, sp
         split = node_split(tree, node)
         right = word_payload(w0)
         if axis == TIME_AXIS:
@@ -223,24 +244,16 @@ def closest_hit(tree, box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax, t_days
     seg0, seg1 = clip_to_box(box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax)
     if seg0 > seg1:
         return best_t, best_k, best_u, best_v
-    kx, ky, kz, sx, sy, sz = ray_shear(dx, dy, dz)
-    okx, oky, okz = _on_axes(ox, oy, oz, kx, ky, kz)
-    inv_x = _inverse(dx)
-    inv_y = _inverse(dy)
-    inv_z = _inverse(dz)
-    st_node, st_t0, st_t1 = stack
-    node = 0
-    sp = 0
+    ray = _sheared(ox, oy, oz, dx, dy, dz)
+    inv_x, inv_y, inv_z = _inverse(dx), _inverse(dy), _inverse(dz)
+    node, sp = 0, 0
     while True:
-        node, w0, seg1, sp = _descend(tree, node, seg0, seg1, sp, ox, oy, oz, dx, dy, dz,
-                                      inv_x, inv_y, inv_z, t_days, stack)
+        first, count, seg1, sp = _descend(tree, node, seg0, seg1, sp, ox, oy, oz, dx, dy, dz,
+                                          inv_x, inv_y, inv_z, t_days, stack)
         # Test the leaf's triangles valid at t_days; keep the nearest (ties: lower id).
-        first = leaf_first(tree, node)
-        for k in range(first, first + word_payload(w0)):
-            if not record_present(tree, k, t_days):
-                continue
-            hit, t, u, v = hit_record(tree.recs, k, okx, oky, okz, kx, ky, kz, sx, sy, sz)
-            if hit and tmin <= t <= tmax:
+        for k in range(first, first + count):
+            hit, t, u, v = _hit_at(tree, k, t_days, tmin, tmax, ray)
+            if hit:
                 tri = record_id(tree, k)
                 if t < best_t or (t == best_t and tri < best_id):
                     best_t = t
@@ -251,10 +264,7 @@ def closest_hit(tree, box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax, t_days
         # Nothing unvisited lies before seg1, so a hit before it is final.
         if best_t < seg1 or sp == 0:
             break
-        sp -= 1
-        node = st_node[sp]
-        seg0 = st_t0[sp]
-        seg1 = st_t1[sp]
+        sp, node, seg0, seg1 = _pop(stack, sp)
     return best_t, best_k, best_u, best_v
 
 
@@ -266,37 +276,23 @@ def any_hit(tree, box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax, t_days, ca
     cache: that record is tested first, so coherent shadow rays behind the same occluder skip
     the traversal.
     """
-    kx, ky, kz, sx, sy, sz = ray_shear(dx, dy, dz)
-    okx, oky, okz = _on_axes(ox, oy, oz, kx, ky, kz)
-    if cache_k >= 0 and record_present(tree, cache_k, t_days):
-        hit, t, u, v = hit_record(tree.recs, cache_k, okx, oky, okz, kx, ky, kz, sx, sy, sz)
-        if hit and tmin <= t <= tmax:
-            return cache_k
+    ray = _sheared(ox, oy, oz, dx, dy, dz)
+    if cache_k >= 0 and _hit_at(tree, cache_k, t_days, tmin, tmax, ray)[0]:
+        return cache_k
     seg0, seg1 = clip_to_box(box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax)
     if seg0 > seg1:
         return -1
-    inv_x = _inverse(dx)
-    inv_y = _inverse(dy)
-    inv_z = _inverse(dz)
-    st_node, st_t0, st_t1 = stack
-    node = 0
-    sp = 0
+    inv_x, inv_y, inv_z = _inverse(dx), _inverse(dy), _inverse(dz)
+    node, sp = 0, 0
     while True:
-        node, w0, seg1, sp = _descend(tree, node, seg0, seg1, sp, ox, oy, oz, dx, dy, dz,
-                                      inv_x, inv_y, inv_z, t_days, stack)
-        first = leaf_first(tree, node)
-        for k in range(first, first + word_payload(w0)):
-            if not record_present(tree, k, t_days):
-                continue
-            hit, t, u, v = hit_record(tree.recs, k, okx, oky, okz, kx, ky, kz, sx, sy, sz)
-            if hit and tmin <= t <= tmax:
+        first, count, seg1, sp = _descend(tree, node, seg0, seg1, sp, ox, oy, oz, dx, dy, dz,
+                                          inv_x, inv_y, inv_z, t_days, stack)
+        for k in range(first, first + count):
+            if _hit_at(tree, k, t_days, tmin, tmax, ray)[0]:
                 return k
         if sp == 0:
             return -1
-        sp -= 1
-        node = st_node[sp]
-        seg0 = st_t0[sp]
-        seg1 = st_t1[sp]
+        sp, node, seg0, seg1 = _pop(stack, sp)
 
 
 @njit(cache=True, inline="always")
