@@ -231,6 +231,14 @@ class KdTree:
         return KdViews(self.nodes, self.node_splits, self.prim_indices, self.tri_records,
                        self.records_f64, self.records_i32)
 
+    def box_scale_m(self) -> tuple[np.ndarray, np.ndarray, float]:
+        """(box min (3,), box max (3,), scale) in metres, float64: the scale is the larger of the
+        box's longest side and its largest coordinate magnitude (at least 1 m), the size that
+        float32 rounding errors are relative to (paddings of culling and ray boxes)."""
+        lo = np.asarray(self.bounds[0, :3], np.float64)
+        hi = np.asarray(self.bounds[1, :3], np.float64)
+        return lo, hi, max(float(np.max(hi - lo)), float(np.max(np.abs(np.r_[lo, hi]))), 1.0)
+
     @property
     def has_time(self) -> bool:
         """Whether the model has any finite validity date."""

@@ -212,7 +212,7 @@ def render_depth(scene, clip_from_world, width_px: int, height_px: int, t_days: 
     walk_s = 0.0
     use_tree = bool(culling) and tree is not None
     if use_tree:
-        lo, hi, size = tc.scene_scale_m(tree)
+        lo, hi, size = tree.box_scale_m()
         pad = cull.FRUSTUM_PAD_REL * size
         planes = frustum_planes(clip_from_world, pad)
         if casters_box is not None:

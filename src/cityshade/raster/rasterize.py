@@ -72,8 +72,8 @@ def camera_params(camera: Camera) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     return cam, xs, ys
 
 
-def camera_view(camera: Camera) -> tuple[tc.ClipView, np.ndarray]:
-    """The camera as the triangle core's view, and its walk-order point.
+def camera_view(camera: Camera) -> tuple[tc.ClipView, np.ndarray, np.ndarray]:
+    """The camera as the triangle core's view, its walk-order point and its parameter vector.
 
     Returns
     -------
@@ -82,6 +82,8 @@ def camera_view(camera: Camera) -> tuple[tc.ClipView, np.ndarray]:
         frame, Z = W = view depth; the box is clipped at W = near). Map: ``(x, y, eye_z - z, 1)``.
     order_point : (4,) float64
         The eye ``(x, y, z, 1)``, or for a map the direction up ``(0, 0, 1, 0)``.
+    cam : (24,) float64
+        :func:`camera_params` (for the occlusion queries).
     """
     cam, xs, ys = camera_params(camera)
     m = np.zeros((4, 4))
@@ -99,7 +101,7 @@ def camera_view(camera: Camera) -> tuple[tc.ClipView, np.ndarray]:
         w_clip = camera.near_m
     view = tc.clip_view(m, origin, cam[16:20], xs, ys, w_clip=w_clip, near=camera.near_m,
                         far=camera.far_m)
-    return view, order_point
+    return view, order_point, cam
 
 
 @njit(cache=True, parallel=True)
@@ -161,7 +163,7 @@ class _Target:
     """The G-buffer being drawn and the tile kernel call the triangle core's batcher makes."""
 
     def __init__(self, camera: Camera, tile_px: int, occlusion: bool):
-        self.cam, self.xs, self.ys = camera_params(camera)
+        self.view, self.order_point, self.cam = camera_view(camera)
         self.ortho = camera.kind == "map"
         self.near, self.far = float(camera.near_m), float(camera.far_m)
         h, w = camera.shape
@@ -176,9 +178,9 @@ class _Target:
         self.hiz_tile = np.full((self.tiles_y, self.tiles_x), np.inf, np.float32)
 
     def __call__(self, start, items, ids, coef, bbox) -> None:
-        _raster_tiles(start, items, ids, coef, bbox, self.xs, self.ys, self.near, self.far,
-                      self.ortho, self.tile_px, self.tiles_x, self.prim, self.depth, self.bary,
-                      self.occlusion, self.hiz_block, self.hiz_tile, BLOCK_PX)
+        _raster_tiles(start, items, ids, coef, bbox, self.view.xs, self.view.ys, self.near,
+                      self.far, self.ortho, self.tile_px, self.tiles_x, self.prim, self.depth,
+                      self.bary, self.occlusion, self.hiz_block, self.hiz_tile, BLOCK_PX)
 
     def queries(self, query_min_refs: int):
         """The walk's occlusion argument: None when the queries are off."""
@@ -260,7 +262,7 @@ def rasterize(scene, camera: Camera, t_days: float, *, occlusion_culling="auto",
         occlusion = bool(occlusion_culling) and use_tree
     stats: dict = {"triangles": int(scene.triangles.shape[0])}
     if use_tree:
-        lo, hi, size = tc.scene_scale_m(tree)
+        lo, hi, size = tree.box_scale_m()
         planes = cull.frustum_planes(camera, cull.FRUSTUM_PAD_REL * size)
         _, inside_mask = cull.box_outside(planes, lo, hi, (1 << planes.shape[0]) - 1)
         if inside_mask == 0 and (auto or not occlusion):
@@ -271,10 +273,9 @@ def rasterize(scene, camera: Camera, t_days: float, *, occlusion_culling="auto",
             stats["walk_skipped"] = "the model lies inside the view frustum"
     stats.update({"culling": use_tree, "occlusion_culling": occlusion})
     target = _Target(camera, int(tile_px), occlusion)
-    view, order_point = camera_view(camera)
-    batcher = tc.Batcher(scene, view, False, target.tile_px, target)
+    batcher = tc.Batcher(scene, target.view, False, target.tile_px, target)
     if use_tree:
-        walk = tc.CulledWalk(tree, t, planes, order_point, scene.triangles.shape[0])
+        walk = tc.CulledWalk(tree, t, planes, target.order_point, scene.triangles.shape[0])
         batch = max(1, min(int(first_batch), tc.MAX_BATCH)) if occlusion else tc.MAX_BATCH
         while not walk.done:
             batcher.draw(walk.next(batch, target.queries(query_min_refs)), True)

@@ -211,8 +211,9 @@ def _w_cross(xa, ya, wa, xb, yb, wb, wn):
 def _vertex(vertices, triangles, tree, from_records, item, corner):
     """Vertex ``corner`` of a triangle id, or of a kd-tree record when ``from_records``."""
     if from_records:
-        return (np.float64(tree.recs[item, 3 * corner]), np.float64(tree.recs[item, 3 * corner + 1]),
-                np.float64(tree.recs[item, 3 * corner + 2]))
+        c = 3 * corner
+        return (np.float64(tree.recs[item, c]), np.float64(tree.recs[item, c + 1]),
+                np.float64(tree.recs[item, c + 2]))
     q = triangles[item, corner]
     return np.float64(vertices[q, 0]), np.float64(vertices[q, 1]), np.float64(vertices[q, 2])
 
@@ -522,15 +523,6 @@ class Batcher:
         return int(scene.triangles.shape[0] - ids.shape[0]), filter_s
 
 
-def scene_scale_m(tree: KdTree) -> tuple[np.ndarray, np.ndarray, float]:
-    """(box min (3,), box max (3,), scale in metres) of a tree: the scale is the larger of the
-    box's longest side and its largest coordinate magnitude (at least 1 m), the size float32
-    rounding errors are relative to."""
-    lo = np.asarray(tree.bounds[0, :3], np.float64)
-    hi = np.asarray(tree.bounds[1, :3], np.float64)
-    return lo, hi, max(float(np.max(hi - lo)), float(np.max(np.abs(np.r_[lo, hi]))), 1.0)
-
-
 class CulledWalk:
     """The resumable front-to-back kd-tree walk (:func:`cityshade.raster.culling.walk`) that
     feeds a :class:`Batcher` the triangles standing at ``t_days`` inside ``planes``.
@@ -557,7 +549,7 @@ class CulledWalk:
         self.t_days = float(t_days)
         self.planes = np.ascontiguousarray(planes, np.float64)
         self.order_point = np.ascontiguousarray(order_point, np.float64)
-        lo, hi, _ = scene_scale_m(tree)
+        lo, hi, _ = tree.box_scale_m()
         st_node = np.zeros(cull.STACK_SIZE, np.int64)
         st_box = np.zeros((cull.STACK_SIZE, 6))
         st_mask = np.zeros(cull.STACK_SIZE, np.int64)

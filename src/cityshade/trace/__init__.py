@@ -46,9 +46,8 @@ def _tree_of(tree) -> KdTree:
 
 
 def _padded_box(tree: KdTree) -> tuple[np.ndarray, np.ndarray]:
-    lo = np.asarray(tree.bounds[0, :3], dtype=np.float64)
-    hi = np.asarray(tree.bounds[1, :3], dtype=np.float64)
-    pad = BOX_PAD_REL * max(float(np.max(hi - lo)), float(np.max(np.abs(np.r_[lo, hi]))), 1.0)
+    lo, hi, scale_m = tree.box_scale_m()
+    pad = BOX_PAD_REL * scale_m
     return lo - pad, hi + pad
 
 
