@@ -93,7 +93,7 @@ def projection_centre(clip_from_world) -> np.ndarray:
 
 
 @njit(cache=True, parallel=True)
-def _raster_depth_tiles(start, items, ids, coef, bbox, xs, ys, tile_px, tiles_x, depth, prim):
+def _raster_depth_tiles(start, items, ids, coef, vals, bbox, xs, ys, tile_px, tiles_x, depth, prim):
     """Depth-test the binned triangles into ``depth`` (H, W) float32 / ``prim`` (H, W) int32,
     one tile per work item (each tile owns its texels)."""
     for tile in prange(start.shape[0] - 1):
@@ -104,12 +104,12 @@ def _raster_depth_tiles(start, items, ids, coef, bbox, xs, ys, tile_px, tiles_x,
             j = items[mm]
             a0, b0, k0, a1, b1, k1, a2, b2, k2, own0, own1, own2 = tc.edges(coef, j)
             tri = ids[j]
-            general = coef[j, tc.GENERAL_WORD] != 0.0
-            zv0, dz1, dz2 = tc.vertex_words(coef, j, tc.Z_WORD)
-            wv0, dw1, dw2 = tc.vertex_words(coef, j, tc.W_WORD)
-            pz = coef[j, tc.PLANE_WORD]
-            qz = coef[j, tc.PLANE_WORD + 1]
-            rz = coef[j, tc.PLANE_WORD + 2]
+            general = vals[j, tc.GENERAL_WORD] != 0.0
+            zv0, dz1, dz2 = tc.vertex_words(vals, j, tc.Z_WORD)
+            wv0, dw1, dw2 = tc.vertex_words(vals, j, tc.W_WORD)
+            pz = vals[j, tc.PLANE_WORD]
+            qz = vals[j, tc.PLANE_WORD + 1]
+            rz = vals[j, tc.PLANE_WORD + 2]
             cb0 = max(bbox[j, 0], tc0)
             cb1 = min(bbox[j, 1], tc1)
             for r in range(max(bbox[j, 2], tr0), min(bbox[j, 3], tr1) + 1):
@@ -121,9 +121,9 @@ def _raster_depth_tiles(start, items, ids, coef, bbox, xs, ys, tile_px, tiles_x,
                 c_lo = np.float64(cb0)
                 c_hi = np.float64(cb1)
                 for i in range(3):
-                    kind = coef[j, tc.SPAN_WORD + 2 + 3 * i]
+                    kind = vals[j, tc.SPAN_WORD + 2 + 3 * i]
                     if kind != 0.0:
-                        col = coef[j, tc.SPAN_WORD + 3 * i] * y + coef[j, tc.SPAN_WORD + 1 + 3 * i]
+                        col = vals[j, tc.SPAN_WORD + 3 * i] * y + vals[j, tc.SPAN_WORD + 1 + 3 * i]
                         if kind > 0.0:
                             if col - 1.0 > c_lo:
                                 c_lo = col - 1.0
@@ -202,8 +202,8 @@ def render_depth(scene, clip_from_world, width_px: int, height_px: int, t_days: 
     prim = np.full((h, w), -1, np.int32)
     tiles_x = -(-w // tile)
 
-    def raster(start, binned, ids, coef, bbox):
-        _raster_depth_tiles(start, binned, ids, coef, bbox, xs, ys, tile, tiles_x, depth, prim)
+    def raster(start, binned, ids, coef, vals, bbox):
+        _raster_depth_tiles(start, binned, ids, coef, vals, bbox, xs, ys, tile, tiles_x, depth, prim)
 
     batcher = tc.Batcher(scene, view, True, tile, raster)
     tree = getattr(scene, "kdtree", None)

@@ -105,7 +105,7 @@ def camera_view(camera: Camera) -> tuple[tc.ClipView, np.ndarray, np.ndarray]:
 
 
 @njit(cache=True, parallel=True)
-def _raster_tiles(start, items, ids, coef, bbox, xs, ys, near, far, ortho, tile_px, tiles_x,
+def _raster_tiles(start, items, ids, coef, vals, bbox, xs, ys, near, far, ortho, tile_px, tiles_x,
                   prim, depth, bary, update_hiz, hiz_block, hiz_tile, block_px):
     """Rasterize the binned triangles, one tile per work item; refresh the max-depth buffer."""
     for tile in prange(start.shape[0] - 1):
@@ -116,7 +116,7 @@ def _raster_tiles(start, items, ids, coef, bbox, xs, ys, near, far, ortho, tile_
             j = items[m]
             a0, b0, k0, a1, b1, k1, a2, b2, k2, own0, own1, own2 = tc.edges(coef, j)
             tri = ids[j]
-            z0, dz1, dz2 = tc.vertex_words(coef, j, tc.Z_WORD)
+            z0, dz1, dz2 = tc.vertex_words(vals, j, tc.Z_WORD)
             for r in range(max(bbox[j, 2], tr0), min(bbox[j, 3], tr1) + 1):
                 y = ys[r]
                 row0, row1, row2 = b0 * y + k0, b1 * y + k1, b2 * y + k2
@@ -177,8 +177,8 @@ class _Target:
         self.hiz_block = np.full((-(-h // BLOCK_PX), -(-w // BLOCK_PX)), np.inf, np.float32)
         self.hiz_tile = np.full((self.tiles_y, self.tiles_x), np.inf, np.float32)
 
-    def __call__(self, start, items, ids, coef, bbox) -> None:
-        _raster_tiles(start, items, ids, coef, bbox, self.view.xs, self.view.ys, self.near,
+    def __call__(self, start, items, ids, coef, vals, bbox) -> None:
+        _raster_tiles(start, items, ids, coef, vals, bbox, self.view.xs, self.view.ys, self.near,
                       self.far, self.ortho, self.tile_px, self.tiles_x, self.prim, self.depth,
                       self.bary, self.occlusion, self.hiz_block, self.hiz_tile, BLOCK_PX)
 

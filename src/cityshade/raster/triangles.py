@@ -74,20 +74,21 @@ W_NEAR_REL = 1e-9
 #: decides every texel).
 SPAN_MIN_SLOPE = 1e-6
 
-# Words of a set-up triangle (rows of ``coef``).
-#: 0-8: a, b, c of the three edge functions (positive inside); 9-11: tie-ownership flags.
+# Words of a set-up triangle: ``coef`` rows (both passes) and ``vals`` rows (per pass; two
+# arrays keep the G-buffer's rows at 96 + 24 bytes, the layout its tile kernel reads fastest).
+#: coef 0-8: a, b, c of the three edge functions (positive inside); 9-11: tie-ownership flags.
 EDGE_WORDS = 12
-#: 12-14: Z at the three vertices. The G-buffer needs no more.
-Z_WORD = 12
-GBUFFER_WORDS = 15
-#: Depth pass: 15-17 W at the vertices; 18 a flag for triangles crossing W = 0; 19-21 the
-#: screen-space depth plane ``Z/W = p x + q y + r`` of the others; 22-30 per edge the column
+#: vals 0-2: Z at the three vertices. The G-buffer needs no more.
+Z_WORD = 0
+GBUFFER_WORDS = 3
+#: Depth pass: vals 3-5 W at the vertices; 6 a flag for triangles crossing W = 0; 7-9 the
+#: screen-space depth plane ``Z/W = p x + q y + r`` of the others; 10-18 per edge the column
 #: bound ``A y + B`` and its kind (1 lower, -1 upper, 0 none).
-W_WORD = 15
-GENERAL_WORD = 18
-PLANE_WORD = 19
-SPAN_WORD = 22
-DEPTH_WORDS = 31
+W_WORD = 3
+GENERAL_WORD = 6
+PLANE_WORD = 7
+SPAN_WORD = 10
+DEPTH_WORDS = 19
 
 
 class ClipView(NamedTuple):
@@ -97,6 +98,8 @@ class ClipView(NamedTuple):
     ``to_px`` (4,): ``col = to_px[0] x + to_px[1]``, ``row = to_px[2] y + to_px[3]`` (pixel
     centres at integers, from screen coordinates ``x = X/W``, ``y = Y/W``); ``xs`` (W,),
     ``ys`` (H,): screen coordinates of the pixel centres; ``width``, ``height`` (float pixels);
+    ``w_is_z``: the matrix's W row is its Z row (a perspective G-buffer: W = Z = view depth,
+    computed once);
     ``w_clip``: the screen box comes from the part of a triangle with W at least this (and at
     least ``W_NEAR_REL`` of its largest |W|); ``near``, ``far``: the G-buffer's depth range.
     """
@@ -111,6 +114,7 @@ class ClipView(NamedTuple):
     w_clip: float
     near: float
     far: float
+    w_is_z: bool
 
 
 def clip_view(matrix, origin, to_px, xs, ys, *, w_clip: float = 0.0, near: float = 0.0,
@@ -118,11 +122,11 @@ def clip_view(matrix, origin, to_px, xs, ys, *, w_clip: float = 0.0, near: float
     """A :class:`ClipView` from a (4, 4) matrix, its origin and the pixel mapping."""
     xs = np.ascontiguousarray(xs, np.float64)
     ys = np.ascontiguousarray(ys, np.float64)
-    return ClipView(np.ascontiguousarray(np.asarray(matrix, np.float64).reshape(16)),
-                          np.ascontiguousarray(origin, np.float64),
-                          np.ascontiguousarray(to_px, np.float64), xs, ys,
-                          float(xs.shape[0]), float(ys.shape[0]), float(w_clip), float(near),
-                          float(far))
+    m = np.ascontiguousarray(np.asarray(matrix, np.float64).reshape(16))
+    return ClipView(m, np.ascontiguousarray(origin, np.float64),
+                    np.ascontiguousarray(to_px, np.float64), xs, ys, float(xs.shape[0]),
+                    float(ys.shape[0]), float(w_clip), float(near), float(far),
+                    bool(np.array_equal(m[8:12], m[12:16])))
 
 
 # --- per-pixel rules shared by the tile kernels ------------------------------------------------
@@ -163,11 +167,11 @@ def covers(x, a0, row0, own0, a1, row1, own1, a2, row2, own2):
 
 
 @njit(cache=True, inline="always")
-def vertex_words(coef, j, word):
+def vertex_words(vals, j, word):
     """A per-vertex value of set-up triangle ``j`` (Z at ``Z_WORD``, W at ``W_WORD``) as
     (value at v0, v1 - v0, v2 - v0), for interpolation with barycentrics (u, v)."""
-    v0 = coef[j, word]
-    return v0, coef[j, word + 1] - v0, coef[j, word + 2] - v0
+    v0 = vals[j, word]
+    return v0, vals[j, word + 1] - v0, vals[j, word + 2] - v0
 
 
 @njit(cache=True, inline="always")
@@ -183,15 +187,14 @@ def tile_span(start, tile, tiles_x, tile_px, shape):
 # --- setup ------------------------------------------------------------------------------------
 
 @njit(cache=True, inline="always")
-def _transform(m, origin, px, py, pz):
+def _transform(m, origin, w_is_z, px, py, pz):
     """Render-space point → (X, Y, Z, W) = m @ (p - origin, 1)."""
     dx = px - origin[0]
     dy = py - origin[1]
     dz = pz - origin[2]
-    return (m[0] * dx + m[1] * dy + m[2] * dz + m[3],
-            m[4] * dx + m[5] * dy + m[6] * dz + m[7],
-            m[8] * dx + m[9] * dy + m[10] * dz + m[11],
-            m[12] * dx + m[13] * dy + m[14] * dz + m[15])
+    z = m[8] * dx + m[9] * dy + m[10] * dz + m[11]
+    return (m[0] * dx + m[1] * dy + m[2] * dz + m[3], m[4] * dx + m[5] * dy + m[6] * dz + m[7],
+            z, z if w_is_z else m[12] * dx + m[13] * dy + m[14] * dz + m[15])
 
 
 @njit(cache=True, inline="always")
@@ -220,7 +223,7 @@ def _vertex(vertices, triangles, tree, from_records, item, corner):
 
 @njit(cache=True, parallel=True)
 def setup_triangles(vertices, triangles, tree, from_records, items, view, depth_pass, ids, coef,
-                    bbox):
+                    vals, bbox):
     """Per triangle: edge functions, vertex depths and the pixel bounding box.
 
     Parameters
@@ -235,12 +238,12 @@ def setup_triangles(vertices, triangles, tree, from_records, items, view, depth_
     view : ClipView
     depth_pass : bool
         False, the G-buffer: only triangles with some vertex depth Z in [near, far], and
-        ``coef`` (N, GBUFFER_WORDS). True, the light's depth pass: only triangles with some
-        vertex at W > 0 and not all beyond the far plane (Z > W), and ``coef``
+        ``vals`` (N, GBUFFER_WORDS). True, the light's depth pass: only triangles with some
+        vertex at W > 0 and not all beyond the far plane (Z > W), and ``vals``
         (N, DEPTH_WORDS) with the W values, depth plane and column bounds.
     ids : (N,) int32 out
         Triangle ids.
-    coef : (N, GBUFFER_WORDS or DEPTH_WORDS) float64 out
+    coef : (N, EDGE_WORDS) float64 out; vals : (N, GBUFFER_WORDS or DEPTH_WORDS) float64 out
         Rows described at ``EDGE_WORDS`` ff.; not set where nothing is drawn.
     bbox : (N, 4) int32 out
         col0, col1, row0, row1 inclusive; col0 > col1 when the triangle covers no pixel.
@@ -249,6 +252,7 @@ def setup_triangles(vertices, triangles, tree, from_records, items, view, depth_
     m = view.m
     org = view.origin
     to_px = view.to_px
+    w_is_z = view.w_is_z
     for j in prange(n):
         bbox[j, 0] = 1
         bbox[j, 1] = 0
@@ -257,11 +261,11 @@ def setup_triangles(vertices, triangles, tree, from_records, items, view, depth_
         item = items[j]
         ids[j] = record_id(tree, item) if from_records else item
         px, py, pz = _vertex(vertices, triangles, tree, from_records, item, 0)
-        x0, y0, z0, w0 = _transform(m, org, px, py, pz)
+        x0, y0, z0, w0 = _transform(m, org, w_is_z, px, py, pz)
         px, py, pz = _vertex(vertices, triangles, tree, from_records, item, 1)
-        x1, y1, z1, w1 = _transform(m, org, px, py, pz)
+        x1, y1, z1, w1 = _transform(m, org, w_is_z, px, py, pz)
         px, py, pz = _vertex(vertices, triangles, tree, from_records, item, 2)
-        x2, y2, z2, w2 = _transform(m, org, px, py, pz)
+        x2, y2, z2, w2 = _transform(m, org, w_is_z, px, py, pz)
         wmax = max(w0, w1, w2)
         if depth_pass:
             if not wmax > 0.0:
@@ -325,11 +329,11 @@ def setup_triangles(vertices, triangles, tree, from_records, items, view, depth_
             a = coef[j, 3 * i]
             b = coef[j, 3 * i + 1]
             coef[j, 9 + i] = 1.0 if (a > 0.0 or (a == 0.0 and b < 0.0)) else 0.0
-        coef[j, Z_WORD] = z0
-        coef[j, Z_WORD + 1] = z1
-        coef[j, Z_WORD + 2] = z2
+        vals[j, Z_WORD] = z0
+        vals[j, Z_WORD + 1] = z1
+        vals[j, Z_WORD + 2] = z2
         if depth_pass:
-            _depth_words(coef, j, x0, y0, z0, w0, x1, y1, z1, w1, x2, y2, z2, w2, to_px)
+            _depth_words(coef, vals, j, x0, y0, z0, w0, x1, y1, z1, w1, x2, y2, z2, w2, to_px)
         bbox[j, 0] = int(c0)
         bbox[j, 1] = int(c1)
         bbox[j, 2] = int(r0)
@@ -337,12 +341,12 @@ def setup_triangles(vertices, triangles, tree, from_records, items, view, depth_
 
 
 @njit(cache=True, inline="always")
-def _depth_words(coef, j, x0, y0, z0, w0, x1, y1, z1, w1, x2, y2, z2, w2, to_px):
+def _depth_words(coef, vals, j, x0, y0, z0, w0, x1, y1, z1, w1, x2, y2, z2, w2, to_px):
     """The depth pass's extra words: W, depth plane, column bounds (see ``W_WORD`` ff.)."""
-    coef[j, W_WORD] = w0
-    coef[j, W_WORD + 1] = w1
-    coef[j, W_WORD + 2] = w2
-    coef[j, GENERAL_WORD] = 1.0
+    vals[j, W_WORD] = w0
+    vals[j, W_WORD + 1] = w1
+    vals[j, W_WORD + 2] = w2
+    vals[j, GENERAL_WORD] = 1.0
     if w0 > 0.0 and w1 > 0.0 and w2 > 0.0:
         # NDC depth is affine in screen x, y over a plane (the z-buffer's classic property):
         # z = p x + q y + r through the three projected vertices; every point of the triangle
@@ -354,10 +358,10 @@ def _depth_words(coef, j, x0, y0, z0, w0, x1, y1, z1, w1, x2, y2, z2, w2, to_px)
         if den > 0.0 or den < 0.0:
             pp = (ez1 * ey2 - ez2 * ey1) / den
             qq = (ex1 * ez2 - ex2 * ez1) / den
-            coef[j, GENERAL_WORD] = 0.0
-            coef[j, PLANE_WORD] = pp
-            coef[j, PLANE_WORD + 1] = qq
-            coef[j, PLANE_WORD + 2] = nz0 - pp * nx0 - qq * ny0
+            vals[j, GENERAL_WORD] = 0.0
+            vals[j, PLANE_WORD] = pp
+            vals[j, PLANE_WORD + 1] = qq
+            vals[j, PLANE_WORD + 2] = nz0 - pp * nx0 - qq * ny0
     # Column bound of each edge in a row at screen y: e = a x + b y + c >= 0 gives
     # x >= -(b y + c) / a (a > 0) or x <= ... (a < 0); in pixel columns A y + B.
     for i in range(3):
@@ -366,9 +370,9 @@ def _depth_words(coef, j, x0, y0, z0, w0, x1, y1, z1, w1, x2, y2, z2, w2, to_px)
         kind = 0.0
         if abs(a) >= SPAN_MIN_SLOPE * abs(b) and (a > 0.0 or a < 0.0):
             kind = 1.0 if a > 0.0 else -1.0
-            coef[j, SPAN_WORD + 3 * i] = -to_px[0] * b / a
-            coef[j, SPAN_WORD + 1 + 3 * i] = -to_px[0] * coef[j, 3 * i + 2] / a + to_px[1]
-        coef[j, SPAN_WORD + 2 + 3 * i] = kind
+            vals[j, SPAN_WORD + 3 * i] = -to_px[0] * b / a
+            vals[j, SPAN_WORD + 1 + 3 * i] = -to_px[0] * coef[j, 3 * i + 2] / a + to_px[1]
+        vals[j, SPAN_WORD + 2 + 3 * i] = kind
 
 
 # --- binning and the date filter --------------------------------------------------------------
@@ -467,7 +471,7 @@ def kernel_tree(scene) -> KdViews:
 class Batcher:
     """Set up, bin and rasterize batches of triangles into one target.
 
-    ``raster(start, items, ids, coef, bbox)`` is the pass's tile kernel call; timings of the
+    ``raster(start, items, ids, coef, vals, bbox)`` is the pass's tile kernel call; timings of the
     three steps accumulate in ``timings`` (seconds).
     """
 
@@ -494,14 +498,15 @@ class Batcher:
             return
         t0 = time.perf_counter()
         ids = np.empty(n, np.int32)
-        coef = np.empty((n, self.words))
+        coef = np.empty((n, EDGE_WORDS))
+        vals = np.empty((n, self.words))
         bbox = np.empty((n, 4), np.int32)
         setup_triangles(self.vertices, self.triangles, self.tree, from_records, items, self.view,
-                        self.depth_pass, ids, coef, bbox)
+                        self.depth_pass, ids, coef, vals, bbox)
         t1 = time.perf_counter()
         start, binned = bin_triangles(bbox, self.tile_px, self.tiles_x, self.tiles_y)
         t2 = time.perf_counter()
-        self.raster(start, binned, ids, coef, bbox)
+        self.raster(start, binned, ids, coef, vals, bbox)
         t3 = time.perf_counter()
         self.timings["setup_s"] += t1 - t0
         self.timings["bin_s"] += t2 - t1
