@@ -396,16 +396,8 @@ def _binned_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, nbins, best):
 
 
 @njit(cache=True)
-def _grow_i64(a, n):
-    if n <= a.shape[0]:
-        return a
-    b = np.empty(max(n, 2 * a.shape[0]), a.dtype)
-    b[:a.shape[0]] = a
-    return b
-
-
-@njit(cache=True)
-def _grow_f64(a, n):
+def _grow(a, n):
+    """``a`` with room for at least ``n`` entries (doubling; the first entries kept)."""
     if n <= a.shape[0]:
         return a
     b = np.empty(max(n, 2 * a.shape[0]), a.dtype)
@@ -476,10 +468,10 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         node = n_nodes
         n_nodes += 1
         if n_nodes > node_axis.shape[0]:
-            node_axis = _grow_i64(node_axis, n_nodes)
-            node_child = _grow_i64(node_child, n_nodes)
-            node_first = _grow_i64(node_first, n_nodes)
-            node_split = _grow_f64(node_split, n_nodes)
+            node_axis = _grow(node_axis, n_nodes)
+            node_child = _grow(node_child, n_nodes)
+            node_first = _grow(node_first, n_nodes)
+            node_split = _grow(node_split, n_nodes)
         if parent >= 0:
             node_child[parent] = node
         n = ids.shape[0]
@@ -501,7 +493,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
             for r in range(n):
                 key[r] = (np.int64(material[ids[r]]) + 1) * (np.int64(n_tri) + 1) + ids[r]
             order = np.argsort(key, kind="mergesort")
-            prims = _grow_i64(prims, n_prims + n)
+            prims = _grow(prims, n_prims + n)
             for r in range(n):
                 prims[n_prims + r] = ids[order[r]]
             node_axis[node] = LEAF_CODE
