@@ -36,14 +36,14 @@ import time
 from dataclasses import dataclass, field
 from typing import Any
 
-import numba
 import numpy as np
 from numba import njit, prange
 
 from cityshade.config import MAX_MAP_PX, MapSettings, ShadowSettings
 from cityshade.errors import UsageError
+from cityshade.raster.depthpass import render_depth
+from cityshade.raster.triangles import TILE_PX
 from cityshade.shadows import ShadowContext
-from cityshade.shadows import lightraster as lr
 
 #: Smallest extent (metres) of a fitted light view across or along the rays: a single visible
 #: point still gets a non-degenerate map.
@@ -51,12 +51,6 @@ MIN_EXTENT_M = 0.01
 #: Depth margin of the fitted view beyond the receivers and casters, relative to the depth range
 #: (plus MIN_EXTENT_M): float32 rounding of vertices never pushes a surface out of the range.
 DEPTH_MARGIN_REL = 1e-3
-#: Padding of light-frustum planes for caster culling, relative to the scene size: node boxes
-#: are float32-rounded, plane evaluation float64, so the test stays conservative.
-FRUSTUM_PAD_REL = 1e-5
-#: Walk stack entries (the build caps the tree depth at 60; the walk holds one entry per level
-#: plus one).
-_STACK_SIZE = 128
 
 
 @dataclass(frozen=True, eq=False)
@@ -475,36 +469,8 @@ def aliasing_m(view: LightView, camera, surfaces, mask=None) -> dict[str, float]
 
 # --- the depth pass ---------------------------------------------------------------------------
 
-def frustum_planes(view: LightView, pad_m: float) -> np.ndarray:
-    """(5, 4) float64 planes ``(n, d)`` (unit ``n``) of the view's side and far planes; inside
-    is ``n . p + d >= -pad_m`` (Gribb and Hartmann's extraction from the clip matrix). The near
-    plane is left out on purpose: casters nearer the sun are clamped, not clipped."""
-    m = view.clip_from_world
-    rows = [m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[3] - m[2]]
-    planes = []
-    for r in rows:
-        norm = float(np.linalg.norm(r[:3]))
-        if norm > 0.0:
-            planes.append(np.r_[r[:3] / norm, r[3] / norm + pad_m])
-    return np.array(planes).reshape(-1, 4)
-
-
-def box_planes(box, pad_m: float) -> np.ndarray:
-    """(6, 4) planes of an axis-aligned box ``[[x0, y0, z0], [x1, y1, z1]]`` (inside >= -pad)."""
-    b = np.asarray(box, dtype=np.float64)
-    if b.shape != (2, 3) or not np.isfinite(b).all() or (b[1] < b[0]).any():
-        raise UsageError("casters_box must be [[x0, y0, z0], [x1, y1, z1]] with lo <= hi")
-    planes = np.zeros((6, 4))
-    for a in range(3):
-        planes[2 * a, a] = 1.0
-        planes[2 * a, 3] = -b[0, a] + pad_m
-        planes[2 * a + 1, a] = -1.0
-        planes[2 * a + 1, 3] = b[1, a] + pad_m
-    return planes
-
-
 def render_depth_map(scene, view: LightView, t_days: float, *, casters_box=None,
-                     culling: bool = True, tile_px: int = lr.TILE_PX) -> DepthMap:
+                     culling: bool = True, tile_px: int = TILE_PX) -> DepthMap:
     """Rasterize the triangles present at ``t_days`` into the light view's depth map.
 
     Parameters
@@ -521,7 +487,7 @@ def render_depth_map(scene, view: LightView, t_days: float, *, casters_box=None,
         without a kd-tree it has no effect).
     culling : bool
         Walk the kd-tree with time filtering and light-frustum culling
-        (:func:`cityshade.raster.culling.walk`); False, a scene without kd-tree, or a view
+        (:func:`cityshade.raster.depthpass.render_depth`); False, a scene without kd-tree, or a view
         that holds the whole model draws the triangles present at ``t_days`` linearly. The
         map is the same either way.
     tile_px : int
@@ -531,118 +497,11 @@ def render_depth_map(scene, view: LightView, t_days: float, *, casters_box=None,
     -------
     DepthMap
     """
-    from cityshade.raster import culling as cull
-
     if not isinstance(view, LightView):
         raise UsageError(f"expected a LightView, not {type(view).__name__}")
-    t = float(t_days)
-    if math.isnan(t):
-        raise UsageError("t_days must be a number of days since 1970-01-01, not NaN")
-    if not (isinstance(tile_px, (int, np.integer)) and 8 <= tile_px <= 4096):
-        raise UsageError(f"tile_px must be an integer in [8, 4096], not {tile_px!r}")
-    vertices, triangles = scene.vertices, scene.triangles
-    if vertices.ndim != 2 or vertices.shape[1] != 3 or vertices.dtype != np.float32:
-        raise UsageError(f"scene vertices must be (V, 3) float32, not {vertices.shape} "
-                         f"{vertices.dtype}")
-    if triangles.ndim != 2 or triangles.shape[1] != 3 or triangles.dtype != np.int32:
-        raise UsageError(f"scene triangles must be (T, 3) int32, not {triangles.shape} "
-                         f"{triangles.dtype}")
-    started = time.perf_counter()
-    h, w = view.shape
-    tile = int(tile_px)
-    tiles_x, tiles_y = -(-w // tile), -(-h // tile)
-    m = np.ascontiguousarray(view.clip_from_world.reshape(16))
-    xs, ys, to_px = lr.texel_params(w, h)
-    depth = np.full((h, w), np.inf, np.float32)
-    prim = np.full((h, w), -1, np.int32)
-    timings = {"walk_s": 0.0, "setup_s": 0.0, "bin_s": 0.0, "raster_s": 0.0}
-    tree = getattr(scene, "kdtree", None)
-    recs = tree.tri_records if tree is not None else np.zeros((1, 16), np.float32)
-    stats: dict[str, Any] = {"triangles": int(triangles.shape[0]), "casters_drawn": 0,
-                             "frustum_refs_removed": 0, "time_refs_removed": 0}
-
-    def draw(items, from_records):
-        n = items.shape[0]
-        if n == 0:
-            return
-        t0 = time.perf_counter()
-        ids = np.empty(n, np.int32)
-        coef = np.empty((n, lr._SETUP_WORDS))
-        bbox = np.empty((n, 4), np.int32)
-        lr.setup_triangles(vertices, triangles, recs, from_records, items, m, to_px,
-                           float(w), float(h), ids, coef, bbox)
-        t1 = time.perf_counter()
-        start, binned = lr.bin_triangles(bbox, tile, tiles_x, tiles_y)
-        t2 = time.perf_counter()
-        lr.raster_depth_tiles(start, binned, ids, coef, bbox, xs, ys, to_px, tile, tiles_x,
-                              depth, prim)
-        t3 = time.perf_counter()
-        timings["setup_s"] += t1 - t0
-        timings["bin_s"] += t2 - t1
-        timings["raster_s"] += t3 - t2
-        stats["casters_drawn"] += n
-
-    use_tree = bool(culling) and tree is not None
-    if use_tree:
-        lo = np.asarray(tree.bounds[0, :3], np.float64)
-        hi = np.asarray(tree.bounds[1, :3], np.float64)
-        size = max(float(np.max(hi - lo)), float(np.max(np.abs(np.r_[lo, hi]))), 1.0)
-        pad = FRUSTUM_PAD_REL * size
-        planes = frustum_planes(view, pad)
-        if casters_box is not None:
-            planes = np.vstack([planes, box_planes(casters_box, pad)])
-        full = (1 << planes.shape[0]) - 1
-        outside, inside_mask = cull.box_outside(planes, lo, hi, full)
-        if outside:
-            use_tree = False
-            stats["culling"] = "the model lies outside the light view"
-            stats["frustum_refs_removed"] = int(tree.prim_indices.shape[0])
-        elif inside_mask == 0:
-            # The whole model is in the view: a linear time filter beats the walk.
-            use_tree = False
-            stats["culling"] = "the model lies inside the light view"
-        else:
-            stats["culling"] = "kd-tree walk"
-            refs, first, biggest = cull.tree_info(tree)
-            st_node = np.zeros(_STACK_SIZE, np.int64)
-            st_box = np.zeros((_STACK_SIZE, 6))
-            st_mask = np.zeros(_STACK_SIZE, np.int64)
-            st_mask[0] = full
-            st_box[0, :3], st_box[0, 3:] = lo, hi
-            state = np.ones(1, np.int64)
-            drawn = np.zeros(triangles.shape[0], np.uint8)
-            walk_stats = np.zeros(cull.N_STATS, np.int64)
-            out = np.empty(lr.MAX_BATCH + biggest, np.int32)
-            # Walk order only affects memory locality: start from the sun's side.
-            cam = np.zeros(24)
-            cam[1:4] = 0.5 * (lo + hi)
-            dummy = np.zeros((1, 1), np.float32)
-            while state[0] > 0:
-                w0 = time.perf_counter()
-                n = cull.walk(tree.nodes, tree.node_splits, tree.prim_indices, tree.records_f64,
-                              refs, first, t, planes, False, 0, cam, dummy, dummy, 8, 8,
-                              st_node, st_box, st_mask, state, drawn, out, lr.MAX_BATCH,
-                              walk_stats)
-                timings["walk_s"] += time.perf_counter() - w0
-                draw(out[:n], True)
-            named = dict(zip(cull.STAT_NAMES, (int(v) for v in walk_stats)))
-            stats["frustum_refs_removed"] = named["frustum_refs_removed"]
-            stats["time_refs_removed"] = named["time_refs_removed"]
-            stats["walk"] = named
-    if not use_tree and stats.get("culling") != "the model lies outside the light view":
-        if "culling" not in stats:
-            stats["culling"] = "off"
-        w0 = time.perf_counter()
-        ids = lr.present_triangles(np.asarray(scene.tri_t_begin_days, np.float64),
-                                   np.asarray(scene.tri_t_end_days, np.float64), t)
-        timings["walk_s"] += time.perf_counter() - w0
-        stats["time_refs_removed"] = int(triangles.shape[0] - ids.shape[0])
-        for b in range(0, ids.shape[0], lr.MAX_BATCH):
-            draw(ids[b:b + lr.MAX_BATCH], False)
-    timings["total_s"] = time.perf_counter() - started
-    stats.update({"texels": int(w * h), "texels_covered": int((prim >= 0).sum()),
-                  "tile_px": tile, "threads": int(numba.get_num_threads()),
-                  "timings_s": timings})
+    depth, prim, stats = render_depth(scene, view.clip_from_world, view.width_px,
+                                      view.height_px, t_days, casters_box=casters_box,
+                                      culling=culling, tile_px=tile_px)
     return DepthMap(view=view, depth=depth, prim_id=prim, stats=stats)
 
 
