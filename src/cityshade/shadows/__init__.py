@@ -22,6 +22,7 @@ from cityshade.errors import UsageError
 #: name → "module:class". Later techniques (shadow maps, hybrid) register here too.
 TECHNIQUES: dict[str, str] = {
     "raytrace": "cityshade.shadows.raytraced:RayTraced",
+    "izb": "cityshade.shadows.izb:LightSpace",
     "shadowmap": "cityshade.shadows.shadowmap:ShadowMap",
     "pcf": "cityshade.shadows.shadowmap:PCF",
     "vsm": "cityshade.shadows.shadowmap:VSM",
