@@ -35,6 +35,12 @@ __all__ = ["occluded", "sunlit", "Casters", "casters_of", "MARGIN_REL"]
 #: (~1e-15 relative); 2^-30 ≈ 9e-10 (4 µm at 4 km) is a millionfold margin and costs nothing
 #: (cells are metres wide).
 MARGIN_REL = 2.0 ** -30
+#: A caster's depth plane must lie this far behind a receiver (along the shear axis) before the
+#: receiver skips it: 16 mm + 2^-20 of the coordinate magnitude, above the float32 plane's
+#: rounding (< 1 mm for the planes it is used on) and hit_record's (< 0.1 mm), so only casters
+#: whose test would give t < 0 are skipped (error budget in docs/DESIGN.md).
+DEPTH_MARGIN_M = 2.0 ** -6
+DEPTH_MARGIN_REL = 2.0 ** -20
 #: Candidate cell sizes, as multiples of the size that holds one receiver per cell on average;
 #: the one with the lowest estimated cost is used (:func:`_choose_cell_m`).
 CELL_FACTORS = (0.35, 0.5, 0.7, 1.0, 1.4, 2.0, 2.8, 4.0, 5.6, 8.0, 11.0, 16.0)
@@ -177,6 +183,10 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
     boxes = np.empty((recs.shape[0], 4))
     K.cull_casters(recs, recs.view(np.float64), keys, t, kx, ky, kz, sx, sy, margin_m, box,
                    min_key, boxes)
+    kept = np.flatnonzero(~np.isnan(boxes[:, 0]))
+    packed = np.empty((kept.size, K.PACK_WORDS), np.float32)
+    K.pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, packed)
+    boxes = np.ascontiguousarray(boxes[kept])
     timing["project_s"] = time.perf_counter() - t0
 
     # Grid over the receivers' box, cell size from the counts.
@@ -198,7 +208,7 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
     K.prefix_sum(counts, rec_start)
     rec_order = np.empty(n, np.int32)
     K.fill_receivers(cells, counts, rec_order)
-    ranges = np.empty((recs.shape[0], 4), np.int64)
+    ranges = np.empty((kept.size, 4), np.int64)
     K.caster_ranges(boxes, box[0], box[2], inv, inv, nx, ny, ranges)
     counts = np.zeros((n_chunks, n_cells), np.int32)
     refs = np.empty(0, np.int32)
@@ -213,12 +223,12 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
     t0 = time.perf_counter()
     n_blocks = (n_cells + K.QUERY_BLOCK_CELLS - 1) // K.QUERY_BLOCK_CELLS
     tests = np.zeros(n_blocks, np.int64)
-    K.query(recs, keys, ref_start, refs, rec_start, rec_order, origins, kx, ky, kz, sx, sy, sz,
-            sgn, 0.0, np.inf, out, tests)
+    K.query(packed, ref_start, refs, rec_start, rec_order, origins, kx, ky, kz, sx, sy, sz,
+            sgn, DEPTH_MARGIN_M + DEPTH_MARGIN_REL * scale, 0.0, np.inf, out, tests)
     timing["query_s"] = time.perf_counter() - t0
     if stats is not None:
         stats.update(timing)
-        stats.update(receivers=n, casters=int(np.count_nonzero(~np.isnan(boxes[:, 0]))),
+        stats.update(receivers=n, casters=int(kept.size),
                      grid=(nx, ny), cell_m=size, references=int(n_refs),
                      tests=int(tests.sum()), occluded=int(out.sum()))
     return out

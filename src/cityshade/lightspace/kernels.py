@@ -131,6 +131,71 @@ def cull_casters(recs, recs_f64, keys, t_days, kx, ky, kz, sx, sy, margin_m, box
         out_box[j, 3] = y1
 
 
+#: Columns of the packed caster records (:func:`pack_casters`): the vertices where
+#: :func:`hit_record` reads them, then the depth key, the light-plane box and the depth plane,
+#: so a candidate is read from one record.
+PACK_KEY = 9
+PACK_BOX = 10
+PACK_PLANE = 14
+PACK_WORDS = 17
+#: Relative widening when the float64 box is stored as float32 (rounding is 2^-24 relative).
+_F32_WIDEN = 2.0 ** -22
+#: The depth plane is used only for casters of decent shape in the light plane, where its
+#: float32 coefficients and hit_record's own rounding stay far below DEPTH_MARGIN_M (error
+#: budget in docs/DESIGN.md): slopes |dz/dx|, |dz/dy| <= 16, boxes <= 256 m, and
+#: box diagonal² / |2 area| <= 2^20 (barycentric errors <= ~4e-9 relative).
+_PLANE_MAX_SLOPE = 16.0
+_PLANE_MAX_BOX_M = 256.0
+_PLANE_MAX_ASPECT = 2.0 ** 20
+
+
+@njit(cache=True, parallel=True)
+def pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, out):
+    """(len(kept), PACK_WORDS) float32 records of the kept casters, in key order: columns 0-8
+    the vertices (as in the tree's records), ``PACK_KEY`` the key (float32 values, exact),
+    ``PACK_BOX`` .. +3 the light-plane box rounded outward to float32, ``PACK_PLANE`` .. +2 the
+    depth plane ``sgn * z = key + c + a (x - box x0) + b (y - box y0)`` as (a, b, c), or
+    (0, 0, +inf) where the plane is not trusted (never skips)."""
+    for q in prange(kept.shape[0]):
+        j = kept[q]
+        for c in range(9):
+            out[q, c] = recs[j, c]
+        out[q, PACK_KEY] = keys[j]
+        for c in range(4):
+            b = boxes[j, c]
+            w = abs(b) * _F32_WIDEN + 2.0 ** -40
+            out[q, PACK_BOX + c] = b - w if c % 2 == 0 else b + w
+        # Depth plane through the three projected vertices (float64, vertex 0 as origin).
+        z0 = sgn * np.float64(recs[j, kz])
+        x0 = np.float64(recs[j, kx]) - sx * np.float64(recs[j, kz])
+        y0 = np.float64(recs[j, ky]) - sy * np.float64(recs[j, kz])
+        z1 = sgn * np.float64(recs[j, 3 + kz]) - z0
+        x1 = np.float64(recs[j, 3 + kx]) - sx * np.float64(recs[j, 3 + kz]) - x0
+        y1 = np.float64(recs[j, 3 + ky]) - sy * np.float64(recs[j, 3 + kz]) - y0
+        z2 = sgn * np.float64(recs[j, 6 + kz]) - z0
+        x2 = np.float64(recs[j, 6 + kx]) - sx * np.float64(recs[j, 6 + kz]) - x0
+        y2 = np.float64(recs[j, 6 + ky]) - sy * np.float64(recs[j, 6 + kz]) - y0
+        det = x1 * y2 - y1 * x2
+        bw = boxes[j, 1] - boxes[j, 0]
+        bh = boxes[j, 3] - boxes[j, 2]
+        pa = 0.0
+        pb = 0.0
+        pc = np.inf
+        if (det != 0.0 and max(bw, bh) <= _PLANE_MAX_BOX_M
+                and (bw * bw + bh * bh) <= _PLANE_MAX_ASPECT * abs(det)):
+            a = (z1 * y2 - z2 * y1) / det
+            b = (x1 * z2 - x2 * z1) / det
+            if abs(a) <= _PLANE_MAX_SLOPE and abs(b) <= _PLANE_MAX_SLOPE:
+                bx0 = np.float64(out[q, PACK_BOX])
+                by0 = np.float64(out[q, PACK_BOX + 2])
+                pa = a
+                pb = b
+                pc = z0 + a * (bx0 - x0) + b * (by0 - y0) - keys[j]
+        out[q, PACK_PLANE] = pa
+        out[q, PACK_PLANE + 1] = pb
+        out[q, PACK_PLANE + 2] = pc
+
+
 @njit(cache=True, parallel=True)
 def estimate_refs(boxes, cell_sizes_m):
     """Cell references the kept casters would make for each candidate cell size (K,)."""
@@ -252,13 +317,16 @@ QUERY_BLOCK_CELLS = 16
 
 
 @njit(cache=True, parallel=True)
-def query(recs, keys, ref_start, refs, rec_start, rec_order, origins, kx, ky, kz, sx, sy, sz,
-          sgn, tmin, tmax, out, out_tests):
+def query(packed, ref_start, refs, rec_start, rec_order, origins, kx, ky, kz, sx, sy, sz, sgn,
+          depth_margin_m, tmin, tmax, out, out_tests):
     """``out[i] = True`` when receiver i's shadow ray hits a caster of its cell.
 
-    ``recs`` (M, 16) float32 caster records sorted by ``keys`` (descending), ``refs`` the
-    cells' caster lists (``ref_start`` (n_cells + 1,)), ``rec_order`` the receivers grouped by
-    cell (``rec_start``). The test is :func:`hit_record` with ``tmin <= t <= tmax``, exactly as
+    ``packed`` (M, 16) float32 caster records of :func:`pack_casters` sorted by key
+    (descending), ``refs`` the cells' caster lists (``ref_start`` (n_cells + 1,)),
+    ``rec_order`` the receivers grouped by cell (``rec_start``). A receiver outside a caster's
+    widened box is outside the triangle (the binning argument), so the box check only skips
+    tests that cannot hit; so does the depth plane: a caster whose plane lies more than
+    ``depth_margin_m`` behind the receiver along the shear axis gives t < 0. The test is :func:`hit_record` with ``tmin <= t <= tmax``, exactly as
     in :func:`cityshade.trace.kernels.any_hit`. ``out_tests`` (n_blocks,) int64 counts the
     triangle tests per block (a profile, not used for the answer).
     """
@@ -284,10 +352,12 @@ def query(recs, keys, ref_start, refs, rec_start, rec_order, origins, kx, ky, kz
                 oky = origins[i, ky]
                 okz = origins[i, kz]
                 rkey = sgn * okz
+                rx = okx - sx * okz
+                ry = oky - sy * okz
                 # Test the block's last occluder first (coherent receivers share it).
-                if cache_k >= 0 and keys[cache_k] >= rkey:
+                if cache_k >= 0 and np.float64(packed[cache_k, PACK_KEY]) >= rkey:
                     tests += 1
-                    hit, t, u, v = hit_record(recs, cache_k, okx, oky, okz, kx, ky, kz,
+                    hit, t, u, v = hit_record(packed, cache_k, okx, oky, okz, kx, ky, kz,
                                               sx, sy, sz)
                     if hit and tmin <= t <= tmax:
                         out[i] = True
@@ -295,12 +365,20 @@ def query(recs, keys, ref_start, refs, rec_start, rec_order, origins, kx, ky, kz
                 for p in range(p0, p1):
                     j = refs[p]
                     # Sorted by key: this caster and all after it lie behind the origin.
-                    if keys[j] < rkey:
+                    if np.float64(packed[j, PACK_KEY]) < rkey:
                         break
-                    if j == cache_k:
+                    if (j == cache_k or rx < packed[j, PACK_BOX] or rx > packed[j, PACK_BOX + 1]
+                            or ry < packed[j, PACK_BOX + 2] or ry > packed[j, PACK_BOX + 3]):
+                        continue
+                    # Depth plane behind the receiver (the caster's float32 plane, see
+                    # pack_casters): no hit at t >= 0.
+                    zp = (np.float64(packed[j, PACK_KEY]) + np.float64(packed[j, PACK_PLANE + 2])
+                          + np.float64(packed[j, PACK_PLANE]) * (rx - packed[j, PACK_BOX])
+                          + np.float64(packed[j, PACK_PLANE + 1]) * (ry - packed[j, PACK_BOX + 2]))
+                    if zp < rkey - depth_margin_m:
                         continue
                     tests += 1
-                    hit, t, u, v = hit_record(recs, j, okx, oky, okz, kx, ky, kz, sx, sy, sz)
+                    hit, t, u, v = hit_record(packed, j, okx, oky, okz, kx, ky, kz, sx, sy, sz)
                     if hit and tmin <= t <= tmax:
                         out[i] = True
                         cache_k = j
