@@ -35,12 +35,13 @@ __all__ = ["occluded", "sunlit", "Casters", "casters_of", "MARGIN_REL"]
 #: (~1e-15 relative); 2^-30 ≈ 9e-10 (4 µm at 4 km) is a millionfold margin and costs nothing
 #: (cells are metres wide).
 MARGIN_REL = 2.0 ** -30
-#: A caster's depth plane must lie this far behind a receiver (along the shear axis) before the
-#: receiver skips it: 16 mm + 2^-20 of the coordinate magnitude, above the float32 plane's
-#: rounding (< 1 mm for the planes it is used on) and hit_record's (< 0.1 mm), so only casters
-#: whose test would give t < 0 are skipped (error budget in docs/DESIGN.md).
-DEPTH_MARGIN_M = 2.0 ** -6
-DEPTH_MARGIN_REL = 2.0 ** -20
+#: A caster's depth plane (moved sunward by its own float32 rounding bound) must lie this far
+#: behind a receiver along the shear axis before the receiver skips it: 15 µm + 2^-22 of the
+#: coordinate magnitude (1 mm at 4 km), far above hit_record's rounding of t (~4e-9 of the
+#: scene size for the planes used) and below the shadow-ray offset (2^-18 of the magnitude),
+#: so a receiver skips its own surface but never a caster its test would hit at t >= 0.
+DEPTH_MARGIN_M = 2.0 ** -16
+DEPTH_MARGIN_REL = 2.0 ** -22
 #: Candidate cell sizes, as multiples of the size that holds one receiver per cell on average;
 #: the one with the lowest estimated cost is used (:func:`_choose_cell_m`).
 CELL_FACTORS = (0.35, 0.5, 0.7, 1.0, 1.4, 2.0, 2.8, 4.0, 5.6, 8.0, 11.0, 16.0)
@@ -207,7 +208,8 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
     rec_start = np.empty(n_cells + 1, np.int64)
     K.prefix_sum(counts, rec_start)
     rec_order = np.empty(n, np.int32)
-    K.fill_receivers(cells, counts, rec_order)
+    rec_origins = np.empty((n, 3))
+    K.fill_receivers(cells, counts, origins, rec_order, rec_origins)
     ranges = np.empty((kept.size, 4), np.int64)
     K.caster_ranges(boxes, box[0], box[2], inv, inv, nx, ny, ranges)
     counts = np.zeros((n_chunks, n_cells), np.int32)
@@ -223,8 +225,10 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
     t0 = time.perf_counter()
     n_blocks = (n_cells + K.QUERY_BLOCK_CELLS - 1) // K.QUERY_BLOCK_CELLS
     tests = np.zeros(n_blocks, np.int64)
-    K.query(packed, ref_start, refs, rec_start, rec_order, origins, kx, ky, kz, sx, sy, sz,
-            sgn, DEPTH_MARGIN_M + DEPTH_MARGIN_REL * scale, 0.0, np.inf, out, tests)
+    hit_sorted = np.zeros(n, np.bool_)
+    K.query(packed, ref_start, refs, rec_start, rec_origins, kx, ky, kz, sx, sy, sz, sgn,
+            DEPTH_MARGIN_M + DEPTH_MARGIN_REL * scale, 0.0, np.inf, hit_sorted, tests)
+    K.scatter_back(rec_order, hit_sorted, out)
     timing["query_s"] = time.perf_counter() - t0
     if stats is not None:
         stats.update(timing)

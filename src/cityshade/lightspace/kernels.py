@@ -33,7 +33,7 @@ import numpy as np
 from numba import njit, prange
 
 from cityshade.accel.kdtree_layout import REC_T_BEGIN64, REC_T_END64
-from cityshade.trace.bricks import STRIPES, _brick_of
+from cityshade.trace.bricks import stripe_interleave
 from cityshade.trace.kernels import hit_record, ray_shear
 
 #: Statistics columns of :func:`project_receivers`: light-plane box and lowest depth key.
@@ -140,13 +140,13 @@ PACK_PLANE = 14
 PACK_WORDS = 17
 #: Relative widening when the float64 box is stored as float32 (rounding is 2^-24 relative).
 _F32_WIDEN = 2.0 ** -22
-#: The depth plane is used only for casters of decent shape in the light plane, where its
-#: float32 coefficients and hit_record's own rounding stay far below DEPTH_MARGIN_M (error
-#: budget in docs/DESIGN.md): slopes |dz/dx|, |dz/dy| <= 16, boxes <= 256 m, and
-#: box diagonal² / |2 area| <= 2^20 (barycentric errors <= ~4e-9 relative).
-_PLANE_MAX_SLOPE = 16.0
-_PLANE_MAX_BOX_M = 256.0
+#: The depth plane is used only for casters of decent shape in the light plane: box
+#: diagonal² / |2 area| <= 2^20, so hit_record's distance (a convex combination with weights
+#: of absolute error <= ~12 eps diagonal² / |2 area|) is within ~4e-9 relative of the plane's.
 _PLANE_MAX_ASPECT = 2.0 ** 20
+#: Each plane is moved sunward by this fraction of its own terms' magnitudes, which bounds the
+#: float32 rounding of its coefficients (2^-24 each) with a wide margin.
+_PLANE_WIDEN = 2.0 ** -21
 
 
 @njit(cache=True, parallel=True)
@@ -154,8 +154,9 @@ def pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, out):
     """(len(kept), PACK_WORDS) float32 records of the kept casters, in key order: columns 0-8
     the vertices (as in the tree's records), ``PACK_KEY`` the key (float32 values, exact),
     ``PACK_BOX`` .. +3 the light-plane box rounded outward to float32, ``PACK_PLANE`` .. +2 the
-    depth plane ``sgn * z = key + c + a (x - box x0) + b (y - box y0)`` as (a, b, c), or
-    (0, 0, +inf) where the plane is not trusted (never skips)."""
+    depth plane ``sgn * z = key + c + a (x - box x0) + b (y - box y0)`` as (a, b, c), moved
+    sunward by its rounding bound, or (0, 0, +inf) where the plane is not trusted (never
+    skips)."""
     for q in prange(kept.shape[0]):
         j = kept[q]
         for c in range(9):
@@ -181,16 +182,14 @@ def pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, out):
         pa = 0.0
         pb = 0.0
         pc = np.inf
-        if (det != 0.0 and max(bw, bh) <= _PLANE_MAX_BOX_M
-                and (bw * bw + bh * bh) <= _PLANE_MAX_ASPECT * abs(det)):
-            a = (z1 * y2 - z2 * y1) / det
-            b = (x1 * z2 - x2 * z1) / det
-            if abs(a) <= _PLANE_MAX_SLOPE and abs(b) <= _PLANE_MAX_SLOPE:
-                bx0 = np.float64(out[q, PACK_BOX])
-                by0 = np.float64(out[q, PACK_BOX + 2])
-                pa = a
-                pb = b
-                pc = z0 + a * (bx0 - x0) + b * (by0 - y0) - keys[j]
+        if det != 0.0 and (bw * bw + bh * bh) <= _PLANE_MAX_ASPECT * abs(det):
+            pa = (z1 * y2 - z2 * y1) / det
+            pb = (x1 * z2 - x2 * z1) / det
+            bx0 = np.float64(out[q, PACK_BOX])
+            by0 = np.float64(out[q, PACK_BOX + 2])
+            pc = z0 + pa * (bx0 - x0) + pb * (by0 - y0) - keys[j]
+            pc += _PLANE_WIDEN * (abs(pa) * (bw + 1.0) + abs(pb) * (bh + 1.0) + abs(pc)
+                                  + abs(keys[j]))
         out[q, PACK_PLANE] = pa
         out[q, PACK_PLANE + 1] = pb
         out[q, PACK_PLANE + 2] = pc
@@ -299,31 +298,49 @@ def prefix_sum(counts, out_start):
 
 
 @njit(cache=True, parallel=True)
-def fill_receivers(cells, cursor, out_order):
-    """Receiver indices grouped by cell, in receiver order inside a cell."""
+def fill_receivers(cells, cursor, origins, out_order, out_origins):
+    """Receiver indices grouped by cell (receiver order inside a cell) and their origins in
+    that order, so the query reads receivers sequentially."""
     n = cells.shape[0]
     n_chunks = cursor.shape[0]
     per = (n + n_chunks - 1) // n_chunks
     for c in prange(n_chunks):
         for i in range(c * per, min(n, (c + 1) * per)):
             cell = cells[i]
-            out_order[cursor[c, cell]] = i
+            q = cursor[c, cell]
+            out_order[q] = i
+            out_origins[q, 0] = origins[i, 0]
+            out_origins[q, 1] = origins[i, 1]
+            out_origins[q, 2] = origins[i, 2]
             cursor[c, cell] += 1
+
+
+@njit(cache=True, parallel=True)
+def scatter_back(order, sorted_values, out):
+    """``out[order[q]] = sorted_values[q]``: results in cell order back to receiver order."""
+    for q in prange(order.shape[0]):
+        out[order[q]] = sorted_values[q]
 
 
 #: Cells per parallel work item of the query: neighbouring cells share casters, so a block
 #: keeps its last-occluder cache warm; small enough for the two cores to balance.
-QUERY_BLOCK_CELLS = 16
+QUERY_BLOCK_CELLS = 64
+#: Stripes of the block interleave (as in :mod:`cityshade.trace.bricks`, but few): each thread
+#: takes part of every stripe so the cores finish together, and consecutive blocks of a stripe
+#: are neighbouring cells whose casters (sorted by key, i.e. along the shear axis) are close in
+#: memory; many stripes would spread one thread's working set over the whole caster array.
+QUERY_STRIPES = 8
 
 
 @njit(cache=True, parallel=True)
-def query(packed, ref_start, refs, rec_start, rec_order, origins, kx, ky, kz, sx, sy, sz, sgn,
+def query(packed, ref_start, refs, rec_start, origins, kx, ky, kz, sx, sy, sz, sgn,
           depth_margin_m, tmin, tmax, out, out_tests):
-    """``out[i] = True`` when receiver i's shadow ray hits a caster of its cell.
+    """``out[q] = True`` when the shadow ray of receiver q (in cell order) hits a caster of its
+    cell.
 
     ``packed`` (M, 16) float32 caster records of :func:`pack_casters` sorted by key
     (descending), ``refs`` the cells' caster lists (``ref_start`` (n_cells + 1,)),
-    ``rec_order`` the receivers grouped by cell (``rec_start``). A receiver outside a caster's
+    ``origins`` the receivers' origins grouped by cell (``rec_start``). A receiver outside a caster's
     widened box is outside the triangle (the binning argument), so the box check only skips
     tests that cannot hit; so does the depth plane: a caster whose plane lies more than
     ``depth_margin_m`` behind the receiver along the shear axis gives t < 0. The test is :func:`hit_record` with ``tmin <= t <= tmax``, exactly as
@@ -332,9 +349,9 @@ def query(packed, ref_start, refs, rec_start, rec_order, origins, kx, ky, kz, sx
     """
     n_cells = ref_start.shape[0] - 1
     n_blocks = (n_cells + QUERY_BLOCK_CELLS - 1) // QUERY_BLOCK_CELLS
-    n_iter = STRIPES * ((n_blocks + STRIPES - 1) // STRIPES)
+    n_iter = QUERY_STRIPES * ((n_blocks + QUERY_STRIPES - 1) // QUERY_STRIPES)
     for it in prange(n_iter):
-        b = _brick_of(it, n_blocks)
+        b = stripe_interleave(it, n_blocks, QUERY_STRIPES)
         if b < 0:
             continue
         tests = 0
@@ -346,8 +363,7 @@ def query(packed, ref_start, refs, rec_start, rec_order, origins, kx, ky, kz, sx
             p1 = ref_start[cell + 1]
             if r0 == r1 or p0 == p1:
                 continue
-            for q in range(r0, r1):
-                i = rec_order[q]
+            for i in range(r0, r1):
                 okx = origins[i, kx]
                 oky = origins[i, ky]
                 okz = origins[i, kz]
