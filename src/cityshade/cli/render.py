@@ -21,7 +21,8 @@ from cityshade.cli.options import camera_options, make_camera, parse_size, parse
 @click.option("--sun-elevation", type=float, help="Degrees above the horizon.")
 @camera_options("overview")
 @click.option("--shadows", "technique", default="raytrace", show_default=True,
-              help="Shadow technique: raytrace (exact reference); shadowmap, pcf, vsm (uniform "
+              help="Shadow technique: raytrace (exact reference, kd-tree rays); izb (exact, "
+              "the same answer from the light-space engine); shadowmap, pcf, vsm (uniform "
               "map: bias, percentage-closer filtering, variance shadow map); psm, lispsm, xpsm "
               "(perspective warps); csm or csm:WARP (cascades); hybrid[:BASE] (a map classifies, "
               "exact rays decide the uncertain pixels; default base vsm). Append +smooth for "
