@@ -147,8 +147,6 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
     origins = np.ascontiguousarray(origins, dtype=np.float64)
     if origins.ndim != 2 or origins.shape[1] != 3:
         raise TraceInputError(f"origins must have shape (N, 3), not {origins.shape}")
-    if not np.isfinite(origins).all():
-        raise TraceInputError("ray origins contain NaN or infinite values")
     sun = np.ascontiguousarray(sun_direction, dtype=np.float64)
     if sun.shape != (3,) or not np.isfinite(sun).all():
         raise TraceInputError(f"sun_direction must be a finite (3,) vector, not {sun!r}")
@@ -177,6 +175,8 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
     rkeys = np.empty(n)
     part = np.empty((n_chunks, K._NSTAT))
     K.project_receivers(origins, kx, ky, kz, sx, sy, sgn, n_chunks, xs, ys, rkeys, part)
+    if part[:, 5].sum() > 0:
+        raise TraceInputError("ray origins contain NaN or infinite values")
     box = np.array([part[:, 0].min(), part[:, 1].max(), part[:, 2].min(), part[:, 3].max()])
     min_key = float(part[:, 4].min())
     scale = max(float(np.abs(kd.bounds[:, :3]).max()), float(np.abs(box).max()), 1.0)
@@ -186,8 +186,9 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
                    min_key, boxes)
     kept = np.flatnonzero(~np.isnan(boxes[:, 0]))
     packed = np.empty((kept.size, K.PACK_WORDS), np.float32)
-    K.pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, packed)
-    boxes = np.ascontiguousarray(boxes[kept])
+    kept_boxes = np.empty((kept.size, 4))
+    K.pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, packed, kept_boxes)
+    boxes = kept_boxes
     timing["project_s"] = time.perf_counter() - t0
 
     # Grid over the receivers' box, cell size from the counts.
@@ -204,7 +205,6 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
     cells = np.empty(n, np.int64)
     K.receiver_cells(xs, ys, box[0], box[2], inv, inv, nx, ny, cells)
     counts = K.count_receivers(cells, n_cells, n_chunks)
-    occupied = counts.sum(axis=0, dtype=np.int32)
     rec_start = np.empty(n_cells + 1, np.int64)
     K.prefix_sum(counts, rec_start)
     rec_order = np.empty(n, np.int32)
@@ -214,11 +214,11 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
     K.caster_ranges(boxes, box[0], box[2], inv, inv, nx, ny, ranges)
     counts = np.zeros((n_chunks, n_cells), np.int32)
     refs = np.empty(0, np.int32)
-    K.scatter_casters(ranges, occupied, nx, counts, refs, False)
+    K.scatter_casters(ranges, rec_start, nx, counts, refs, False)
     ref_start = np.empty(n_cells + 1, np.int64)
     n_refs = K.prefix_sum(counts, ref_start)
     refs = np.empty(n_refs, np.int32)
-    K.scatter_casters(ranges, occupied, nx, counts, refs, True)
+    K.scatter_casters(ranges, rec_start, nx, counts, refs, True)
     timing["bin_s"] = time.perf_counter() - t0
 
     # Test each receiver against its cell's casters, nearest-to-the-sun first.

@@ -36,8 +36,9 @@ from cityshade.accel.kdtree_layout import REC_T_BEGIN64, REC_T_END64
 from cityshade.trace.bricks import stripe_interleave
 from cityshade.trace.kernels import hit_record, ray_shear
 
-#: Statistics columns of :func:`project_receivers`: light-plane box and lowest depth key.
-_NSTAT = 5
+#: Statistics columns of :func:`project_receivers`: light-plane box, lowest depth key, count of
+#: non-finite origins.
+_NSTAT = 6
 
 
 @njit(cache=True)
@@ -52,7 +53,8 @@ def project_receivers(origins, kx, ky, kz, sx, sy, sgn, n_chunks, out_x, out_y, 
     """Light-plane point and depth key of every ray origin, and per-chunk box statistics.
 
     ``origins`` (N, 3) float64; writes ``out_x, out_y, out_key`` (N,) float64 and ``stats``
-    (n_chunks, 5): min x, max x, min y, max y, min key of the chunk (inf/-inf when empty).
+    (n_chunks, 6): min x, max x, min y, max y, min key of the chunk (inf/-inf when empty) and
+    the number of origins with a non-finite coordinate (checked here, not in a numpy pass).
     """
     n = origins.shape[0]
     per = (n + n_chunks - 1) // n_chunks
@@ -62,11 +64,15 @@ def project_receivers(origins, kx, ky, kz, sx, sy, sgn, n_chunks, out_x, out_y, 
         y0 = np.inf
         y1 = -np.inf
         k0 = np.inf
+        bad = 0
         for i in range(c * per, min(n, (c + 1) * per)):
             okz = origins[i, kz]
             x = origins[i, kx] - sx * okz
             y = origins[i, ky] - sy * okz
             key = sgn * okz
+            if not (abs(origins[i, 0]) < np.inf and abs(origins[i, 1]) < np.inf
+                    and abs(okz) < np.inf):
+                bad += 1
             out_x[i] = x
             out_y[i] = y
             out_key[i] = key
@@ -80,6 +86,7 @@ def project_receivers(origins, kx, ky, kz, sx, sy, sgn, n_chunks, out_x, out_y, 
         stats[c, 2] = y0
         stats[c, 3] = y1
         stats[c, 4] = k0
+        stats[c, 5] = bad
 
 
 @njit(cache=True, parallel=True)
@@ -150,15 +157,17 @@ _PLANE_WIDEN = 2.0 ** -21
 
 
 @njit(cache=True, parallel=True)
-def pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, out):
+def pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, out, out_boxes):
     """(len(kept), PACK_WORDS) float32 records of the kept casters, in key order: columns 0-8
     the vertices (as in the tree's records), ``PACK_KEY`` the key (float32 values, exact),
     ``PACK_BOX`` .. +3 the light-plane box rounded outward to float32, ``PACK_PLANE`` .. +2 the
     depth plane ``sgn * z = key + c + a (x - box x0) + b (y - box y0)`` as (a, b, c), moved
     sunward by its rounding bound, or (0, 0, +inf) where the plane is not trusted (never
-    skips)."""
+    skips). ``out_boxes`` (len(kept), 4) gets the float64 boxes of the kept casters."""
     for q in prange(kept.shape[0]):
         j = kept[q]
+        for c in range(4):
+            out_boxes[q, c] = boxes[j, c]
         for c in range(9):
             out[q, c] = recs[j, c]
         out[q, PACK_KEY] = keys[j]
@@ -258,11 +267,12 @@ def count_receivers(cells, n_cells, n_chunks):
 
 
 @njit(cache=True, parallel=True)
-def scatter_casters(ranges, occupied, nx, cursor, out_refs, fill):
+def scatter_casters(ranges, rec_start, nx, cursor, out_refs, fill):
     """Count pass (``fill`` False: ``cursor`` (n_chunks, n_cells) int32 zeros gets the references
     per cell of each fixed chunk of casters) or fill pass (``fill`` True: ``cursor`` holds the
     write positions of :func:`prefix_sum` and ``out_refs`` gets the caster indices, in caster =
-    key order inside a cell). Only cells holding a receiver (``occupied`` > 0) get references.
+    key order inside a cell). Only cells holding a receiver (``rec_start`` (n_cells + 1,), the
+    receivers' list starts) get references.
     """
     n = ranges.shape[0]
     n_chunks = cursor.shape[0]
@@ -275,7 +285,7 @@ def scatter_casters(ranges, occupied, nx, cursor, out_refs, fill):
                 row = iy * nx
                 for ix in range(ranges[j, 0], ranges[j, 1] + 1):
                     cell = row + ix
-                    if occupied[cell] > 0:
+                    if rec_start[cell + 1] > rec_start[cell]:
                         if fill:
                             out_refs[cursor[c, cell]] = j
                         cursor[c, cell] += 1
