@@ -218,6 +218,13 @@ def test_read_only_inputs_and_validation(tmp_path):
     np.testing.assert_array_equal(lightspace.occluded(mapped, origins, d),
                                   occluded(tree, origins, np.broadcast_to(d, origins.shape)))
     assert lightspace.occluded(tree, np.zeros((0, 3)), d).shape == (0,)
+    # One receiver; receivers no caster can reach; a time when nothing stands.
+    for one in origins[:40]:
+        assert lightspace.occluded(tree, one[None], d)[0] == occluded(tree, one[None], d[None])[0]
+    assert not lightspace.occluded(tree, origins + [0.0, 0.0, 500.0], d).any()
+    empty_tree = build_kdtree(city[0], city[1], np.full(len(city[1]), 5.0),
+                              np.full(len(city[1]), 6.0), city[4])
+    assert not lightspace.occluded(empty_tree, origins, d, 0.0).any()
     with pytest.raises(TraceInputError, match="unit length"):
         lightspace.occluded(tree, origins, [0.0, 0.0, 2.0])
     with pytest.raises(TraceInputError, match="shape"):
