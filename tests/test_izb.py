@@ -181,8 +181,10 @@ def test_box_shadow_length_is_h_over_tan_elevation():
         assert got.tolist() == [True, True, True, False, False], f"elevation {el}°"
 
 
-def test_thread_count_does_not_change_the_answer(sample_scene):
+def test_thread_count_does_not_change_the_answer(sample_scene, monkeypatch):
     from cityshade.raster.camera import map_view
+
+    monkeypatch.setattr(lightspace, "SINGLE_THREAD_WORK", 0)  # small calls use all threads too
 
     cam = map_view(sample_scene, 1.0)
     surfaces = _surfaces(sample_scene, cam, 20000.0, "min")

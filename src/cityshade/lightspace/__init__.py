@@ -52,6 +52,11 @@ CELL_FACTORS = (0.35, 0.5, 0.7, 1.0, 1.4, 2.0, 2.8, 4.0, 5.6, 8.0, 11.0, 16.0)
 COST_REF_NS = 10.0
 COST_SCAN_NS = 0.5
 COST_CELL_NS = 1.5
+#: Receivers + casters below which a call runs on one thread: a call is a dozen short parallel
+#: passes, and each waits for every worker thread; on a busy machine a descheduled worker costs
+#: a scheduler time slice (milliseconds) per pass, more than the whole small call. The answer
+#: does not depend on the thread count.
+SINGLE_THREAD_WORK = 300_000
 #: Upper bound on grid cells per receiver (memory: two int32 counts per cell and thread).
 MAX_CELLS_PER_RECEIVER = 8
 
@@ -160,6 +165,19 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
     out = np.zeros(n, np.bool_)
     if n == 0 or kd.tri_records.shape[0] == 0:
         return out
+    threads = numba.get_num_threads()
+    if threads > 1 and n + kd.tri_records.shape[0] < SINGLE_THREAD_WORK:
+        numba.set_num_threads(1)
+        try:
+            return _occluded(kd, origins, sun, t, out, stats, cell_m)
+        finally:
+            numba.set_num_threads(threads)
+    return _occluded(kd, origins, sun, t, out, stats, cell_m)
+
+
+def _occluded(kd, origins, sun, t, out, stats, cell_m):
+    """The engine behind :func:`occluded` on validated inputs; fills and returns ``out``."""
+    n = origins.shape[0]
     timing = {}
     t0 = time.perf_counter()
     casters = casters_of(kd)
