@@ -4,8 +4,8 @@ Input: the synthetic benchmark city of ``cityshade.samplegen`` (1 000 000 triang
 generated into ``--workdir`` (default ``bench_out/``) and built once, as in
 ``benchmarks/render.py``. The city as it stood on 2000-01-01.
 
-Work: ``cityshade.batch.sun_hours`` with the technique ``--shadows`` (default ``raytrace``;
-``izb`` is the exact light-space engine), a top-down map view of the model's extent at
+Work: ``cityshade.batch.sun_hours`` with the technique ``--shadows`` (default ``izb``, as
+``cityshade batch``; ``raytrace`` is the kd-tree), a top-down map view of the model's extent at
 ``--pixel-size`` (default 1 m; ``--side 2048`` takes a 2048² window centred on the model
 instead), one day ``--date`` (default the summer solstice 2024-06-21; 2024-12-21 is the low-sun
 day with the longest shadows; Europe/Berlin, 00:00–24:00) every ``--every`` (default 10 min):
@@ -65,8 +65,9 @@ def main(argv=None) -> dict:
     ap.add_argument("--side", type=int, default=0,
                     help="square window of this many pixels centred on the model (0: extent)")
     ap.add_argument("--every", default="10min")
-    ap.add_argument("--shadows", default="raytrace",
-                    help="technique: raytrace (exact) or e.g. hybrid:shadowmap (exact to 99.99 %%)")
+    ap.add_argument("--shadows", default="izb",
+                    help="technique: izb or raytrace (exact, the same answer), or e.g. "
+                         "hybrid:shadowmap")
     ap.add_argument("--date", default="2024-06-21", help="the day (YYYY-MM-DD)")
     ap.add_argument("--compare", default=None,
                     help="also run this technique once; report identical sun-hours")
