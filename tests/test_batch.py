@@ -433,3 +433,14 @@ def test_cli_batch_failures(files, tmp_path):
     _one_line_error(_run("batch", nocrs, *base[2:]), "--crs", 1)
     missing_tz = _run("batch", scene_path, "--date", "2024-06-21", "-o", tmp_path / "h")
     assert missing_tz.exit_code == 2 and "--tz" in missing_tz.output
+
+
+def test_izb_default_equals_raytrace_for_pixels_and_surfaces(scene):
+    """The default exact engine of a batch (izb) gives raytrace's sun-hours, bit for bit."""
+    cam = __import__("cityshade.raster.camera", fromlist=["map_view"]).map_view(scene, PX)
+    runs = [B.sun_hours(scene, cam, _instants(len(SUNS)), 0.0, weights_h=WEIGHTS,
+                        suns=_explicit_suns(), samples_per_m2=0.05, technique=name)
+            for name in ("izb", "raytrace")]
+    assert runs[0].hours.tobytes() == runs[1].hours.tobytes()
+    assert runs[0].sample_hours.tobytes() == runs[1].sample_hours.tobytes()
+    assert (runs[0].hours[runs[0].valid] > 0).any() and (runs[0].sample_hours == 0).any()

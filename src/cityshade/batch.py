@@ -366,13 +366,16 @@ class _PixelRays:
     the visible surfaces turned towards the camera and the shadow-ray origins pushed off the
     surface along them (:func:`cityshade.trace.shadow_rays_from_surface` offsets along the
     normal, not the sun). Per step the same rule as the ``raytrace`` technique applies: a pixel
-    facing away from the sun (N·L <= 0) is in shadow, the others are traced."""
+    facing away from the sun (N·L <= 0) is in shadow, the others are decided by the exact
+    engine of ``technique``: ``izb`` (:func:`cityshade.lightspace.occluded`, rebinned per
+    step) or ``raytrace`` (:func:`cityshade.trace.occluded`), the same answer."""
 
-    def __init__(self, surfaces, camera, valid):
+    def __init__(self, surfaces, camera, valid, technique="izb"):
         from cityshade.shadows import oriented_normals
         from cityshade.trace import shadow_rays_from_surface
 
         self.valid = valid
+        self.technique = technique
         normal = oriented_normals(surfaces, camera)[valid]
         # Degenerate triangles have a zero normal: they never face the sun and are not traced.
         self.usable = np.flatnonzero(np.einsum("ij,ij->i", normal, normal) > 0.25)
@@ -382,6 +385,7 @@ class _PixelRays:
 
     def lit(self, scene, sun, t_days: float) -> np.ndarray:
         """(H, W) float32: 1 lit, 0 shadow or no surface."""
+        from cityshade import lightspace
         from cityshade.trace import occluded
 
         flat = np.zeros(int(self.valid.sum()), np.float32)
@@ -389,8 +393,12 @@ class _PixelRays:
         faces = np.flatnonzero(self.normal @ direction > 0.0)
         if len(faces):
             origins = self.origins[faces]
-            directions = np.ascontiguousarray(np.broadcast_to(direction, origins.shape))
-            flat[self.usable[faces]] = ~occluded(scene, origins, directions, t_days)
+            if self.technique == "izb":
+                blocked = lightspace.occluded(scene, origins, direction, t_days)
+            else:
+                directions = np.ascontiguousarray(np.broadcast_to(direction, origins.shape))
+                blocked = occluded(scene, origins, directions, t_days)
+            flat[self.usable[faces]] = ~blocked
         lit = np.zeros(self.valid.shape, np.float32)
         lit[self.valid] = flat
         return lit
@@ -432,7 +440,7 @@ def _city_changes(scene, instants, t_days) -> str | None:
 
 
 def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
-              weights_h=None, technique: str = "raytrace", options: dict | None = None,
+              weights_h=None, technique: str = "izb", options: dict | None = None,
               ground: str | None = None, spa=None, suns: Sequence | None = None,
               samples_per_m2: float | None = None, checkpoint: Checkpoint | None = None,
               reuse_rays: bool = True, on_step: Callable[[int, int, Unit], None] | None = None,
@@ -454,8 +462,9 @@ def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
     weights_h : (N,) float, optional
         Hours each instant stands for; default: the spacing of evenly spaced instants.
     technique : str
-        Shadow technique of the registry for the pixels. Surface samples always use exact
-        shadow rays.
+        Shadow technique of the registry for the pixels (default ``izb``, exact). Surface
+        samples are always exact: through ``raytrace``'s kd-tree when that is the technique,
+        else through the light-space engine (the same answer).
     options : dict, optional
         Technique options.
     ground : str, optional
@@ -469,7 +478,7 @@ def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
     checkpoint : Checkpoint, optional
         Resume from and save to this state after every sun position.
     reuse_rays : bool
-        For ``raytrace`` without options: the oriented normals and shadow-ray origins of the
+        For ``izb`` and ``raytrace`` without options: the oriented normals and shadow-ray origins of the
         pixels do not depend on the sun, so they are computed once with the camera pass and
         each step only selects the pixels facing the sun and traces them. The result is
         identical to running the technique per step (``False``), which is tested.
@@ -550,8 +559,8 @@ def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
         valid = np.asarray(surfaces.valid, bool)
         diagnostics["gbuffer"] = gbuf.stats
         rays = None
-        if reuse_rays and technique == "raytrace" and not options:
-            rays = _PixelRays(surfaces, camera, valid)
+        if reuse_rays and technique in ("izb", "raytrace") and not options:
+            rays = _PixelRays(surfaces, camera, valid, technique)
         timings["camera_s"] = time.perf_counter() - t0
     samples = None
     if samples_per_m2 is not None:
@@ -592,8 +601,9 @@ def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
             from cityshade.surfaces import samples_lit
 
             t0 = time.perf_counter()
-            sample_sum += unit.weight_h * samples_lit(scene, samples, unit.sun,
-                                                      float(t_days)).astype(np.float64)
+            sample_sum += unit.weight_h * samples_lit(
+                scene, samples, unit.sun, float(t_days),
+                engine="raytrace" if technique == "raytrace" else "izb").astype(np.float64)
             timings["surface_rays_s"] += time.perf_counter() - t0
         if checkpoint is not None:
             t0 = time.perf_counter()

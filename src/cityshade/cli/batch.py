@@ -25,8 +25,10 @@ from cityshade.cli.options import camera_options, make_camera, parse_size, parse
 @click.option("--city-date", help="State of the city (default: --date); the city does not "
               "change during a run.")
 @camera_options("map")
-@click.option("--shadows", "technique", default="raytrace", show_default=True,
-              help="Shadow technique for the map (raytrace).")
+@click.option("--shadows", "technique", default="izb", show_default=True,
+              help="Shadow technique for the map and the surfaces: izb (exact, light-space "
+              "engine) or raytrace (exact, kd-tree rays; the same answer); or any technique of "
+              "render for the map.")
 @click.option("--ground", help="Ground plane where the model has no surface: min, auto or a "
               "height in metres.")
 @click.option("--no-refraction", is_flag=True, help="Geometric sun elevation (no refraction).")
