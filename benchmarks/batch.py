@@ -4,10 +4,13 @@ Input: the synthetic benchmark city of ``cityshade.samplegen`` (1 000 000 triang
 generated into ``--workdir`` (default ``bench_out/``) and built once, as in
 ``benchmarks/render.py``. The city as it stood on 2000-01-01.
 
-Work: ``cityshade.batch.sun_hours`` with the exact ``raytrace`` technique, a top-down map view
-of the model's extent at ``--pixel-size`` (default 1 m; ``--side 2048`` takes a 2048²
-window centred on the model instead), one summer day (2024-06-21, Europe/Berlin, 00:00–24:00)
-every ``--every`` (default 10 min): 144 steps, of which those with the sun up are computed.
+Work: ``cityshade.batch.sun_hours`` with the technique ``--shadows`` (default ``izb``, as
+``cityshade batch``; ``raytrace`` is the kd-tree), a top-down map view of the model's extent at
+``--pixel-size`` (default 1 m; ``--side 2048`` takes a 2048² window centred on the model
+instead), one day ``--date`` (default the summer solstice 2024-06-21; 2024-12-21 is the low-sun
+day with the longest shadows; Europe/Berlin, 00:00–24:00) every ``--every`` (default 10 min):
+144 steps, of which those with the sun up are computed. ``--compare raytrace`` also runs that
+technique once and reports whether the sun-hours are identical, byte for byte.
 
 Reported (median of ``--repeat`` runs after one warm-up run that compiles the kernels):
 
@@ -22,6 +25,7 @@ Peer context (different work and machine): SOLWEIG reports ~1.45 Mpx/s per time 
 full pipeline on a laptop. Goal of the issue: ≥ 20 Mpixel-steps/s with exact shadows.
 
 Usage: python benchmarks/batch.py [--repeat 3] [--pixel-size 1] [--side 0] [--every 10min]
+       [--shadows raytrace|izb|...] [--date 2024-06-21] [--compare raytrace]
        [--workdir bench_out] [--json out.json]
 """
 from __future__ import annotations
@@ -61,8 +65,12 @@ def main(argv=None) -> dict:
     ap.add_argument("--side", type=int, default=0,
                     help="square window of this many pixels centred on the model (0: extent)")
     ap.add_argument("--every", default="10min")
-    ap.add_argument("--shadows", default="raytrace",
-                    help="technique: raytrace (exact) or e.g. hybrid:shadowmap (exact to 99.99 %%)")
+    ap.add_argument("--shadows", default="izb",
+                    help="technique: izb or raytrace (exact, the same answer), or e.g. "
+                         "hybrid:shadowmap")
+    ap.add_argument("--date", default="2024-06-21", help="the day (YYYY-MM-DD)")
+    ap.add_argument("--compare", default=None,
+                    help="also run this technique once; report identical sun-hours")
     ap.add_argument("--triangles", type=int, default=1_000_000)
     ap.add_argument("--seed", type=int, default=7)
     ap.add_argument("--workdir", type=Path, default=REPO / "bench_out")
@@ -85,7 +93,7 @@ def main(argv=None) -> dict:
                                                      cy + half - 1e-6), max_px=16384)
     else:
         cam = map_view(scene, args.pixel_size, max_px=16384)
-    steps = B.plan_steps(date(2024, 6, 21), 0, 86_400, B.parse_duration_s(args.every),
+    steps = B.plan_steps(date.fromisoformat(args.date), 0, 86_400, B.parse_duration_s(args.every),
                          "Europe/Berlin")
     instants = [s.centre_utc for s in steps]
     weights = [s.weight_h for s in steps]
@@ -93,9 +101,9 @@ def main(argv=None) -> dict:
     suns_from_instants(instants, scene.crs, scene.origin_m)  # SPA alone, for the table
     spa_s = time.perf_counter() - t
 
-    def run(checkpoint=None):
+    def run(checkpoint=None, technique=args.shadows):
         return B.sun_hours(scene, cam, instants, DAY_2000, weights_h=weights,
-                           checkpoint=checkpoint, technique=args.shadows)
+                           checkpoint=checkpoint, technique=technique)
 
     # Warm-up: compile every kernel on two sun positions.
     noon = len(instants) // 2  # sun up at midday whatever --every is
@@ -112,6 +120,13 @@ def main(argv=None) -> dict:
         ck = B.Checkpoint(Path(tmp) / B.STATE_NAME, "bench")
         with_ck = run(checkpoint=ck)
     same = all(r.hours.tobytes() == r0.hours.tobytes() for r in runs + [with_ck])
+    compared = None
+    if args.compare:
+        other = run(technique=args.compare)
+        compared = {"technique": args.compare, "total_s": other.timings_s["total_s"],
+                    "mpixel_steps_per_s": mpx_steps / other.timings_s["total_s"],
+                    "identical_sun_hours": other.hours.tobytes() == r0.hours.tobytes(),
+                    "differing_px": int((other.hours != r0.hours).sum())}
     result = {
         "benchmark": "batch",
         "commit": _commit(),
@@ -121,7 +136,7 @@ def main(argv=None) -> dict:
         "technique": args.shadows,
         "map": {"width_px": cam.width_px, "height_px": cam.height_px,
                 "pixel_size_m": cam.pixel_size_m, "surface_px": valid_px},
-        "day": {"date": "2024-06-21", "tz": "Europe/Berlin", "every": args.every,
+        "day": {"date": args.date, "tz": "Europe/Berlin", "every": args.every,
                 "steps": r0.steps, "steps_below_horizon": r0.steps_below_horizon,
                 "sun_positions_computed": r0.units, "hours_sun_up": r0.hours_sun_up},
         "spa_s_all_steps": spa_s,
@@ -136,6 +151,7 @@ def main(argv=None) -> dict:
         "with_checkpoint_total_s": with_ck.timings_s["total_s"],
         "checkpoint_s": with_ck.timings_s["checkpoint_s"],
         "results_identical_across_runs": same,
+        "compared": compared,
         "goal_mpixel_steps_per_s": 20.0,
         "peer_context": "SOLWEIG ~1.45 Mpx/s per time step (laptop, full pipeline; other work)",
     }
@@ -154,6 +170,11 @@ def main(argv=None) -> dict:
                             f"(state saves {with_ck.timings_s['checkpoint_s']:.2f} s)"),
         ("identical runs", str(same)),
     ]
+    if compared:
+        rows.append((f"vs {compared['technique']}",
+                     f"{compared['mpixel_steps_per_s']:.1f} Mpixel-steps/s "
+                     f"({compared['total_s']:.2f} s); identical sun-hours: "
+                     f"{compared['identical_sun_hours']} ({compared['differing_px']} px differ)"))
     print()
     for k, v in rows:
         print(f"{k:<18} {v}")

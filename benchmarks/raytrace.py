@@ -9,7 +9,10 @@ triangles), then runs two workloads fixed by seed at the city time 2000-01-01:
 * map: a 2048x2048 top-down grid of vertical primary rays, then shadow rays to the same sun.
 
 Rays are traced in 16x16-pixel tile order (the same order for every engine). For each workload
-it reports Mrays/s of closest-hit and any-hit rays at 1 and 2 threads (median of ``--runs``).
+it reports Mrays/s of closest-hit and any-hit rays at 1 and 2 threads (median of ``--runs``),
+and the exact shadow decisions/s of the light-space engine ``izb`` (``cityshade.lightspace``)
+on the same shadow-ray origins, with the number of decisions that differ from the kd-tree's
+(must be 0), its first-call time (caster records made once per tree) and its stage profile.
 When ``embreex`` and ``mitsuba`` (``llvm_ad_rgb`` variant) are importable, the same triangles
 (those present at the city time) and the same float32-rounded rays go through Embree 4
 (``rtcOccluded1``/``rtcIntersect1`` via embreex; two threads = two Python threads on two halves,
@@ -33,6 +36,7 @@ import numba
 import numpy as np
 
 from cityshade.accel import KdTreeSettings, build_kdtree
+from cityshade import lightspace
 from cityshade.trace import intersect, occluded, shadow_rays_from_surface, tile_order
 
 DAY_2000 = 10957.0   # 2000-01-01 in days since 1970-01-01
@@ -311,6 +315,20 @@ def run(args):
             sec, occ = timed(lambda: occluded(tree, so, sd, CITY_TIME_DAYS), args.runs)
             wres[f"anyhit_mrays_s_{th}t"] = len(so) / sec / 1e6
         wres["shadowed_fraction"] = float(occ.mean())
+        # The light-space engine (izb) on the same origins and sun: every decision must be
+        # the kd-tree's. The first call per tree also makes the caster records (reported).
+        izb = None
+        for th in threads_list:
+            numba.set_num_threads(th)
+            t0 = time.perf_counter()
+            lightspace.occluded(tree, so, sun, CITY_TIME_DAYS)
+            wres[f"izb_first_call_s_{th}t"] = time.perf_counter() - t0
+            profile = {}
+            sec, izb = timed(lambda: lightspace.occluded(tree, so, sun, CITY_TIME_DAYS,
+                                                         stats=profile), args.runs)
+            wres[f"izb_mrays_s_{th}t"] = len(so) / sec / 1e6
+            wres[f"izb_profile_{th}t"] = profile
+        wres["izb_differing_from_ours"] = int((izb != occ).sum())
         # Other engines on the identical float32-rounded rays.
         po32, pd32 = po.astype(np.float32), pd.astype(np.float32)
         so32, sd32 = so.astype(np.float32), sd.astype(np.float32)
@@ -326,6 +344,10 @@ def run(args):
                                         & np.isclose(edist, dist, rtol=1e-4, atol=1e-3))
             er["closest_agreement"] = float(same_hit.mean())
             er["anyhit_agreement"] = float((eocc == occ).mean())
+            er["izb_agreement"] = float((eocc == izb).mean())
+            for th in threads_list:
+                er[f"ratio_izb_to_{e.name}_anyhit_{th}t"] = (wres[f"izb_mrays_s_{th}t"]
+                                                            / er[f"anyhit_mrays_s_{th}t"])
             for key in [k for k in er if k.endswith("t") and "mrays" in k]:
                 er[f"ratio_ours_to_{e.name}_{key}"] = wres[key] / er[key]
             wres[e.name] = er
@@ -342,11 +364,18 @@ def print_table(wname, wres, engines, threads_list):
     keys = [f"{kind}_mrays_s_{th}t" for kind in ("closest", "anyhit") for th in threads_list]
     print(f"{'Mrays/s':<12}" + "".join(f"{c:>14}" for c in cols) + f"{'agree hit/occ':>18}")
     print(f"{'cityshade':<12}" + "".join(f"{wres[k]:>14.2f}" for k in keys))
+    izb_cols = "".join(f"{wres[f'izb_mrays_s_{th}t']:>14.2f}" for th in threads_list)
+    print(f"{'izb':<12}" + " " * 14 * len(threads_list) + izb_cols
+          + f"{'differing from kd-tree: ':>26}{wres['izb_differing_from_ours']}")
     for e in engines:
         er = wres[e.name]
         print(f"{e.name:<12}" + "".join(f"{er[k]:>14.2f}" for k in keys)
               + f"{100 * er['closest_agreement']:>9.3f}/{100 * er['anyhit_agreement']:.3f}%")
         print(f"{'  ratio':<12}" + "".join(f"{wres[k] / er[k]:>13.2f}x" for k in keys))
+        print(f"{'  izb ratio':<12}" + " " * 14 * len(threads_list)
+              + "".join(f"{er[f'ratio_izb_to_{e.name}_anyhit_{th}t']:>13.2f}x"
+                        for th in threads_list)
+              + f"{'izb agreement ':>20}{100 * er['izb_agreement']:.3f}%")
     sys.stdout.flush()
 
 

@@ -39,6 +39,7 @@ import platform
 import statistics
 import subprocess
 import sys
+import tempfile
 import time
 from pathlib import Path
 
@@ -398,14 +399,15 @@ def shadow_map_main(argv=None) -> dict:
 
 # --- every technique: full frame, shadow stage and error against raytrace ---------------------
 
-TECHNIQUES = ["raytrace", "shadowmap", "pcf", "vsm", "psm", "lispsm", "xpsm", "csm",
+TECHNIQUES = ["raytrace", "izb", "shadowmap", "pcf", "vsm", "psm", "lispsm", "xpsm", "csm",
               "csm:lispsm", "vsm+smooth", "hybrid:shadowmap", "hybrid:vsm", "hybrid:lispsm",
               "hybrid:csm"]
 
 
 def techniques_main(argv=None) -> dict:
     """The overview at --size and the top-down map at --map-side² of the 1M-triangle city:
-    the full exact ``raytrace`` frame (G-buffer + resolve + shadow rays + shading, ms), and for
+    the full exact frames of ``raytrace`` and ``izb`` (G-buffer + resolve + shadows + shading,
+    ms; for izb also with the EXR written, as ``cityshade render -o`` does), and for
     every technique its shadow-stage time (median of --repeat runs after a warm-up) and its
     misclassified pixels against ``raytrace`` on the same pixels (false-lit, false-shadow)."""
     ap = argparse.ArgumentParser(description=techniques_main.__doc__.split("\n")[0])
@@ -423,7 +425,7 @@ def techniques_main(argv=None) -> dict:
     import numpy as np
 
     from cityshade.raster.camera import map_view, overview
-    from cityshade.render import render_frame
+    from cityshade.render import render_frame, write_frame
     from cityshade.scenefile import load_scene
     from cityshade.sun import sun_from_angles
 
@@ -449,6 +451,17 @@ def techniques_main(argv=None) -> dict:
             t0 = time.perf_counter()
             ref = render_frame(scene, cam, args.date_days, sun, "raytrace")
             t_frame.append(time.perf_counter() - t0)
+        # The full exact frame through the light-space engine, with and without the EXR.
+        t_izb, t_izb_exr = [], []
+        with tempfile.TemporaryDirectory() as tmp:
+            for _ in range(args.repeat + 1):
+                t0 = time.perf_counter()
+                fr = render_frame(scene, cam, args.date_days, sun, "izb")
+                t1 = time.perf_counter()
+                write_frame(fr, scene, "2000-01-01", exr=Path(tmp) / "frame.exr")
+                t_izb.append(t1 - t0)
+                t_izb_exr.append(time.perf_counter() - t0)
+        izb_same = bool((fr.lit == ref.lit).all())
         valid = ref.surfaces.valid
         truth = ref.lit >= 0.5
         rows = {}
@@ -472,11 +485,17 @@ def techniques_main(argv=None) -> dict:
             "pixels": [cam.width_px, cam.height_px], "surface_px": int(valid.sum()),
             "raytrace_frame_ms_median": 1000 * statistics.median(t_frame[1:]),
             "raytrace_frame_stages_ms": {k: 1000 * v for k, v in ref.timings_s.items()},
+            "izb_frame_ms_median": 1000 * statistics.median(t_izb[1:]),
+            "izb_frame_with_exr_ms_median": 1000 * statistics.median(t_izb_exr[1:]),
+            "izb_frame_stages_ms": {k: 1000 * v for k, v in fr.timings_s.items()},
+            "izb_lit_identical_to_raytrace": izb_same,
             "techniques": rows}
     print(json.dumps(report, indent=2, default=float))
     for view_name, v in report["views"].items():
         print(f"\n{view_name} {v['pixels'][0]}x{v['pixels'][1]}, {v['surface_px']:,} surface px; "
-              f"full raytrace frame {v['raytrace_frame_ms_median']:.0f} ms")
+              f"full raytrace frame {v['raytrace_frame_ms_median']:.0f} ms; full izb frame "
+              f"{v['izb_frame_ms_median']:.0f} ms, with EXR {v['izb_frame_with_exr_ms_median']:.0f}"
+              f" ms (lit identical to raytrace: {v['izb_lit_identical_to_raytrace']})")
         print(f"{'technique':<18} {'shadow ms':>10} {'wrong %':>9} {'false-lit %':>12} "
               f"{'false-shadow %':>15} {'traced %':>9}")
         for name, r in v["techniques"].items():

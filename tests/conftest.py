@@ -31,3 +31,21 @@ def sample_city_scene(tmp_path_factory):
     from golden_cases import sample_scene
 
     return sample_scene(tmp_path_factory.mktemp("sample_city"))
+
+
+def run_with_and_without_jit(script: str) -> list:
+    """Run ``script`` (``python -c``, the tests folder as ``sys.argv[1]``) with
+    ``NUMBA_DISABLE_JIT=1`` and ``=0``; returns the JSON of each run's last output line."""
+    import json
+    import os
+    import subprocess
+    import sys
+
+    results = []
+    for disable in ("1", "0"):
+        env = dict(os.environ, NUMBA_DISABLE_JIT=disable)
+        out = subprocess.run([sys.executable, "-c", script, str(Path(__file__).parent)],
+                             env=env, capture_output=True, text=True, timeout=300)
+        assert out.returncode == 0, out.stderr[-2000:]
+        results.append(json.loads(out.stdout.strip().splitlines()[-1]))
+    return results

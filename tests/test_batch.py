@@ -461,4 +461,15 @@ def test_run_batch_from_python_resumes_and_refuses_other_parameters(files, tmp_p
     redone = B.run_batch(out, scene, cam, steps, 0.0, request={"what": "test"}, settings=other,
                          overwrite=True)
     assert redone.result.units_resumed == 0
-    assert redone.result.hours.tobytes() == first.result.hours.tobytes()  # raytrace: no map
+    assert redone.result.hours.tobytes() == first.result.hours.tobytes()  # exact (izb): no map
+
+
+def test_izb_default_equals_raytrace_for_pixels_and_surfaces(scene):
+    """The default exact engine of a batch (izb) gives raytrace's sun-hours, bit for bit."""
+    cam = __import__("cityshade.raster.camera", fromlist=["map_view"]).map_view(scene, PX)
+    runs = [B.sun_hours(scene, cam, _instants(len(SUNS)), 0.0, weights_h=WEIGHTS,
+                        suns=_explicit_suns(), samples_per_m2=0.05, technique=name)
+            for name in ("izb", "raytrace")]
+    assert runs[0].hours.tobytes() == runs[1].hours.tobytes()
+    assert runs[0].sample_hours.tobytes() == runs[1].sample_hours.tobytes()
+    assert (runs[0].hours[runs[0].valid] > 0).any() and (runs[0].sample_hours == 0).any()

@@ -95,7 +95,7 @@ def test_pareto_front():
 
 def test_expand_techniques():
     names = expand_techniques("all")
-    assert len(names) == 21 and "raytrace" not in names
+    assert len(names) == 22 and "raytrace" not in names and names[0] == "izb"
     assert {"csm+smooth", "hybrid:xpsm", "lispsm"} <= set(names)
     assert expand_techniques("pcf, raytrace,pcf") == ["pcf"]
     with pytest.raises(UsageError, match="unknown shadow technique"):

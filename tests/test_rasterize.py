@@ -3,11 +3,6 @@ analytic scenes: fill rule, perspective-correct barycentrics, near clipping, tim
 culling invariance, thread invariance, map georeference."""
 from __future__ import annotations
 
-import json
-import os
-import subprocess
-import sys
-from pathlib import Path
 from types import SimpleNamespace
 
 import numba
@@ -18,7 +13,7 @@ from cityshade.accel import build_kdtree
 from cityshade.raster import camera as cams
 from cityshade.raster.gbuffer import gbuffer_by_raycasting, resolve
 from cityshade.raster.rasterize import rasterize
-from conftest import shared_file
+from conftest import REPO, run_with_and_without_jit, shared_file
 from reference import reference_rasterize, reference_ray_hits
 from test_kdtree import box_city
 
@@ -366,14 +361,7 @@ cam = cams.overview(scene, 24, 16)
 g = rasterize(scene, cam, 0.0, occlusion_culling=True)
 print(json.dumps({"prim": g.prim_id.tolist(), "depth": g.depth.astype(float).tolist()}))
 """
-    tests_dir = str(Path(__file__).parent)
-    results = []
-    for disable in ("1", "0"):
-        env = dict(os.environ, NUMBA_DISABLE_JIT=disable)
-        out = subprocess.run([sys.executable, "-c", script, tests_dir], env=env,
-                             capture_output=True, text=True, timeout=300)
-        assert out.returncode == 0, out.stderr[-2000:]
-        results.append(json.loads(out.stdout.strip().splitlines()[-1]))
+    results = run_with_and_without_jit(script)
     assert results[0] == results[1]
     assert any(p >= 0 for row in results[0]["prim"] for p in row)
 

@@ -1,11 +1,6 @@
 """Tests of the ray-tracing core (cityshade.trace) against brute force and analytic scenes."""
 from __future__ import annotations
 
-import json
-import os
-import subprocess
-import sys
-from pathlib import Path
 
 import numba
 import numpy as np
@@ -14,7 +9,7 @@ import pytest
 from cityshade.accel import build_kdtree
 from cityshade.trace import (TraceInputError, intersect, occluded, shadow_rays_from_surface,
                              tile_order)
-from conftest import shared_file
+from conftest import run_with_and_without_jit, shared_file
 from reference import reference_closest_hit, reference_ray_hits
 from test_kdtree import BOX_FACES, box_city
 
@@ -336,14 +331,7 @@ dist, tri, u, v = intersect(tree, o, d, 0.0)
 print(json.dumps({"nodes": tree.nodes.tolist(), "tri": tri.tolist(),
                   "dist": [float(x) for x in dist], "occ": occluded(tree, o, d, 0.0).tolist()}))
 """
-    tests_dir = str(Path(__file__).parent)
-    results = []
-    for disable in ("1", "0"):
-        env = dict(os.environ, NUMBA_DISABLE_JIT=disable)
-        out = subprocess.run([sys.executable, "-c", script, tests_dir], env=env,
-                             capture_output=True, text=True, timeout=300)
-        assert out.returncode == 0, out.stderr[-2000:]
-        results.append(json.loads(out.stdout.strip().splitlines()[-1]))
+    results = run_with_and_without_jit(script)
     assert results[0] == results[1]
     assert any(x >= 0 for x in results[0]["tri"])
 

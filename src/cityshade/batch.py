@@ -362,16 +362,20 @@ class SunHours:
 class _PixelRays:
     """The camera pass of a batch, kept for every step: per step the shared rule decides which
     pixels face the sun (:attr:`cityshade.shadows.ShadowContext.faces`, as for the
-    ``raytrace`` technique) and only those are traced, from
+    ``raytrace`` technique) and only those are decided, from
     :func:`cityshade.trace.shadow_rays_from_surface` (whose origin steps along the normal and
-    toward the sun, so it is made per step)."""
+    toward the sun, so it is made per step), by the exact engine of ``technique``: ``izb``
+    (:func:`cityshade.lightspace.occluded`, rebinned per step) or ``raytrace``
+    (:func:`cityshade.trace.occluded`), the same answer."""
 
-    def __init__(self, cp):
+    def __init__(self, cp, technique: str = "izb"):
         self.cp = cp
         self.valid = cp.valid
+        self.technique = technique
 
     def lit(self, scene, sun, t_days: float) -> np.ndarray:
         """(H, W) float32: 1 lit, 0 shadow or no surface."""
+        from cityshade import lightspace
         from cityshade.trace import occluded, shadow_rays_from_surface
 
         faces = self.cp.context(sun).faces
@@ -380,8 +384,12 @@ class _PixelRays:
             direction = np.asarray(sun.direction, dtype=np.float64)
             origins = shadow_rays_from_surface(self.cp.surfaces.position_m[faces],
                                                self.cp.normal[faces], direction)
-            directions = np.ascontiguousarray(np.broadcast_to(direction, origins.shape))
-            lit[faces] = ~occluded(scene, origins, directions, t_days)
+            if self.technique == "izb":
+                blocked = lightspace.occluded(scene, origins, direction, t_days)
+            else:
+                directions = np.ascontiguousarray(np.broadcast_to(direction, origins.shape))
+                blocked = occluded(scene, origins, directions, t_days)
+            lit[faces] = ~blocked
         return lit
 
 
@@ -421,7 +429,7 @@ def _city_changes(scene, instants, t_days) -> str | None:
 
 
 def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[datetime], t_days: float, *,
-              weights_h=None, technique: str = "raytrace",
+              weights_h=None, technique: str = "izb",
               settings: ShadowSettings | None = None,
               ground: str | None = None, spa=None, suns: Sequence | None = None,
               samples_per_m2: float | None = None, checkpoint: Checkpoint | None = None,
@@ -444,8 +452,9 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
     weights_h : (N,) float, optional
         Hours each instant stands for; default: the spacing of evenly spaced instants.
     technique : str
-        Shadow technique of the registry for the pixels. Surface samples always use exact
-        shadow rays.
+        Shadow technique of the registry for the pixels (default ``izb``, exact). Surface
+        samples are always exact: through ``raytrace``'s kd-tree when that is the technique,
+        else through the light-space engine (the same answer).
     settings : ShadowSettings, optional
         The technique's tunables (``[shadows]``).
     ground : str, optional
@@ -459,7 +468,7 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
     checkpoint : Checkpoint, optional
         Resume from and save to this state after every sun position.
     reuse_rays : bool
-        For ``raytrace``: the oriented normals and shadow-ray origins of the
+        For ``izb`` and ``raytrace``: the oriented normals and shadow-ray origins of the
         pixels do not depend on the sun, so they are computed once with the camera pass and
         each step only selects the pixels facing the sun and traces them. The result is
         identical to running the technique per step (``False``), which is tested.
@@ -533,8 +542,8 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
         diagnostics["gbuffer"] = cp.gbuffer.stats
         if cp.ground is not None:
             diagnostics["ground"] = cp.ground
-        if reuse_rays and technique == "raytrace":
-            rays = _PixelRays(cp)
+        if reuse_rays and technique in ("izb", "raytrace"):
+            rays = _PixelRays(cp, technique)
         timings["camera_s"] = time.perf_counter() - t0
     samples = None
     if samples_per_m2 is not None:
@@ -571,8 +580,9 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
             from cityshade.surfaces import samples_lit
 
             t0 = time.perf_counter()
-            sample_sum += unit.weight_h * samples_lit(scene, samples, unit.sun,
-                                                      float(t_days)).astype(np.float64)
+            sample_sum += unit.weight_h * samples_lit(
+                scene, samples, unit.sun, float(t_days),
+                engine="raytrace" if technique == "raytrace" else "izb").astype(np.float64)
             timings["surface_rays_s"] += time.perf_counter() - t0
         if checkpoint is not None:
             t0 = time.perf_counter()
@@ -824,7 +834,7 @@ def camera_params(camera: "Camera") -> dict[str, Any]:
 
 
 def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t_days: float, *,
-              request: dict[str, Any] | None = None, technique: str = "raytrace",
+              request: dict[str, Any] | None = None, technique: str = "izb",
               settings=None, ground: str | None = None, frames: bool = False,
               surfaces_csv: bool = False, overwrite: bool = False,
               on_plan: Callable[[int], None] | None = None,

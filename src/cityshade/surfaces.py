@@ -173,12 +173,18 @@ def sample_surfaces(scene, samples_per_m2: float = 1.0, t_days: float = 0.0,
                           samples_per_m2=settings.samples_per_m2)
 
 
-def samples_lit(scene, samples: SurfaceSamples, sun, t_days: float) -> np.ndarray:
+def samples_lit(scene, samples: SurfaceSamples, sun, t_days: float,
+                engine: str = "izb") -> np.ndarray:
     """(N,) bool: sample faces the sun (N·L > 0) and its shadow ray is not blocked.
 
-    A sun at or below the horizon lights nothing.
+    A sun at or below the horizon lights nothing. ``engine`` decides the shadow rays:
+    ``izb`` (:func:`cityshade.lightspace.sunlit`) or ``raytrace``
+    (:func:`cityshade.trace.sunlit`), the same answer.
     """
-    from cityshade.trace import sunlit
+    if engine == "raytrace":
+        from cityshade.trace import sunlit
+    else:
+        from cityshade.lightspace import sunlit
 
     lit = np.zeros(samples.n, bool)
     if not sun.above_horizon or samples.n == 0:

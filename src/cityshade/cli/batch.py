@@ -27,7 +27,7 @@ from cityshade.cli.options import (camera_options, make_camera, parse_size, pars
 @click.option("--city-date", help="State of the city (default: --date); the city does not "
               "change during a run.")
 @camera_options("map")
-@shadow_options("raytrace")
+@shadow_options("izb")
 @click.option("--ground", help="Ground plane where the model has no surface: min, auto or a "
               "height in metres.")
 @click.option("--no-refraction", is_flag=True, help="Geometric sun elevation (no refraction).")

@@ -16,9 +16,9 @@ from cityshade.util import NO_MATPLOTLIB, agg_canvas, canvas_pixels, have_matplo
 __all__ = ["OKABE_ITO", "NO_MATPLOTLIB", "base_technique", "technique_colour",
            "error_time_plot"]
 
-#: Okabe–Ito palette (distinguishable with colour blindness), in the registry's order of base
-#: techniques: raytrace black, shadowmap orange, pcf sky blue, vsm green, psm purple, lispsm
-#: vermillion, xpsm blue, csm grey; later names take yellow and then repeat.
+#: Okabe–Ito palette (distinguishable with colour blindness), in the order of base techniques:
+#: raytrace black, shadowmap orange, pcf sky blue, vsm green, psm purple, lispsm vermillion,
+#: xpsm blue, csm grey, izb yellow; later names repeat the palette.
 OKABE_ITO = ((0, 0, 0), (230, 159, 0), (86, 180, 233), (0, 158, 115), (204, 121, 167),
              (213, 94, 0), (0, 114, 178), (120, 120, 120), (240, 228, 66))
 
@@ -32,17 +32,22 @@ def base_technique(technique: str) -> str:
 
 def technique_colour(technique: str) -> tuple[int, int, int]:
     """Colour of a technique's base in the registry's order (:data:`OKABE_ITO`)."""
-    from cityshade.shadows import technique_names
+    from cityshade.shadows import exact_technique_names, map_technique_names
 
-    bases = list(dict.fromkeys(base_technique(n) for n in technique_names()))
+    # The reference first, then the map techniques, then the other exact ones (later
+    # additions never shift the colours of the existing names).
+    names = ["raytrace", *map_technique_names(), *exact_technique_names()]
+    bases = list(dict.fromkeys(base_technique(n) for n in names))
     base = base_technique(technique)
     index = bases.index(base) if base in bases else len(bases)
     return OKABE_ITO[index % len(OKABE_ITO)]
 
 
 def _marker(technique: str) -> str:
-    """Shape: plain o, +smooth square, hybrid triangle, raytrace diamond."""
-    if technique.partition("+")[0] == "raytrace":
+    """Shape: plain o, +smooth square, hybrid triangle, exact techniques a diamond."""
+    from cityshade.shadows import exact_technique_names
+
+    if technique.partition("+")[0] in exact_technique_names():
         return "D"
     if technique.startswith("hybrid"):
         return "^"

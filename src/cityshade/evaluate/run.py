@@ -34,12 +34,14 @@ __all__ = ["EvaluateSettings", "Case", "Evaluation", "expand_techniques", "uses_
 def expand_techniques(spec: str | Sequence[str]) -> list[str]:
     """Technique names of ``--shadows``: ``all``, or a comma list of registry names.
 
-    ``all`` is every map technique of the registry
-    (:func:`cityshade.shadows.map_technique_names`), each ``+smooth``, and ``hybrid:NAME``
-    for each of them. ``raytrace`` is always the reference and is not listed.
+    ``all`` is every exact technique but the reference
+    (:func:`cityshade.shadows.exact_technique_names`: ``izb``), every map technique of the
+    registry (:func:`cityshade.shadows.map_technique_names`), each ``+smooth``, and
+    ``hybrid:NAME`` for each map technique. ``raytrace`` is always the reference and is not
+    listed.
     Unknown names raise the registry's :class:`~cityshade.errors.UsageError`.
     """
-    from cityshade.shadows import get_technique, map_technique_names
+    from cityshade.shadows import exact_technique_names, get_technique, map_technique_names
 
     names = [s.strip() for s in (spec.split(",") if isinstance(spec, str) else spec)]
     names = [n for n in names if n]
@@ -48,8 +50,8 @@ def expand_techniques(spec: str | Sequence[str]) -> list[str]:
     out: list[str] = []
     for name in names:
         maps = [n for n in map_technique_names() if not n.startswith("csm:")]
-        group = ([*maps, *(f"{n}+smooth" for n in maps), *(f"hybrid:{n}" for n in maps)]
-                 if name == "all" else [name])
+        group = ([*exact_technique_names(), *maps, *(f"{n}+smooth" for n in maps),
+                  *(f"hybrid:{n}" for n in maps)] if name == "all" else [name])
         for n in group:
             if n == "raytrace":
                 continue
@@ -61,7 +63,9 @@ def expand_techniques(spec: str | Sequence[str]) -> list[str]:
 
 def uses_map(technique: str) -> bool:
     """Whether the technique draws shadow maps (so its ``map_px`` matters)."""
-    return technique.partition("+")[0] != "raytrace"
+    from cityshade.shadows import exact_technique_names
+
+    return technique.partition("+")[0] not in exact_technique_names()
 
 
 @dataclass

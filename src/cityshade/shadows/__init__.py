@@ -44,6 +44,7 @@ if TYPE_CHECKING:
 #: Techniques that are not map techniques: name → "module:Class" (registering one is one line).
 TECHNIQUES: dict[str, str] = {
     "raytrace": "cityshade.shadows.raytraced:RayTraced",
+    "izb": "cityshade.shadows.izb:LightSpace",
 }
 #: Light-view planners of the map techniques (:mod:`cityshade.shadows.planners`); ``csm`` takes
 #: an optional ``:WARP`` (one of the other planners but ``shadowmap``).
@@ -116,6 +117,11 @@ def technique_names() -> list[str]:
     """The names of the product (DESIGN §8), each usable with ``hybrid:`` and ``+smooth``;
     any planner also takes ``/pcf`` or ``/vsm`` (the module docstring's grammar)."""
     return [*TECHNIQUES, *map_technique_names()]
+
+
+def exact_technique_names() -> list[str]:
+    """The exact techniques (:data:`TECHNIQUES`): no map, the same answer as ``raytrace``."""
+    return list(TECHNIQUES)
 
 
 def map_technique_names() -> list[str]:

@@ -14,8 +14,6 @@ class RayTraced:
     name = "raytrace"
 
     def run(self, ctx: ShadowContext) -> ShadowResult:
-        from cityshade.trace import sunlit
-
         surfaces = ctx.surfaces
         shape = surfaces.valid.shape
         lit = np.zeros(shape, np.float32)
@@ -28,8 +26,14 @@ class RayTraced:
         diagnostics["self_shadowed_px"] = int((surfaces.valid & ~faces).sum())
         points = surfaces.position_m[faces]
         if len(points):
-            lit[faces] = sunlit(ctx.scene, points, normal[faces], ctx.sun.direction,
-                                ctx.t_days).astype(np.float32)
+            lit[faces] = self.sunlit(ctx.scene, points, normal[faces], ctx.sun.direction,
+                                     ctx.t_days, diagnostics).astype(np.float32)
         diagnostics["rays"] = int(len(points))
         diagnostics["shadow_s"] = time.perf_counter() - t0
         return ShadowResult(lit=lit, diagnostics=diagnostics)
+
+    def sunlit(self, scene, points, normals, sun_direction, t_days, diagnostics) -> np.ndarray:
+        """(N,) bool: the exact per-point decision (here one kd-tree shadow ray per point)."""
+        from cityshade.trace import sunlit
+
+        return sunlit(scene, points, normals, sun_direction, t_days)

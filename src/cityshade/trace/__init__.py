@@ -14,7 +14,7 @@ from cityshade.errors import UsageError
 from cityshade.trace.bricks import (DEFAULT_BRICK_SIZE, intersect_bricks, occluded_bricks,
                                     tile_order)
 
-__all__ = ["TraceInputError", "intersect", "occluded", "shadow_rays_from_surface", "sunlit",
+__all__ = ["TraceInputError", "intersect", "occluded", "shadow_rays_from_surface", "sunlit", "tree_of",
            "tile_order", "SHADOW_OFFSET_REL", "SHADOW_OFFSET_MIN_SCALE_M"]
 
 #: Shadow-ray origin offset per metre of coordinate magnitude. Surface points and vertices are
@@ -35,7 +35,7 @@ class TraceInputError(UsageError):
     """Rays handed to the tracing API of the wrong shape or with non-finite values."""
 
 
-def _tree_of(tree) -> KdTree:
+def tree_of(tree) -> KdTree:
     """Accept a KdTree or anything holding one as ``.kdtree`` (the Scene)."""
     if isinstance(tree, KdTree):
         return tree
@@ -130,7 +130,7 @@ def occluded(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     TraceInputError
         Wrong shapes, non-finite values, non-unit directions, negative or NaN ``tmax``.
     """
-    kd = _tree_of(tree)
+    kd = tree_of(tree)
     origins, directions, tmax_arr = _rays(origins, directions, tmax)
     t = _time(t_days)
     brick = _brick(brick_size)
@@ -161,7 +161,7 @@ def intersect(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     u, v : (N,) float32
         Barycentrics of the hit: point = (1 - u - v) v0 + u v1 + v v2 (0 on a miss).
     """
-    kd = _tree_of(tree)
+    kd = tree_of(tree)
     origins, directions, tmax_arr = _rays(origins, directions, tmax)
     t = _time(t_days)
     brick = _brick(brick_size)

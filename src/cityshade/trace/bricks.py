@@ -28,11 +28,18 @@ STRIPES = 64
 
 
 @njit(cache=True, inline="always")
+def stripe_interleave(j, n_items, stripes):
+    """Item handled at prange iteration j when iterations deal ``stripes`` contiguous stripes
+    of the items out in turn (a permutation of 0..n_items-1; -1 = padding)."""
+    per_stripe = (n_items + stripes - 1) // stripes
+    b = (j % stripes) * per_stripe + j // stripes
+    return b if b < n_items else -1
+
+
+@njit(cache=True, inline="always")
 def _brick_of(j, n_bricks):
     """Brick traced at prange iteration j (a permutation of 0..n_bricks-1; -1 = padding)."""
-    per_stripe = (n_bricks + STRIPES - 1) // STRIPES
-    b = (j % STRIPES) * per_stripe + j // STRIPES
-    return b if b < n_bricks else -1
+    return stripe_interleave(j, n_bricks, STRIPES)
 
 
 @njit(cache=True, inline="always")

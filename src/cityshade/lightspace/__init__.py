@@ -1,0 +1,282 @@
+"""lightspace stage of cityshade: exact sun shadows by binning casters in the sun's light plane.
+
+The ``izb`` engine (irregular z-buffer / light buffer; Haines & Greenberg 1986, Aila & Laine
+2004, Johnson et al. 2005): for one sun direction and a set of shadow-ray origins, every ray has
+the same direction, so the watertight test's shear is shared and "is o in shadow" becomes a
+point-in-triangle question in the light plane plus a depth test. The casters standing at the
+city time that can reach the receivers are binned into a grid over the receivers' light-plane
+box and each receiver tests its cell's list with the same predicate and segment limits as
+:func:`cityshade.trace.occluded` (kernels and the proof sketch in
+:mod:`cityshade.lightspace.kernels`). The answer is the one of ``raytrace``, bit for bit; the
+tests compare them on every pixel.
+
+Conventions as in :mod:`cityshade.trace`: render-space metres, unit sun direction, city time in
+days since 1970-01-01 UTC, a triangle present when ``begin <= t_days < end``, shadow rays from
+:func:`cityshade.trace.shadow_rays_from_surface` to the scene bounds.
+"""
+from __future__ import annotations
+
+import math
+import time
+import weakref
+
+import numba
+import numpy as np
+
+from cityshade.accel.kdtree_layout import REC_ID, KdTree
+from cityshade.lightspace import kernels as K
+from cityshade.trace import (UNIT_LENGTH_TOL, TraceInputError, tree_of,
+                             shadow_rays_from_surface)
+
+__all__ = ["occluded", "sunlit", "Casters", "casters_of", "MARGIN_REL"]
+
+#: Widening of every caster's light-plane box per metre of coordinate magnitude. The binning
+#: projection and the kernel's per-ray differences round differently by a few float64 ulps
+#: (~1e-15 relative); 2^-30 ≈ 9e-10 (4 µm at 4 km) is a millionfold margin and costs nothing
+#: (cells are metres wide).
+MARGIN_REL = 2.0 ** -30
+#: A caster's depth plane (moved sunward by its own float32 rounding bound) must lie this far
+#: behind a receiver along the shear axis before the receiver skips it: 15 µm + 2^-22 of the
+#: coordinate magnitude (1 mm at 4 km), far above hit_record's rounding of t (~4e-9 of the
+#: scene size for the planes used) and below the shadow-ray offset (2^-18 of the magnitude),
+#: so a receiver skips its own surface but never a caster its test would hit at t >= 0.
+DEPTH_MARGIN_M = 2.0 ** -16
+DEPTH_MARGIN_REL = 2.0 ** -22
+#: Candidate cell sizes, as multiples of the size that holds one receiver per cell on average;
+#: the one with the lowest estimated cost is used (:func:`_choose_cell_m`).
+CELL_FACTORS = (0.35, 0.5, 0.7, 1.0, 1.4, 2.0, 2.8, 4.0, 5.6, 8.0, 11.0, 16.0)
+#: Cost model of one sun, nanoseconds per unit, fitted to CPU times of the 1M-triangle city on
+#: one thread (map 2048² at sun 30° and 3°, cells 1.4-12 m): a cell reference costs ~10 ns to
+#: count and fill; a receiver scans its cell's list at ~0.5 ns per entry (the depth order stops
+#: most scans early, the box check rejects most entries); a cell ~1.5 ns to clear and sum.
+COST_REF_NS = 10.0
+COST_SCAN_NS = 0.5
+COST_CELL_NS = 1.5
+#: Receivers + casters below which a call runs on one thread: a call is a dozen short parallel
+#: passes, and each waits for every worker thread; on a busy machine a descheduled worker costs
+#: a scheduler time slice (milliseconds) per pass, more than the whole small call. The answer
+#: does not depend on the thread count.
+SINGLE_THREAD_WORK = 300_000
+#: Upper bound on grid cells per receiver (memory: two int32 counts per cell and thread).
+MAX_CELLS_PER_RECEIVER = 8
+
+
+class Casters:
+    """The triangles of a kd-tree as one record each (the tree repeats a triangle in every leaf
+    it straddles), with the key order of the last sun used, so a batch sorts once per change
+    of the shear axis instead of once per step."""
+
+    def __init__(self, tree: KdTree):
+        recs = tree.tri_records
+        ids = np.asarray(recs.view(np.int32)[:, REC_ID])
+        _, first = np.unique(ids, return_index=True)
+        self.records = np.ascontiguousarray(recs[np.sort(first)])
+        self._axis = None
+        self._sorted = None
+
+    def sorted_for(self, kz: int, sgn: float):
+        """(records, keys) sorted by depth key descending for shear axis ``kz`` and sign."""
+        if self._axis != (kz, sgn):
+            keys = np.empty(self.records.shape[0])
+            K.caster_keys(self.records, kz, sgn, keys)
+            order = np.argsort(-keys, kind="stable")
+            self._sorted = (np.ascontiguousarray(self.records[order]),
+                            np.ascontiguousarray(keys[order]))
+            self._axis = (kz, sgn)
+        return self._sorted
+
+
+_CASTERS: "weakref.WeakKeyDictionary[KdTree, Casters]" = weakref.WeakKeyDictionary()
+
+
+def casters_of(tree) -> Casters:
+    """The :class:`Casters` of a tree (or scene), made once per tree and kept with it."""
+    kd = tree_of(tree)
+    c = _CASTERS.get(kd)
+    if c is None:
+        c = _CASTERS[kd] = Casters(kd)
+    return c
+
+
+def _choose_cell_m(boxes, n_receivers, ext_x, ext_y, n_max_cells):
+    """Cell size (light-plane metres) of lowest estimated cost among :data:`CELL_FACTORS`."""
+    base = math.sqrt(ext_x * ext_y / max(n_receivers, 1))
+    if base <= 0.0:
+        base = max(ext_x, ext_y) / max(n_receivers, 1)
+    sizes = np.array([base * f for f in CELL_FACTORS])
+    refs = K.estimate_refs(boxes, sizes)
+    best = None
+    for size, r in zip(sizes, refs):
+        cells = math.ceil(ext_x / size) * math.ceil(ext_y / size)
+        if cells > n_max_cells:
+            continue
+        cost = COST_REF_NS * r + COST_SCAN_NS * n_receivers * r / cells + COST_CELL_NS * cells
+        if best is None or cost < best[0]:
+            best = (cost, float(size))
+    if best is None:
+        return float(max(ext_x, ext_y) / math.sqrt(n_max_cells)) * 1.01
+    return best[1]
+
+
+def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict | None = None,
+             cell_m: float | None = None) -> np.ndarray:
+    """Whether each shadow ray toward the sun hits a triangle present at ``t_days``.
+
+    The same answer as ``cityshade.trace.occluded(tree, origins, broadcast(sun_direction),
+    t_days)`` on every ray.
+
+    Parameters
+    ----------
+    tree : KdTree or scene with ``.kdtree``
+    origins : (N, 3) float array
+        Shadow-ray origins, render-space metres (from
+        :func:`cityshade.trace.shadow_rays_from_surface`).
+    sun_direction : (3,) float array
+        Unit direction toward the sun, shared by all rays.
+    t_days : float
+        City time, days since 1970-01-01 UTC.
+    stats : dict, optional
+        Filled with the grid, counts and per-stage seconds (a profile).
+    cell_m : float, optional
+        Force the grid's cell size (light-plane metres) instead of the cost model (benchmarks).
+
+    Returns
+    -------
+    (N,) bool array, True where the ray ``[0, inf)`` is blocked.
+
+    Raises
+    ------
+    TraceInputError
+        Wrong shapes, non-finite values, a non-unit sun direction, a NaN time.
+    """
+    kd = tree_of(tree)
+    origins = np.ascontiguousarray(origins, dtype=np.float64)
+    if origins.ndim != 2 or origins.shape[1] != 3:
+        raise TraceInputError(f"origins must have shape (N, 3), not {origins.shape}")
+    sun = np.ascontiguousarray(sun_direction, dtype=np.float64)
+    if sun.shape != (3,) or not np.isfinite(sun).all():
+        raise TraceInputError(f"sun_direction must be a finite (3,) vector, not {sun!r}")
+    if abs(float(np.sqrt(sun @ sun)) - 1.0) > UNIT_LENGTH_TOL:
+        raise TraceInputError("sun_direction must be unit length")
+    t = float(t_days)
+    if math.isnan(t):
+        raise TraceInputError("t_days must be a number of days since 1970-01-01, not NaN")
+    n = origins.shape[0]
+    out = np.zeros(n, np.bool_)
+    if n == 0 or kd.tri_records.shape[0] == 0:
+        return out
+    threads = numba.get_num_threads()
+    if threads > 1 and n + kd.tri_records.shape[0] < SINGLE_THREAD_WORK:
+        numba.set_num_threads(1)
+        try:
+            return _occluded(kd, origins, sun, t, out, stats, cell_m)
+        finally:
+            numba.set_num_threads(threads)
+    return _occluded(kd, origins, sun, t, out, stats, cell_m)
+
+
+def _occluded(kd, origins, sun, t, out, stats, cell_m):
+    """The engine behind :func:`occluded` on validated inputs; fills and returns ``out``."""
+    n = origins.shape[0]
+    timing = {}
+    t0 = time.perf_counter()
+    casters = casters_of(kd)
+    kx, ky, kz, sx, sy, sz = K.shear_of(sun)
+    sgn = 1.0 if sz > 0.0 else -1.0
+    recs, keys = casters.sorted_for(kz, sgn)
+    timing["sort_s"] = time.perf_counter() - t0
+
+    # Project the receivers; their light-plane box and lowest key bound the casters.
+    t0 = time.perf_counter()
+    n_chunks = max(1, numba.get_num_threads())
+    xs = np.empty(n)
+    ys = np.empty(n)
+    rkeys = np.empty(n)
+    part = np.empty((n_chunks, K._NSTAT))
+    K.project_receivers(origins, kx, ky, kz, sx, sy, sgn, n_chunks, xs, ys, rkeys, part)
+    if part[:, 5].sum() > 0:
+        raise TraceInputError("ray origins contain NaN or infinite values")
+    box = np.array([part[:, 0].min(), part[:, 1].max(), part[:, 2].min(), part[:, 3].max()])
+    min_key = float(part[:, 4].min())
+    scale = max(float(np.abs(kd.bounds[:, :3]).max()), float(np.abs(box).max()), 1.0)
+    margin_m = MARGIN_REL * scale
+    boxes = np.empty((recs.shape[0], 4))
+    K.cull_casters(recs, recs.view(np.float64), keys, t, kx, ky, kz, sx, sy, margin_m, box,
+                   min_key, boxes)
+    kept = np.flatnonzero(~np.isnan(boxes[:, 0]))
+    packed = np.empty((kept.size, K.PACK_WORDS), np.float32)
+    kept_boxes = np.empty((kept.size, 4))
+    K.pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, packed, kept_boxes)
+    boxes = kept_boxes
+    timing["project_s"] = time.perf_counter() - t0
+
+    # Grid over the receivers' box, cell size from the counts.
+    t0 = time.perf_counter()
+    floor_m = 1e-9 * scale
+    ext_x = max(box[1] - box[0], floor_m)
+    ext_y = max(box[3] - box[2], floor_m)
+    max_cells = max(MAX_CELLS_PER_RECEIVER * n, 1024)
+    size = float(cell_m) if cell_m else _choose_cell_m(boxes, n, ext_x, ext_y, max_cells)
+    nx = max(1, math.ceil(ext_x / size))
+    ny = max(1, math.ceil(ext_y / size))
+    inv = 1.0 / size
+    n_cells = nx * ny
+    cells = np.empty(n, np.int64)
+    K.receiver_cells(xs, ys, box[0], box[2], inv, inv, nx, ny, cells)
+    counts = K.count_receivers(cells, n_cells, n_chunks)
+    rec_start = np.empty(n_cells + 1, np.int64)
+    K.prefix_sum(counts, rec_start)
+    rec_order = np.empty(n, np.int32)
+    rec_origins = np.empty((n, 3))
+    K.fill_receivers(cells, counts, origins, rec_order, rec_origins)
+    ranges = np.empty((kept.size, 4), np.int64)
+    K.caster_ranges(boxes, box[0], box[2], inv, inv, nx, ny, ranges)
+    counts = np.zeros((n_chunks, n_cells), np.int32)
+    refs = np.empty(0, np.int32)
+    K.scatter_casters(ranges, rec_start, nx, counts, refs, False)
+    ref_start = np.empty(n_cells + 1, np.int64)
+    n_refs = K.prefix_sum(counts, ref_start)
+    refs = np.empty(n_refs, np.int32)
+    K.scatter_casters(ranges, rec_start, nx, counts, refs, True)
+    timing["bin_s"] = time.perf_counter() - t0
+
+    # Test each receiver against its cell's casters, nearest-to-the-sun first.
+    t0 = time.perf_counter()
+    n_blocks = (n_cells + K.QUERY_BLOCK_CELLS - 1) // K.QUERY_BLOCK_CELLS
+    tests = np.zeros(n_blocks, np.int64)
+    hit_sorted = np.zeros(n, np.bool_)
+    K.query(packed, ref_start, refs, rec_start, rec_origins, kx, ky, kz, sx, sy, sz, sgn,
+            DEPTH_MARGIN_M + DEPTH_MARGIN_REL * scale, 0.0, np.inf, hit_sorted, tests)
+    K.scatter_back(rec_order, hit_sorted, out)
+    timing["query_s"] = time.perf_counter() - t0
+    if stats is not None:
+        stats.update(timing)
+        stats.update(receivers=n, casters=int(kept.size),
+                     grid=(nx, ny), cell_m=size, references=int(n_refs),
+                     tests=int(tests.sum()), occluded=int(out.sum()))
+    return out
+
+
+def sunlit(tree, points, normals, sun_direction, t_days: float = 0.0, *,
+           stats: dict | None = None) -> np.ndarray:
+    """Whether each surface point sees the sun: :func:`cityshade.trace.sunlit`'s answer (same
+    ray origins, same test) through the light-space engine.
+
+    Parameters
+    ----------
+    tree : KdTree or scene with ``.kdtree``
+    points, normals : (N, 3) float arrays
+        Surface points (render space, metres) and unit normals on the side facing the sun.
+    sun_direction : (3,) float array
+        Unit direction toward the sun.
+    t_days : float
+        City time.
+    stats : dict, optional
+        Profile of the run (:func:`occluded`).
+
+    Returns
+    -------
+    (N,) bool array, True where nothing blocks the sun.
+    """
+    origins = shadow_rays_from_surface(points, normals, sun_direction)
+    return ~occluded(tree, origins, sun_direction, t_days, stats=stats)

@@ -1,0 +1,256 @@
+"""The light-space engine (``izb``) gives ``raytrace``'s answer on every pixel, bit for bit.
+
+Equality is asserted as 0 differing receivers (never a fraction): on the sample city, the TUM
+campus and the Munich CityGML 3.0 tile, map and overview views, suns from 0.5° to 90° at several
+azimuths, with and without ground, at dates before and after buildings stand; on rays aimed at
+the shared edges and vertices of closed solids; for 1 and 2 threads; without JIT. The analytic
+box shadow and a brute-force twin (tests/reference.py) check numbers the engine did not compute.
+"""
+from __future__ import annotations
+
+import math
+
+import numba
+import numpy as np
+import pytest
+
+from conftest import REPO, run_with_and_without_jit, shared_file
+from reference import reference_ray_hits
+from test_kdtree import BOX_FACES, box_city
+from test_trace import closed_box_tree, edge_and_vertex_targets, unit
+
+from cityshade import lightspace
+from cityshade.accel import build_kdtree
+from cityshade.build import build_file
+from cityshade.scenefile import load_scene
+from cityshade.shadows import ShadowContext, get_technique
+from cityshade.sun import sun_from_angles
+from cityshade.trace import TraceInputError, occluded, shadow_rays_from_surface
+
+#: (elevation, azimuth) pairs covering the issue's suns: grazing to zenith, several azimuths
+#: (axis-aligned ones put walls edge-on to the sun; 90° is straight down the z axis).
+SUNS = [(0.5, 250.0), (3.0, 90.0), (10.0, 135.0), (30.0, 200.0), (30.0, 0.0), (60.0, 315.0),
+        (89.9, 45.0), (90.0, 0.0)]
+
+
+def _built(path, tmp_path_factory, name):
+    out, _, _ = build_file(path, tmp_path_factory.mktemp(name) / f"{name}.cityshade")
+    return load_scene(out)
+
+
+@pytest.fixture(scope="module")
+def sample_scene(tmp_path_factory):
+    return _built(REPO / "sample_data" / "sample_city.gml", tmp_path_factory, "sample")
+
+
+def _surfaces(scene, camera, t_days, ground):
+    from cityshade.raster.gbuffer import resolve
+    from cityshade.raster.rasterize import rasterize
+
+    surfaces = resolve(scene, rasterize(scene, camera, t_days))
+    if ground is not None:
+        from cityshade.ground import add_ground_plane, ground_height_m
+
+        surfaces, _ = add_ground_plane(scene, camera, surfaces, ground_height_m(scene, ground))
+    return surfaces
+
+
+def _assert_same_as_raytrace(scene, camera, t_days, suns, ground=None, crs=False):
+    """Run ``raytrace`` and ``izb`` on one G-buffer for every sun; 0 differing pixels."""
+    surfaces = _surfaces(scene, camera, t_days, ground)
+    rt, izb = get_technique("raytrace"), get_technique("izb")
+    shadowed = 0
+    for el, az in suns:
+        sun = (sun_from_angles(az, el, scene.crs, scene.origin_m) if crs
+               else sun_from_angles(az, el))
+        ctx = ShadowContext(scene=scene, surfaces=surfaces, camera=camera, sun=sun,
+                            t_days=t_days)
+        a = rt.run(ctx).lit
+        b = izb.run(ctx).lit
+        diff = int((a != b).sum())
+        assert diff == 0, (f"izb differs from raytrace on {diff} of {a.size} pixels at sun "
+                           f"{el}°/{az}°, t={t_days}, ground={ground}")
+        shadowed += int(((a == 0) & surfaces.valid).sum())
+    assert shadowed > 0, "no shadow at all: the comparison would prove nothing"
+
+
+@pytest.mark.parametrize("year", ["1750", "1990"])
+@pytest.mark.parametrize("ground", [None, "min"])
+def test_sample_city_map_and_overview_equal_raytrace(sample_scene, year, ground):
+    from cityshade.citygml.temporal import parse_xsd_datetime_days
+    from cityshade.raster.camera import map_view, overview
+
+    t = parse_xsd_datetime_days(year)
+    _assert_same_as_raytrace(sample_scene, map_view(sample_scene, 1.0), t, SUNS, ground)
+    _assert_same_as_raytrace(sample_scene, overview(sample_scene, 320, 200), t, SUNS, ground)
+
+
+def test_tum_campus_equals_raytrace(tmp_path_factory):
+    from cityshade.raster.camera import map_view, overview
+
+    scene = _built(shared_file("munich-tum-campus-lod2/TUM Munich.gml"), tmp_path_factory,
+                   "tum")
+    suns = [(0.5, 100.0), (10.0, 135.0), (30.0, 200.0), (60.0, 250.0), (90.0, 0.0)]
+    _assert_same_as_raytrace(scene, map_view(scene, 2.0), 20000.0, suns, "auto", crs=True)
+    _assert_same_as_raytrace(scene, overview(scene, 320, 200), 20000.0, suns, "auto", crs=True)
+
+
+def test_munich_citygml3_tile_equals_raytrace(tmp_path_factory):
+    from cityshade.raster.camera import map_view, overview
+
+    scene = _built(shared_file("munich-lod2-citygml3-tile/"
+                               "Buildings_CityGML3.0_LOD2_with_PointClouds_external_one_laz_file.gml"),
+                   tmp_path_factory, "munich")
+    suns = [(3.0, 120.0), (30.0, 180.0), (89.9, 10.0)]
+    _assert_same_as_raytrace(scene, map_view(scene, 3.0), 20000.0, suns, None, crs=True)
+    _assert_same_as_raytrace(scene, overview(scene, 320, 200), 20000.0, suns, "auto", crs=True)
+
+
+def _inside_closed_mesh(points, verts, faces, clearance_m=1e-3):
+    """Points strictly inside a convex closed mesh with outward winding."""
+    v = verts.astype(np.float64)
+    inside = np.ones(len(points), bool)
+    for a, b, c in faces:
+        n = np.cross(v[b] - v[a], v[c] - v[a])
+        n /= np.linalg.norm(n)
+        inside &= (points - v[a]) @ n < -clearance_m
+    return inside
+
+
+@pytest.mark.parametrize("rotation_seed", [None, 1, 2])
+def test_rays_at_shared_edges_and_vertices_of_a_closed_box(rotation_seed):
+    """Shadow rays from inside a closed box, each aimed exactly at a vertex or a point of an
+    edge, never escape (watertight), and izb says so on every ray, as raytrace does."""
+    verts, tree = closed_box_tree(rotation_seed=rotation_seed)
+    targets = edge_and_vertex_targets(verts, BOX_FACES)
+    checked = 0
+    for el, az in SUNS:
+        d = np.asarray(sun_from_angles(az, el).direction, np.float64)
+        for back_m in (0.3, 1.0, 2.5):
+            origins = targets - back_m * d
+            origins = origins[_inside_closed_mesh(origins, verts, BOX_FACES)]
+            if not len(origins):
+                continue
+            izb = lightspace.occluded(tree, origins, d)
+            ref = occluded(tree, origins, np.broadcast_to(d, origins.shape).copy())
+            assert izb.all(), f"{(~izb).sum()} rays slipped through the box at {el}°/{az}°"
+            np.testing.assert_array_equal(izb, ref)
+            checked += len(origins)
+    assert checked > 500
+
+
+def test_random_rays_agree_with_raytrace_and_brute_force():
+    """Seeded random shadow rays in a dated random city, at times before, between and after
+    the boxes stand: equal to trace.occluded everywhere, to a Moller-Trumbore brute force
+    away from edges."""
+    city = box_city(60, seed=5, extent_m=120.0)
+    v, t, begin, end, _ = city
+    tree = build_kdtree(*city)
+    rng = np.random.default_rng(11)
+    origins = rng.uniform((-10, -10, -2), (140, 140, 45), (4000, 3))
+    for t_days in (-30000.0, 0.0, 15000.0, 40000.0):
+        for el, az in SUNS:
+            d = np.asarray(sun_from_angles(az, el).direction, np.float64)
+            izb = lightspace.occluded(tree, origins, d, t_days)
+            ref = occluded(tree, origins, np.broadcast_to(d, origins.shape).copy(), t_days)
+            np.testing.assert_array_equal(izb, ref, err_msg=f"sun {el}°/{az}°, t={t_days}")
+            for i in range(0, len(origins), 211):
+                hits, _ = reference_ray_hits(v, t, begin, end, origins[i], d, t_days)
+                assert izb[i] == (hits.size > 0), f"ray {i}, sun {el}°/{az}°, t={t_days}"
+
+
+def test_box_shadow_length_is_h_over_tan_elevation():
+    """A 10 m box on a plane: the ground behind it is shadowed out to h / tan(el) and lit
+    beyond (an analytic number)."""
+    h = 10.0
+    corners = np.array([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0),
+                        (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)], np.float64)
+    box = (np.array([-5.0, -5.0, 0.0]) + corners * [10.0, 10.0, h]).astype(np.float32)
+    n = 12
+    tree = build_kdtree(box, BOX_FACES.astype(np.int32), np.full(n, -np.inf), np.full(n, np.inf),
+                        np.zeros(n, np.int32))
+    for el in (20.0, 35.0, 60.0):
+        d = np.asarray(sun_from_angles(180.0, el).direction, np.float64)  # sun in the south
+        length = h / math.tan(math.radians(el))
+        ys = 5.0 + np.array([0.02, 0.5, 0.98]) * length
+        behind = np.column_stack([np.zeros(3), ys, np.zeros(3)])
+        beyond = np.column_stack([np.zeros(2), 5.0 + length + np.array([0.05, 1.0]), np.zeros(2)])
+        pts = np.vstack([behind, beyond])
+        origins = shadow_rays_from_surface(pts, np.tile([0.0, 0.0, 1.0], (len(pts), 1)), d)
+        got = lightspace.occluded(tree, origins, d)
+        assert got.tolist() == [True, True, True, False, False], f"elevation {el}°"
+
+
+def test_thread_count_does_not_change_the_answer(sample_scene, monkeypatch):
+    from cityshade.raster.camera import map_view
+
+    monkeypatch.setattr(lightspace, "SINGLE_THREAD_WORK", 0)  # small calls use all threads too
+
+    cam = map_view(sample_scene, 1.0)
+    surfaces = _surfaces(sample_scene, cam, 20000.0, "min")
+    d = np.asarray(sun_from_angles(135.0, 10.0).direction, np.float64)
+    points = surfaces.position_m[surfaces.valid]
+    normals = np.asarray(surfaces.normal, np.float64)[surfaces.valid]
+    normals[normals @ d < 0] *= -1.0
+    default = numba.get_num_threads()
+    results = []
+    try:
+        for threads in sorted({1, min(2, numba.config.NUMBA_NUM_THREADS)}):
+            numba.set_num_threads(threads)
+            results.append(lightspace.sunlit(sample_scene, points, normals, d, 20000.0))
+    finally:
+        numba.set_num_threads(default)
+    for r in results[1:]:
+        np.testing.assert_array_equal(r, results[0])
+    assert 0 < results[0].mean() < 1
+
+
+def test_read_only_inputs_and_validation(tmp_path):
+    from cityshade.accel import KdTree
+
+    city = box_city(10, seed=2, extent_m=60.0)
+    tree = build_kdtree(*city)
+    for name, arr in tree.to_arrays().items():
+        np.save(tmp_path / f"{name}.npy", arr)
+    mapped = KdTree.from_arrays({name: np.load(tmp_path / f"{name}.npy", mmap_mode="r")
+                                 for name in tree.to_arrays()})
+    origins = np.random.default_rng(3).uniform(-5, 70, (300, 3))
+    origins.setflags(write=False)
+    d = unit([0.3, -0.4, 0.6])
+    np.testing.assert_array_equal(lightspace.occluded(mapped, origins, d),
+                                  occluded(tree, origins, np.broadcast_to(d, origins.shape)))
+    assert lightspace.occluded(tree, np.zeros((0, 3)), d).shape == (0,)
+    # One receiver; receivers no caster can reach; a time when nothing stands.
+    for one in origins[:40]:
+        assert lightspace.occluded(tree, one[None], d)[0] == occluded(tree, one[None], d[None])[0]
+    assert not lightspace.occluded(tree, origins + [0.0, 0.0, 500.0], d).any()
+    empty_tree = build_kdtree(city[0], city[1], np.full(len(city[1]), 5.0),
+                              np.full(len(city[1]), 6.0), city[4])
+    assert not lightspace.occluded(empty_tree, origins, d, 0.0).any()
+    with pytest.raises(TraceInputError, match="unit length"):
+        lightspace.occluded(tree, origins, [0.0, 0.0, 2.0])
+    with pytest.raises(TraceInputError, match="shape"):
+        lightspace.occluded(tree, origins[:, :2], d)
+    with pytest.raises(TraceInputError, match="NaN"):
+        lightspace.occluded(tree, np.full((2, 3), np.nan), d)
+    with pytest.raises(TraceInputError, match="NaN"):
+        lightspace.occluded(tree, origins, d, float("nan"))
+
+
+def test_kernels_run_without_jit():
+    """NUMBA_DISABLE_JIT=1: the engine as plain Python gives the compiled engine's answer."""
+    script = r"""
+import json, numpy as np, sys
+sys.path.insert(0, sys.argv[1])
+from test_kdtree import box_city
+from cityshade.accel import build_kdtree
+from cityshade import lightspace
+tree = build_kdtree(*box_city(4, seed=9, extent_m=30.0))
+o = np.random.default_rng(1).uniform(-5, 40, (60, 3))
+d = np.array([0.48, -0.36, 0.8])
+print(json.dumps([lightspace.occluded(tree, o, d, 0.0).tolist(),
+                  lightspace.occluded(tree, o, -d, 0.0).tolist()]))
+"""
+    results = run_with_and_without_jit(script)
+    assert results[0] == results[1]
+    assert any(results[0][0]) and not all(results[0][0])
