@@ -13,7 +13,7 @@ from cityshade.accel import build_kdtree
 from cityshade.raster import camera as cams
 from cityshade.raster.gbuffer import gbuffer_by_raycasting, resolve
 from cityshade.raster.rasterize import rasterize
-from conftest import REPO, run_with_and_without_jit, shared_file
+from conftest import run_with_and_without_jit, shared_file
 from reference import reference_rasterize, reference_ray_hits
 from test_kdtree import box_city
 

@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from citygml_snippets import box_polygons, building, city, ground
-from conftest import shared_file
+
 
 from cityshade.build import build_file
 from cityshade.citygml.namespaces import SURFACE_CODE

@@ -540,6 +540,18 @@ def _same_patch(group, tex, normal, r0, c0, r1, c1):
     return dot > _SAME_PATCH_COS
 
 
+@njit(cache=True, inline="always")
+def _shorter_uv_step(uv, group, tex, normal, r, c, rr, cc, tw, th, best):
+    """``best`` or, when shorter (or ``best`` < 0: none yet), the length in level-0 texels of
+    the uv step from pixel (r, c) to its neighbour (rr, cc) on the same patch."""
+    if not _same_patch(group, tex, normal, r, c, rr, cc):
+        return best
+    du = (uv[rr, cc, 0] - uv[r, c, 0]) * tw
+    dv = (uv[rr, cc, 1] - uv[r, c, 1]) * th
+    d = math.sqrt(du * du + dv * dv)
+    return d if best < 0.0 or d < best else best
+
+
 @njit(cache=True, parallel=True)
 def _lod_kernel(uv, tex, group, normal, base_w, base_h, n_levels, bias, out):
     height, width = tex.shape
@@ -556,22 +568,14 @@ def _lod_kernel(uv, tex, group, normal, base_w, base_h, n_levels, bias, out):
             # uv seam of the atlas); none → unknown.
             best_x = -1.0
             for dc in (-1, 1):
-                cc = c + dc
-                if 0 <= cc < width and _same_patch(group, tex, normal, r, c, r, cc):
-                    du = (uv[r, cc, 0] - uv[r, c, 0]) * tw
-                    dv = (uv[r, cc, 1] - uv[r, c, 1]) * th
-                    d = math.sqrt(du * du + dv * dv)
-                    if best_x < 0.0 or d < best_x:
-                        best_x = d
+                if 0 <= c + dc < width:
+                    best_x = _shorter_uv_step(uv, group, tex, normal, r, c, r, c + dc, tw, th,
+                                              best_x)
             best_y = -1.0
             for dr in (-1, 1):
-                rr = r + dr
-                if 0 <= rr < height and _same_patch(group, tex, normal, r, c, rr, c):
-                    du = (uv[rr, c, 0] - uv[r, c, 0]) * tw
-                    dv = (uv[rr, c, 1] - uv[r, c, 1]) * th
-                    d = math.sqrt(du * du + dv * dv)
-                    if best_y < 0.0 or d < best_y:
-                        best_y = d
+                if 0 <= r + dr < height:
+                    best_y = _shorter_uv_step(uv, group, tex, normal, r, c, r + dr, c, tw, th,
+                                              best_y)
             if best_x < 0.0 and best_y < 0.0:
                 # A patch one pixel across shows the whole texture in that pixel: its average.
                 out[r, c] = n_levels[k] - 1

@@ -5,13 +5,14 @@ A leaf module (DESIGN §4): it imports nothing of cityshade but :mod:`cityshade.
 from __future__ import annotations
 
 import contextlib
+import math
 import os
 import tomllib
 import uuid
 from pathlib import Path
 from typing import IO, Any, Iterator
 
-from cityshade.errors import CityshadeError, ConfigError, OutputError
+from cityshade.errors import CityshadeError, ConfigError, OutputError, UsageError
 
 #: Why a plot or legend is missing when matplotlib is not installed.
 NO_MATPLOTLIB = "plot skipped: matplotlib is not installed (pip install 'cityshade[plot]')"
@@ -86,6 +87,14 @@ def write_text_atomic(path: str | os.PathLike, text: str, *, encoding: str = "ut
     with atomic_write(path, encoding=encoding, newline="\n", error=error, what=what) as fh:
         fh.write(text)
     return Path(path)
+
+
+def check_t_days(t_days, error: type[CityshadeError] = UsageError) -> float:
+    """``t_days`` (city time, days since 1970-01-01 UTC) as a float; a NaN date is ``error``."""
+    t = float(t_days)
+    if math.isnan(t):
+        raise error("t_days must be a number of days since 1970-01-01, not NaN")
+    return t
 
 
 def make_folder(path: str | os.PathLike, what: str = "output folder") -> Path:

@@ -19,6 +19,27 @@ RING_SEPARATOR = ";"
 _POW10 = np.array([10.0 ** k for k in range(23)], dtype=np.float64)
 
 
+@njit(cache=True, inline="always")
+def _digit_run(buf, i, n, mantissa, n_digits, exponent, fraction):
+    """Read the digits from ``buf[i]`` on into the mantissa (at most 19 significant digits,
+    exact in uint64): past 19 an integer digit scales by 10 (``exponent`` + 1) and a fraction
+    digit is dropped; each taken fraction digit is ``exponent`` − 1. Returns the next index,
+    the mantissa, the significant-digit count, the exponent and whether a digit was seen."""
+    seen = False
+    while i < n and 48 <= buf[i] <= 57:
+        seen = True
+        if n_digits < 19:
+            mantissa = mantissa * np.uint64(10) + np.uint64(buf[i] - 48)
+            if mantissa > 0:
+                n_digits += 1
+            if fraction:
+                exponent -= 1
+        elif not fraction:
+            exponent += 1
+        i += 1
+    return i, mantissa, n_digits, exponent, seen
+
+
 @njit(cache=True)
 def _parse_kernel(buf, pow10):
     """Parse whitespace/comma separated decimal numbers; ``;`` ends a ring.
@@ -61,25 +82,12 @@ def _parse_kernel(buf, pow10):
         n_digits = 0
         exponent = 0
         seen_digit = False
-        while i < n and 48 <= buf[i] <= 57:
-            seen_digit = True
-            if n_digits < 19:
-                mantissa = mantissa * np.uint64(10) + np.uint64(buf[i] - 48)
-                if mantissa > 0:
-                    n_digits += 1
-            else:
-                exponent += 1
-            i += 1
+        i, mantissa, n_digits, exponent, seen_digit = _digit_run(
+            buf, i, n, mantissa, n_digits, exponent, False)
         if i < n and buf[i] == 46:  # '.'
-            i += 1
-            while i < n and 48 <= buf[i] <= 57:
-                seen_digit = True
-                if n_digits < 19:
-                    mantissa = mantissa * np.uint64(10) + np.uint64(buf[i] - 48)
-                    if mantissa > 0:
-                        n_digits += 1
-                    exponent -= 1
-                i += 1
+            i, mantissa, n_digits, exponent, seen_fraction = _digit_run(
+                buf, i + 1, n, mantissa, n_digits, exponent, True)
+            seen_digit = seen_digit or seen_fraction
         if seen_digit and i < n and (buf[i] == 101 or buf[i] == 69):  # 'e' / 'E'
             j = i + 1
             exp_negative = False

@@ -19,7 +19,6 @@ from typing import Any
 
 import numpy as np
 
-from cityshade.citygml import namespaces as ns
 from cityshade.citygml.appearance import (georeferenced_uv, read_world_file,
                                           resolve_image_path)
 from cityshade.citygml.crs import (CrsInfo, GeographicProjector, area_of_use_warning,

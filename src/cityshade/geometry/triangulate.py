@@ -747,21 +747,15 @@ def _earclip_with_holes(x2, y2, loc, idx, ring_start, n_holes, nslot, nxt, prv, 
         # drop it first (bridges and rings touching themselves leave such pieces behind).
         spike = (x2[sa] == x2[sc] and y2[sa] == y2[sc]) or (x2[sb] == x2[sc] and y2[sb] == y2[sc])
         if spike or _is_ear(x2, y2, nslot, prv, nxt, a, cur, c):
-            n_out, area = _emit(x2, y2, loc, idx, nslot[a], nslot[cur], nslot[c], poly,
-                                tri_out, tri_poly, n_out)
-            abs_sum += abs(area)
-            nxt[a] = c
-            prv[c] = a
-            count -= 1
+            clip = cur
+        else:
             cur = c
-            misses = 0
-            continue
-        cur = c
-        misses += 1
-        if misses >= count:
+            misses += 1
+            if misses < count:
+                continue
             # No ear in a whole round (only on nearly degenerate or non-simple chains): clip
             # the most convex corner anyway; the area check judges the result.
-            best = cur
+            clip = cur
             best_o = -np.inf
             q = cur
             for _ in range(count):
@@ -771,18 +765,19 @@ def _earclip_with_holes(x2, y2, loc, idx, ring_start, n_holes, nslot, nxt, prv, 
                 o = _orient2(x2[sa], y2[sa], x2[sb], y2[sb], x2[sc], y2[sc])
                 if o > best_o:
                     best_o = o
-                    best = q
+                    clip = q
                 q = nxt[q]
-            a = prv[best]
-            c = nxt[best]
-            n_out, area = _emit(x2, y2, loc, idx, nslot[a], nslot[best], nslot[c], poly,
-                                tri_out, tri_poly, n_out)
-            abs_sum += abs(area)
-            nxt[a] = c
-            prv[c] = a
-            count -= 1
-            cur = c
-            misses = 0
+        # Clip the corner: emit its triangle and unlink it from the chain.
+        a = prv[clip]
+        c = nxt[clip]
+        n_out, area = _emit(x2, y2, loc, idx, nslot[a], nslot[clip], nslot[c], poly,
+                            tri_out, tri_poly, n_out)
+        abs_sum += abs(area)
+        nxt[a] = c
+        prv[c] = a
+        count -= 1
+        cur = c
+        misses = 0
     n_out, area = _emit(x2, y2, loc, idx, nslot[prv[cur]], nslot[cur], nslot[nxt[cur]], poly,
                         tri_out, tri_poly, n_out)
     abs_sum += abs(area)

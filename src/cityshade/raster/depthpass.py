@@ -31,6 +31,7 @@ from numba import njit, prange
 from cityshade.errors import UsageError
 from cityshade.raster import culling as cull
 from cityshade.raster import triangles as tc
+from cityshade.util import check_t_days
 
 
 def texel_params(width_px: int, height_px: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -189,7 +190,7 @@ def render_depth(scene, clip_from_world, width_px: int, height_px: int, t_days: 
     stats : dict
         See :class:`cityshade.shadows.shadowmap.DepthMap`.
     """
-    t = tc.check_time(t_days)
+    t = check_t_days(t_days)
     if not (isinstance(tile_px, (int, np.integer)) and 8 <= tile_px <= 4096):
         raise UsageError(f"tile_px must be an integer in [8, 4096], not {tile_px!r}")
     tc.check_scene(scene)

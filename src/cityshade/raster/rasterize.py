@@ -24,6 +24,7 @@ from cityshade.raster import culling as cull
 from cityshade.raster import triangles as tc
 from cityshade.raster.camera import Camera
 from cityshade.raster.gbuffer import GBuffer
+from cityshade.util import check_t_days
 
 #: Side of the blocks of the hierarchical max-depth buffer (8 blocks per tile side).
 BLOCK_PX = 8
@@ -200,7 +201,7 @@ def _occlusion_does_not_pay(walk_stats) -> bool:
 def _validate(scene, camera, t_days, tile_px) -> float:
     if not isinstance(camera, Camera):
         raise UsageError(f"expected a Camera, not {type(camera).__name__}")
-    t = tc.check_time(t_days)
+    t = check_t_days(t_days)
     if tile_px < BLOCK_PX or tile_px % BLOCK_PX:
         raise UsageError(f"tile_px must be a positive multiple of {BLOCK_PX}, not {tile_px}")
     tc.check_scene(scene)

@@ -37,7 +37,6 @@ Parallelism: triangles are set up in parallel, binned into square tiles in drawi
 """
 from __future__ import annotations
 
-import math
 import time
 from typing import NamedTuple
 
@@ -435,14 +434,6 @@ def present_triangles(t_begin, t_end, t_days):
 
 
 # --- drivers ----------------------------------------------------------------------------------
-
-def check_time(t_days) -> float:
-    """``t_days`` as a float; a NaN date is refused."""
-    t = float(t_days)
-    if math.isnan(t):
-        raise UsageError("t_days must be a number of days since 1970-01-01, not NaN")
-    return t
-
 
 def check_scene(scene) -> None:
     """Refuse scene arrays the kernels cannot take."""

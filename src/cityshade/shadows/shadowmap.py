@@ -32,7 +32,6 @@ most ``t/√2 · tanθ``, which an offset ``δ ≥ t/√2 · sinθ`` along the n
 from __future__ import annotations
 
 import math
-import time
 from dataclasses import dataclass, field
 from typing import Any
 

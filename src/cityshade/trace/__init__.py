@@ -13,6 +13,7 @@ from cityshade.accel.kdtree_layout import KdTree
 from cityshade.errors import UsageError
 from cityshade.trace.bricks import (DEFAULT_BRICK_SIZE, intersect_bricks, occluded_bricks,
                                     tile_order)
+from cityshade.util import check_t_days
 
 __all__ = ["TraceInputError", "intersect", "occluded", "shadow_rays_from_surface", "sunlit", "tree_of",
            "tile_order", "SHADOW_OFFSET_REL", "SHADOW_OFFSET_MIN_SCALE_M"]
@@ -86,13 +87,6 @@ def _rays(origins, directions, tmax):
     return origins, directions, tmax_arr
 
 
-def _time(t_days) -> float:
-    t = float(t_days)
-    if np.isnan(t):
-        raise TraceInputError("t_days must be a number of days since 1970-01-01, not NaN")
-    return t
-
-
 def _brick(brick_size) -> int:
     b = int(brick_size)
     if b < 1:
@@ -132,7 +126,7 @@ def occluded(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     """
     kd = tree_of(tree)
     origins, directions, tmax_arr = _rays(origins, directions, tmax)
-    t = _time(t_days)
+    t = check_t_days(t_days, TraceInputError)
     brick = _brick(brick_size)
     out = np.zeros(origins.shape[0], np.bool_)
     if origins.shape[0] == 0 or kd.tri_records.shape[0] == 0:
@@ -163,7 +157,7 @@ def intersect(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     """
     kd = tree_of(tree)
     origins, directions, tmax_arr = _rays(origins, directions, tmax)
-    t = _time(t_days)
+    t = check_t_days(t_days, TraceInputError)
     brick = _brick(brick_size)
     n = origins.shape[0]
     dist = np.full(n, np.inf)
