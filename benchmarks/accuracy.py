@@ -128,7 +128,7 @@ def main(argv=None) -> int:
 
             build_file(CITY_1M_GML, CITY_1M)
         if CITY_1M.exists():
-            models.append(("city_1M", CITY_1M, "shadowmap,pcf,vsm,lispsm,csm,pcf+smooth,"
+            models.append(("city_1M", CITY_1M, "izb,shadowmap,pcf,vsm,lispsm,csm,pcf+smooth,"
                            "hybrid:shadowmap,hybrid:vsm", (2048, 4096), 1, (1280, 720)))
         else:
             closing.append("- 1M-triangle city not found: skipped.")
