@@ -192,7 +192,7 @@ def _occluded(kd, origins, sun, t, out, stats, cell_m):
     xs = np.empty(n)
     ys = np.empty(n)
     rkeys = np.empty(n)
-    part = np.empty((n_chunks, K._NSTAT))
+    part = np.empty((n_chunks, K.N_STATS))
     K.project_receivers(origins, kx, ky, kz, sx, sy, sgn, n_chunks, xs, ys, rkeys, part)
     if part[:, 5].sum() > 0:
         raise TraceInputError("ray origins contain NaN or infinite values")

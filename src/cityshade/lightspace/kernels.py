@@ -38,7 +38,7 @@ from cityshade.trace.kernels import hit_record, ray_shear
 
 #: Statistics columns of :func:`project_receivers`: light-plane box, lowest depth key, count of
 #: non-finite origins.
-_NSTAT = 6
+N_STATS = 6
 
 
 @njit(cache=True)
