@@ -152,7 +152,8 @@ def main(argv=None) -> int:
                 closing.append(f"- {name}: `{r['technique']}` map {r['map_px']} {r['view']} "
                                f"{r['sun']} failed: {r['error']}")
     if not args.skip_stress:
-        from cityshade.stress import StressSettings, run_stress, stress_markdown
+        from cityshade.config import StressSettings
+        from cityshade.evaluate.stress import run_stress, stress_markdown
 
         report = run_stress(REPO / "sample_data" / "sample_city.gml", StressSettings(),
                             progress=_progress, echo=lambda line: print(line, file=sys.stderr))

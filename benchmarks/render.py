@@ -458,7 +458,7 @@ def techniques_main(argv=None) -> dict:
                 frame = render_frame(scene, cam, args.date_days, sun, name)
                 times.append(frame.timings_s["shadow_s"])
             got = frame.lit >= 0.5
-            d = frame.diagnostics
+            d = frame.diagnostics.shadow
             rows[name] = {
                 "shadow_ms_median": 1000 * statistics.median(times[1:]),
                 "first_run_ms": 1000 * times[0],

@@ -22,3 +22,12 @@ def shared_data() -> Path:
     if not SHARED_DATA.is_dir():
         pytest.skip(f"real data not available: {SHARED_DATA} is absent")
     return SHARED_DATA
+
+
+@pytest.fixture(scope="session")
+def sample_city_scene(tmp_path_factory):
+    """``sample_data/sample_city.gml`` built once per test session and loaded back (read-only
+    memory-mapped arrays); the modules that render the sample city share it."""
+    from golden_cases import sample_scene
+
+    return sample_scene(tmp_path_factory.mktemp("sample_city"))

@@ -379,7 +379,7 @@ def reference_convex_hull(points_xy):
     return np.array(sorted(corners))
 
 
-# --- shadow maps (twins of cityshade.shadows.lightraster / shadowmap / filtering) --------------
+# --- shadow maps (twins of cityshade.raster.depthpass / shadows.shadowmap / filtering) --------------
 
 def reference_depth_map(vertices, triangles, t_begin_days, t_end_days, clip_from_world,
                         width_px, height_px, t_days=0.0):

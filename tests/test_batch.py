@@ -433,3 +433,32 @@ def test_cli_batch_failures(files, tmp_path):
     _one_line_error(_run("batch", nocrs, *base[2:]), "--crs", 1)
     missing_tz = _run("batch", scene_path, "--date", "2024-06-21", "-o", tmp_path / "h")
     assert missing_tz.exit_code == 2 and "--tz" in missing_tz.output
+
+
+def test_run_batch_from_python_resumes_and_refuses_other_parameters(files, tmp_path):
+    """The resume protocol without the CLI: manifest, parameter hash, state, overwrite."""
+    import dataclasses
+
+    from cityshade.config import Settings
+    from cityshade.raster.camera import map_view
+    from cityshade.scenefile import load_scene
+
+    scene = load_scene(files[0])
+    steps = B.plan_steps(date(2024, 6, 21), B.parse_clock_s("05:00"), B.parse_clock_s("21:00"),
+                         3600.0, "Europe/Berlin")
+    cam = map_view(scene, 4.0)
+    out = tmp_path / "py"
+    first = B.run_batch(out, scene, cam, steps, 0.0, request={"what": "test"})
+    assert first.manifest["status"] == "finished" and first.result.units_resumed == 0
+    assert json.loads((out / "manifest.json").read_text())["key"] == first.manifest["key"]
+    again = B.run_batch(out, scene, cam, steps, 0.0, request={"what": "test"})
+    assert again.result.units_resumed == again.result.units == first.result.units > 0
+    assert again.result.hours.tobytes() == first.result.hours.tobytes()
+    # Other shadow settings are other parameters: refused, unless overwrite.
+    other = dataclasses.replace(Settings(), shadows=Settings().shadows.override(map_px=64))
+    with pytest.raises(UsageError, match="differs in: shadow_settings"):
+        B.run_batch(out, scene, cam, steps, 0.0, request={"what": "test"}, settings=other)
+    redone = B.run_batch(out, scene, cam, steps, 0.0, request={"what": "test"}, settings=other,
+                         overwrite=True)
+    assert redone.result.units_resumed == 0
+    assert redone.result.hours.tobytes() == first.result.hours.tobytes()  # raytrace: no map

@@ -146,7 +146,7 @@ def test_map_view_bbox_default_size_and_errors():
 
 
 def test_nice_pixel_sizes():
-    assert [cams._nice_ceil(x) for x in (0.07, 0.1, 0.11, 0.3, 4.0, 7.0)] == \
+    assert [cams.nice_ceil(x) for x in (0.07, 0.1, 0.11, 0.3, 4.0, 7.0)] == \
         [0.1, 0.1, 0.2, 0.5, 5.0, 10.0]
 
 

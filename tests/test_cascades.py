@@ -8,7 +8,6 @@ import numpy as np
 import pytest
 
 from citygml_snippets import box_polygons, building, city
-from golden_cases import sample_scene
 from test_warps import MIN_AGREEMENT, _camera_looking, _context, agreement
 
 from cityshade.errors import UsageError
@@ -44,8 +43,8 @@ def test_every_depth_falls_in_exactly_one_slice():
 
 
 @pytest.fixture(scope="module")
-def sample(tmp_path_factory):
-    return sample_scene(tmp_path_factory.mktemp("csm_sample"))
+def sample(sample_city_scene):
+    return sample_city_scene
 
 
 def test_cascades_cover_the_visible_frustum_without_gaps(sample):
@@ -60,9 +59,10 @@ def test_cascades_cover_the_visible_frustum_without_gaps(sample):
     from cityshade.shadows import ShadowContext
 
     sun = sun_from_angles(135.0, 30.0, sample.crs, sample.origin_m)
-    ctx = ShadowContext(sample, resolve(sample, rasterize(sample, cam, t)), cam, sun, t, {})
+    ctx = ShadowContext(sample, resolve(sample, rasterize(sample, cam, t)), cam, sun, t)
     tech = get_technique("csm")
     result = tech.run(ctx)
+    layers, views = result.prepared.layers, result.prepared.views
     d = result.diagnostics
     _, faces = facing_sun(ctx.surfaces, cam, ctx.sun.direction)
     points = ctx.surfaces.position_m[faces]
@@ -73,15 +73,15 @@ def test_cascades_cover_the_visible_frustum_without_gaps(sample):
     assert splits[0] == pytest.approx(depth.min()) and splits[-1] == pytest.approx(depth.max())
     idx = C.assign_cascades(depth, splits)
     assert sum(e["pixels"] for e in d["per_cascade"]) == points.shape[0]
-    assert tech.layers.shape == (4, 2048, 2048)
+    assert layers.shape == (4, 2048, 2048)
     # Each pixel lands inside its own cascade's map (no gaps) ...
-    for k, view in enumerate(tech.views):
+    for k, view in enumerate(views):
         u, v, z = sm.project(view, points[idx == k])
         assert ((u >= 0) & (u < view.width_px) & (v >= 0) & (v < view.height_px)).all()
         assert (np.abs(z) <= 1.0).all()
         # ... and the cascade's map holds depths where its receivers are.
         col, row = np.floor(u).astype(int), np.floor(v).astype(int)
-        assert np.isfinite(tech.layers[k][row, col]).mean() > 0.99
+        assert np.isfinite(layers[k][row, col]).mean() > 0.99
     # Nearer cascades have finer texels at their receivers.
     texels = [e["texel_m"] for e in d["per_cascade"]]
     assert texels[0] < texels[-1]
@@ -108,11 +108,12 @@ def test_a_cascade_covering_no_pixel_is_skipped(near_and_far):
     options = {"cascades": 4, "split_lambda": 0.0, "map_px": 512}
     ctx = _context(near_and_far, cam, sun_from_angles(200.0, 30.0), options)
     tech = get_technique("csm")
-    d = tech.run(ctx).diagnostics
+    result = tech.run(ctx)
+    d = result.diagnostics
     assert d["cascades_skipped"] == [1, 2], d["splits_m"]
     assert d["cascades_rendered"] == 2 and len(d["map_px"]) == 2
-    assert tech.views[1] is None and tech.views[2] is None
-    assert np.isinf(tech.layers[1]).all() and np.isinf(tech.layers[2]).all()
+    assert result.prepared.views[1] is None and result.prepared.views[2] is None
+    assert np.isinf(result.prepared.layers[1]).all() and np.isinf(result.prepared.layers[2]).all()
     assert "skipped" in d["per_cascade"][1]
     share, _ = agreement(near_and_far, cam, 0.0, sun_from_angles(200.0, 30.0), "csm", options)
     assert share >= MIN_AGREEMENT
@@ -130,7 +131,7 @@ def test_sample_city_agrees_with_raytrace(sample, technique, view):
         sun = sun_from_angles(135.0, el, sample.crs, sample.origin_m)
         share, frame = agreement(sample, cam, t, sun, technique)
         assert share >= MIN_AGREEMENT, f"{technique} {view} sun {el}°: {share:.4f} agree"
-        d = frame.diagnostics
+        d = frame.diagnostics.shadow
         assert len(d["map_px"]) == d["cascades_rendered"] >= 1
         assert d["texel_m"] > 0 and d["aliasing_m"]["max"] >= d["aliasing_m"]["mean"] > 0
         if view == "map":
@@ -138,13 +139,10 @@ def test_sample_city_agrees_with_raytrace(sample, technique, view):
 
 
 def test_warp_option_and_bad_values():
-    from cityshade.shadows import ShadowContext
-
     with pytest.raises(UsageError):
-        C.CascadeSettings.from_options({"cascades": 40})
+        C.CascadeSettings(count=40)
     with pytest.raises(UsageError):
-        C.CascadeSettings.from_options({"split_lambda": 1.5})
-    ctx = ShadowContext(None, None, None, None, 0.0, {"warp": "nope"})
+        C.CascadeSettings(split_lambda=1.5)
     with pytest.raises(UsageError, match="unknown warp"):
-        get_technique("csm").run(ctx)
-    assert math.isclose(C.CascadeSettings.from_options({}).split_lambda, 0.5)
+        get_technique("csm:nope")
+    assert math.isclose(C.CascadeSettings().split_lambda, 0.5)

@@ -220,3 +220,62 @@ def test_render_night_warns_and_is_dark(built, tmp_path):
     assert result.exit_code == 0 and "below the horizon" in result.output
     channels, _ = imageio.read_exr(tmp_path / "n.exr")
     assert (channels["shadow"] == 0).all() and np.isfinite(channels["R"]).all()
+
+
+def test_internal_error_is_exit_70_with_traceback_only_under_verbose(monkeypatch, tmp_path):
+    # A contract error is a bug of the caller, not the user's: exit 70, "internal error".
+    import cityshade.scenefile
+    from cityshade.errors import ContractError
+
+    def broken(*args, **kwargs):
+        raise ContractError("scene arrays of the wrong dtype")
+
+    monkeypatch.setattr(cityshade.scenefile, "load_scene", broken)
+    args = ("render", tmp_path / "x.cityshade", "--sun-azimuth", "10", "--sun-elevation", "20",
+            "-o", tmp_path / "x.exr")
+    assert_one_line_error(run(*args), "internal error: scene arrays of the wrong dtype", code=70)
+    verbose = run(*args, "-v")
+    assert verbose.exit_code == 70 and "Traceback" in verbose.output
+    assert verbose.output.strip().splitlines()[-1] == (
+        "cityshade: error: internal error: scene arrays of the wrong dtype")
+
+
+def test_config_file_shadows_table(built, tmp_path):
+    """A misspelled [shadows] key fails with one line naming the key and the file; a [shadows]
+    value changes the result exactly as the same flag does."""
+    from cityshade.imageio import read_image
+
+    bad = tmp_path / "bad.toml"
+    bad.write_text('[shadows.map]\npxx = 64\n')
+    base = ("render", built, "--date", "1950", "--sun-azimuth", "200", "--sun-elevation", "20",
+            "--camera", "map", "--pixel-size", "0.25")
+    res = run(*base, "--config", bad, "-o", tmp_path / "bad.exr")
+    assert_one_line_error(res, "pxx", code=2)
+    assert str(bad) in res.output and not (tmp_path / "bad.exr").exists()
+    good = tmp_path / "good.toml"
+    good.write_text('[shadows]\ntechnique = "shadowmap"\n\n[shadows.map]\npx = 16\n')
+    masks = {}
+    for name, extra in (("toml", ("--config", good)),
+                        ("flag", ("--shadows", "shadowmap", "--map-px", "16")),
+                        ("default", ("--shadows", "shadowmap"))):
+        mask = tmp_path / f"{name}.png"
+        res = run(*base, *extra, "-o", tmp_path / f"{name}.exr", "--mask", mask)
+        assert res.exit_code == 0, res.output
+        masks[name] = read_image(mask)[0]
+    assert np.array_equal(masks["toml"], masks["flag"])
+    # A 16² map is coarse: the shadow differs from the default 2048² map's.
+    assert not np.array_equal(masks["toml"], masks["default"])
+    # The flag overrides the file.
+    res = run(*base, "--config", good, "--map-px", "2048", "-o", tmp_path / "o.exr",
+              "--mask", tmp_path / "o.png")
+    assert res.exit_code == 0 and np.array_equal(read_image(tmp_path / "o.png")[0],
+                                                 masks["default"])
+
+
+def test_camera_presets_from_a_user_file(built, tmp_path):
+    presets = tmp_path / "mine.toml"
+    presets.write_text("[low_south]\nazimuth_deg = 180.0\nelevation_deg = 10.0\n")
+    args = ("render", built, "--date", "1950", "--sun-azimuth", "200", "--sun-elevation", "20",
+            "--size", "64x48", "--camera", "low_south", "-o", tmp_path / "p.exr")
+    assert_one_line_error(run(*args), "unknown camera 'low_south'", code=2)
+    assert run(*args, "--cameras", presets).exit_code == 0

@@ -41,3 +41,20 @@ def test_bad_toml(tmp_path):
         load_settings(p)
     with pytest.raises(ConfigError, match="cannot read config"):
         load_settings(tmp_path / "missing.toml")
+
+
+def test_shadow_tables_name_the_key_and_the_file():
+    from cityshade.config import ShadowSettings
+
+    with pytest.raises(ConfigError, match=r"unknown key\(s\) in x\.toml\.shadows: mapp "):
+        settings_from_mapping({"shadows": {"mapp": {}}}, "x.toml")
+    with pytest.raises(ConfigError, match=r"x\.toml\.shadows\.vsm: blur_px \(vsm_blur\)"):
+        settings_from_mapping({"shadows": {"vsm": {"blur_px": 99}}}, "x.toml")
+    with pytest.raises(ConfigError, match="must be of type int"):
+        settings_from_mapping({"shadows": {"map": {"px": "big"}}}, "x.toml")
+    loaded = settings_from_mapping({"shadows": {"technique": "lispsm/pcf", "map": {"px": 512},
+                                                "pcf": {"kernel": 5}}})
+    assert loaded.shadows == ShadowSettings(technique="lispsm/pcf").override(map_px=512,
+                                                                             pcf_kernel=5)
+    with pytest.raises(ConfigError, match="unknown shadow option.*vsm_blurr"):
+        ShadowSettings().override(vsm_blurr=4)   # a typo is an error, not a silent no-op

@@ -13,9 +13,10 @@ from reference import reference_nearest_feature_distance2
 from cityshade.build import build_file
 from cityshade.cli.main import cli
 from cityshade.errors import UsageError
+from cityshade.diagnostics import skipped_work
 from cityshade.evaluate import (EvaluateSettings, compare, diff_image, error_time_plot,
                                 expand_techniques, make_reference, nearest_feature,
-                                pareto_front, skipped_work)
+                                pareto_front)
 from cityshade.scenefile import load_scene
 
 
@@ -189,7 +190,37 @@ def test_render_lists_what_it_left_out(box_file):
     # Seen from the south-west, lit from the north-east: the two visible walls face away.
     frame = render_frame(scene, overview(scene, 96, 64), 0.0, sun_from_angles(45, 30),
                          "hybrid:shadowmap")
-    lines = frame.diagnostics["skipped"].split("\n")
+    lines = frame.diagnostics.skipped
     assert any("no time dimension" in s for s in lines)
     assert any("facing away from the sun" in s for s in lines)
     assert any(s.strip().startswith("hybrid:") and "without a ray" in s for s in lines)
+
+
+def test_report_without_matplotlib_keeps_csv_and_markdown(box_file, tmp_path, monkeypatch):
+    import cityshade.evaluate.plot as plot
+    from cityshade.evaluate import make_camera, parse_suns, run_evaluation, write_report
+
+    monkeypatch.setattr(plot, "have_matplotlib", lambda: False)
+    scene = load_scene(box_file)
+    evaluation = run_evaluation(scene, [("map", make_camera(scene, "map", pixel_size_m=2.0))],
+                                parse_suns("135,30", scene), 0.0, ["shadowmap"],
+                                EvaluateSettings(repeat=1, sizes=(64,)))
+    written = {p.name for p in write_report(evaluation, tmp_path / "r")}
+    assert {"results.csv", "report.md"} <= written
+    assert not any(n.startswith("error_vs_time") for n in written)
+    assert "plot skipped: matplotlib is not installed" in (tmp_path / "r" / "report.md").read_text()
+
+
+def test_evaluate_honours_ground_like_render(box_file):
+    from cityshade.evaluate import Evaluation, evaluate_frame, make_camera, parse_suns
+    from cityshade.render import render_frame
+
+    scene = load_scene(box_file)
+    cam = make_camera(scene, "overview", (96, 64))
+    sun = parse_suns("135,30", scene)[0]
+    out = evaluate_frame(scene, cam, "overview", sun, 0.0, [], [64],
+                         EvaluateSettings(repeat=1, worst_cases=0), Evaluation(), ground="min")
+    frame = render_frame(scene, cam, 0.0, sun, "raytrace", ground="min")
+    assert frame.diagnostics.ground is not None
+    np.testing.assert_array_equal(out["surfaces"].valid, frame.surfaces.valid)
+    np.testing.assert_array_equal(out["results"][("raytrace", None)].lit, frame.lit)

@@ -13,13 +13,13 @@ import sys
 import numpy as np
 import pytest
 
-from golden_cases import CASES, REPO, render_case, sample_scene
+from golden_cases import CASES, REPO, render_case
 from imagediff import assert_matches_golden
 
 
 @pytest.fixture(scope="module")
-def scene(tmp_path_factory):
-    return sample_scene(tmp_path_factory.mktemp("golden"))
+def scene(sample_city_scene):
+    return sample_city_scene
 
 
 @pytest.mark.parametrize("name", sorted(CASES))

@@ -4,9 +4,9 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from golden_cases import sample_scene
 
 from cityshade.citygml.temporal import parse_user_date
+from cityshade.config import ShadowSettings
 from cityshade.errors import UsageError
 from cityshade.raster.camera import map_view, overview, preset
 from cityshade.render import render_frame
@@ -17,8 +17,8 @@ BASES = ["shadowmap", "pcf", "vsm", "psm", "lispsm", "xpsm", "csm", "csm:lispsm"
 
 
 @pytest.fixture(scope="module")
-def scene(tmp_path_factory):
-    return sample_scene(tmp_path_factory.mktemp("hybrid"))
+def scene(sample_city_scene):
+    return sample_city_scene
 
 
 @pytest.fixture(scope="module")
@@ -44,7 +44,7 @@ def test_hybrid_agrees_with_raytrace(scene, references, base):
         wrong = ((frame.lit >= 0.5) != (ref.lit >= 0.5)) & valid
         agree = 1.0 - wrong.sum() / valid.sum()
         assert agree >= 0.9999, f"{view} sun {el}°: {wrong.sum()} pixels differ ({100 * agree:.4f} %)"
-        d = frame.diagnostics
+        d = frame.diagnostics.shadow
         assert 0.0 < d["traced_share"] < 0.5, d["traced_share"]
         refined = frame.extra_channels["refined"]
         assert refined.shape == valid.shape and set(np.unique(refined)) <= {0.0, 1.0}
@@ -58,9 +58,10 @@ def test_bracket_classifier_misses_no_more_than_the_slides_vsm_classifier(scene,
     traced = {"bracket": 0, "vsm": 0}
     for (view, el), (cam, sun, ref) in refs.items():
         for clf in misses:
-            f = render_frame(scene, cam, t, sun, "hybrid:vsm", options={"classifier": clf})
+            f = render_frame(scene, cam, t, sun, "hybrid:vsm",
+                             ShadowSettings().override(classifier=clf))
             misses[clf] += int((((f.lit >= 0.5) != (ref.lit >= 0.5)) & ref.surfaces.valid).sum())
-            traced[clf] += f.diagnostics["traced_px"]
+            traced[clf] += f.diagnostics.shadow["traced_px"]
     assert misses["bracket"] == 0, misses
     assert misses["bracket"] <= misses["vsm"], misses
 
@@ -78,4 +79,4 @@ def test_night_traces_nothing(scene, references):
     t, refs = references
     cam, _, _ = refs["map", 30.0]
     frame = render_frame(scene, cam, t, sun_from_angles(0.0, -3.0), "hybrid:shadowmap")
-    assert (frame.lit == 0).all() and frame.diagnostics["traced_px"] == 0
+    assert (frame.lit == 0).all() and frame.diagnostics.shadow["traced_px"] == 0

@@ -18,7 +18,7 @@ from cityshade.accel import build_kdtree
 from cityshade.raster import camera as cams
 from cityshade.raster.gbuffer import gbuffer_by_raycasting, resolve
 from cityshade.raster.rasterize import rasterize
-from conftest import REPO, shared_file
+from conftest import shared_file
 from reference import reference_rasterize, reference_ray_hits
 from test_kdtree import box_city
 
@@ -44,14 +44,9 @@ def mini_scene(vertices, triangles, begin=None, end=None, origin=(0.0, 0.0, 0.0)
 
 
 @pytest.fixture(scope="module")
-def sample_scene(tmp_path_factory):
+def sample_scene(sample_city_scene):
     """sample_data/sample_city.gml built and loaded back (read-only memory-mapped arrays)."""
-    from cityshade.build import build_file
-    from cityshade.scenefile import load_scene
-
-    out = tmp_path_factory.mktemp("sample") / "sample.cityshade"
-    build_file(REPO / "sample_data" / "sample_city.gml", out)
-    scene = load_scene(out)
+    scene = sample_city_scene
     assert not scene.vertices.flags.writeable
     return scene
 

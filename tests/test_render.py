@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 
 from citygml_snippets import box_polygons, building, city, ground
-from conftest import REPO, shared_file
+from conftest import shared_file
 
 from cityshade.build import build_file
 from cityshade.citygml.namespaces import SURFACE_CODE
@@ -122,10 +122,8 @@ def test_sun_below_horizon_is_all_shadow(box_scene):
 
 
 @pytest.fixture(scope="module")
-def sample_scene(tmp_path_factory):
-    out, _, _ = build_file(REPO / "sample_data" / "sample_city.gml",
-                           tmp_path_factory.mktemp("sample") / "sample.cityshade")
-    return load_scene(out)
+def sample_scene(sample_city_scene):
+    return sample_city_scene
 
 
 @pytest.mark.parametrize("year", [1750, 1900, 1990])

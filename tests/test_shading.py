@@ -1,8 +1,6 @@
 """Shading (cityshade.shading): Lambert + sky ambient, albedo sources, back faces, sky, sRGB."""
 from __future__ import annotations
 
-import subprocess
-import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -221,14 +219,8 @@ def test_bad_inputs_raise_shading_errors():
 # --- the sample city through the real G-buffer ------------------------------------------------
 
 @pytest.fixture(scope="module")
-def sample_scene(tmp_path_factory):
-    out = tmp_path_factory.mktemp("scene") / "sample.cityshade"
-    subprocess.run([sys.executable, "-m", "cityshade", "build",
-                    str(REPO / "sample_data" / "sample_city.gml"), "-o", str(out)],
-                   check=True, capture_output=True)
-    from cityshade.scenefile import load_scene
-
-    return load_scene(out)
+def sample_scene(sample_city_scene):
+    return sample_city_scene
 
 
 def test_sample_city_overview_is_textured_and_deterministic(sample_scene):

@@ -10,11 +10,11 @@ import numpy as np
 import pytest
 
 from citygml_snippets import box_polygons, building, city, ground
-from golden_cases import sample_scene
 from reference import reference_depth_map
 
 from cityshade.build import build_file
 from cityshade.citygml.namespaces import SURFACE_CODE
+from cityshade.config import ShadowSettings
 from cityshade.errors import UsageError
 from cityshade.raster import camera as cams
 from cityshade.render import render_frame
@@ -36,8 +36,8 @@ def _build(tmp_path_factory, name, *members, half=150):
 
 
 @pytest.fixture(scope="module")
-def sample(tmp_path_factory):
-    return sample_scene(tmp_path_factory.mktemp("sample"))
+def sample(sample_city_scene):
+    return sample_city_scene
 
 
 @pytest.fixture(scope="module")
@@ -125,7 +125,7 @@ def _context(scene, cam, sun, t=0.0, options=None):
 
     surfaces = resolve(scene, rasterize(scene, cam, t))
     return ShadowContext(scene=scene, surfaces=surfaces, camera=cam, sun=sun, t_days=t,
-                         options=options or {})
+                         settings=ShadowSettings().override(**(options or {})))
 
 
 def test_fit_uniform_covers_receivers_and_casters(sample):
@@ -187,7 +187,7 @@ def test_techniques_agree_with_raytrace(sample, kind, el):
         assert np.isfinite(frame.lit).all()
         agree = ((frame.lit[valid] >= 0.5) == (ref.lit[valid] >= 0.5)).mean()
         assert agree >= 0.95, f"{name}: {100 * agree:.2f} % of pixels agree with raytrace"
-        d = frame.diagnostics
+        d = frame.diagnostics.shadow
         assert d["map_px"] == [(2048, 2048)] and d["texel_m"] > 0 and d["shadow_s"] > 0
         assert 0 < d["aliasing_m"]["mean"] <= d["aliasing_m"]["max"]
 
@@ -204,7 +204,7 @@ def test_smoothed_techniques(sample, name):
     assert agree >= 0.95, f"{name}: {100 * agree:.2f} %"
     _, faces = facing_sun(frame.surfaces, cam, sun.direction)
     assert (frame.lit[valid & ~faces] == 0).all()          # the shared rule still holds
-    assert frame.diagnostics["technique"] == name
+    assert frame.diagnostics.shadow["technique"] == name
     # Smoothing made some edge pixels fractional.
     assert ((frame.lit > 0.02) & (frame.lit < 0.98)).sum() > 10
     with pytest.raises(UsageError, match="unknown shadow technique"):
@@ -231,7 +231,7 @@ def test_bias_no_acne_no_gap_at_3_degrees(one_box):
     px = 0.25
     cam = cams.map_view(one_box, px, bbox=(-40, -40, 40, 40))
     frame = render_frame(one_box, cam, 0.0, sun, "shadowmap")
-    texel = frame.diagnostics["texel_light_m"]
+    texel = frame.diagnostics.shadow["texel_light_m"]
     d = -np.array([math.sin(math.radians(az)), math.cos(math.radians(az))])
     exit_m = 5.0 / max(abs(d[0]), abs(d[1]))             # the wall, box half-size 5 m
     first = None
@@ -271,8 +271,10 @@ def test_vsm_light_bleeding_and_its_reduction(stacked):
     strip = (s.cls == SURFACE_CODE["landuse"]) & (y > -3.0) & (y < -1.0)
     assert strip.sum() > 3000 and (ref.lit[strip] == 0).all()
     opts = {"map_px": 512, "vsm_blur": 6}
-    raw = render_frame(stacked, cam, 0.0, sun, "vsm", {**opts, "bleed_reduction": 0.0}).lit
-    cut = render_frame(stacked, cam, 0.0, sun, "vsm", {**opts, "bleed_reduction": 0.5}).lit
+    raw = render_frame(stacked, cam, 0.0, sun, "vsm",
+                       ShadowSettings().override(**opts, bleed_reduction=0.0)).lit
+    cut = render_frame(stacked, cam, 0.0, sun, "vsm",
+                       ShadowSettings().override(**opts, bleed_reduction=0.5)).lit
     hard = render_frame(stacked, cam, 0.0, sun, "shadowmap").lit
     # Measured on this scene: up to 0.59 leaks through at the edges without reduction (mean
     # 0.016 over the strip); with reduction 0.5, 0.18 (mean 0.002).
@@ -290,15 +292,16 @@ def test_sun_below_horizon_and_bad_options(one_box):
     sky = cams.perspective([0, 0, 500.0], [0, 0, 900.0], vfov_deg=30, width_px=32, height_px=24,
                            scene=one_box)
     frame = render_frame(one_box, sky, 0.0, sun_from_angles(180.0, 30.0), "vsm")
-    assert (frame.lit == 0).all() and frame.diagnostics["map_px"] == []
+    assert (frame.lit == 0).all() and frame.diagnostics.shadow["map_px"] == []
     # Tiny maps with wide filters still work (the padding shrinks to fit).
     frame = render_frame(one_box, cam, 0.0, sun_from_angles(180.0, 30.0), "vsm",
-                         {"map_px": 8, "vsm_blur": 6})
+                         ShadowSettings().override(map_px=8, vsm_blur=6))
     assert np.isfinite(frame.lit).all()
     with pytest.raises(UsageError, match="pcf_kernel"):
-        render_frame(one_box, cam, 0.0, sun_from_angles(180.0, 30.0), "pcf", {"pcf_kernel": 4})
+        render_frame(one_box, cam, 0.0, sun_from_angles(180.0, 30.0), "pcf",
+                     ShadowSettings().override(pcf_kernel=4))
     with pytest.raises(UsageError, match="map_px"):
-        sm.ShadowMapSettings.from_options({"map_px": 0})
+        ShadowSettings().override(map_px=0)
     with pytest.raises(UsageError, match="clip_from_world"):
         sm.LightView(np.eye(3), 4, 4)
 
@@ -356,3 +359,26 @@ def test_depth_map_same_for_any_thread_count_and_tile_size(sample):
     for other in maps[1:]:
         np.testing.assert_array_equal(other.prim_id, maps[0].prim_id)
         np.testing.assert_array_equal(other.depth, maps[0].depth)
+
+
+def test_every_planner_works_with_every_lookup(sample):
+    """Techniques are planner + lookup: the short names are exactly their compositions, and
+    the warps and cascades take the filtered lookups too (not only the hard one)."""
+    cam = cams.overview(sample, 192, 120)
+    sun = sun_from_angles(135.0, 30.0)
+    ref = render_frame(sample, cam, T_1990, sun, "raytrace")
+    valid = ref.surfaces.valid
+    small = ShadowSettings().override(map_px=1024)
+    for alias, spelled in (("pcf", "shadowmap/pcf"), ("vsm", "shadowmap/vsm"),
+                           ("psm", "psm/hard"), ("csm:lispsm", "csm:lispsm/hard")):
+        a = render_frame(sample, cam, T_1990, sun, alias, small).lit
+        b = render_frame(sample, cam, T_1990, sun, spelled, small).lit
+        assert a.tobytes() == b.tobytes(), (alias, spelled)
+    for name in ("lispsm/pcf", "xpsm/vsm", "psm/pcf", "csm/vsm", "csm:xpsm/pcf"):
+        frame = render_frame(sample, cam, T_1990, sun, name, small)
+        assert np.isfinite(frame.lit).all() and frame.diagnostics.shadow["lookup"] in name
+        agree = ((frame.lit[valid] >= 0.5) == (ref.lit[valid] >= 0.5)).mean()
+        assert agree >= 0.95, f"{name}: {100 * agree:.2f} % of pixels agree with raytrace"
+        if name.endswith("/vsm"):  # a filtered lookup gives fractions, not only 0 and 1
+            soft = frame.lit[valid]
+            assert ((soft > 0.0) & (soft < 1.0)).any(), name

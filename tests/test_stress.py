@@ -8,7 +8,7 @@ from click.testing import CliRunner
 from conftest import REPO
 
 from cityshade.cli.main import cli
-from cityshade.stress import (AGREEMENT, SHIFT_M, CaseResult, StressReport, error_bound_pct,
+from cityshade.evaluate.stress import (AGREEMENT, SHIFT_M, CaseResult, StressReport, error_bound_pct,
                               geometry_model_gml, shifted_gml)
 
 
@@ -62,7 +62,7 @@ def test_error_bounds():
 
 
 def test_a_failing_case_gives_exit_status_1(monkeypatch, tmp_path):
-    import cityshade.stress as stress
+    import cityshade.evaluate.stress as stress
 
     def fake(path, settings, progress=None, echo=None):
         cases = [CaseResult("fine", True, {"x": 1.0}),

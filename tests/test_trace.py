@@ -402,7 +402,7 @@ def test_shadow_ray_leaves_the_wall_at_the_foot_of_a_sun_facing_wall():
     wall; offset only along the roof normal their shadow rays hit that wall at distance ≈ 0.
     The stress set's case: every foot point of the sun-facing wall is lit, every foot point of
     the wall facing away is in shadow."""
-    from cityshade.stress import wall_foot_case
+    from cityshade.evaluate.stress import wall_foot_case
 
     case = wall_foot_case()
     assert case.passed, case.failures

@@ -8,9 +8,9 @@ import numpy as np
 import pytest
 
 from citygml_snippets import box_polygons, building, city, ground
-from golden_cases import sample_scene
 from reference import reference_convex_hull
 
+from cityshade.config import ShadowSettings
 from cityshade.raster import camera as cams
 from cityshade.shadows import warps as W
 
@@ -225,7 +225,8 @@ def _context(scene, cam, sun, options=None):
     from cityshade.shadows import ShadowContext
 
     surfaces = resolve(scene, rasterize(scene, cam, 0.0))
-    return ShadowContext(scene, surfaces, cam, sun, 0.0, options or {})
+    return ShadowContext(scene, surfaces, cam, sun, 0.0,
+                         ShadowSettings().override(**(options or {})))
 
 
 @pytest.mark.parametrize("sun_az, sun_el", [(0.0, 30.0), (45.0, 20.0), (0.0, 60.0)])
@@ -259,7 +260,8 @@ def agreement(scene, cam, t_days, sun, technique, options=None):
     from cityshade.render import render_frame
 
     ref = render_frame(scene, cam, t_days, sun, "raytrace")
-    frame = render_frame(scene, cam, t_days, sun, technique, options=options)
+    frame = render_frame(scene, cam, t_days, sun, technique,
+                         ShadowSettings().override(**(options or {})))
     assert not np.isnan(frame.lit).any()
     valid = ref.surfaces.valid
     same = (frame.lit >= 0.5) == (ref.lit >= 0.5)
@@ -273,15 +275,15 @@ def test_psm_with_the_sun_behind_the_camera_matches_raytrace(grid_city):
     cam = _camera_looking(np.array([-5.0, -30.0, 14.0]) - grid_city.origin_m, 0.0, 12.0)
     sun = sun_from_angles(180.0, 25.0)                         # from the south: behind the eye
     share, frame = agreement(grid_city, cam, 0.0, sun, "psm")
-    info = frame.diagnostics["warp"]
+    info = frame.diagnostics.shadow["warp"]
     assert info["light"] == "inverted" and info["slide_back_m"] > 0.0
     assert share >= MIN_AGREEMENT, f"psm agrees with raytrace on {share:.4f} of pixels"
     assert not (frame.lit[frame.surfaces.valid] > 0.5).all()  # some shadow was found
 
 
 @pytest.fixture(scope="module")
-def sample(tmp_path_factory):
-    return sample_scene(tmp_path_factory.mktemp("warps_sample"))
+def sample(sample_city_scene):
+    return sample_city_scene
 
 
 @pytest.mark.parametrize("technique", ["psm", "lispsm", "xpsm"])
@@ -296,7 +298,7 @@ def test_sample_city_agrees_with_raytrace(sample, technique, view):
         sun = sun_from_angles(135.0, el, sample.crs, sample.origin_m)
         share, frame = agreement(sample, cam, t, sun, technique)
         assert share >= MIN_AGREEMENT, f"{technique} {view} sun {el}°: {share:.4f} agree"
-        d = frame.diagnostics
+        d = frame.diagnostics.shadow
         assert d["map_px"] and d["texel_m"] > 0 and d["shadow_s"] >= 0
         assert d["aliasing_m"]["max"] >= d["aliasing_m"]["mean"] > 0
 

@@ -22,24 +22,27 @@ from __future__ import annotations
 import hashlib
 import json
 import math
-import os
 import re
 import time
-import uuid
 from dataclasses import dataclass, field
 from datetime import date, datetime, timedelta, timezone
 from pathlib import Path
-from typing import Any, Callable, Sequence
+from typing import TYPE_CHECKING, Any, Callable, Sequence
 
 import numpy as np
 
 from cityshade import __version__
-from cityshade.errors import OutputError, UsageError
+from cityshade.config import ShadowSettings
+from cityshade.errors import UsageError
+
+if TYPE_CHECKING:
+    from cityshade.geometry.scene import Scene
+    from cityshade.raster.camera import Camera
 
 __all__ = ["Step", "Unit", "SunHours", "Checkpoint", "parse_duration_s", "parse_clock_s",
            "plan_steps", "plan_units", "sun_hours", "surface_sun_hours", "write_sun_hours",
-           "colour_map_png", "params_key", "read_manifest", "write_manifest", "MANIFEST_NAME",
-           "STATE_NAME"]
+           "colour_map_png", "params_key", "read_manifest", "write_manifest", "run_batch",
+           "BatchRun", "MANIFEST_NAME", "STATE_NAME"]
 
 MANIFEST_NAME = "manifest.json"
 STATE_NAME = "state.npz"
@@ -148,7 +151,7 @@ def plan_steps(first_day: date, from_s: int, to_s: int, every_s: float, tz: str,
         Unknown zone, empty window, both ``days`` and ``to_date``, non-positive counts, years
         outside 1000–3000, or more than :data:`MAX_STEPS` steps.
     """
-    from cityshade.citygml.temporal import _zone
+    from cityshade.citygml.temporal import zone_info
 
     if days is not None and to_date is not None:
         raise UsageError("give --days or --to-date, not both")
@@ -159,7 +162,7 @@ def plan_steps(first_day: date, from_s: int, to_s: int, every_s: float, tz: str,
                          "at the end of the day)")
     if not (math.isfinite(every_s) and every_s > 0):
         raise UsageError(f"the step must be longer than 0 s, not {every_s}")
-    zone = _zone(tz)
+    zone = zone_info(tz)
     if to_date is not None:
         if to_date < first_day:
             raise UsageError(f"--to-date {to_date} is before --date {first_day}")
@@ -294,17 +297,12 @@ class Checkpoint:
 
     def save(self, units_done: int, pixel_sum: np.ndarray, sample_sum: np.ndarray) -> None:
         """Write the state to a temporary name and rename it over the previous one."""
+        from cityshade.util import atomic_write
+
         t0 = time.perf_counter()
-        tmp = self.path.with_name(f".{self.path.name}.{uuid.uuid4().hex}.tmp")
-        try:
-            with tmp.open("wb") as fh:
-                np.savez(fh, key=np.array(self.key), units_done=np.array(units_done),
-                         pixel_sum=pixel_sum, sample_sum=sample_sum)
-            os.replace(tmp, self.path)
-        except OSError as exc:
-            tmp.unlink(missing_ok=True)
-            raise OutputError(f"cannot save the batch state: {exc.strerror or exc}",
-                              path=str(self.path)) from None
+        with atomic_write(self.path, "wb", what="the batch state") as fh:
+            np.savez(fh, key=np.array(self.key), units_done=np.array(units_done),
+                     pixel_sum=pixel_sum, sample_sum=sample_sum)
         self.saves += 1
         self.save_s += time.perf_counter() - t0
 
@@ -362,36 +360,28 @@ class SunHours:
 
 
 class _PixelRays:
-    """Sun-independent part of the exact shadow stage, computed once per batch: the visible
-    surface points and their normals turned towards the camera. Per step the same rule as the
-    ``raytrace`` technique applies: a pixel facing away from the sun (N·L <= 0) is in shadow,
-    the others are traced from :func:`cityshade.trace.shadow_rays_from_surface` (whose origin
-    steps along the normal and toward the sun, so it is made per step)."""
+    """The camera pass of a batch, kept for every step: per step the shared rule decides which
+    pixels face the sun (:attr:`cityshade.shadows.ShadowContext.faces`, as for the
+    ``raytrace`` technique) and only those are traced, from
+    :func:`cityshade.trace.shadow_rays_from_surface` (whose origin steps along the normal and
+    toward the sun, so it is made per step)."""
 
-    def __init__(self, surfaces, camera, valid):
-        from cityshade.shadows import oriented_normals
-
-        self.valid = valid
-        normal = oriented_normals(surfaces, camera)[valid]
-        # Degenerate triangles have a zero normal: they never face the sun and are not traced.
-        self.usable = np.flatnonzero(np.einsum("ij,ij->i", normal, normal) > 0.25)
-        self.normal = np.ascontiguousarray(normal[self.usable])
-        self.points = np.ascontiguousarray(surfaces.position_m[valid][self.usable],
-                                           dtype=np.float64)
+    def __init__(self, cp):
+        self.cp = cp
+        self.valid = cp.valid
 
     def lit(self, scene, sun, t_days: float) -> np.ndarray:
         """(H, W) float32: 1 lit, 0 shadow or no surface."""
         from cityshade.trace import occluded, shadow_rays_from_surface
 
-        flat = np.zeros(int(self.valid.sum()), np.float32)
-        direction = np.asarray(sun.direction, dtype=np.float64)
-        faces = np.flatnonzero(self.normal @ direction > 0.0)
-        if len(faces):
-            origins = shadow_rays_from_surface(self.points[faces], self.normal[faces], direction)
-            directions = np.ascontiguousarray(np.broadcast_to(direction, origins.shape))
-            flat[self.usable[faces]] = ~occluded(scene, origins, directions, t_days)
+        faces = self.cp.context(sun).faces
         lit = np.zeros(self.valid.shape, np.float32)
-        lit[self.valid] = flat
+        if faces.any():
+            direction = np.asarray(sun.direction, dtype=np.float64)
+            origins = shadow_rays_from_surface(self.cp.surfaces.position_m[faces],
+                                               self.cp.normal[faces], direction)
+            directions = np.ascontiguousarray(np.broadcast_to(direction, origins.shape))
+            lit[faces] = ~occluded(scene, origins, directions, t_days)
         return lit
 
 
@@ -430,8 +420,9 @@ def _city_changes(scene, instants, t_days) -> str | None:
     return None
 
 
-def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
-              weights_h=None, technique: str = "raytrace", options: dict | None = None,
+def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[datetime], t_days: float, *,
+              weights_h=None, technique: str = "raytrace",
+              settings: ShadowSettings | None = None,
               ground: str | None = None, spa=None, suns: Sequence | None = None,
               samples_per_m2: float | None = None, checkpoint: Checkpoint | None = None,
               reuse_rays: bool = True, on_step: Callable[[int, int, Unit], None] | None = None,
@@ -455,8 +446,8 @@ def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
     technique : str
         Shadow technique of the registry for the pixels. Surface samples always use exact
         shadow rays.
-    options : dict, optional
-        Technique options.
+    settings : ShadowSettings, optional
+        The technique's tunables (``[shadows]``).
     ground : str, optional
         Ground plane where no surface is drawn ("min", "auto" or a height; see render).
     spa : cityshade.sun.SpaSettings, optional
@@ -468,7 +459,7 @@ def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
     checkpoint : Checkpoint, optional
         Resume from and save to this state after every sun position.
     reuse_rays : bool
-        For ``raytrace`` without options: the oriented normals and shadow-ray origins of the
+        For ``raytrace``: the oriented normals and shadow-ray origins of the
         pixels do not depend on the sun, so they are computed once with the camera pass and
         each step only selects the pixels facing the sun and traces them. The result is
         identical to running the technique per step (``False``), which is tested.
@@ -489,7 +480,8 @@ def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
     CRSError
         Sun positions from instants for a model without CRS.
     """
-    from cityshade.shadows import ShadowContext, get_technique
+    from cityshade.pipeline import shadow_pass
+    from cityshade.shadows import get_technique
 
     t_start = time.perf_counter()
     if scene.kdtree is None:
@@ -530,27 +522,19 @@ def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
         warnings.append(change)
 
     # Camera pass, once.
-    surfaces = valid = None
+    cp = valid = rays = None
     diagnostics: dict[str, Any] = {}
     if camera is not None:
-        from cityshade.raster.gbuffer import resolve
-        from cityshade.raster.rasterize import rasterize
+        from cityshade.pipeline import camera_pass
 
         t0 = time.perf_counter()
-        gbuf = rasterize(scene, camera, float(t_days))
-        surfaces = resolve(scene, gbuf)
-        if ground is not None:
-            from cityshade.ground import add_ground_plane, ground_height_m
-
-            z = ground_height_m(scene, ground)
-            surfaces, filled = add_ground_plane(scene, camera, surfaces, z)
-            diagnostics["ground"] = {"mode": ground, "z_crs_m": z + float(scene.origin_m[2]),
-                                     "pixels": filled}
-        valid = np.asarray(surfaces.valid, bool)
-        diagnostics["gbuffer"] = gbuf.stats
-        rays = None
-        if reuse_rays and technique == "raytrace" and not options:
-            rays = _PixelRays(surfaces, camera, valid)
+        cp = camera_pass(scene, camera, float(t_days), ground=ground)
+        valid = cp.valid
+        diagnostics["gbuffer"] = cp.gbuffer.stats
+        if cp.ground is not None:
+            diagnostics["ground"] = cp.ground
+        if reuse_rays and technique == "raytrace":
+            rays = _PixelRays(cp)
         timings["camera_s"] = time.perf_counter() - t0
     samples = None
     if samples_per_m2 is not None:
@@ -578,11 +562,7 @@ def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
             if rays is not None:
                 lit = rays.lit(scene, unit.sun, float(t_days))
             else:
-                result = tech.run(ShadowContext(scene=scene, surfaces=surfaces, camera=camera,
-                                                sun=unit.sun, t_days=float(t_days),
-                                                options=options or {}))
-                lit = np.where(valid, np.nan_to_num(result.lit, nan=0.0),
-                               0.0).astype(np.float32)
+                lit = shadow_pass(cp, unit.sun, tech, settings).lit
             pixel_sum += unit.weight_h * lit.astype(np.float64)
             timings["shadow_s"] += time.perf_counter() - t0
             if on_frame is not None:
@@ -612,7 +592,8 @@ def sun_hours(scene, camera, instants_utc: Sequence[datetime], t_days: float, *,
         polygon_hours = polygon_means(samples, sample_sum)
     timings["total_s"] = time.perf_counter() - t_start
     below_set = set(below)
-    return SunHours(hours=hours, valid=valid, surfaces=surfaces, samples=samples,
+    return SunHours(hours=hours, valid=valid, surfaces=cp.surfaces if cp is not None else None,
+                    samples=samples,
                     sample_hours=sample_hours, polygon_hours=polygon_hours, steps=len(suns),
                     steps_below_horizon=len(below), steps_duplicate=duplicates,
                     units=len(units), units_resumed=resumed,
@@ -640,16 +621,6 @@ _VIRIDIS = np.array([(68, 1, 84), (59, 82, 139), (33, 145, 140), (94, 201, 98),
 #: Colour of pixels without a surface in the PNG (white: most map pixels of a model without
 #: terrain are empty, DESIGN §14).
 _NODATA_RGB = (255, 255, 255)
-#: 3×5 pixel glyphs of the legend labels (1 = ink), rows top to bottom.
-_GLYPHS = {
-    "0": ("111", "101", "101", "101", "111"), "1": ("010", "110", "010", "010", "111"),
-    "2": ("111", "001", "111", "100", "111"), "3": ("111", "001", "111", "001", "111"),
-    "4": ("101", "101", "111", "001", "001"), "5": ("111", "100", "111", "001", "111"),
-    "6": ("111", "100", "111", "101", "111"), "7": ("111", "001", "001", "001", "001"),
-    "8": ("111", "101", "111", "101", "111"), "9": ("111", "101", "111", "001", "111"),
-    ".": ("000", "000", "000", "000", "010"), "h": ("100", "100", "111", "101", "101"),
-    " ": ("000", "000", "000", "000", "000"),
-}
 
 
 def _colours(t: np.ndarray) -> np.ndarray:
@@ -660,25 +631,12 @@ def _colours(t: np.ndarray) -> np.ndarray:
     return np.rint(_VIRIDIS[i] * (1.0 - f) + _VIRIDIS[i + 1] * f).astype(np.uint8)
 
 
-def _draw_text(img: np.ndarray, text: str, x: int, y: int, scale: int) -> None:
-    """Black text into an (H, W, 3) uint8 image at top-left (x, y), clipped at the borders."""
-    h, w = img.shape[:2]
-    for n, ch in enumerate(text):
-        glyph = _GLYPHS[ch]
-        for r, row in enumerate(glyph):
-            for c, bit in enumerate(row):
-                if bit == "1":
-                    x0 = x + (n * 4 + c) * scale
-                    y0 = y + r * scale
-                    img[max(y0, 0):min(y0 + scale, h), max(x0, 0):min(x0 + scale, w)] = 0
-
-
 def _label(hours: float) -> str:
     return (f"{hours:.0f}" if hours == round(hours) else f"{hours:.1f}") + " h"
 
 
 def colour_map_png(hours: np.ndarray, vmax_h: float | None = None) -> np.ndarray:
-    """Colour-mapped sun-hours with a legend drawn below the map.
+    """Colour-mapped sun-hours with a legend below the map.
 
     Parameters
     ----------
@@ -691,8 +649,9 @@ def colour_map_png(hours: np.ndarray, vmax_h: float | None = None) -> np.ndarray
     Returns
     -------
     (H + legend, max(W, 64), 3) uint8
-        Map on top, then a white legend band: a colour bar from 0 to ``vmax_h`` with labels
-        at 0, the middle and the top.
+        Map on top, then the legend band drawn by matplotlib (:func:`legend_band`): a colour
+        bar from 0 to ``vmax_h`` with labels at 0, the middle and the top. Without matplotlib
+        (the ``[plot]`` extra) the band is left out.
     """
     hours = np.asarray(hours, dtype=np.float64)
     if hours.ndim != 2:
@@ -701,30 +660,37 @@ def colour_map_png(hours: np.ndarray, vmax_h: float | None = None) -> np.ndarray
         finite = hours[np.isfinite(hours)]
         vmax_h = max(1.0, math.ceil(float(finite.max()) if finite.size else 1.0))
     h, w = hours.shape
-    # Legend size follows the picture: glyph pixels of ~1/250 of the width, at least 1.
-    scale = max(1, w // 250)
     width = max(w, 64)
-    bar_h = 6 * scale
-    band = 4 * scale + bar_h + 3 * scale + 5 * scale + 4 * scale
-    img = np.full((h + band, width, 3), 255, np.uint8)
     rgb = _colours(np.nan_to_num(hours / vmax_h, nan=0.0))
     rgb[~np.isfinite(hours)] = _NODATA_RGB
+    band = legend_band(width, float(vmax_h))
+    img = np.full((h + (0 if band is None else band.shape[0]), width, 3), 255, np.uint8)
     img[:h, :w] = rgb
-    margin = 4 * scale
-    x0, x1 = margin, width - margin - 1
-    y_bar = h + 4 * scale
-    ramp = _colours(np.linspace(0.0, 1.0, x1 - x0 + 1))
-    img[y_bar:y_bar + bar_h, x0:x1 + 1] = ramp[None, :, :]
-    y_text = y_bar + bar_h + 3 * scale
-    for value, anchor in ((0.0, 0.0), (vmax_h / 2, 0.5), (vmax_h, 1.0)):
-        text = _label(value)
-        text_w = (len(text) * 4 - 1) * scale
-        x = int(round(x0 + anchor * (x1 - x0) - anchor * text_w))
-        img[y_bar + bar_h:y_bar + bar_h + 2 * scale,
-            int(round(x0 + anchor * (x1 - x0))) - (scale // 2):
-            int(round(x0 + anchor * (x1 - x0))) - (scale // 2) + scale] = 0
-        _draw_text(img, text, x, y_text, scale)
+    if band is not None:
+        img[h:] = band
     return img
+
+
+def legend_band(width_px: int, vmax_h: float) -> np.ndarray | None:
+    """(B, width_px, 3) uint8: the viridis bar from 0 to ``vmax_h`` hours with labels at 0,
+    the middle and the top, drawn by matplotlib; None without it."""
+    from cityshade.util import agg_canvas, canvas_pixels, have_matplotlib
+
+    if not have_matplotlib():
+        return None
+    from matplotlib.colors import ListedColormap
+
+    # Legend size follows the picture: text of ~1/40 of the width, within 7–14 pt.
+    font_pt = float(np.clip(width_px / 40.0, 7.0, 14.0))
+    fig, canvas = agg_canvas(width_px, int(round(4.5 * font_pt * 100 / 72)))
+    ax = fig.add_axes((0.06, 0.55, 0.88, 0.35))
+    ramp = _colours(np.linspace(0.0, 1.0, 256)) / 255.0
+    ax.imshow(np.linspace(0.0, 1.0, 256)[None, :], aspect="auto", cmap=ListedColormap(ramp),
+              extent=(0.0, vmax_h, 0.0, 1.0), interpolation="nearest")
+    ax.set_yticks([])
+    ax.set_xticks([0.0, vmax_h / 2.0, vmax_h],
+                  [_label(v) for v in (0.0, vmax_h / 2.0, vmax_h)], fontsize=font_pt)
+    return canvas_pixels(canvas)
 
 
 def run_metadata(result: SunHours, scene, params: dict[str, Any]) -> dict[str, Any]:
@@ -807,13 +773,200 @@ def read_manifest(outdir) -> dict[str, Any] | None:
 
 def write_manifest(outdir, manifest: dict[str, Any]) -> Path:
     """Write ``OUTDIR/manifest.json`` atomically."""
-    path = Path(outdir) / MANIFEST_NAME
-    tmp = path.with_name(f".{path.name}.{uuid.uuid4().hex}.tmp")
-    try:
-        tmp.write_text(json.dumps(manifest, indent=2, sort_keys=True) + "\n", encoding="utf-8")
-        os.replace(tmp, path)
-    except OSError as exc:
-        tmp.unlink(missing_ok=True)
-        raise OutputError(f"cannot write the manifest: {exc.strerror or exc}",
-                          path=str(path)) from None
-    return path
+    from cityshade.util import write_text_atomic
+
+    return write_text_atomic(Path(outdir) / MANIFEST_NAME,
+                             json.dumps(manifest, indent=2, sort_keys=True) + "\n",
+                             what="the manifest")
+
+
+# --- a resumable run in an output folder ----------------------------------------------------------
+
+@dataclass
+class BatchRun:
+    """Result of :func:`run_batch`.
+
+    Attributes
+    ----------
+    result : SunHours
+    written : list of Path
+        The output files (sun-hour maps, surfaces.csv; not the frames).
+    manifest : dict
+        What ``OUTDIR/manifest.json`` holds (parameters, steps, status, summary).
+    suns : list of SunPosition
+        One per step.
+    write_s : float
+        Time spent writing the outputs.
+    """
+
+    result: SunHours
+    written: list[Path]
+    manifest: dict[str, Any]
+    suns: list
+    write_s: float
+
+
+def _iso(instant: datetime) -> str:
+    return instant.isoformat().replace("+00:00", "Z")
+
+
+def frame_name(step: Step) -> str:
+    """File name of a step's shadow mask in ``OUTDIR/frames``."""
+    return f"step_{step.index:05d}_{step.centre_utc.strftime('%Y%m%dT%H%M%SZ')}.png"
+
+
+def camera_params(camera: "Camera") -> dict[str, Any]:
+    """The camera as it enters a run's parameter hash."""
+    return {"kind": camera.kind, "width_px": camera.width_px, "height_px": camera.height_px,
+            "eye_m": [float(v) for v in camera.eye_m],
+            "target_m": [float(v) for v in camera.target_m],
+            "vfov_deg": float(camera.vfov_deg), "pixel_size_m": camera.pixel_size_m}
+
+
+def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t_days: float, *,
+              request: dict[str, Any] | None = None, technique: str = "raytrace",
+              settings=None, ground: str | None = None, frames: bool = False,
+              surfaces_csv: bool = False, overwrite: bool = False,
+              on_plan: Callable[[int], None] | None = None,
+              on_step: Callable[[int, int, Unit], None] | None = None) -> BatchRun:
+    """A resumable sun-hour run in ``outdir``: manifest, parameter hash, saved state, outputs.
+
+    The parameters (``request``, the camera, technique, settings, ground, outputs) are hashed
+    (:func:`params_key`) into the manifest; running again with the same parameters continues
+    from the saved state (``state.npz``) without redoing finished sun positions and gives a
+    bit-identical result; other parameters are refused unless ``overwrite``.
+
+    Parameters
+    ----------
+    outdir : path-like
+        Created when missing.
+    scene, camera, t_days
+        As for :func:`sun_hours`.
+    steps : sequence of Step
+        :func:`plan_steps`.
+    request : dict, optional
+        JSON-able description of the run from the caller (file, dates, zone...), part of the
+        hash and the manifest.
+    technique : str
+    settings : cityshade.config.Settings, optional
+        ``shadows`` for the technique, ``sun`` for SPA, ``batch`` for the surface samples.
+    ground : str, optional
+    frames : bool
+        Also write every step's shadow mask to ``outdir/frames``.
+    surfaces_csv : bool
+        Also compute per-surface sun-hours (``settings.batch.samples_per_m2``) and write
+        ``surfaces.csv``.
+    overwrite : bool
+        Discard a run of other parameters (or a state without manifest) in ``outdir``.
+    on_plan : callable(units_to_compute), optional
+        Called once the sun positions are known (progress bars).
+    on_step : callable(units_done, units_total, unit), optional
+        Called after each sun position (an exception raised here stops the run with the state
+        saved).
+
+    Raises
+    ------
+    UsageError
+        ``outdir`` holds a run of other parameters (the message names what differs) or a
+        state without manifest, and not ``overwrite``.
+    OutputError
+        ``outdir`` cannot be created or written.
+    """
+    import dataclasses
+
+    from cityshade.config import Settings
+    from cityshade.sun import suns_from_instants
+    from cityshade.util import make_folder
+
+    settings = settings or Settings()
+    outdir = Path(outdir)
+    samples_per_m2 = settings.batch.samples_per_m2 if surfaces_csv else None
+    params = {**(request or {}), "city_days": float(t_days), "camera": camera_params(camera),
+              "technique": technique, "ground": ground,
+              "refraction": bool(settings.sun.refraction), "frames": frames,
+              "samples_per_m2": samples_per_m2,
+              "shadow_settings": dataclasses.asdict(dataclasses.replace(settings.shadows,
+                                                                        technique=None))}
+    key = params_key(params)
+    make_folder(outdir)
+    old = read_manifest(outdir)
+    state = Checkpoint(outdir / STATE_NAME, key)
+    if old is not None and old.get("key") != key:
+        if not overwrite:
+            before = old.get("params", {})
+            changed = sorted(k for k in set(params) | set(before) if params.get(k) != before.get(k))
+            raise UsageError(f"{outdir} holds a run with other parameters (differs in: "
+                             f"{', '.join(changed) or 'version'}); use --overwrite or another "
+                             f"-o folder")
+        state.remove()
+    elif old is None and state.path.exists():
+        if not overwrite:
+            raise UsageError(f"{state.path} has no manifest next to it; use --overwrite")
+        state.remove()
+
+    manifest: dict[str, Any] = {
+        "cityshade_version": __version__, "key": key, "params": params, "status": "running",
+        "steps": [{"index": s.index, "start_utc": _iso(s.start_utc), "end_utc": _iso(s.end_utc),
+                   "weight_h": s.weight_h} for s in steps],
+        "finished_steps": [],
+    }
+    write_manifest(outdir, manifest)
+    frames_dir = outdir / "frames"
+    if frames:
+        frames_dir.mkdir(exist_ok=True)
+
+    instants = [s.centre_utc for s in steps]
+    weights = [s.weight_h for s in steps]
+    suns = suns_from_instants(instants, scene.crs, scene.origin_m, settings.sun)
+    units, below, _ = plan_units(suns, weights)
+    finished: list[int] = list(below)  # nothing to compute for a sun below the horizon
+    done_before = state.units_done()
+    for unit in units[:done_before]:
+        finished.extend(unit.steps)
+    if on_plan is not None:
+        on_plan(len(units) - done_before)
+
+    def step_done(done, total, unit):
+        finished.extend(unit.steps)
+        manifest["finished_steps"] = sorted(finished)
+        manifest["sun_positions_done"] = done
+        write_manifest(outdir, manifest)
+        if on_step is not None:
+            on_step(done, total, unit)
+
+    def frame_done(unit, lit, valid):
+        from cityshade.imageio import mask_from_lit, write_mask_png
+
+        mask = mask_from_lit(lit, valid)
+        for i in unit.steps:
+            write_mask_png(frames_dir / frame_name(steps[i]), mask)
+
+    result = sun_hours(scene, camera, instants, t_days, weights_h=weights, technique=technique,
+                       settings=settings.shadows, ground=ground, suns=suns,
+                       samples_per_m2=samples_per_m2, checkpoint=state,
+                       reuse_rays=settings.batch.reuse_rays, on_step=step_done,
+                       on_frame=frame_done if frames else None)
+    if frames and below:
+        from cityshade.imageio import mask_from_lit, write_mask_png
+
+        # The sun is down: every surface pixel is in shadow, the rest stays nodata.
+        nothing_lit = mask_from_lit(np.zeros(result.valid.shape), result.valid)
+        for i in below:
+            write_mask_png(frames_dir / frame_name(steps[i]), nothing_lit)
+    meta = run_metadata(result, scene, params)
+    t1 = time.perf_counter()
+    written = write_sun_hours(outdir, result, scene, camera, meta, surfaces_csv=surfaces_csv)
+    write_s = time.perf_counter() - t1
+    manifest["status"] = "finished"
+    manifest["finished_steps"] = sorted(finished)
+    manifest["summary"] = {
+        "steps": result.steps, "steps_below_horizon": result.steps_below_horizon,
+        "steps_same_sun": result.steps_duplicate, "sun_positions": result.units,
+        "sun_positions_resumed": result.units_resumed, "hours_total": result.hours_total,
+        "hours_sun_up": result.hours_sun_up,
+        "outputs": [p.name for p in written],
+        "timings_s": {**result.timings_s, "write_s": write_s},
+    }
+    write_manifest(outdir, manifest)
+    return BatchRun(result=result, written=written, manifest=manifest, suns=suns,
+                    write_s=write_s)

@@ -22,7 +22,6 @@ import hashlib
 import json
 import os
 import struct
-import tempfile
 from pathlib import Path
 from typing import Any, Mapping
 
@@ -30,6 +29,7 @@ import numpy as np
 
 from cityshade.errors import (CacheCorruptError, CacheError, CacheVersionError, InputError,
                               OutputError)
+from cityshade.util import atomic_write
 
 MAGIC = b"CITYSHD\n"
 #: Bump on any change of layout or meaning of a stored array; old files are refused.
@@ -102,38 +102,27 @@ def write_cache(path: str | os.PathLike, header: Mapping[str, Any],
         raise OutputError(f"cannot write here: {path.parent} is not a folder", path=str(path))
     try:
         path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-        # mkstemp makes the file 0600; a scene file is shared like any output: the umask's mode.
-        os.fchmod(fd, 0o666 & ~_current_umask())
     except OSError as exc:
         raise OutputError(f"cannot write here: {exc.strerror}", path=str(path)) from None
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(prefix)
-            fh.write(blob)
-            fh.write(b"\0" * (data_start - _PREFIX.size - len(blob)))
-            for name, a in prepared.items():
-                fh.write(memoryview(a).cast("B"))
-                pad = -a.nbytes % _ALIGN
-                if pad:
-                    fh.write(b"\0" * pad)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        try:
-            os.unlink(tmp)
-        except OSError:
-            pass
-        raise
+    with atomic_write(path, "wb", fsync=True, what="here") as fh:
+        fh.write(prefix)
+        fh.write(blob)
+        fh.write(b"\0" * (data_start - _PREFIX.size - len(blob)))
+        for name, a in prepared.items():
+            fh.write(memoryview(a).cast("B"))
+            pad = -a.nbytes % _ALIGN
+            if pad:
+                fh.write(b"\0" * pad)
     return data_start + offset
 
 
-def _current_umask() -> int:
-    """The process's umask (reading it means setting it: set it straight back)."""
-    mask = os.umask(0o022)
-    os.umask(mask)
-    return mask
+def is_cache_file(path: str | os.PathLike) -> bool:
+    """Whether ``path`` is a cityshade cache file (by its magic bytes, not its name)."""
+    try:
+        with open(path, "rb") as fh:
+            return fh.read(len(MAGIC)) == MAGIC
+    except OSError:
+        return False
 
 
 class CacheFile:

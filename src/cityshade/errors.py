@@ -86,3 +86,14 @@ class ConfigError(UsageError):
 
 class OutputError(CityshadeError):
     """An output file that cannot be written (folder missing or not writable, disk full)."""
+
+
+class ContractError(Exception):
+    """Internal misuse of a library function: a bug in the caller, not the user's fault.
+
+    Deliberately not a :class:`CityshadeError` (those are the user's input and options): the
+    CLI reports it as one line "internal error: ..." with exit status 70 (EX_SOFTWARE) and
+    shows the traceback only with ``-v``/``--verbose``.
+    """
+
+    exit_code = 70

@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import math
 import os
-import uuid
 from pathlib import Path
 from typing import Mapping, Sequence
 
@@ -126,21 +125,18 @@ def _set_attribute(spec, path: Path, name: str, value) -> None:
 def _write_atomically(path: Path, parts: Sequence[tuple], finish=None) -> None:
     """Write ``parts`` [(ImageSpec, pixels), ...] (several = a multi-part EXR) to ``path``.
 
-    The image goes to a unique temporary name next to the destination (same file system, so the
-    rename is atomic; the name keeps the extension because OpenImageIO picks the format from
-    it; made unique rather than created with mkstemp so the file gets the usual umask
-    permissions). ``finish(tmp_path)``, if given, edits the complete temporary file before the
-    rename. Any failure removes the temporary file.
+    The image goes to a temporary name next to the destination (:func:`cityshade.util.atomic_path`;
+    the name keeps the extension because OpenImageIO picks the format from it).
+    ``finish(tmp_path)``, if given, edits the complete temporary file before the rename. Any
+    failure removes the temporary file.
     """
     import OpenImageIO as oiio  # heavy import only when an image is written (DESIGN §2)
 
+    from cityshade.util import atomic_path
+
     ext = path.suffix.lower()
-    folder = path.parent
-    if not folder.is_dir():
-        raise ImageIOError(f"cannot write image: folder {folder} does not exist",
-                           path=str(path))
-    tmp_name = str(folder / f".{path.name}.{os.getpid()}.{uuid.uuid4().hex}.tmp{ext}")
-    try:
+    with atomic_path(path, keep_suffix=True, error=ImageIOError, what="image") as tmp:
+        tmp_name = str(tmp)
         out = oiio.ImageOutput.create(tmp_name)
         if out is None:
             raise ImageIOError(f"OpenImageIO has no writer for {ext}: {oiio.geterror()}",
@@ -168,16 +164,6 @@ def _write_atomically(path: Path, parts: Sequence[tuple], finish=None) -> None:
                                path=str(path))
         if finish is not None:
             finish(tmp_name)
-        try:
-            os.replace(tmp_name, path)
-        except OSError as exc:
-            raise ImageIOError(f"cannot write image: {exc.strerror}", path=str(path)) from None
-    except BaseException:
-        try:
-            os.unlink(tmp_name)
-        except FileNotFoundError:
-            pass
-        raise
 
 
 def write_image(path: str | os.PathLike, pixels: np.ndarray, *,
@@ -568,16 +554,10 @@ def _crs_of(crs_wkt, epsg):
 
 
 def _write_text_atomically(path: Path, text: str) -> None:
-    tmp = path.parent / f".{path.name}.{os.getpid()}.{uuid.uuid4().hex}.tmp"
-    try:
-        tmp.write_text(text, encoding="ascii", newline="\n")
-        os.replace(tmp, path)
-    except OSError as exc:
-        try:
-            tmp.unlink()
-        except FileNotFoundError:
-            pass
-        raise ImageIOError(f"cannot write file: {exc.strerror}", path=str(path)) from None
+    from cityshade.util import atomic_write
+
+    with atomic_write(path, encoding="ascii", newline="\n", error=ImageIOError) as fh:
+        fh.write(text)
 
 
 # TIFF field types and GeoTIFF tags/keys (GeoTIFF 1.1, OGC 19-008r4).

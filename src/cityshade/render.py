@@ -1,4 +1,4 @@
-"""One frame: city time + sun + camera → G-buffer → shadow technique → shading → outputs.
+"""One frame: city time + sun + camera → pipeline (camera pass, shadow pass) → shading → outputs.
 
 The library entry points are :func:`render_frame` (arrays in, arrays out) and
 :func:`write_frame` (EXR, PNG, shadow mask, georeferenced mask). The CLI (`cli/render.py`) only
@@ -10,13 +10,19 @@ import math
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from cityshade import __version__
+from cityshade.config import ShadowSettings
+from cityshade.diagnostics import FrameDiagnostics
 from cityshade.errors import UsageError
 
+if TYPE_CHECKING:
+    from cityshade.geometry.scene import Scene
+    from cityshade.raster.camera import Camera
+    from cityshade.sun import SunPosition
 
 
 @dataclass
@@ -32,7 +38,7 @@ class Frame:
     t_days: float
     technique: str
     timings_s: dict[str, float] = field(default_factory=dict)
-    diagnostics: dict[str, Any] = field(default_factory=dict)
+    diagnostics: FrameDiagnostics = field(default_factory=FrameDiagnostics)
     warnings: list[str] = field(default_factory=list)
     #: Technique-specific EXR channels (e.g. ``refined`` of ``hybrid``), (H, W) each.
     extra_channels: dict[str, np.ndarray] = field(default_factory=dict)
@@ -46,10 +52,10 @@ def city_time_range(scene) -> tuple[float, float] | None:
     return (float(np.min(scene.obj_t_begin_days)), float(np.max(scene.obj_t_end_days)))
 
 
-def render_frame(scene, camera, t_days: float, sun, technique: str = "raytrace",
-                 options: dict | None = None, sky: bool = True,
-                 ground: str | None = None) -> Frame:
-    """Render one frame.
+def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosition",
+                 technique: str = "raytrace", settings: ShadowSettings | None = None,
+                 sky: bool = True, ground: str | None = None) -> Frame:
+    """Render one frame: the pipeline's camera pass and shadow pass, then shading.
 
     Parameters
     ----------
@@ -61,19 +67,19 @@ def render_frame(scene, camera, t_days: float, sun, technique: str = "raytrace",
     sun : cityshade.sun.SunPosition
     technique : str
         A name of the shadow registry (:func:`cityshade.shadows.get_technique`).
+    settings : ShadowSettings, optional
+        The techniques' tunables (``[shadows]`` of the settings file).
     ground : str, optional
         "min", "auto" or a CRS height: add a ground plane where no surface was drawn
         (:mod:`cityshade.ground`).
     """
-    from cityshade.raster.gbuffer import resolve
-    from cityshade.raster.rasterize import rasterize
+    from cityshade.pipeline import camera_pass, shadow_pass
     from cityshade.shading import shade
-    from cityshade.shadows import ShadowContext, get_technique
+    from cityshade.shadows import get_technique
 
     if scene.kdtree is None:
         raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
     tech = get_technique(technique)
-    timings: dict[str, float] = {}
     warnings: list[str] = []
     if not sun.above_horizon:
         warnings.append(f"the sun is at or below the horizon (elevation {sun.elevation_deg:g}°): "
@@ -84,43 +90,20 @@ def render_frame(scene, camera, t_days: float, sun, technique: str = "raytrace",
 
         warnings.append(f"the date is outside the model's time range "
                         f"({days_to_iso(rng[0])} … {days_to_iso(rng[1])}): nothing stands then")
-    t = time.perf_counter()
-    gbuf = rasterize(scene, camera, t_days)
-    timings["gbuffer_s"] = time.perf_counter() - t
-    t = time.perf_counter()
-    surfaces = resolve(scene, gbuf)
-    ground_info = None
-    if ground is not None:
-        from cityshade.ground import add_ground_plane, ground_height_m
-
-        z = ground_height_m(scene, ground)
-        surfaces, filled = add_ground_plane(scene, camera, surfaces, z)
-        ground_info = {"mode": ground, "z_crs_m": z + float(scene.origin_m[2]), "pixels": filled}
-    timings["resolve_s"] = time.perf_counter() - t
-    t = time.perf_counter()
-    result = tech.run(ShadowContext(scene=scene, surfaces=surfaces, camera=camera, sun=sun,
-                                    t_days=t_days, options=options or {}))
-    timings["shadow_s"] = time.perf_counter() - t
-    lit = np.where(surfaces.valid, np.nan_to_num(result.lit, nan=0.0), 0.0).astype(np.float32)
+    cp = camera_pass(scene, camera, t_days, ground=ground)
+    timings: dict[str, float] = dict(cp.timings_s)
+    sp = shadow_pass(cp, sun, tech, settings)
+    timings["shadow_s"] = sp.seconds
     t = time.perf_counter()
     shade_report: dict = {}
-    rgb = shade(scene, surfaces, camera, lit, sun.direction, sky=sky, prim_id=gbuf.prim_id,
-                report=shade_report)
+    rgb = shade(scene, cp.surfaces, camera, sp.lit, sun.direction, sky=sky,
+                prim_id=cp.gbuffer.prim_id, report=shade_report)
     timings["shade_s"] = time.perf_counter() - t
     warnings += list(shade_report.get("texture_warnings", []))
-    diagnostics = dict(result.diagnostics)
-    diagnostics["gbuffer"] = gbuf.stats
-    # What this scene and request let the frame leave out (`render -v`, one item per line).
-    from cityshade.evaluate import skipped_work
-
-    diagnostics["skipped"] = "\n         ".join(
-        skipped_work(scene, gbuf.stats, result.diagnostics, surfaces, sun)) or "nothing"
-    if ground_info is not None:
-        diagnostics["ground"] = ground_info
-    return Frame(camera=camera, gbuffer=gbuf, surfaces=surfaces, lit=lit, rgb=rgb, sun=sun,
-                 t_days=t_days, technique=technique, timings_s=timings,
-                 diagnostics=diagnostics, warnings=warnings,
-                 extra_channels=dict(result.extra_channels))
+    return Frame(camera=camera, gbuffer=cp.gbuffer, surfaces=cp.surfaces, lit=sp.lit, rgb=rgb,
+                 sun=sun, t_days=t_days, technique=technique, timings_s=timings,
+                 diagnostics=sp.diagnostics(cp), warnings=warnings,
+                 extra_channels=dict(sp.result.extra_channels))
 
 
 def shadow_mask(frame: Frame) -> np.ndarray:
@@ -154,8 +137,8 @@ def frame_metadata(frame: Frame, scene, date_text: str) -> dict[str, Any]:
     }
     if frame.sun.note:
         meta["cityshade:sun_note"] = frame.sun.note
-    ground = frame.diagnostics.get("ground")
-    meta["cityshade:ground"] = (f"{ground['mode']} plane at z={ground['z_crs_m']:.3f} m"
+    ground = frame.diagnostics.ground
+    meta["cityshade:ground"] = (f"{ground.mode} plane at z={ground.z_crs_m:.3f} m"
                                 if ground else "none")
     return meta
 

@@ -39,6 +39,7 @@ from typing import Callable, Sequence
 import numpy as np
 
 from cityshade.errors import CityshadeError, UsageError
+from cityshade.util import atomic_write
 
 __all__ = ["CityInfo", "SampleCitySettings", "SampleGenError", "generate_city",
            "facade_texture", "main"]
@@ -1064,24 +1065,18 @@ def generate_city(path: str | os.PathLike, *, n_buildings: int = 40, seed: int =
                                  path=str(texture_path)) from None
 
     counts = _Counts()
-    tmp = folder / f".{path.name}.{os.getpid()}.tmp"
     sink = _AppearanceSink(folder, texture)
     try:
-        with open(tmp, "w", encoding="utf-8", newline="\n", buffering=1 << 20) as out:
+        with atomic_write(path, newline="\n", buffering=1 << 20, error=SampleGenError,
+                          what="sample city") as out:
             if output_format == "citygml":
                 _write_city(out, plans, tin, terrain, ox, oy, detail, seed, s, counts, sink,
                             texture_uri)
             else:
                 _write_cityjson(out, plans, tin, terrain, ox, oy, detail, seed, s, counts,
                                 texture_uri, seq=output_format == "cityjsonseq")
-        os.replace(tmp, path)
-    except OSError as exc:
-        raise SampleGenError(f"cannot write sample city: {exc.strerror}", path=str(path)) \
-            from None
     finally:
         sink.close()
-        if tmp.exists():
-            tmp.unlink()
 
     terrain_tris = tin.triangles if terrain else 0
     return CityInfo(path=path, texture_path=texture_path, buildings=counts.buildings,

@@ -15,14 +15,13 @@ from __future__ import annotations
 import csv
 import math
 import os
-import uuid
 from dataclasses import dataclass
 from pathlib import Path
 
 import numpy as np
 from numba import njit
 
-from cityshade.errors import OutputError, UsageError
+from cityshade.errors import UsageError
 
 __all__ = ["SurfaceSamples", "SampleSettings", "sample_surfaces", "samples_lit",
            "polygon_means", "write_surface_csv"]
@@ -218,21 +217,16 @@ def write_surface_csv(path: str | os.PathLike, scene, samples: SurfaceSamples,
 
     path = Path(path)
     counts = np.bincount(samples.polygon, minlength=samples.sampled.shape[0])
-    tmp = path.with_name(f".{path.name}.{uuid.uuid4().hex}.tmp")
-    try:
-        with tmp.open("w", newline="", encoding="utf-8") as fh:
-            writer = csv.writer(fh)
-            writer.writerow(CSV_COLUMNS)
-            for p in np.flatnonzero(samples.sampled):
-                obj = int(scene.poly_object[p])
-                cls = int(scene.poly_class[p])
-                writer.writerow([scene.obj_ids[obj], scene.poly_ids[p], int(p),
-                                 SURFACE_CLASSES[cls] if cls < len(SURFACE_CLASSES) else cls,
-                                 f"{float(scene.poly_area_m2[p]):.3f}", int(counts[p]),
-                                 f"{float(polygon_hours[p]):.4f}"])
-        os.replace(tmp, path)
-    except OSError as exc:
-        tmp.unlink(missing_ok=True)
-        raise OutputError(f"cannot write the surface table: {exc.strerror or exc}",
-                          path=str(path)) from None
+    from cityshade.util import atomic_write
+
+    with atomic_write(path, newline="", what="the surface table") as fh:
+        writer = csv.writer(fh)
+        writer.writerow(CSV_COLUMNS)
+        for p in np.flatnonzero(samples.sampled):
+            obj = int(scene.poly_object[p])
+            cls = int(scene.poly_class[p])
+            writer.writerow([scene.obj_ids[obj], scene.poly_ids[p], int(p),
+                             SURFACE_CLASSES[cls] if cls < len(SURFACE_CLASSES) else cls,
+                             f"{float(scene.poly_area_m2[p]):.3f}", int(counts[p]),
+                             f"{float(polygon_hours[p]):.4f}"])
     return path

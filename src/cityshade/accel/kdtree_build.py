@@ -31,15 +31,13 @@ import numpy as np
 from numba import njit
 from numba.typed import List
 
+from cityshade.accel.kdtree_layout import (LEAF_CODE, TIME_AXIS, KdTree, pack_nodes,
+                                           triangle_records)
 from cityshade.errors import ConfigError, UsageError
 
 #: Deepest tree the layout and the fixed traversal stack support (the stack holds one entry
 #: per level, see ``cityshade.trace.kernels.STACK_SIZE``).
 MAX_DEPTH_LIMIT = 60
-#: Axis code of a time split; 0, 1, 2 are x, y, z.
-AXIS_T = 3
-#: Axis code stored for a leaf.
-LEAF = 4
 
 
 class KdTreeInputError(UsageError):
@@ -160,6 +158,26 @@ def _clip_poly(px, py, pz, n, axis, value, keep_below, qx, qy, qz):
     return m
 
 
+@njit(cache=True, inline="always")
+def _put_ref(tri_v, ids, lo, hi, r, straddles, axis, p, left, cb_lo, cb_hi, ids_c, lo_c, hi_c,
+             ic, clo, chi, scratch):
+    """Reference ``r`` of a node becomes entry ``ic`` of a child (box ``cb_lo``-``cb_hi``); a
+    triangle straddling a spatial split keeps its true extent inside the child (perfect
+    split), or the child's side of the plane when the clipping finds nothing."""
+    ids_c[ic] = ids[r]
+    lo_c[ic] = lo[r]
+    hi_c[ic] = hi[r]
+    if straddles:
+        if _clipped_box(tri_v, ids[r], cb_lo, cb_hi, clo, chi, scratch):
+            for c in range(3):
+                lo_c[ic, c] = max(lo[r, c], max(cb_lo[c], _f32_down(clo[c])))
+                hi_c[ic, c] = min(hi[r, c], min(cb_hi[c], _f32_up(chi[c])))
+        elif left:
+            hi_c[ic, axis] = p
+        else:
+            lo_c[ic, axis] = p
+
+
 @njit(cache=True)
 def _clipped_box(tri_v, tri, box_lo, box_hi, out_lo, out_hi, scratch):
     """Bounding box of triangle ``tri`` clipped to the 3-D box; False if nothing is left."""
@@ -213,7 +231,7 @@ def _surface(lo, hi, has_time, t0, t1):
 @njit(cache=True)
 def _split_probabilities(lo, hi, axis, p, t0, t1):
     """(P_L, P_R) of a split of box (lo, hi) at ``p`` on ``axis``; (-1, -1) if undefined."""
-    if axis == AXIS_T:
+    if axis == TIME_AXIS:
         a = max(lo[3], t0)
         b = min(hi[3], t1)
         d = b - a
@@ -274,7 +292,7 @@ def _sweep_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, best):
     starts = np.sort(starts[:ns])
     ends = np.sort(ends[:ns])
     planars = np.sort(planars[:npl])
-    if axis == AXIS_T:
+    if axis == TIME_AXIS:
         a_lo = max(blo[3], t0)
         a_hi = min(bhi[3], t1)
     else:
@@ -330,7 +348,7 @@ def _sweep_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, best):
 def _binned_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, nbins, best):
     """Approximate SAH over ``nbins`` equal bins of one axis (counts per bin, O(n))."""
     n = lo.shape[0]
-    if axis == AXIS_T:
+    if axis == TIME_AXIS:
         a = max(blo[3], t0)
         b = min(bhi[3], t1)
     else:
@@ -378,16 +396,8 @@ def _binned_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, nbins, best):
 
 
 @njit(cache=True)
-def _grow_i64(a, n):
-    if n <= a.shape[0]:
-        return a
-    b = np.empty(max(n, 2 * a.shape[0]), a.dtype)
-    b[:a.shape[0]] = a
-    return b
-
-
-@njit(cache=True)
-def _grow_f64(a, n):
+def _grow(a, n):
+    """``a`` with room for at least ``n`` entries (doubling; the first entries kept)."""
     if n <= a.shape[0]:
         return a
     b = np.empty(max(n, 2 * a.shape[0]), a.dtype)
@@ -458,10 +468,10 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         node = n_nodes
         n_nodes += 1
         if n_nodes > node_axis.shape[0]:
-            node_axis = _grow_i64(node_axis, n_nodes)
-            node_child = _grow_i64(node_child, n_nodes)
-            node_first = _grow_i64(node_first, n_nodes)
-            node_split = _grow_f64(node_split, n_nodes)
+            node_axis = _grow(node_axis, n_nodes)
+            node_child = _grow(node_child, n_nodes)
+            node_first = _grow(node_first, n_nodes)
+            node_split = _grow(node_split, n_nodes)
         if parent >= 0:
             node_child[parent] = node
         n = ids.shape[0]
@@ -483,10 +493,10 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
             for r in range(n):
                 key[r] = (np.int64(material[ids[r]]) + 1) * (np.int64(n_tri) + 1) + ids[r]
             order = np.argsort(key, kind="mergesort")
-            prims = _grow_i64(prims, n_prims + n)
+            prims = _grow(prims, n_prims + n)
             for r in range(n):
                 prims[n_prims + r] = ids[order[r]]
-            node_axis[node] = LEAF
+            node_axis[node] = LEAF_CODE
             node_child[node] = n
             node_first[node] = n_prims
             node_split[node] = 0.0
@@ -503,7 +513,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         p = best[2]
         planar_left = best[3] > 0.5
         sah += ct * surf
-        if axis == AXIS_T:
+        if axis == TIME_AXIS:
             time_splits += 1
 
         # Classify: 1 = left only, 2 = right only, 3 = both (straddling, clipped below).
@@ -513,7 +523,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         for r in range(n):
             a = lo[r, axis]
             b = hi[r, axis]
-            if axis == AXIS_T:
+            if axis == TIME_AXIS:
                 s = (1 if a < p else 0) | (2 if b > p else 0)
             elif a == b and a == p:
                 s = 1 if planar_left else 2
@@ -546,29 +556,12 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         for r in range(n):
             s = side[r]
             if s & 1:
-                ids_l[il] = ids[r]
-                lo_l[il] = lo[r]
-                hi_l[il] = hi[r]
-                if s == 3 and axis != AXIS_T:
-                    # Perfect split: the true extent of the triangle inside the child box.
-                    if _clipped_box(tri_v, ids[r], blo_l, bhi_l, clo, chi, scratch):
-                        for c in range(3):
-                            lo_l[il, c] = max(lo[r, c], max(blo_l[c], _f32_down(clo[c])))
-                            hi_l[il, c] = min(hi[r, c], min(bhi_l[c], _f32_up(chi[c])))
-                    else:
-                        hi_l[il, axis] = p
+                _put_ref(tri_v, ids, lo, hi, r, s == 3 and axis != TIME_AXIS, axis, p, True,
+                         blo_l, bhi_l, ids_l, lo_l, hi_l, il, clo, chi, scratch)
                 il += 1
             if s & 2:
-                ids_r[ir] = ids[r]
-                lo_r[ir] = lo[r]
-                hi_r[ir] = hi[r]
-                if s == 3 and axis != AXIS_T:
-                    if _clipped_box(tri_v, ids[r], blo_r, bhi_r, clo, chi, scratch):
-                        for c in range(3):
-                            lo_r[ir, c] = max(lo[r, c], max(blo_r[c], _f32_down(clo[c])))
-                            hi_r[ir, c] = min(hi[r, c], min(bhi_r[c], _f32_up(chi[c])))
-                    else:
-                        lo_r[ir, axis] = p
+                _put_ref(tri_v, ids, lo, hi, r, s == 3 and axis != TIME_AXIS, axis, p, False,
+                         blo_r, bhi_r, ids_r, lo_r, hi_r, ir, clo, chi, scratch)
                 ir += 1
 
         node_axis[node] = axis
@@ -659,8 +652,6 @@ def build_kdtree(vertices, triangles, t_begin_days, t_end_days, material,
     KdTreeInputError
         Arrays of the wrong shape, non-finite vertices, indices out of range or NaN times.
     """
-    from cityshade.accel.kdtree_layout import KdTree, pack_nodes, triangle_records
-
     settings = settings or KdTreeSettings()
     started = time.perf_counter()
     vertices = np.asarray(vertices)

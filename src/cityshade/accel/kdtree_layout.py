@@ -17,12 +17,20 @@ stored in leaf order so traversal never chases vertex indices:
 * column 9: the triangle id (int32 bits);
 * columns 10-11 and 12-13: validity begin and end (float64 bits, days; -inf/+inf for open);
 * column 14: material (int32 bits); column 15: zero padding.
+
+This module is the one place that knows the layout: the constants and the inline decoders
+below are what the build, the tracing kernels and the rasterizer's walk use, and
+:attr:`KdTree.views` hands the kernels the tree as one :class:`KdViews` tuple.
 """
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import NamedTuple
 
 import numpy as np
+from numba import njit
+
+from cityshade.errors import CityshadeError
 
 #: Number of float32 words of one triangle record (64 bytes: one cache line).
 RECORD_WORDS = 16
@@ -33,12 +41,81 @@ REC_T_BEGIN64 = 5
 REC_T_END64 = 6
 #: Column of the material in the int32 view.
 REC_MATERIAL = 14
+#: Axis code of a time split in word 0 of a node (0, 1, 2 are x, y, z).
+TIME_AXIS = 3
 #: Axis code of a leaf in word 0 of a node.
 LEAF_CODE = 4
 #: Bits of word 0 that hold the axis code.
 AXIS_BITS = 3
+#: Mask of those bits.
+AXIS_MASK = (1 << AXIS_BITS) - 1
 #: Arrays written to and read from the cache, in this order.
 ARRAY_NAMES = ("kdtree_nodes", "kdtree_prim_indices", "kdtree_tri_records", "kdtree_bounds")
+
+
+class KdTreeLayoutError(CityshadeError):
+    """Arrays that do not make a flat kd-tree (wrong shape or type, missing, too large)."""
+
+
+class KdViews(NamedTuple):
+    """The flat tree as the kernels take it: views of the same memory, no copies."""
+
+    #: (M, 2) uint32 node words.
+    nodes: np.ndarray
+    #: (M, 2) float32 view of ``nodes`` (column 1: split of inner nodes).
+    splits: np.ndarray
+    #: (K,) int32 triangle ids in leaf order.
+    prim_indices: np.ndarray
+    #: (K, 16) float32 triangle records.
+    recs: np.ndarray
+    #: (K, 8) float64 view of the records (validity).
+    recs_f64: np.ndarray
+    #: (K, 16) int32 view of the records (triangle id, material).
+    recs_i32: np.ndarray
+
+
+# --- inline decoders for the kernels (word 0 is read as int64 so shifts stay unsigned) -------
+
+@njit(cache=True, inline="always")
+def node_word(tree, node):
+    """Word 0 of ``node`` as int64 (axis code and payload)."""
+    return np.int64(tree.nodes[node, 0])
+
+
+@njit(cache=True, inline="always")
+def word_axis(w0):
+    """Axis code of a node word: 0-2 x, y, z, ``TIME_AXIS``, or ``LEAF_CODE``."""
+    return w0 & AXIS_MASK
+
+
+@njit(cache=True, inline="always")
+def word_payload(w0):
+    """Right child of an inner node, or the reference count of a leaf."""
+    return w0 >> AXIS_BITS
+
+
+@njit(cache=True, inline="always")
+def leaf_first(tree, node):
+    """Index of a leaf's first entry in ``prim_indices`` / the records."""
+    return np.int64(tree.nodes[node, 1])
+
+
+@njit(cache=True, inline="always")
+def node_split(tree, node):
+    """Split position of an inner node (metres, or days for a time split)."""
+    return np.float64(tree.splits[node, 1])
+
+
+@njit(cache=True, inline="always")
+def record_present(tree, k, t_days):
+    """Whether the triangle of record ``k`` stands at ``t_days`` (``begin <= t < end``)."""
+    return tree.recs_f64[k, REC_T_BEGIN64] <= t_days < tree.recs_f64[k, REC_T_END64]
+
+
+@njit(cache=True, inline="always")
+def record_id(tree, k):
+    """Triangle id of record ``k``."""
+    return tree.recs_i32[k, REC_ID]
 
 
 def pack_nodes(axis, child, first, split):
@@ -58,7 +135,7 @@ def pack_nodes(axis, child, first, split):
     axis = np.asarray(axis, dtype=np.int64)
     child = np.asarray(child, dtype=np.int64)
     if child.size and child.max() >= 2 ** (32 - AXIS_BITS):
-        raise ValueError("kd-tree too large for the 8-byte node layout")
+        raise KdTreeLayoutError("kd-tree too large for the 8-byte node layout")
     nodes = np.empty((axis.size, 2), np.uint32)
     nodes[:, 0] = ((child << AXIS_BITS) | axis).astype(np.uint32)
     split_bits = np.asarray(split, dtype=np.float32).view(np.uint32)
@@ -114,15 +191,15 @@ class KdTree:
     def __post_init__(self) -> None:
         nodes = self.nodes
         if nodes.ndim != 2 or nodes.shape[1] != 2 or nodes.dtype != np.uint32 or nodes.shape[0] < 1:
-            raise ValueError(f"kd-tree nodes must be (M >= 1, 2) uint32, not {nodes.shape} "
+            raise KdTreeLayoutError(f"kd-tree nodes must be (M >= 1, 2) uint32, not {nodes.shape} "
                              f"{nodes.dtype}")
         recs = self.tri_records
         if recs.ndim != 2 or recs.shape[1] != RECORD_WORDS or recs.dtype != np.float32:
-            raise ValueError(f"kd-tree records must be (K, {RECORD_WORDS}) float32")
+            raise KdTreeLayoutError(f"kd-tree records must be (K, {RECORD_WORDS}) float32")
         if self.prim_indices.shape != (recs.shape[0],):
-            raise ValueError("kd-tree prim_indices and records differ in length")
+            raise KdTreeLayoutError("kd-tree prim_indices and records differ in length")
         if self.bounds.shape != (2, 4):
-            raise ValueError("kd-tree bounds must have shape (2, 4)")
+            raise KdTreeLayoutError("kd-tree bounds must have shape (2, 4)")
         for name in ("nodes", "tri_records"):
             if not getattr(self, name).flags.c_contiguous:
                 object.__setattr__(self, name, np.ascontiguousarray(getattr(self, name)))
@@ -149,6 +226,20 @@ class KdTree:
         return self.tri_records.view(np.int32)
 
     @property
+    def views(self) -> KdViews:
+        """The tree as the kernels take it (one tuple of views)."""
+        return KdViews(self.nodes, self.node_splits, self.prim_indices, self.tri_records,
+                       self.records_f64, self.records_i32)
+
+    def box_scale_m(self) -> tuple[np.ndarray, np.ndarray, float]:
+        """(box min (3,), box max (3,), scale) in metres, float64: the scale is the larger of the
+        box's longest side and its largest coordinate magnitude (at least 1 m), the size that
+        float32 rounding errors are relative to (paddings of culling and ray boxes)."""
+        lo = np.asarray(self.bounds[0, :3], np.float64)
+        hi = np.asarray(self.bounds[1, :3], np.float64)
+        return lo, hi, max(float(np.max(hi - lo)), float(np.max(np.abs(np.r_[lo, hi]))), 1.0)
+
+    @property
     def has_time(self) -> bool:
         """Whether the model has any finite validity date."""
         return bool(self.bounds[1, 3] > self.bounds[0, 3])
@@ -163,7 +254,7 @@ class KdTree:
         """Rebuild a tree from ``to_arrays()`` output (arrays may be read-only memory maps)."""
         missing = [name for name in ARRAY_NAMES if name not in arrays]
         if missing:
-            raise KeyError(f"kd-tree arrays missing: {', '.join(missing)}")
+            raise KdTreeLayoutError(f"kd-tree arrays missing: {', '.join(missing)}")
         return cls(nodes=arrays["kdtree_nodes"], prim_indices=arrays["kdtree_prim_indices"],
                    tri_records=arrays["kdtree_tri_records"], bounds=arrays["kdtree_bounds"],
                    stats=dict(stats or {}))
@@ -174,7 +265,7 @@ class KdTree:
         ``split-or-first`` is float64: the split of inner nodes, the first index of leaves.
         """
         w0 = self.nodes[:, 0].astype(np.int64)
-        axis = w0 & ((1 << AXIS_BITS) - 1)
+        axis = w0 & AXIS_MASK
         child = w0 >> AXIS_BITS
         second = np.where(axis == LEAF_CODE, self.nodes[:, 1].astype(np.float64),
                           self.node_splits[:, 1].astype(np.float64))

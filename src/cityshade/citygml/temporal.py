@@ -27,7 +27,7 @@ __all__ = [
     "DAYS_OPEN_BEGIN", "DAYS_OPEN_END", "GENERIC_PREFIX", "Interval", "TIME_ATTRIBUTES",
     "TIME_SOURCES", "TIME_SOURCES_ORDER", "UserDate", "choose_interval", "datetime_to_days",
     "days_to_iso", "has_creation_dates", "lmt_warning", "parse_time_attribute",
-    "parse_user_date", "SOLAR_TIME_ZONES", "zone_of",
+    "parse_user_date", "SOLAR_TIME_ZONES", "zone_info",
     "parse_xsd_datetime_days",
 ]
 
@@ -406,8 +406,9 @@ _DATE_FORMS = ("YYYY, YYYY-MM-DD, or YYYY-MM-DDTHH:MM[:SS][Z|±HH:MM] "
                "(e.g. 1850, 1850-06-21, 1850-06-21T15:00+01:00)")
 
 
-def _zone(tz):
-    """tzinfo of ``--tz``: an IANA name, or a tzinfo given as is (solar time of a model)."""
+def zone_info(tz):
+    """tzinfo of ``--tz``: an IANA name (unknown names are a UsageError), or a tzinfo given as
+    is (solar time of a model)."""
     from datetime import tzinfo
     from zoneinfo import ZoneInfo, ZoneInfoNotFoundError
 
@@ -421,11 +422,6 @@ def _zone(tz):
     except (ZoneInfoNotFoundError, ValueError):
         raise UsageError(f"unknown time zone {tz!r}; give an IANA name such as "
                          f"Europe/Berlin") from None
-
-
-def zone_of(tz):
-    """The tzinfo of a ``--tz`` value (an IANA name, or a tzinfo as is); UsageError if unknown."""
-    return _zone(tz)
 
 
 def parse_user_date(text: str, tz: str | None = None) -> UserDate:
@@ -462,7 +458,7 @@ def parse_user_date(text: str, tz: str | None = None) -> UserDate:
     """
     if not isinstance(text, str):
         raise UsageError(f"date must be text, not {type(text).__name__}")
-    zone = _zone(tz) if tz is not None else None
+    zone = zone_info(tz) if tz is not None else None
     stripped = text.strip()
     match = _USER_DATETIME_RE.fullmatch(stripped)
     if match is None:

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import click
 
-from cityshade.cli.options import crs_option
+from cityshade.cli.options import crs_option, shadow_options
 
 
 class _Bar:
@@ -54,16 +54,21 @@ def _int_list(text: str, what: str) -> tuple[int, ...]:
 @click.option("--times", help="Local times HH:MM,HH:MM of --date: suns computed by SPA.")
 @click.option("--tz", help="IANA time zone of --times, e.g. Europe/Berlin; local-mean or "
               "local-apparent: solar time at the model's longitude.")
-@click.option("--shadows", "shadows", default="all", show_default=True,
-              help="'all' or a comma list of techniques (raytrace is always the reference).")
-@click.option("--sizes", default="1024,2048,4096", show_default=True,
-              help="Shadow-map sizes in texels (per cascade for csm).")
+@shadow_options("all", map_px=False,
+                technique_help="'all' (default) or a comma list of techniques (raytrace is "
+                               "always the reference); names as for render --shadows.")
+@click.option("--sizes", help="Shadow-map sizes in texels (per cascade for csm; default "
+              "1024,2048,4096 or [evaluate] sizes).")
 @click.option("--size", default="1280x720", show_default=True,
               help="WIDTHxHEIGHT of perspective views.")
 @click.option("--pixel-size", type=click.FloatRange(min=1e-3), help="Metres per pixel of the "
               "map view (default: fits 2048 px).")
-@click.option("--repeat", type=click.IntRange(1, 100), default=3, show_default=True,
-              help="Timed runs after the warm-up run (median reported).")
+@click.option("--cameras", "cameras_file", type=click.Path(dir_okay=False),
+              help="TOML file of more camera presets for --views.")
+@click.option("--ground", help="Ground plane where the model has no surface, as for render: "
+              "min, auto or a height in metres.")
+@click.option("--repeat", type=click.IntRange(1, 100), help="Timed runs after the warm-up run "
+              "(median reported; default 3 or [evaluate] repeat).")
 @click.option("--stress", is_flag=True, help="Run the fixed stress set and check its invariants "
               "(FILE gives the model; PASS/FAIL per case; exit status 1 on any FAIL).")
 @click.option("--quick", is_flag=True, help="With --stress: small sizes, no 8192² maps.")
@@ -71,10 +76,12 @@ def _int_list(text: str, what: str) -> tuple[int, ...]:
               help="Report folder (results.csv, report.md, plots, diff images); required "
                    "without --stress.")
 @crs_option
-def evaluate(file, views, sun_text, date_text, times, tz, shadows, sizes, size, pixel_size,
-             repeat, stress, quick, output, crs):
+def evaluate(file, views, sun_text, date_text, times, tz, settings, sizes, size, pixel_size,
+             cameras_file, ground, repeat, stress, quick, output, crs):
     """Error of every shadow technique against the exact ray-traced shadows of FILE (a
     .cityshade scene or a CityGML file), and its run time, per view, sun and map size."""
+    import dataclasses
+
     from cityshade.cli.options import parse_size
     from cityshade.errors import UsageError
 
@@ -82,16 +89,22 @@ def evaluate(file, views, sun_text, date_text, times, tz, shadows, sizes, size, 
         raise UsageError("--quick only applies to --stress")
     bar = _Bar()
     if stress:
-        from cityshade.stress import StressSettings, run_stress, stress_markdown
+        from cityshade.config import StressSettings
+        from cityshade.evaluate.stress import run_stress, stress_markdown
+        from cityshade.util import make_folder, write_text_atomic
 
+        stress_settings = StressSettings.quick_set() if quick else settings.stress
+        if ground is not None:
+            stress_settings = dataclasses.replace(stress_settings, ground=ground)
         try:
-            report = run_stress(file, StressSettings.quick_set() if quick else StressSettings(),
-                                progress=bar, echo=lambda line: _echo_line(bar, line))
+            report = run_stress(file, stress_settings, progress=bar,
+                                echo=lambda line: _echo_line(bar, line))
         finally:
             bar.close()
         if output is not None:
-            output.mkdir(parents=True, exist_ok=True)
-            (output / "stress.md").write_text(stress_markdown(report) + "\n", encoding="utf-8")
+            make_folder(output, "report folder")
+            write_text_atomic(output / "stress.md", stress_markdown(report) + "\n",
+                              what="the stress report")
         failed = [c for c in report.cases if not c.passed]
         click.echo(f"stress: {len(report.cases) - len(failed)} of {len(report.cases)} cases "
                    f"passed" + (f"; FAILED: {', '.join(c.name for c in failed)}" if failed else ""))
@@ -103,13 +116,16 @@ def evaluate(file, views, sun_text, date_text, times, tz, shadows, sizes, size, 
     import datetime as dt
 
     from cityshade.citygml.temporal import days_to_iso, parse_user_date
-    from cityshade.evaluate import (EvaluateSettings, expand_techniques, make_camera, open_scene,
-                                    parse_suns, run_evaluation, suns_of_day, write_report)
+    from cityshade.evaluate import (expand_techniques, make_camera, open_scene, parse_suns,
+                                    run_evaluation, suns_of_day, write_report)
 
     if sun_text and times:
         raise UsageError("give either --sun or --date/--times, not both")
-    techniques = expand_techniques(shadows)
-    settings = EvaluateSettings(repeat=repeat, sizes=_int_list(sizes, "--sizes"))
+    techniques = expand_techniques(settings.shadows.technique)
+    changes = {k: v for k, v in (("repeat", repeat),
+                                 ("sizes", _int_list(sizes, "--sizes") if sizes else None))
+               if v is not None}
+    eval_settings = dataclasses.replace(settings.evaluate, **changes)
     width, height = parse_size(size)
     day = date_text or dt.date.today().isoformat()
     from cityshade.cli.options import (settings_for_source, solar_placeholder,
@@ -117,17 +133,18 @@ def evaluate(file, views, sun_text, date_text, times, tz, shadows, sizes, size, 
 
     city_days = parse_user_date(day.split("T")[0] if times else day,
                                 solar_placeholder(tz)).city_days
-    scene = open_scene(file, settings_for_source(file, crs))
+    scene = open_scene(file, settings_for_source(file, crs, settings))
     tz = solar_zone_of_scene(tz, scene)
-    suns = (suns_of_day(day, times, tz, scene) if times
+    suns = (suns_of_day(day, times, tz, scene, settings.sun) if times
             else parse_suns(sun_text or "135,45;240,15", scene))
-    cams = [(v, make_camera(scene, v, (width, height), pixel_size, city_days))
+    cams = [(v, make_camera(scene, v, (width, height), pixel_size, city_days, cameras_file))
             for v in (s.strip() for s in views.split(",")) if v]
     if not cams:
         raise UsageError("--views needs at least one view")
     try:
-        evaluation = run_evaluation(scene, cams, suns, city_days, techniques, settings,
-                                    progress=bar, model=Path(file).name)
+        evaluation = run_evaluation(scene, cams, suns, city_days, techniques, eval_settings,
+                                    settings.shadows, progress=bar, model=Path(file).name,
+                                    ground=ground)
     finally:
         bar.close()
     evaluation.meta["city_time"] = days_to_iso(city_days)

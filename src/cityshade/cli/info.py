@@ -130,14 +130,14 @@ def info(file: Path, as_json: bool, crs: str | None) -> None:
     FILE is a .cityshade file; a CityGML, CityJSON or CityJSONSeq file is read and described
     without writing anything.
     """
+    from cityshade.cache import is_cache_file
+    from cityshade.cli.options import settings_for_source
     from cityshade.errors import InputError
-
-    from cityshade.cli.options import is_scene_file, settings_for_source
 
     if not file.is_file():
         raise InputError("no such file", path=str(file))
     settings = settings_for_source(file, crs)
-    if is_scene_file(file):
+    if is_cache_file(file):
         from cityshade.scenefile import load_scene
 
         scene = load_scene(file)

@@ -23,10 +23,15 @@ COMMANDS = {
 
 
 class LazyGroup(click.Group):
+    def parse_args(self, ctx, args):
+        # -v of any subcommand also shows the traceback of an internal error.
+        ctx.meta["cityshade.verbose"] = any(a in ("-v", "--verbose") for a in args)
+        return super().parse_args(ctx, args)
+
     def invoke(self, ctx):
         from cityshade.cli.options import translate_errors
 
-        with translate_errors():
+        with translate_errors(verbose=ctx.meta.get("cityshade.verbose", False)):
             return super().invoke(ctx)
 
     def list_commands(self, ctx):

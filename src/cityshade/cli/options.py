@@ -8,7 +8,7 @@ import time
 
 import click
 
-from cityshade.errors import CityshadeError
+from cityshade.errors import CityshadeError, ContractError
 
 
 class LibraryFailure(click.ClickException):
@@ -70,8 +70,12 @@ def _caused_by_interrupt(exc: BaseException) -> bool:
 
 
 @contextlib.contextmanager
-def translate_errors():
-    """Turn every failure into one line and an exit status, never a traceback."""
+def translate_errors(verbose: bool = False):
+    """Turn every failure into one line and an exit status, never a traceback.
+
+    A :class:`~cityshade.errors.ContractError` is a bug, not a user error: "internal error"
+    and exit status 70, with the traceback on stderr only when ``verbose`` (``-v``).
+    """
     try:
         yield
     except KeyboardInterrupt:
@@ -81,6 +85,12 @@ def translate_errors():
     except Exception as exc:
         if _caused_by_interrupt(exc):
             raise Interrupted() from None
+        if isinstance(exc, ContractError):
+            if verbose:
+                import traceback
+
+                traceback.print_exc(file=sys.stderr)
+            raise LibraryFailure(f"internal error: {exc}", ContractError.exit_code) from None
         if isinstance(exc, CityshadeError):
             raise LibraryFailure(str(exc), exc.exit_code) from None
         if isinstance(exc, OSError):
@@ -136,25 +146,21 @@ def crs_option(func):
     return click.option("--crs", help=CRS_HELP + " Only for a CityGML FILE.")(func)
 
 
-def is_scene_file(path) -> bool:
-    """Whether ``path`` is a .cityshade file (by its magic bytes, not its name)."""
-    with open(path, "rb") as fh:
-        return fh.read(7) == b"CITYSHD"
-
-
-def settings_for_source(path, crs: str | None):
-    """Settings for building FILE in memory with the user's ``--crs`` (None: defaults)."""
+def settings_for_source(path, crs: str | None, settings=None):
+    """``settings`` (default: the defaults) for building FILE in memory with the user's
+    ``--crs``; ``settings`` as given (None included) without ``--crs``."""
     import dataclasses
 
+    from cityshade.cache import is_cache_file
     from cityshade.config import Settings
     from cityshade.errors import UsageError
 
     if crs is None:
-        return None
-    if is_scene_file(path):
+        return settings
+    if is_cache_file(path):
         raise UsageError(f"--crs applies to a CityGML file; {path} is a scene file built with "
                          f"its CRS: rebuild it with cityshade build --crs")
-    settings = Settings()
+    settings = settings or Settings()
     return dataclasses.replace(settings, build=dataclasses.replace(settings.build, crs=crs))
 
 
@@ -201,11 +207,11 @@ def reparse_solar_date(user_date, tz, scene):
 
 def warn_lmt(instants_utc, tz) -> None:
     """Warn when ``--tz`` gives the tz database's local mean time at these instants."""
-    from cityshade.citygml.temporal import SOLAR_TIME_ZONES, lmt_warning, zone_of
+    from cityshade.citygml.temporal import SOLAR_TIME_ZONES, lmt_warning, zone_info
 
     if not isinstance(tz, str) or tz in SOLAR_TIME_ZONES:
         return
-    zone = zone_of(tz)
+    zone = zone_info(tz)
     for instant in instants_utc:
         warning = lmt_warning(zone, instant.astimezone(zone), tz)
         if warning:
@@ -221,14 +227,91 @@ def warn_geotiff_without_crs(scene, path) -> None:
                    f"scene with --crs EPSG:nnnn", err=True)
 
 
+# --- settings and shadow options shared by render, batch and evaluate --------------------------
+
+#: The shadow flags of every command: click parameter name → ShadowSettings.override name.
+_SHADOW_FLAGS = ("map_px", "bias", "slope_bias", "max_bias", "pcf_kernel", "vsm_blur",
+                 "cascades")
+
+
+def config_option(func):
+    """``--config FILE``: the TOML settings tree (:mod:`cityshade.config`)."""
+    return click.option("--config", "config_path", type=click.Path(dir_okay=False),
+                        help="TOML settings file ([shadows], [sun], [batch], [evaluate], "
+                             "...; configs/default.toml lists them). Flags override it.")(func)
+
+
+def load_config(config_path):
+    """The settings tree of ``--config`` (defaults without one)."""
+    from cityshade.config import Settings, load_settings
+
+    return load_settings(config_path) if config_path else Settings()
+
+
+def shadow_options(default_technique: str, *, technique_help: str | None = None,
+                   map_px: bool = True):
+    """Decorator adding ``--config``, ``--shadows``, ``--smooth`` and the shadow tunables
+    (``--map-px``, ``--bias``, ...). The command receives one ``settings`` argument: the
+    :class:`~cityshade.config.Settings` of ``--config`` with the flags applied, its
+    ``shadows.technique`` resolved (flag, else the file's ``[shadows] technique``, else
+    ``default_technique``; ``--smooth`` appends ``+smooth``)."""
+    import functools
+
+    from cityshade.shadows import names_help
+
+    def decorate(func):
+        @functools.wraps(func)
+        def wrapper(*args, **kwargs):
+            import dataclasses
+
+            settings = load_config(kwargs.pop("config_path"))
+            technique = kwargs.pop("technique") or settings.shadows.technique \
+                or default_technique
+            if kwargs.pop("smooth") and not technique.endswith("+smooth"):
+                technique += "+smooth"
+            flags = {k: kwargs.pop(k, None) for k in _SHADOW_FLAGS}
+            shadows = dataclasses.replace(settings.shadows.override(**flags),
+                                          technique=technique)
+            kwargs["settings"] = dataclasses.replace(settings, shadows=shadows)
+            return func(*args, **kwargs)
+
+        options = [
+            click.option("--shadows", "technique",
+                         help=technique_help or f"Shadow technique (default "
+                         f"{default_technique}): {names_help()}."),
+            click.option("--smooth", is_flag=True, help="Depth-aware screen-space smoothing of "
+                         "the shadow (same as --shadows NAME+smooth)."),
+            *([click.option("--map-px", type=click.IntRange(16, 16384),
+                            help="Shadow-map side in texels (map techniques; default 2048).")]
+              if map_px else []),
+            click.option("--bias", type=click.FloatRange(min=0),
+                         help="Constant depth bias in metres."),
+            click.option("--slope-bias", type=click.FloatRange(min=0),
+                         help="Slope-scaled bias (texels)."),
+            click.option("--max-bias", type=click.FloatRange(min=0),
+                         help="Largest slope bias in metres."),
+            click.option("--pcf-kernel", type=click.IntRange(1, 63), help="PCF kernel side (odd)."),
+            click.option("--vsm-blur", type=click.IntRange(0, 64),
+                         help="VSM filter radius in texels."),
+            click.option("--cascades", type=click.IntRange(1, 16),
+                         help="CSM cascade count (default 4)."),
+        ]
+        for option in reversed(options):
+            wrapper = option(wrapper)
+        return config_option(wrapper)
+    return decorate
+
+
 # --- camera options shared by render, batch and evaluate ---------------------------------------
 
 def camera_options(default_camera: str):
-    """Decorator adding --camera, --eye, --target, --fov, --size and --pixel-size."""
+    """Decorator adding --camera, --eye, --target, --fov, --size, --pixel-size and
+    --cameras."""
     def decorate(func):
         for option in reversed([
             click.option("--camera", default=default_camera, show_default=True,
-                         help="overview, map, or a preset of configs/cameras.toml."),
+                         help="overview, map, or a preset of configs/cameras.toml or of "
+                              "--cameras."),
             click.option("--eye", help="Camera position X,Y,Z in the model CRS (metres); "
                          "with --target."),
             click.option("--target", help="Point looked at, X,Y,Z in the model CRS (metres)."),
@@ -238,6 +321,9 @@ def camera_options(default_camera: str):
                          help="WIDTHxHEIGHT (perspective)."),
             click.option("--pixel-size", type=click.FloatRange(min=1e-3),
                          help="Metres per pixel of the map view (default: fits 2048 px)."),
+            click.option("--cameras", "cameras_file", type=click.Path(dir_okay=False),
+                         help="TOML file of more camera presets (same tables as "
+                              "configs/cameras.toml), added to the built-in ones."),
         ]):
             func = option(func)
         return func
@@ -268,7 +354,7 @@ def parse_size(text: str) -> tuple[int, int]:
     return w, h
 
 
-def make_camera(scene, name, eye, target, fov, size, pixel_size):
+def make_camera(scene, name, eye, target, fov, size, pixel_size, cameras_file=None):
     """The camera the shared options describe (eye/target in model CRS coordinates)."""
     import numpy as np
 
@@ -287,4 +373,4 @@ def make_camera(scene, name, eye, target, fov, size, pixel_size):
         return cams.overview(scene, width, height)
     if name == "map":
         return cams.map_view(scene, pixel_size)
-    return cams.preset(name, scene, width, height)
+    return cams.preset(name, scene, width, height, extra=cameras_file)

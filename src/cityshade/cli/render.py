@@ -5,7 +5,8 @@ from pathlib import Path
 
 import click
 
-from cityshade.cli.options import camera_options, make_camera, parse_size, parse_triple
+from cityshade.cli.options import (camera_options, make_camera, parse_size, parse_triple,
+                                   shadow_options)
 
 
 @click.command("render")
@@ -22,22 +23,7 @@ from cityshade.cli.options import camera_options, make_camera, parse_size, parse
 @click.option("--sun-azimuth", type=float, help="Degrees clockwise from true north.")
 @click.option("--sun-elevation", type=float, help="Degrees above the horizon.")
 @camera_options("overview")
-@click.option("--shadows", "technique", default="raytrace", show_default=True,
-              help="Shadow technique: raytrace (exact reference); shadowmap, pcf, vsm (uniform "
-              "map: bias, percentage-closer filtering, variance shadow map); psm, lispsm, xpsm "
-              "(perspective warps); csm or csm:WARP (cascades); hybrid[:BASE] (a map classifies, "
-              "exact rays decide the uncertain pixels; default base vsm). Append +smooth for "
-              "the depth-aware screen-space Gaussian.")
-@click.option("--smooth", is_flag=True, help="Depth-aware screen-space smoothing of the shadow "
-              "(same as --shadows NAME+smooth).")
-@click.option("--map-px", type=click.IntRange(16, 16384),
-              help="Shadow-map side in texels (map techniques; default 2048).")
-@click.option("--bias", type=click.FloatRange(min=0), help="Constant depth bias in metres.")
-@click.option("--slope-bias", type=click.FloatRange(min=0), help="Slope-scaled bias (texels).")
-@click.option("--max-bias", type=click.FloatRange(min=0), help="Largest slope bias in metres.")
-@click.option("--pcf-kernel", type=click.IntRange(1, 63), help="PCF kernel side (odd).")
-@click.option("--vsm-blur", type=click.IntRange(0, 64), help="VSM filter radius in texels.")
-@click.option("--cascades", type=click.IntRange(1, 16), help="CSM cascade count (default 4).")
+@shadow_options("raytrace")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, path_type=Path), required=True,
               help="EXR with colour, shadow, Z, normals, primid, objid and provenance.")
 @click.option("--png", type=click.Path(dir_okay=False, path_type=Path), help="sRGB picture.")
@@ -50,12 +36,12 @@ from cityshade.cli.options import camera_options, make_camera, parse_size, parse
 @click.option("--no-sky", is_flag=True, help="Black background instead of the sky gradient.")
 @click.option("-v", "--verbose", is_flag=True, help="Stage timings and technique diagnostics.")
 def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_elevation, camera,
-           eye, target, fov, size, pixel_size, technique, smooth, map_px, bias, slope_bias,
-           max_bias, pcf_kernel, vsm_blur, cascades, output, png, mask, geotiff, ground,
-           no_sky, verbose):
+           eye, target, fov, size, pixel_size, cameras_file, settings, output, png, mask,
+           geotiff, ground, no_sky, verbose):
     """Render FILE (a .cityshade scene) as the city stood on --date, lit by the sun at
     --sun-azimuth/--sun-elevation or, for a --date with a time, by the sun computed for the
     model's place (NREL SPA), from a perspective camera or as a top-down map."""
+    import dataclasses
     import datetime as dt
     import time
 
@@ -67,12 +53,8 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     from cityshade.shadows import get_technique
     from cityshade.sun import sun_from_angles
 
-    if smooth and not technique.endswith("+smooth"):
-        technique += "+smooth"
+    technique = settings.shadows.technique
     get_technique(technique)  # unknown names fail before any work
-    options = {k: v for k, v in (("map_px", map_px), ("bias", bias), ("slope_bias", slope_bias),
-                                 ("max_bias", max_bias), ("pcf_kernel", pcf_kernel),
-                                 ("vsm_blur", vsm_blur), ("cascades", cascades)) if v is not None}
     if (sun_azimuth is None) != (sun_elevation is None):
         raise UsageError("give both --sun-azimuth and --sun-elevation")
     if (eye is None) != (target is None):
@@ -90,18 +72,19 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     user_date = reparse_solar_date(user_date, tz, scene)
     for warning in user_date.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
-    cam = make_camera(scene, camera, eye, target, fov, size, pixel_size)
+    cam = make_camera(scene, camera, eye, target, fov, size, pixel_size, cameras_file)
     if sun_azimuth is not None:
         sun = sun_from_angles(sun_azimuth, sun_elevation, scene.crs, scene.origin_m)
     else:
         # pvlib (and pandas) load only here: a render with explicit angles never needs them.
-        from cityshade.sun import SpaSettings, sun_from_instant
+        from cityshade.sun import sun_from_instant
 
-        sun = sun_from_instant(user_date.instant_utc, scene.crs, scene.origin_m,
-                               SpaSettings(refraction=not no_refraction))
-    frame = render_frame(scene, cam, user_date.city_days, sun, technique, options=options,
-                         sky=not no_sky,
-                         ground=ground)
+        spa = settings.sun
+        if no_refraction:
+            spa = dataclasses.replace(spa, refraction=False)
+        sun = sun_from_instant(user_date.instant_utc, scene.crs, scene.origin_m, spa)
+    frame = render_frame(scene, cam, user_date.city_days, sun, technique, settings.shadows,
+                         sky=not no_sky, ground=ground)
     for warning in frame.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
     t1 = time.perf_counter()
@@ -123,9 +106,8 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
                        f"{'on' if sun.refraction else 'off'}, {sun.source} at "
                        f"{sun.latitude_deg:.6f}° N {sun.longitude_deg:.6f}° E "
                        f"{sun.height_m:.1f} m", err=True)
-        for key, value in frame.diagnostics.items():
-            if not isinstance(value, (bytes, bytearray)):
-                click.echo(f"{key:<8} {value}", err=True)
+        for key, value in frame.diagnostics.lines():
+            click.echo(f"{key:<8} {value}", err=True)
     click.echo(" ".join(str(p) for p in written))
 
 

@@ -19,7 +19,6 @@ Conventions
 from __future__ import annotations
 
 import math
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -384,7 +383,7 @@ def overview(scene, width_px: int = 1280, height_px: int = 720, *, t_days: float
                   name="overview")
 
 
-def _nice_ceil(x: float) -> float:
+def nice_ceil(x: float) -> float:
     """Smallest of 1, 2, 2.5, 5 × 10^k that is >= x (pixel sizes a GIS user would choose)."""
     k = math.floor(math.log10(x))
     for m in (1.0, 2.0, 2.5, 5.0, 10.0):
@@ -423,7 +422,7 @@ def map_view(scene, pixel_size_m: float | None = None, bbox=None,
         if not (np.isfinite([x0, y0, x1, y1]).all() and x1 > x0 and y1 > y0):
             raise UsageError(f"map bbox must have x0 < x1 and y0 < y1, not {bbox}")
     if pixel_size_m is None:
-        pixel_size_m = _nice_ceil(max(x1 - x0, y1 - y0, 1e-3) / DEFAULT_MAP_SIDE_PX)
+        pixel_size_m = nice_ceil(max(x1 - x0, y1 - y0, 1e-3) / DEFAULT_MAP_SIDE_PX)
     px = float(pixel_size_m)
     if not (math.isfinite(px) and px > 0.0):
         raise UsageError(f"map pixel size must be > 0 metres, not {pixel_size_m}")
@@ -463,14 +462,10 @@ def load_presets(path: str | Path | None = None) -> dict[str, dict[str, float]]:
         if not DEFAULT_PRESETS_PATH.exists():
             return {name: dict(values) for name, values in BUILTIN_PRESETS.items()}
         path = DEFAULT_PRESETS_PATH
+    from cityshade.util import read_toml
+
     path = Path(path)
-    try:
-        with path.open("rb") as fh:
-            data = tomllib.load(fh)
-    except OSError as exc:
-        raise ConfigError(f"cannot read camera presets: {exc.strerror}", path=str(path)) from None
-    except tomllib.TOMLDecodeError as exc:
-        raise ConfigError(f"invalid TOML: {exc}", path=str(path)) from None
+    data = read_toml(path, "camera presets")
     presets = {}
     for name, table in data.items():
         if not isinstance(table, dict):
@@ -492,8 +487,10 @@ def load_presets(path: str | Path | None = None) -> dict[str, dict[str, float]]:
 
 
 def preset(name: str, scene, width_px: int = 1280, height_px: int = 720, *,
-           path: str | Path | None = None, t_days: float | None = None) -> Camera:
-    """The named preset of ``configs/cameras.toml`` fitted to the scene's box.
+           path: str | Path | None = None, extra: str | Path | None = None,
+           t_days: float | None = None) -> Camera:
+    """The named preset of ``configs/cameras.toml`` (or ``path``), or of the user's preset
+    file ``extra`` (``--cameras``; its presets win), fitted to the scene's box.
 
     Raises
     ------
@@ -501,6 +498,8 @@ def preset(name: str, scene, width_px: int = 1280, height_px: int = 720, *,
         When ``name`` is not a preset; the message lists the valid names.
     """
     presets = load_presets(path)
+    if extra is not None:
+        presets.update(load_presets(extra))
     if name not in presets:
         raise UnknownPresetError(f"unknown camera {name!r}; valid: map, "
                                  f"{', '.join(sorted(presets))}")

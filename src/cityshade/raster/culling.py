@@ -23,12 +23,9 @@ import weakref
 import numpy as np
 from numba import njit
 
-#: Axis codes of the flat kd-tree (``cityshade.accel.kdtree_layout``).
-_LEAF = 4
-_TIME = 3
-#: Columns of validity begin / end in the float64 view of the records.
-_T_BEGIN = 5
-_T_END = 6
+from cityshade.accel.kdtree_layout import (LEAF_CODE, TIME_AXIS, leaf_first, node_split,
+                                           node_word, record_present, word_axis, word_payload)
+
 #: Walk stack entries: the walk pops one node and pushes at most two, so it holds at most one
 #: entry per tree level plus one; the build caps the depth at 60.
 STACK_SIZE = 128
@@ -70,11 +67,11 @@ STAT_NAMES = ("nodes_visited", "leaves_drawn", "time_subtrees_skipped", "time_re
 
 
 @njit(cache=True)
-def _subtree_info(nodes):
+def _subtree_info(tree):
     """Per node: triangle references below it and, when those references form one contiguous
     range of the leaf-ordered records, the range's first index (else -1); and the largest
     leaf's count."""
-    m = nodes.shape[0]
+    m = tree.nodes.shape[0]
     refs = np.zeros(m, np.int64)
     lo = np.empty(m, np.int64)
     hi = np.empty(m, np.int64)
@@ -82,20 +79,20 @@ def _subtree_info(nodes):
     # Children always have larger indices than their parent (left = i + 1), so one backward
     # pass sees both children before the parent.
     for i in range(m - 1, -1, -1):
-        w0 = np.int64(nodes[i, 0])
-        if w0 & 7 == _LEAF:
-            count = w0 >> 3
+        w0 = node_word(tree, i)
+        if word_axis(w0) == LEAF_CODE:
+            count = word_payload(w0)
             refs[i] = count
             biggest = max(biggest, count)
             if count > 0:
-                lo[i] = np.int64(nodes[i, 1])
+                lo[i] = leaf_first(tree, i)
                 hi[i] = lo[i] + count
             else:
                 lo[i] = np.iinfo(np.int64).max
                 hi[i] = -1
         else:
             left = i + 1
-            right = w0 >> 3
+            right = word_payload(w0)
             refs[i] = refs[left] + refs[right]
             lo[i] = min(lo[left], lo[right])
             hi[i] = max(hi[left], hi[right])
@@ -114,7 +111,7 @@ def tree_info(tree) -> tuple[np.ndarray, np.ndarray, int]:
     or -1 (M,), largest leaf size) of a KdTree, computed once per tree."""
     info = _TREE_INFO.get(tree)
     if info is None:
-        refs, first, biggest = _subtree_info(tree.nodes)
+        refs, first, biggest = _subtree_info(tree.views)
         info = (refs, first, int(biggest))
         _TREE_INFO[tree] = info
     return info
@@ -256,30 +253,32 @@ def box_occluded(lo, hi, cam, hiz_block, hiz_tile, block_px, tile_px):
 
 
 @njit(cache=True)
-def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, subtree_first, t_days, planes,
-         use_occlusion, query_min_refs, cam, hiz_block, hiz_tile, block_px, tile_px, st_node,
-         st_box, st_mask, state, drawn, out, max_out, stats):
+def walk(tree, info, t_days, planes, order_point, occlusion, stack, drawn, out, max_out, stats):
     """Walk the tree front to back and emit the triangles to draw; resumable.
 
     Parameters
     ----------
-    nodes, splits : (M, 2) uint32 / float32 views of the flat tree.
-    prim_indices : (K,) int32; recs_f64 : (K, 8) float64 view of the triangle records.
-    subtree_refs, subtree_first : (M,) int64 from :func:`tree_info`: reference counts (for
-        the statistics) and contiguous reference ranges (a subtree entirely inside the frustum
-        is emitted by one linear scan of its range when no occlusion queries are made).
+    tree : KdViews
+        The flat tree (:mod:`cityshade.accel.kdtree_layout`).
+    info : (subtree_refs, subtree_first)
+        (M,) int64 each, from :func:`tree_info`: reference counts (for the statistics) and
+        contiguous reference ranges (a subtree entirely inside the frustum is emitted by one
+        linear scan of its range when no occlusion queries are made).
     t_days : float
         City time; a triangle is drawn when ``begin <= t_days < end``.
-    planes : (6, 4) float64 from :func:`frustum_planes`.
-    use_occlusion : bool
-        Query node boxes against ``hiz_block`` / ``hiz_tile``.
-    query_min_refs : int
-        Only nodes with at least this many references below them are queried (see
-        ``QUERY_MIN_REFS``).
-    st_node : (STACK_SIZE,) int64; st_box : (STACK_SIZE, 6) float64;
-    st_mask : (STACK_SIZE,) int64; state : (1,) int64
+    planes : (P, 4) float64
+        Culling planes (:func:`frustum_planes` or a light view's), inside ``n . p + d >= 0``.
+    order_point : (4,) float64
+        Homogeneous point that fixes the walk order: ``(x, y, z, 1)``, children nearer the
+        point first (a camera's eye); ``(dx, dy, dz, 0)``, children nearer a viewer infinitely
+        far along the direction first (a map camera, a light).
+    occlusion : None or (query_min_refs, cam, hiz_block, hiz_tile, block_px, tile_px)
+        Software occlusion queries (:func:`box_occluded`) of nodes with at least
+        ``query_min_refs`` references below them (see ``QUERY_MIN_REFS``); None makes none.
+    stack : (st_node (STACK_SIZE,) int64, st_box (STACK_SIZE, 6) float64,
+             st_mask (STACK_SIZE,) int64, state (1,) int64)
         The walk stack (node, box, planes still to test) and its pointer, kept by the caller
-        between calls (start: the root, its box, mask 63 and ``state[0] = 1``).
+        between calls (start: the root, its box, all plane bits and ``state[0] = 1``).
     drawn : (T,) uint8
         Triangles already emitted (the tree lists straddling triangles in several leaves).
     out : (max_out + largest leaf,) int32
@@ -293,11 +292,13 @@ def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, subtree_first, t_d
     int
         Number of indices written to ``out``; the walk is finished when ``state[0] == 0``.
     """
+    subtree_refs, subtree_first = info
+    st_node, st_box, st_mask, state = stack
     sp = state[0]
     n_out = 0
     lo = np.empty(3)
     hi = np.empty(3)
-    ortho = cam[0] != 0.0
+    at_infinity = order_point[3] == 0.0
     while sp > 0 and n_out < max_out:
         # Pop the nearest pending node.
         sp -= 1
@@ -312,20 +313,23 @@ def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, subtree_first, t_d
             stats[ST_FRUSTUM_NODES] += 1
             stats[ST_FRUSTUM_REFS] += subtree_refs[node]
             continue
-        queried = use_occlusion and subtree_refs[node] >= query_min_refs
-        if queried:
-            stats[ST_OCCLUSION_QUERIES] += 1
-            if box_occluded(lo, hi, cam, hiz_block, hiz_tile, block_px, tile_px):
-                stats[ST_OCCLUSION_NODES] += 1
-                stats[ST_OCCLUSION_REFS] += subtree_refs[node]
-                continue
-        w0 = np.int64(nodes[node, 0])
-        axis = w0 & 7
+        queried = False
+        if occlusion is not None:
+            if subtree_refs[node] >= occlusion[0]:
+                queried = True
+                stats[ST_OCCLUSION_QUERIES] += 1
+                if box_occluded(lo, hi, occlusion[1], occlusion[2], occlusion[3], occlusion[4],
+                                occlusion[5]):
+                    stats[ST_OCCLUSION_NODES] += 1
+                    stats[ST_OCCLUSION_REFS] += subtree_refs[node]
+                    continue
+        w0 = node_word(tree, node)
+        axis = word_axis(w0)
         first = -1
         count = 0
-        if axis == _LEAF:
-            first = np.int64(nodes[node, 1])
-            count = w0 >> 3
+        if axis == LEAF_CODE:
+            first = leaf_first(tree, node)
+            count = word_payload(w0)
         elif (mask == 0 and not queried and subtree_first[node] >= 0
               and subtree_refs[node] <= out.shape[0] - n_out):
             # Inside the frustum and too small for queries: nothing below can be culled but by
@@ -336,10 +340,10 @@ def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, subtree_first, t_d
             # Emit the triangles present at t_days, each triangle once.
             stats[ST_LEAVES_DRAWN] += 1
             for k in range(first, first + count):
-                if not (recs_f64[k, _T_BEGIN] <= t_days < recs_f64[k, _T_END]):
+                if not record_present(tree, k, t_days):
                     stats[ST_TIME_REFS] += 1
                     continue
-                tri = prim_indices[k]
+                tri = tree.prim_indices[k]
                 if drawn[tri]:
                     stats[ST_DUPLICATE_REFS] += 1
                     continue
@@ -347,9 +351,9 @@ def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, subtree_first, t_d
                 out[n_out] = k
                 n_out += 1
             continue
-        split = np.float64(splits[node, 1])
-        right = w0 >> 3
-        if axis == _TIME:
+        split = node_split(tree, node)
+        right = word_payload(w0)
+        if axis == TIME_AXIS:
             # Only the child holding t_days can have triangles present at t_days.
             keep = node + 1 if t_days < split else right
             drop = right if t_days < split else node + 1
@@ -363,10 +367,10 @@ def walk(nodes, splits, prim_indices, recs_f64, subtree_refs, subtree_first, t_d
             sp += 1
             continue
         # Spatial split: push the far child first so the near child is walked first.
-        if ortho:
-            left_first = axis != 2          # looking down: the upper half is nearer
+        if at_infinity:
+            left_first = order_point[axis] <= 0.0   # the viewer lies towards -axis (or across)
         else:
-            left_first = cam[1 + axis] < split
+            left_first = order_point[axis] < split
         for side in range(2):
             is_left = (side == 1) == left_first
             st_node[sp] = node + 1 if is_left else right

@@ -1,50 +1,87 @@
 """Shadow techniques: one registry, one signature, one output.
 
 Every technique takes a :class:`ShadowContext` (scene, resolved G-buffer surfaces, camera, sun,
-city time) and returns a :class:`ShadowResult`: the per-pixel lit fraction (0 = shadow,
-1 = sun; NaN never) and its own diagnostics. Techniques are chosen by name with
-:func:`get_technique`; unknown names raise a :class:`~cityshade.errors.UsageError` listing the
-valid ones.
+city time, :class:`~cityshade.config.ShadowSettings`) and returns a :class:`ShadowResult`: the
+per-pixel lit fraction (0 = shadow, 1 = sun; NaN never) and its own diagnostics. Techniques are
+chosen by name with :func:`get_technique`; unknown names raise a
+:class:`~cityshade.errors.UsageError` listing the valid ones.
+
+The registry is the one place that knows the names. The grammar::
+
+    NAME        := [hybrid:]TECHNIQUE[+smooth]
+    TECHNIQUE   := EXACT | PLANNER[/LOOKUP] | ALIAS
+    EXACT       := raytrace | ... (:data:`TECHNIQUES`: one "module:Class" entry each)
+    PLANNER     := shadowmap | psm | lispsm | xpsm | csm[:WARP]     (WARP: psm | lispsm | xpsm)
+    LOOKUP      := hard | pcf | vsm                                 (default hard)
+    ALIAS       := pcf (shadowmap/pcf) | vsm (shadowmap/vsm)
+
+A map technique is a light-view planner (:mod:`cityshade.shadows.planners`) plus a lookup
+(:mod:`cityshade.shadows.lookups`), every planner with every lookup; ``+smooth`` adds the
+screen-space post-filter to any technique; ``hybrid:`` refines any map technique with exact rays.
 
 Shared rule (DESIGN §14): a surface facing away from the sun (N·L ≤ 0, with N turned towards
-the viewer) is in shadow without any test, in every technique, so techniques agree there.
+the viewer) is in shadow without any test, in every technique, so techniques agree there. It is
+computed once per frame and sun (:attr:`ShadowContext.faces`).
 """
 from __future__ import annotations
 
+import functools
 import importlib
 from dataclasses import dataclass, field
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 import numpy as np
 
+from cityshade.config import ShadowSettings
 from cityshade.errors import UsageError
 
-#: name → "module:class". Later techniques (shadow maps, hybrid) register here too.
+if TYPE_CHECKING:
+    from cityshade.geometry.scene import Scene
+    from cityshade.raster.camera import Camera
+    from cityshade.raster.gbuffer import Surfaces
+    from cityshade.sun import SunPosition
+
+#: Techniques that are not map techniques: name → "module:Class" (registering one is one line).
 TECHNIQUES: dict[str, str] = {
     "raytrace": "cityshade.shadows.raytraced:RayTraced",
-    "shadowmap": "cityshade.shadows.shadowmap:ShadowMap",
-    "pcf": "cityshade.shadows.shadowmap:PCF",
-    "vsm": "cityshade.shadows.shadowmap:VSM",
-    "psm": "cityshade.shadows.warps:PSM",
-    "lispsm": "cityshade.shadows.warps:LiSPSM",
-    "xpsm": "cityshade.shadows.warps:XPSM",
-    "csm": "cityshade.shadows.cascades:Cascaded",
-    "csm:psm": "cityshade.shadows.cascades:CascadedPSM",
-    "csm:lispsm": "cityshade.shadows.cascades:CascadedLiSPSM",
-    "csm:xpsm": "cityshade.shadows.cascades:CascadedXPSM",
 }
+#: Light-view planners of the map techniques (:mod:`cityshade.shadows.planners`); ``csm`` takes
+#: an optional ``:WARP`` (one of the other planners but ``shadowmap``).
+PLANNERS = ("shadowmap", "psm", "lispsm", "xpsm", "csm")
+#: Lookups of the map techniques (:mod:`cityshade.shadows.lookups`).
+LOOKUPS = ("hard", "pcf", "vsm")
+#: Short names kept from the thesis slides: the uniform map with a filtered lookup.
+ALIASES = {"pcf": "shadowmap/pcf", "vsm": "shadowmap/vsm"}
 
 
-@dataclass
+@dataclass(eq=False)
 class ShadowContext:
-    """Everything a technique may use for one frame."""
+    """Everything a technique may use for one frame and one sun.
 
-    scene: Any
-    surfaces: Any          # cityshade.raster.gbuffer.Surfaces
-    camera: Any            # cityshade.raster.camera.Camera
-    sun: Any               # cityshade.sun.SunPosition
+    ``normal`` (oriented to the viewer) comes from the camera pass when the pipeline built the
+    context, and ``faces`` is computed at most once, however many techniques (a base, a
+    smoothing, a hybrid) read it.
+    """
+
+    scene: "Scene"
+    surfaces: "Surfaces"
+    camera: "Camera"
+    sun: "SunPosition"
     t_days: float
-    options: dict[str, Any] = field(default_factory=dict)
+    settings: ShadowSettings = field(default_factory=ShadowSettings)
+    oriented_normal: np.ndarray | None = None
+
+    @functools.cached_property
+    def normal(self) -> np.ndarray:
+        """(H, W, 3) float64 unit normals turned to the seen side (:func:`oriented_normals`)."""
+        if self.oriented_normal is not None:
+            return self.oriented_normal
+        return oriented_normals(self.surfaces, self.camera)
+
+    @functools.cached_property
+    def faces(self) -> np.ndarray:
+        """(H, W) bool: surface pixels facing the sun (the shared rule)."""
+        return facing_mask(self.normal, self.surfaces.valid, self.sun.direction)
 
 
 @dataclass
@@ -54,7 +91,6 @@ class MapUse:
     depth_map: Any              # cityshade.shadows.shadowmap.DepthMap
     pixels: np.ndarray          # (H, W) bool: the facing pixels looked up in this map
     filter_radius_px: int       # texels around the lookup the technique's filter reads
-    settings: Any               # ShadowMapSettings used for the bias
 
 
 @dataclass
@@ -66,6 +102,8 @@ class ShadowResult:
     extra_channels: dict[str, np.ndarray] = field(default_factory=dict)
     #: Map techniques list the depth maps they used (empty for ``raytrace``).
     maps: list[MapUse] = field(default_factory=list)
+    #: Map techniques: everything their planner drew (views, the cascades' texture array).
+    prepared: Any = None
 
 
 class Technique(Protocol):
@@ -75,17 +113,35 @@ class Technique(Protocol):
 
 
 def technique_names() -> list[str]:
-    return sorted(TECHNIQUES)
+    """The names of the product (DESIGN §8), each usable with ``hybrid:`` and ``+smooth``;
+    any planner also takes ``/pcf`` or ``/vsm`` (the module docstring's grammar)."""
+    return [*TECHNIQUES, *map_technique_names()]
+
+
+def map_technique_names() -> list[str]:
+    """The map techniques of the product: every planner with its classic lookup."""
+    return ["shadowmap", *ALIASES, "psm", "lispsm", "xpsm", "csm",
+            *(f"csm:{w}" for w in PLANNERS[1:4])]
+
+
+def names_help() -> str:
+    """One line for ``--help`` and error messages: the names and the grammar."""
+    return (f"{', '.join(technique_names())}; any map technique as PLANNER/LOOKUP "
+            f"(planners {', '.join(PLANNERS)}, csm:WARP; lookups {', '.join(LOOKUPS)}); "
+            f"hybrid[:MAP] (default base vsm); each also as NAME+smooth")
+
+
+def _unknown(name: str, why: str = "") -> UsageError:
+    return UsageError(f"unknown shadow technique {name!r}{why}; valid: {names_help()}")
 
 
 def get_technique(name: str) -> Technique:
-    """The technique registered under ``name`` (an instance ready to run).
-
-    ``NAME+smooth`` is technique NAME followed by the depth-aware screen-space smoothing
-    (:class:`cityshade.shadows.filtering.Smoothed`).
-    """
+    """The technique registered under ``name`` (an instance ready to run), by the grammar of
+    the module docstring."""
     base, plus, suffix = name.partition("+")
-    if plus and suffix == "smooth" and (base in TECHNIQUES or base.startswith("hybrid")):
+    if plus:
+        if suffix != "smooth":
+            raise _unknown(name, f" (unknown suffix +{suffix})")
         from cityshade.shadows.filtering import Smoothed
 
         return Smoothed(get_technique(base))
@@ -94,15 +150,31 @@ def get_technique(name: str) -> Technique:
 
         return Hybrid(name.partition(":")[2] or "vsm")
     entry = TECHNIQUES.get(name)
-    if entry is None:
-        raise UsageError(f"unknown shadow technique {name!r}; valid: "
-                         f"{', '.join(technique_names())}, hybrid[:BASE] (each also as "
-                         f"NAME+smooth)")
-    module, cls = entry.split(":")
-    return getattr(importlib.import_module(module), cls)()
+    if entry is not None:
+        module, cls = entry.split(":")
+        return getattr(importlib.import_module(module), cls)()
+    return get_map_technique(name)
 
 
-def oriented_normals(surfaces, camera) -> np.ndarray:
+def get_map_technique(name: str):
+    """The :class:`~cityshade.shadows.planners.MapTechnique` of ``PLANNER[/LOOKUP]`` or an
+    alias; a :class:`UsageError` for anything else."""
+    from cityshade.shadows import lookups, planners
+
+    spec = ALIASES.get(name, name)
+    planner_name, slash, lookup_name = spec.partition("/")
+    if slash and lookup_name not in LOOKUPS:
+        raise _unknown(name, f" (unknown lookup {lookup_name!r})")
+    head, colon, warp = planner_name.partition(":")
+    if head not in PLANNERS or (colon and (head != "csm" or warp not in PLANNERS[1:4])):
+        if head == "csm" and colon:
+            raise _unknown(name, f" (unknown warp {warp!r}; valid: {', '.join(PLANNERS[1:4])})")
+        raise _unknown(name)
+    planner = planners.make_planner(head, warp or None)
+    return planners.MapTechnique(name, planner, lookups.make_lookup(lookup_name or "hard"))
+
+
+def oriented_normals(surfaces: "Surfaces", camera: "Camera") -> np.ndarray:
     """Unit normals (H, W, 3) float64 turned to the side the camera sees.
 
     A pixel may show the back of a triangle (an open model, a wall seen from inside); its
@@ -118,8 +190,14 @@ def oriented_normals(surfaces, camera) -> np.ndarray:
     return np.where(seen_from_back[..., None], -normal, normal)
 
 
-def facing_sun(surfaces, camera, sun_direction) -> tuple[np.ndarray, np.ndarray]:
+def facing_mask(normal, valid, sun_direction) -> np.ndarray:
+    """(H, W) bool: valid pixels whose oriented normal faces the sun (N·L > 0)."""
+    faces = (normal @ np.asarray(sun_direction, dtype=np.float64)) > 0
+    return faces & np.asarray(valid, bool)
+
+
+def facing_sun(surfaces: "Surfaces", camera: "Camera", sun_direction
+               ) -> tuple[np.ndarray, np.ndarray]:
     """(oriented normals, mask of surface pixels that face the sun): the shared rule."""
     normal = oriented_normals(surfaces, camera)
-    faces = (normal @ np.asarray(sun_direction, dtype=np.float64)) > 0
-    return normal, faces & np.asarray(surfaces.valid, bool)
+    return normal, facing_mask(normal, surfaces.valid, sun_direction)

@@ -11,11 +11,11 @@ from __future__ import annotations
 import dataclasses
 import math
 import time
-from dataclasses import dataclass
 
 import numpy as np
 from numba import njit, prange
 
+from cityshade.config import SMOOTH_MAX_GAIN
 from cityshade.errors import UsageError
 
 #: Gaussian kernels are cut at this many standard deviations (weights beyond 3σ sum to 0.3 %).
@@ -100,8 +100,9 @@ def box_weights(radius_px: int) -> np.ndarray:
 
 
 @njit(cache=True, parallel=True)
-def _filter_rows(img, weights, out):
-    """Convolve every row of (H, W, C) ``img`` with ``weights``; edges clamp to the border."""
+def _filter_axis(img, weights, along_rows, out):
+    """Convolve every row (``along_rows``) or every column of (H, W, C) ``img`` with
+    ``weights``; edges clamp to the border."""
     h, w, nc = img.shape
     r = weights.shape[0] // 2
     for y in prange(h):
@@ -109,23 +110,10 @@ def _filter_rows(img, weights, out):
             for ch in range(nc):
                 acc = 0.0
                 for k in range(-r, r + 1):
-                    xx = min(max(x + k, 0), w - 1)
-                    acc += weights[k + r] * img[y, xx, ch]
-                out[y, x, ch] = acc
-
-
-@njit(cache=True, parallel=True)
-def _filter_cols(img, weights, out):
-    """Convolve every column of (H, W, C) ``img``; edges clamp to the border."""
-    h, w, nc = img.shape
-    r = weights.shape[0] // 2
-    for y in prange(h):
-        for x in range(w):
-            for ch in range(nc):
-                acc = 0.0
-                for k in range(-r, r + 1):
-                    yy = min(max(y + k, 0), h - 1)
-                    acc += weights[k + r] * img[yy, x, ch]
+                    if along_rows:
+                        acc += weights[k + r] * img[y, min(max(x + k, 0), w - 1), ch]
+                    else:
+                        acc += weights[k + r] * img[min(max(y + k, 0), h - 1), x, ch]
                 out[y, x, ch] = acc
 
 
@@ -152,8 +140,8 @@ def separable_filter(image, weights) -> np.ndarray:
         raise UsageError("filter weights must be 1-D with an odd length")
     tmp = np.empty_like(img)
     out = np.empty_like(img)
-    _filter_rows(np.ascontiguousarray(img), wts, tmp)
-    _filter_cols(tmp, wts, out)
+    _filter_axis(np.ascontiguousarray(img), wts, True, tmp)
+    _filter_axis(tmp, wts, False, out)
     return out[..., 0] if flat else out
 
 
@@ -249,12 +237,6 @@ def vsm_lookup(moments, u_px, v_px, depth_m, min_variance_m2: float,
 
 
 # --- screen-space smoothing -------------------------------------------------------------------
-
-#: Largest gain of the smoothing radius for surfaces nearer than the median depth (and smallest
-#: for farther ones, as 1 / gain): a shadow-map texel near the eye covers many pixels, far away
-#: a fraction of one.
-SMOOTH_MAX_GAIN = 4.0
-
 
 @njit(cache=True, parallel=True)
 def _smooth_pass(values, depth, ok, sigma, thr_rel, horizontal, out):
@@ -352,31 +334,6 @@ def smooth_lit(lit, surfaces, camera, sigma_px: float, depth_threshold_rel: floa
 
 # --- the "+smooth" post-filter ----------------------------------------------------------------
 
-@dataclass(frozen=True)
-class SmoothSettings:
-    """Tunables of the ``NAME+smooth`` post-filter (option names of ``ctx.options`` in
-    brackets)."""
-
-    #: [smooth_sigma] Gaussian σ in pixels at the median depth: 1.5 px softens the one-texel
-    #: steps of a 2048² map seen at 1080p without blurring real shadow edges away.
-    sigma_px: float = 1.5
-    #: [smooth_depth_rel] Relative depth step that ends the kernel: 2 % separates a building
-    #: from the street behind it at any distance, while a ground plane seen at 5° (depth step
-    #: between pixels about 1.5 % at 1080p, 40° fov) still smooths along itself.
-    depth_threshold_rel: float = 0.02
-    #: [smooth_max_gain] See :data:`SMOOTH_MAX_GAIN`.
-    max_gain: float = SMOOTH_MAX_GAIN
-
-    _OPTION_NAMES = {"smooth_sigma": "sigma_px", "smooth_depth_rel": "depth_threshold_rel",
-                     "smooth_max_gain": "max_gain"}
-
-    @classmethod
-    def from_options(cls, options: dict | None) -> "SmoothSettings":
-        changes = {f: options[k] for k, f in cls._OPTION_NAMES.items()
-                   if options and options.get(k) is not None}
-        return cls(**changes)
-
-
 class Smoothed:
     """A technique followed by :func:`smooth_lit` (registered as ``NAME+smooth``).
 
@@ -389,12 +346,10 @@ class Smoothed:
         self.name = f"{inner.name}+smooth"
 
     def run(self, ctx):
-        from cityshade.shadows import facing_sun
-
         result = self.inner.run(ctx)
-        settings = SmoothSettings.from_options(ctx.options)
+        settings = ctx.settings.smooth
         t0 = time.perf_counter()
-        _, faces = facing_sun(ctx.surfaces, ctx.camera, ctx.sun.direction)
+        faces = ctx.faces
         lit = smooth_lit(result.lit, ctx.surfaces, ctx.camera, settings.sigma_px,
                          settings.depth_threshold_rel, mask=faces, max_gain=settings.max_gain)
         lit[~faces] = 0.0

@@ -5,7 +5,7 @@ exact. Use the map to classify every visible pixel as surely lit, surely in shad
 uncertain, and trace shadow rays only for the uncertain ones. Writes the "refine image" (which
 pixels were traced) as the EXR channel ``refined``.
 
-Classifiers (option ``classifier``):
+Classifiers (``[shadows.hybrid] classifier``):
 
 ``bracket`` (default)
     For each receiver, look at the base's depth-map texels within one texel of its true surface
@@ -33,48 +33,17 @@ those misses against ``raytrace``.
 """
 from __future__ import annotations
 
-import dataclasses
 import math
 import time
-from dataclasses import dataclass
 
 import numpy as np
 from numba import njit
 
 from cityshade.errors import UsageError
-from cityshade.shadows import (ShadowContext, ShadowResult, facing_sun, get_technique,
-                               technique_names)
+from cityshade.shadows import TECHNIQUES, ShadowContext, ShadowResult
 
 #: Receiver states of the classifiers.
 SURE_LIT, SURE_SHADOW, UNCERTAIN = 0, 1, 2
-
-
-@dataclass(frozen=True)
-class HybridSettings:
-    """Tunables of ``hybrid`` (``ctx.options`` keys in brackets)."""
-
-    #: [classifier] "bracket" (map depth neighbourhood) or "vsm" (filtered value thresholds).
-    classifier: str = "bracket"
-    #: [low] / [high] "vsm" classifier thresholds on the base's lit fraction.
-    low: float = 0.02
-    high: float = 0.98
-    #: [extra_texels] Radius (texels) of the bracket neighbourhood around the surface point:
-    #: one texel covers point sampling's position error of up to one texel on either side.
-    extra_texels: int = 1
-    #: [max_boundary_passes] Bound on the boundary-following passes (each traces one layer).
-    max_boundary_passes: int = 64
-
-    @classmethod
-    def from_options(cls, options: dict | None) -> "HybridSettings":
-        options = options or {}
-        kwargs = {k: options[k] for k in ("classifier", "low", "high", "extra_texels",
-                                          "max_boundary_passes") if k in options}
-        settings = cls(**kwargs)
-        if settings.classifier not in ("bracket", "vsm"):
-            raise UsageError(f"hybrid classifier must be bracket or vsm, not {settings.classifier!r}")
-        if not 0.0 <= settings.low < settings.high <= 1.0:
-            raise UsageError("hybrid thresholds need 0 <= low < high <= 1")
-        return settings
 
 
 #: Triangles whose light-space height (2·area / longest edge) is below this many texels can fall
@@ -262,39 +231,43 @@ class Hybrid:
     """``hybrid:BASE``: BASE's map(s) classify, exact rays decide the uncertain pixels."""
 
     def __init__(self, base: str = "vsm"):
-        if base.startswith("hybrid") or base == "raytrace":
+        from cityshade.shadows import get_map_technique, map_technique_names
+
+        if base.startswith("hybrid") or base in TECHNIQUES or "+" in base:
             raise UsageError(f"hybrid needs a shadow-map base technique, not {base!r}; valid: "
-                             + ", ".join(n for n in technique_names()
-                                         if n not in ("raytrace",) and not n.startswith("hybrid")))
+                             + ", ".join(map_technique_names()) + " (or PLANNER/LOOKUP)")
         self.base_name = base
-        self.base = get_technique(base)
+        self.base = get_map_technique(base)
         self.name = f"hybrid:{base}"
 
     def run(self, ctx: ShadowContext) -> ShadowResult:
         from cityshade.trace import sunlit
 
-        settings = HybridSettings.from_options(ctx.options)
+        settings = ctx.settings.hybrid
         t0 = time.perf_counter()
         # The bracket classifier needs the base's map(s) only, not its filtered answer.
-        base_ctx = ctx
         if settings.classifier == "bracket":
-            base_ctx = dataclasses.replace(ctx, options={**ctx.options, "classify_only": True})
-        base = self.base.run(base_ctx)
+            prepared = self.base.prepare(ctx)
+            base_diagnostics = {"technique": self.base.name, **prepared.diagnostics}
+            maps = prepared.maps
+            base_lit = None
+        else:
+            base = self.base.run(ctx)
+            base_diagnostics, maps, base_lit = base.diagnostics, base.maps, base.lit
         t1 = time.perf_counter()
         surfaces = ctx.surfaces
         shape = surfaces.valid.shape
         lit = np.zeros(shape, np.float32)
         refined = np.zeros(shape, bool)
-        diagnostics = {"technique": self.name, "base": base.diagnostics,
+        diagnostics = {"technique": self.name, "base": base_diagnostics,
                        "classifier": settings.classifier}
         if not ctx.sun.above_horizon:
             diagnostics.update(traced_px=0, traced_share=0.0, note="sun below the horizon")
             return ShadowResult(lit=lit, diagnostics=diagnostics,
                                 extra_channels={"refined": refined.astype(np.float32)})
-        normal, faces = facing_sun(surfaces, ctx.camera, ctx.sun.direction)
+        normal, faces = ctx.normal, ctx.faces
         # 1. Classify facing pixels.
         state = np.full(shape, SURE_SHADOW, np.uint8)
-        maps = getattr(base, "maps", None) or []
         if settings.classifier == "bracket" and maps:
             prim = np.asarray(surfaces.prim_id)
             own_poly = np.where(prim >= 0, np.asarray(ctx.scene.tri_polygon)[np.maximum(prim, 0)],
@@ -308,7 +281,7 @@ class Hybrid:
                         own_poly[mask], ctx.sun.direction, settings.extra_texels, thin)
             classifier_used = "bracket"
         else:
-            b = base.lit
+            b = self.base.look_up(ctx, prepared) if base_lit is None else base_lit
             state[faces] = np.where(b[faces] >= settings.high, SURE_LIT,
                                     np.where(b[faces] <= settings.low, SURE_SHADOW, UNCERTAIN))
             classifier_used = "vsm" if settings.classifier == "vsm" else "vsm (base exposes no map)"
@@ -347,8 +320,9 @@ class Hybrid:
             "traced_px": rays + boundary_rays,
             "traced_share": (rays + boundary_rays) / max(int(valid.sum()), 1),
             "facing_px": n_facing,
-            "map_px": base.diagnostics.get("map_px"), "texel_m": base.diagnostics.get("texel_m"),
-            "aliasing_m": base.diagnostics.get("aliasing_m"),
+            "map_px": base_diagnostics.get("map_px"),
+            "texel_m": base_diagnostics.get("texel_m"),
+            "aliasing_m": base_diagnostics.get("aliasing_m"),
             "shadow_s": t3 - t0,
             "timings_s": {"base_s": t1 - t0, "classify_s": t2 - t1, "rays_s": t3 - t2},
         })

@@ -5,7 +5,7 @@ import time
 
 import numpy as np
 
-from cityshade.shadows import ShadowContext, ShadowResult, facing_sun
+from cityshade.shadows import ShadowContext, ShadowResult
 
 
 class RayTraced:
@@ -24,7 +24,7 @@ class RayTraced:
             diagnostics["note"] = "sun at or below the horizon: everything in shadow"
             return ShadowResult(lit=lit, diagnostics=diagnostics)
         t0 = time.perf_counter()
-        normal, faces = facing_sun(surfaces, ctx.camera, ctx.sun.direction)
+        normal, faces = ctx.normal, ctx.faces
         diagnostics["self_shadowed_px"] = int((surfaces.valid & ~faces).sum())
         points = surfaces.position_m[faces]
         if len(points):

@@ -1,5 +1,6 @@
-"""Shadow maps: light views, the light-space depth pass, lookups, and the ``shadowmap``,
-``pcf`` and ``vsm`` techniques.
+"""Shadow maps: light views, the light-space depth pass, the biased lookups and the measures
+(texel footprint, aliasing m) that every map technique (:mod:`cityshade.shadows.planners`)
+shares.
 
 Conventions
 -----------
@@ -30,111 +31,26 @@ most ``t/√2 · tanθ``, which an offset ``δ ≥ t/√2 · sinθ`` along the n
 """
 from __future__ import annotations
 
-import dataclasses
 import math
 import time
 from dataclasses import dataclass, field
 from typing import Any
 
-import numba
 import numpy as np
 from numba import njit, prange
 
+from cityshade.config import MAX_MAP_PX, MapSettings, ShadowSettings
 from cityshade.errors import UsageError
-from cityshade.shadows import MapUse, ShadowContext, ShadowResult, facing_sun
-from cityshade.shadows import lightraster as lr
+from cityshade.raster.depthpass import render_depth
+from cityshade.raster.triangles import TILE_PX
+from cityshade.shadows import ShadowContext
 
-#: Largest shadow-map side: 16384² float32 depth + int32 ids is 2 GiB.
-MAX_MAP_PX = 16384
 #: Smallest extent (metres) of a fitted light view across or along the rays: a single visible
 #: point still gets a non-degenerate map.
 MIN_EXTENT_M = 0.01
 #: Depth margin of the fitted view beyond the receivers and casters, relative to the depth range
 #: (plus MIN_EXTENT_M): float32 rounding of vertices never pushes a surface out of the range.
 DEPTH_MARGIN_REL = 1e-3
-#: Padding of light-frustum planes for caster culling, relative to the scene size: node boxes
-#: are float32-rounded, plane evaluation float64, so the test stays conservative.
-FRUSTUM_PAD_REL = 1e-5
-#: Walk stack entries (the build caps the tree depth at 60; the walk holds one entry per level
-#: plus one).
-_STACK_SIZE = 128
-
-
-@dataclass(frozen=True)
-class ShadowMapSettings:
-    """Tunables of the shadow-map family (option names of ``ctx.options`` in brackets).
-
-    The defaults keep acne and peter-panning low on the sample city and on a box at 3° sun
-    elevation (tests/test_shadowmap.py).
-    """
-
-    #: [map_px] Side of the shadow map in texels (square).
-    map_px: int = 2048
-    #: [bias] Constant offset of receivers toward the sun, metres: covers float32 rounding of
-    #: the vertices and the depth (a few 1e-4 m at km coordinates) with a wide margin, and stays
-    #: far below a texel so no shadow detaches from its caster.
-    bias_m: float = 0.02
-    #: [slope_bias] Normal offset in light-space texels times sinθ (see module docstring);
-    #: ≥ 0.71 removes acne, 1.5 leaves room for the depth's float32 rounding and non-square
-    #: texels.
-    slope_bias: float = 1.5
-    #: [max_bias] Largest normal offset, metres: with very coarse maps an unbounded offset would
-    #: lift receivers over real occluders (light leaks).
-    max_bias_m: float = 1.0
-    #: [pcf_kernel] PCF taps per side (odd): 3 gives a 3×3 box of texels around the receiver.
-    pcf_kernel: int = 3
-    #: [vsm_blur] VSM filter radius in texels (0: no filter).
-    vsm_blur: int = 2
-    #: [vsm_filter] "gaussian" (σ = radius / 2) or "box".
-    vsm_filter: str = "gaussian"
-    #: [min_variance] Variance floor of the VSM Chebyshev bound, m²: larger than the float
-    #: rounding of the moments (float64 here) and than a plane's in-texel depth spread would
-    #: need; the normal offset handles slopes, so a small value keeps contact shadows dark.
-    min_variance_m2: float = 1e-4
-    #: [bleed_reduction] VSM light-bleeding reduction: bounds below this are shadow and the rest
-    #: is rescaled to [0, 1] (Lauritzen); 0 disables.
-    bleed_reduction: float = 0.2
-    #: [fit_pad_px] Texels of margin around the receivers in a fitted view, so that filter
-    #: kernels and offset lookups at the border stay inside the map (the techniques add their
-    #: filter radius, and shrink the margin to less than half of a tiny map).
-    fit_pad_px: int = 4
-
-    _OPTION_NAMES = {"map_px": "map_px", "bias": "bias_m", "slope_bias": "slope_bias",
-                     "max_bias": "max_bias_m", "pcf_kernel": "pcf_kernel",
-                     "vsm_blur": "vsm_blur", "vsm_filter": "vsm_filter",
-                     "min_variance": "min_variance_m2", "bleed_reduction": "bleed_reduction",
-                     "fit_pad_px": "fit_pad_px"}
-
-    def __post_init__(self) -> None:
-        if not (isinstance(self.map_px, (int, np.integer)) and 1 <= self.map_px <= MAX_MAP_PX):
-            raise UsageError(f"map_px must be an integer in [1, {MAX_MAP_PX}], not {self.map_px!r}")
-        for name in ("bias_m", "slope_bias", "max_bias_m", "min_variance_m2"):
-            value = getattr(self, name)
-            if not (isinstance(value, (int, float)) and math.isfinite(value) and value >= 0):
-                raise UsageError(f"{name} must be a finite number >= 0, not {value!r}")
-        if not (isinstance(self.pcf_kernel, (int, np.integer)) and self.pcf_kernel >= 1
-                and self.pcf_kernel % 2 == 1 and self.pcf_kernel <= 63):
-            raise UsageError(f"pcf_kernel must be an odd integer in [1, 63], "
-                             f"not {self.pcf_kernel!r}")
-        if not (isinstance(self.vsm_blur, (int, np.integer)) and 0 <= self.vsm_blur <= 64):
-            raise UsageError(f"vsm_blur must be an integer in [0, 64], not {self.vsm_blur!r}")
-        if self.vsm_filter not in ("gaussian", "box"):
-            raise UsageError(f"vsm_filter must be 'gaussian' or 'box', not {self.vsm_filter!r}")
-        if not (isinstance(self.bleed_reduction, (int, float))
-                and 0.0 <= self.bleed_reduction < 1.0):
-            raise UsageError(f"bleed_reduction must be in [0, 1), not {self.bleed_reduction!r}")
-        if not (isinstance(self.fit_pad_px, (int, np.integer)) and 0 <= self.fit_pad_px <= 64):
-            raise UsageError(f"fit_pad_px must be an integer in [0, 64], not {self.fit_pad_px!r}")
-
-    @classmethod
-    def from_options(cls, options: dict | None, base: "ShadowMapSettings | None" = None
-                     ) -> "ShadowMapSettings":
-        """Settings with the known keys of a technique options dict applied (other keys belong
-        to other techniques and are ignored here)."""
-        base = base or cls()
-        changes = {field_name: options[key] for key, field_name in cls._OPTION_NAMES.items()
-                   if options and key in options and options[key] is not None}
-        return dataclasses.replace(base, **changes) if changes else base
 
 
 @dataclass(frozen=True, eq=False)
@@ -286,8 +202,7 @@ def receiver_points(ctx: ShadowContext) -> np.ndarray:
     """(N, 3) float64 points a fitted view must cover: the visible pixels facing the sun (the
     only ones a map is read at), else all visible pixels, else none."""
     surfaces = ctx.surfaces
-    _, faces = facing_sun(surfaces, ctx.camera, ctx.sun.direction)
-    points = surfaces.position_m[faces]
+    points = surfaces.position_m[ctx.faces]
     if points.shape[0] == 0:
         points = surfaces.position_m[np.asarray(surfaces.valid, bool)]
     return np.asarray(points, np.float64)
@@ -311,12 +226,12 @@ def fit_uniform(scene, ctx: ShadowContext, size_px, *, pad_px: int | None = None
     size_px : int or (width, height)
         Map size in texels.
     pad_px : int, optional
-        Margin in texels (default ``ShadowMapSettings.fit_pad_px``).
+        Margin in texels (default ``MapSettings.fit_pad_px``).
     receivers_m : (N, 3) array_like, optional
         The receivers when the caller has them already (default :func:`receiver_points`).
     """
     w, h = _size_px(size_px)
-    pad = ShadowMapSettings().fit_pad_px if pad_px is None else int(pad_px)
+    pad = MapSettings().fit_pad_px if pad_px is None else int(pad_px)
     if not 0 <= 2 * pad < min(w, h):
         raise UsageError(f"pad_px must be in [0, {min(w, h) // 2}), not {pad}")
     right, up, fwd = light_basis(ctx.sun.direction)
@@ -554,36 +469,8 @@ def aliasing_m(view: LightView, camera, surfaces, mask=None) -> dict[str, float]
 
 # --- the depth pass ---------------------------------------------------------------------------
 
-def frustum_planes(view: LightView, pad_m: float) -> np.ndarray:
-    """(5, 4) float64 planes ``(n, d)`` (unit ``n``) of the view's side and far planes; inside
-    is ``n . p + d >= -pad_m`` (Gribb and Hartmann's extraction from the clip matrix). The near
-    plane is left out on purpose: casters nearer the sun are clamped, not clipped."""
-    m = view.clip_from_world
-    rows = [m[3] + m[0], m[3] - m[0], m[3] + m[1], m[3] - m[1], m[3] - m[2]]
-    planes = []
-    for r in rows:
-        norm = float(np.linalg.norm(r[:3]))
-        if norm > 0.0:
-            planes.append(np.r_[r[:3] / norm, r[3] / norm + pad_m])
-    return np.array(planes).reshape(-1, 4)
-
-
-def box_planes(box, pad_m: float) -> np.ndarray:
-    """(6, 4) planes of an axis-aligned box ``[[x0, y0, z0], [x1, y1, z1]]`` (inside >= -pad)."""
-    b = np.asarray(box, dtype=np.float64)
-    if b.shape != (2, 3) or not np.isfinite(b).all() or (b[1] < b[0]).any():
-        raise UsageError("casters_box must be [[x0, y0, z0], [x1, y1, z1]] with lo <= hi")
-    planes = np.zeros((6, 4))
-    for a in range(3):
-        planes[2 * a, a] = 1.0
-        planes[2 * a, 3] = -b[0, a] + pad_m
-        planes[2 * a + 1, a] = -1.0
-        planes[2 * a + 1, 3] = b[1, a] + pad_m
-    return planes
-
-
 def render_depth_map(scene, view: LightView, t_days: float, *, casters_box=None,
-                     culling: bool = True, tile_px: int = lr.TILE_PX) -> DepthMap:
+                     culling: bool = True, tile_px: int = TILE_PX) -> DepthMap:
     """Rasterize the triangles present at ``t_days`` into the light view's depth map.
 
     Parameters
@@ -600,7 +487,7 @@ def render_depth_map(scene, view: LightView, t_days: float, *, casters_box=None,
         without a kd-tree it has no effect).
     culling : bool
         Walk the kd-tree with time filtering and light-frustum culling
-        (:func:`cityshade.raster.culling.walk`); False, a scene without kd-tree, or a view
+        (:func:`cityshade.raster.depthpass.render_depth`); False, a scene without kd-tree, or a view
         that holds the whole model draws the triangles present at ``t_days`` linearly. The
         map is the same either way.
     tile_px : int
@@ -610,129 +497,22 @@ def render_depth_map(scene, view: LightView, t_days: float, *, casters_box=None,
     -------
     DepthMap
     """
-    from cityshade.raster import culling as cull
-
     if not isinstance(view, LightView):
         raise UsageError(f"expected a LightView, not {type(view).__name__}")
-    t = float(t_days)
-    if math.isnan(t):
-        raise UsageError("t_days must be a number of days since 1970-01-01, not NaN")
-    if not (isinstance(tile_px, (int, np.integer)) and 8 <= tile_px <= 4096):
-        raise UsageError(f"tile_px must be an integer in [8, 4096], not {tile_px!r}")
-    vertices, triangles = scene.vertices, scene.triangles
-    if vertices.ndim != 2 or vertices.shape[1] != 3 or vertices.dtype != np.float32:
-        raise UsageError(f"scene vertices must be (V, 3) float32, not {vertices.shape} "
-                         f"{vertices.dtype}")
-    if triangles.ndim != 2 or triangles.shape[1] != 3 or triangles.dtype != np.int32:
-        raise UsageError(f"scene triangles must be (T, 3) int32, not {triangles.shape} "
-                         f"{triangles.dtype}")
-    started = time.perf_counter()
-    h, w = view.shape
-    tile = int(tile_px)
-    tiles_x, tiles_y = -(-w // tile), -(-h // tile)
-    m = np.ascontiguousarray(view.clip_from_world.reshape(16))
-    xs, ys, to_px = lr.texel_params(w, h)
-    depth = np.full((h, w), np.inf, np.float32)
-    prim = np.full((h, w), -1, np.int32)
-    timings = {"walk_s": 0.0, "setup_s": 0.0, "bin_s": 0.0, "raster_s": 0.0}
-    tree = getattr(scene, "kdtree", None)
-    recs = tree.tri_records if tree is not None else np.zeros((1, 16), np.float32)
-    stats: dict[str, Any] = {"triangles": int(triangles.shape[0]), "casters_drawn": 0,
-                             "frustum_refs_removed": 0, "time_refs_removed": 0}
-
-    def draw(items, from_records):
-        n = items.shape[0]
-        if n == 0:
-            return
-        t0 = time.perf_counter()
-        ids = np.empty(n, np.int32)
-        coef = np.empty((n, lr._SETUP_WORDS))
-        bbox = np.empty((n, 4), np.int32)
-        lr.setup_triangles(vertices, triangles, recs, from_records, items, m, to_px,
-                           float(w), float(h), ids, coef, bbox)
-        t1 = time.perf_counter()
-        start, binned = lr.bin_triangles(bbox, tile, tiles_x, tiles_y)
-        t2 = time.perf_counter()
-        lr.raster_depth_tiles(start, binned, ids, coef, bbox, xs, ys, to_px, tile, tiles_x,
-                              depth, prim)
-        t3 = time.perf_counter()
-        timings["setup_s"] += t1 - t0
-        timings["bin_s"] += t2 - t1
-        timings["raster_s"] += t3 - t2
-        stats["casters_drawn"] += n
-
-    use_tree = bool(culling) and tree is not None
-    if use_tree:
-        lo = np.asarray(tree.bounds[0, :3], np.float64)
-        hi = np.asarray(tree.bounds[1, :3], np.float64)
-        size = max(float(np.max(hi - lo)), float(np.max(np.abs(np.r_[lo, hi]))), 1.0)
-        pad = FRUSTUM_PAD_REL * size
-        planes = frustum_planes(view, pad)
-        if casters_box is not None:
-            planes = np.vstack([planes, box_planes(casters_box, pad)])
-        full = (1 << planes.shape[0]) - 1
-        outside, inside_mask = cull.box_outside(planes, lo, hi, full)
-        if outside:
-            use_tree = False
-            stats["culling"] = "the model lies outside the light view"
-            stats["frustum_refs_removed"] = int(tree.prim_indices.shape[0])
-        elif inside_mask == 0:
-            # The whole model is in the view: a linear time filter beats the walk.
-            use_tree = False
-            stats["culling"] = "the model lies inside the light view"
-        else:
-            stats["culling"] = "kd-tree walk"
-            refs, first, biggest = cull.tree_info(tree)
-            st_node = np.zeros(_STACK_SIZE, np.int64)
-            st_box = np.zeros((_STACK_SIZE, 6))
-            st_mask = np.zeros(_STACK_SIZE, np.int64)
-            st_mask[0] = full
-            st_box[0, :3], st_box[0, 3:] = lo, hi
-            state = np.ones(1, np.int64)
-            drawn = np.zeros(triangles.shape[0], np.uint8)
-            walk_stats = np.zeros(cull.N_STATS, np.int64)
-            out = np.empty(lr.MAX_BATCH + biggest, np.int32)
-            # Walk order only affects memory locality: start from the sun's side.
-            cam = np.zeros(24)
-            cam[1:4] = 0.5 * (lo + hi)
-            dummy = np.zeros((1, 1), np.float32)
-            while state[0] > 0:
-                w0 = time.perf_counter()
-                n = cull.walk(tree.nodes, tree.node_splits, tree.prim_indices, tree.records_f64,
-                              refs, first, t, planes, False, 0, cam, dummy, dummy, 8, 8,
-                              st_node, st_box, st_mask, state, drawn, out, lr.MAX_BATCH,
-                              walk_stats)
-                timings["walk_s"] += time.perf_counter() - w0
-                draw(out[:n], True)
-            named = dict(zip(cull.STAT_NAMES, (int(v) for v in walk_stats)))
-            stats["frustum_refs_removed"] = named["frustum_refs_removed"]
-            stats["time_refs_removed"] = named["time_refs_removed"]
-            stats["walk"] = named
-    if not use_tree and stats.get("culling") != "the model lies outside the light view":
-        if "culling" not in stats:
-            stats["culling"] = "off"
-        w0 = time.perf_counter()
-        ids = lr.present_triangles(np.asarray(scene.tri_t_begin_days, np.float64),
-                                   np.asarray(scene.tri_t_end_days, np.float64), t)
-        timings["walk_s"] += time.perf_counter() - w0
-        stats["time_refs_removed"] = int(triangles.shape[0] - ids.shape[0])
-        for b in range(0, ids.shape[0], lr.MAX_BATCH):
-            draw(ids[b:b + lr.MAX_BATCH], False)
-    timings["total_s"] = time.perf_counter() - started
-    stats.update({"texels": int(w * h), "texels_covered": int((prim >= 0).sum()),
-                  "tile_px": tile, "threads": int(numba.get_num_threads()),
-                  "timings_s": timings})
+    depth, prim, stats = render_depth(scene, view.clip_from_world, view.width_px,
+                                      view.height_px, t_days, casters_box=casters_box,
+                                      culling=culling, tile_px=tile_px)
     return DepthMap(view=view, depth=depth, prim_id=prim, stats=stats)
 
 
 # --- lookups ----------------------------------------------------------------------------------
 
 def offset_receivers(view: LightView, points_m, normals, sun_direction,
-                     settings: ShadowMapSettings, filter_radius_px: float = 0.0) -> np.ndarray:
+                     settings: ShadowSettings, filter_radius_px: float = 0.0) -> np.ndarray:
     """Receivers moved by the constant and slope-scaled (normal-offset) bias.
 
     ``p' = p + bias_m s + min(slope_bias · t · sinθ · (1 + r), max_bias_m) n`` (module
-    docstring), with ``t`` the light-space texel size at ``p`` (:func:`texel_footprint_m` on
+    docstring; ``settings.bias``: ``constant_m``, ``slope``, ``max_m``), with ``t`` the light-space texel size at ``p`` (:func:`texel_footprint_m` on
     the plane across the rays) and ``r = filter_radius_px``.
 
     Parameters
@@ -752,18 +532,18 @@ def offset_receivers(view: LightView, points_m, normals, sun_direction,
     texel = texel_footprint_m(view, p, s)
     cos = np.clip(n @ s, -1.0, 1.0)
     sin = np.sqrt(1.0 - cos * cos)
-    offset = np.minimum(settings.slope_bias * texel * sin * (1.0 + float(filter_radius_px)),
-                        settings.max_bias_m)
-    offset = np.where(np.isfinite(offset), offset, settings.max_bias_m)
-    return p + settings.bias_m * s + offset[:, None] * n
+    bias = settings.bias
+    offset = np.minimum(bias.slope * texel * sin * (1.0 + float(filter_radius_px)), bias.max_m)
+    offset = np.where(np.isfinite(offset), offset, bias.max_m)
+    return p + bias.constant_m * s + offset[:, None] * n
 
 
 def shadow_lookup(depth_map: DepthMap, points_m, normals, sun_direction,
-                  settings: ShadowMapSettings, mode: str = "hard") -> np.ndarray:
+                  settings: ShadowSettings, mode: str = "hard") -> np.ndarray:
     """Lit fraction (N,) float32 of receivers from one depth map.
 
-    ``mode``: "hard" (one texel), "pcf" (``settings.pcf_kernel``² texels) or "vsm" (moments
-    filtered with ``settings.vsm_blur``; Chebyshev bound, ``min_variance_m2``,
+    ``mode``: "hard" (one texel), "pcf" (``settings.pcf.kernel``² texels) or "vsm" (moments
+    filtered with ``settings.vsm.blur_px``; Chebyshev bound, ``min_variance_m2``,
     ``bleed_reduction``). Receivers are offset first (:func:`offset_receivers`; PCF and VSM
     scale the slope term by their filter radius).
     """
@@ -773,9 +553,9 @@ def shadow_lookup(depth_map: DepthMap, points_m, normals, sun_direction,
     if mode == "hard":
         radius = 0
     elif mode == "pcf":
-        radius = settings.pcf_kernel // 2
+        radius = settings.pcf.kernel // 2
     elif mode == "vsm":
-        radius = settings.vsm_blur
+        radius = settings.vsm.blur_px
     else:
         raise UsageError(f"shadow lookup mode must be hard, pcf or vsm, not {mode!r}")
     q = offset_receivers(view, points_m, normals, sun_direction, settings, radius)
@@ -789,12 +569,13 @@ def shadow_lookup(depth_map: DepthMap, points_m, normals, sun_direction,
                                          u, v, z)
         z = z - (np.abs(gu) + np.abs(gv)) * (0.5 + radius)
     if mode == "vsm":
-        weights = (flt.gaussian_weights(settings.vsm_blur / 2.0, settings.vsm_blur)
-                   if settings.vsm_filter == "gaussian" else flt.box_weights(settings.vsm_blur))
+        vsm = settings.vsm
+        weights = (flt.gaussian_weights(vsm.blur_px / 2.0, vsm.blur_px)
+                   if vsm.filter == "gaussian" else flt.box_weights(vsm.blur_px))
         scale = metres_per_ndc(view)
         moments = flt.vsm_moments(depth_map.depth, scale, weights)
-        return flt.vsm_lookup(moments, u, v, (z + 1.0) * scale, settings.min_variance_m2,
-                              settings.bleed_reduction)
+        return flt.vsm_lookup(moments, u, v, (z + 1.0) * scale, vsm.min_variance_m2,
+                              vsm.bleed_reduction)
     return flt.pcf_lookup(depth_map.depth, u, v, z, 2 * radius + 1)
 
 
@@ -817,73 +598,3 @@ def map_diagnostics(views, ctx: ShadowContext, points_m, normals, faces) -> dict
     out["texel_light_m"] = float(np.median(light))
     out["aliasing_m"] = aliasing_m(views[0], ctx.camera, ctx.surfaces, mask=faces)
     return out
-
-
-# --- techniques -------------------------------------------------------------------------------
-
-class ShadowMap:
-    """``shadowmap``: one uniform orthographic map fitted to the visible receivers, hard test
-    with constant, slope-scaled (normal offset) and clamped bias."""
-
-    name = "shadowmap"
-    mode = "hard"
-
-    def run(self, ctx: ShadowContext) -> ShadowResult:
-        settings = ShadowMapSettings.from_options(ctx.options)
-        surfaces = ctx.surfaces
-        lit = np.zeros(surfaces.valid.shape, np.float32)
-        diagnostics: dict[str, Any] = {"technique": self.name, "map_px": [], "texel_m": 0.0,
-                                       "aliasing_m": {"max": 0.0, "mean": 0.0}, "shadow_s": 0.0}
-        if not ctx.sun.above_horizon:
-            diagnostics["note"] = "sun at or below the horizon: everything in shadow"
-            return ShadowResult(lit=lit, diagnostics=diagnostics)
-        t0 = time.perf_counter()
-        normal, faces = facing_sun(surfaces, ctx.camera, ctx.sun.direction)
-        diagnostics["self_shadowed_px"] = int((surfaces.valid & ~faces).sum())
-        points = surfaces.position_m[faces]
-        normals = normal[faces]
-        if points.shape[0] == 0:
-            # No visible surface faces the sun: nothing to look up, no map to draw.
-            diagnostics["note"] = "no visible surface faces the sun: no map drawn"
-            diagnostics["shadow_s"] = time.perf_counter() - t0
-            return ShadowResult(lit=lit, diagnostics=diagnostics)
-        radius = {"hard": 0, "pcf": settings.pcf_kernel // 2, "vsm": settings.vsm_blur}[self.mode]
-        pad = min(settings.fit_pad_px + radius, (settings.map_px - 1) // 2)
-        view = fit_uniform(ctx.scene, ctx, settings.map_px, pad_px=pad, receivers_m=points)
-        t1 = time.perf_counter()
-        depth_map = render_depth_map(ctx.scene, view, ctx.t_days)
-        t2 = time.perf_counter()
-        # Under ``hybrid`` only the map is wanted (option ``classify_only``): no lookup and no
-        # per-pixel diagnostics.
-        classify_only = bool(ctx.options.get("classify_only", False))
-        if not classify_only:
-            lit[faces] = shadow_lookup(depth_map, points, normals, ctx.sun.direction, settings,
-                                       self.mode)
-        t3 = time.perf_counter()
-        if classify_only:
-            diagnostics["map_px"] = [(view.width_px, view.height_px)]
-        else:
-            diagnostics.update(map_diagnostics([view], ctx, points, normals, faces))
-        t4 = time.perf_counter()
-        diagnostics["shadow_s"] = t3 - t0
-        diagnostics["timings_s"] = {"fit_s": t1 - t0, "depth_s": t2 - t1, "lookup_s": t3 - t2,
-                                    "diagnostics_s": t4 - t3}
-        diagnostics["depth_map"] = depth_map.stats
-        diagnostics["settings"] = dataclasses.asdict(settings)
-        return ShadowResult(lit=lit, diagnostics=diagnostics,
-                            maps=[MapUse(depth_map, faces, radius, settings)])
-
-
-class PCF(ShadowMap):
-    """``pcf``: the ``shadowmap`` map with percentage-closer filtering (``pcf_kernel``)."""
-
-    name = "pcf"
-    mode = "pcf"
-
-
-class VSM(ShadowMap):
-    """``vsm``: variance shadow map on the uniform map (filtered moments, Chebyshev bound,
-    minimum variance, light-bleeding reduction)."""
-
-    name = "vsm"
-    mode = "vsm"

@@ -1,4 +1,5 @@
-"""Perspective warps of the shadow map against perspective aliasing: ``psm``, ``lispsm``, ``xpsm``.
+"""Perspective warps of the shadow map against perspective aliasing: ``psm``, ``lispsm``, ``xpsm``
+(the matrices; :class:`cityshade.shadows.planners.Warped` plans the maps with them).
 
 Every warp here is one (4, 4) float64 projective matrix ``clip_from_world`` (render space →
 OpenGL-style light clip space, x, y, z in [-w, w]) handed to the shadow-map core
@@ -57,44 +58,15 @@ Orthographic (map) cameras have no perspective aliasing: every warp is the unifo
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 from numba import njit
 
+from cityshade.config import WarpSettings
 from cityshade.errors import UsageError
 
 #: Names of the warps (``none`` is the uniform orthographic map).
 WARPS = ("none", "psm", "lispsm", "xpsm")
-
-
-@dataclass(frozen=True)
-class WarpSettings:
-    """Tunables of the perspective warps."""
-
-    #: PSM: smallest near/far ratio of the virtual camera. Kozlov's slide-back: a tiny near
-    #: plane concentrates the whole map on the first metres; 0.05 keeps a 20:1 density ratio.
-    psm_min_near_far: float = 0.05
-    #: PSM: |w| of the sun in post-perspective space, relative to its length, below which
-    #: the light stays directional there (the sun parallel to the view plane).
-    psm_directional_eps: float = 1e-9
-    #: LiSPSM: beyond this many body depths the projection centre is so far that the warp
-    #: changes texel sizes by < 1e-4 relative: use the uniform map itself.
-    lispsm_max_n_rel: float = 1e4
-    #: XPSM: cap of the warp ratio w_far / w_near (Zhang's bound on the warping strength: a
-    #: stronger warp starves the far part of the map).
-    xpsm_max_warp: float = 100.0
-    #: Margin added on each side of the fitted x, y range, relative to the range, so that
-    #: receivers on the border stay inside the map after float32 rounding.
-    fit_margin_rel: float = 1e-3
-
-    def __post_init__(self) -> None:
-        if not 0.0 < self.psm_min_near_far < 1.0:
-            raise UsageError(f"psm_min_near_far must be in (0, 1), not {self.psm_min_near_far}")
-        if not (self.psm_directional_eps >= 0.0 and self.lispsm_max_n_rel > 1.0
-                and self.xpsm_max_warp > 1.0 and 0.0 <= self.fit_margin_rel < 0.5):
-            raise UsageError("warp settings out of range (psm_directional_eps >= 0, "
-                             "lispsm_max_n_rel > 1, xpsm_max_warp > 1, 0 <= fit_margin_rel < 0.5)")
 
 
 # --- small helpers ------------------------------------------------------------------------------
@@ -289,6 +261,18 @@ def _body_params(camera, d, r, c):
     return eye, basis, sin_gamma, y0, depth_y_m, z_n, z_f, n
 
 
+def _perspective_focus(camera, sun_direction, receivers_m, casters_m, settings):
+    """Checked inputs of a warp; for an orthographic camera also the uniform map it becomes
+    (no perspective aliasing to fight)."""
+    s = settings or WarpSettings()
+    d, r, c = _check_inputs(sun_direction, receivers_m, casters_m)
+    uniform = None
+    if camera.kind != "perspective":
+        m, info = uniform_matrix(d, r, c, s)
+        uniform = m, dict(info, note="orthographic camera: no perspective aliasing, uniform map")
+    return s, d, r, c, uniform
+
+
 def lispsm_matrix(camera, sun_direction, receivers_m, casters_m,
                   settings: WarpSettings | None = None) -> tuple[np.ndarray, dict]:
     """Light-space perspective shadow map (Wimmer, Scherzer, Purgathofer 2004).
@@ -306,11 +290,10 @@ def lispsm_matrix(camera, sun_direction, receivers_m, casters_m,
         ``warp``, ``n_m`` (centre distance before the body, inf when uniform), ``gamma_deg``,
         ``z_near_m``, ``z_far_m``, ``body_depth_m``.
     """
-    s = settings or WarpSettings()
-    d, r, c = _check_inputs(sun_direction, receivers_m, casters_m)
-    if camera.kind != "perspective":
-        m, info = uniform_matrix(d, r, c, s)
-        return m, dict(info, note="orthographic camera: no perspective aliasing, uniform map")
+    s, d, r, c, uniform = _perspective_focus(camera, sun_direction, receivers_m, casters_m,
+                                             settings)
+    if uniform is not None:
+        return uniform
     eye, basis, sin_gamma, y0, depth_y_m, z_n, z_f, n = _body_params(camera, d, r, c)
     info = {"warp": "lispsm", "gamma_deg": math.degrees(math.asin(min(sin_gamma, 1.0))),
             "z_near_m": z_n, "z_far_m": z_f, "body_depth_m": depth_y_m, "n_m": n}
@@ -413,11 +396,10 @@ def xpsm_matrix(camera, sun_direction, receivers_m, casters_m,
         ``warp``, ``warp_ratio`` (w at the far / near end of the body), ``k_per_m``,
         ``rotation_deg`` of the affine step, ``gamma_deg``.
     """
-    s = settings or WarpSettings()
-    d, r, c = _check_inputs(sun_direction, receivers_m, casters_m)
-    if camera.kind != "perspective":
-        m, info = uniform_matrix(d, r, c, s)
-        return m, dict(info, note="orthographic camera: no perspective aliasing, uniform map")
+    s, d, r, c, uniform = _perspective_focus(camera, sun_direction, receivers_m, casters_m,
+                                             settings)
+    if uniform is not None:
+        return uniform
     eye, basis, sin_gamma, y0, depth_y_m, z_n, z_f, n = _body_params(camera, d, r, c)
     # Step 1: strength of the warp w = 1 + k (y - y0) along the projected view direction.
     ratio = 1.0 + depth_y_m / n if math.isfinite(n) and n > 0.0 else 1.0
@@ -539,110 +521,14 @@ def warp_matrix(warp: str, camera, sun_direction, receivers_m, casters_m,
     raise UsageError(f"unknown warp {warp!r}; valid: {', '.join(WARPS)}")
 
 
-# --- lookup and techniques --------------------------------------------------------------------
-
-def lookup(dmap, points_m, normals, sun_direction, map_settings, options=None
-           ) -> tuple[np.ndarray, np.ndarray]:
-    """Hard shadow test of receivers against a depth map (any projective view).
-
-    Delegates to :func:`cityshade.shadows.shadowmap.shadow_lookup` (receiver-side constant and
-    normal-offset bias with ``t`` the light-space texel size at each receiver, so the same rule
-    holds on warped maps where ``t`` varies across the map).
-
-    Parameters
-    ----------
-    dmap : cityshade.shadows.shadowmap.DepthMap
-    points_m, normals : (N, 3) float64 receivers and their oriented unit normals (facing sun).
-    sun_direction : (3,) unit vector toward the sun.
-    map_settings : cityshade.shadows.shadowmap.ShadowMapSettings
-
-    Returns
-    -------
-    lit : (N,) float32 in {0, 1}
-    texel_m : (N,) float64 light-space texel size at each receiver, metres.
-    """
-    from cityshade.shadows import shadowmap as sm
-
-    p = np.asarray(points_m, dtype=np.float64).reshape(-1, 3)
-    if p.shape[0] == 0:
-        return np.zeros(0, np.float32), np.zeros(0)
-    s = _unit(sun_direction)
-    lit = sm.shadow_lookup(dmap, p, normals, s, map_settings, "hard")
-    return np.asarray(lit, np.float32), sm.texel_footprint_m(dmap.view, p, s)
-
+# --- the focus region -----------------------------------------------------------------------
 
 def focus(ctx) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Facing mask (H, W), receivers (N, 3), their oriented normals (N, 3) and the receivers
     extruded toward the sun to the scene box (N, 3) of a shadow context."""
-    from cityshade.shadows import facing_sun
     from cityshade.shadows import shadowmap as sm
 
-    normal, faces = facing_sun(ctx.surfaces, ctx.camera, ctx.sun.direction)
+    faces = ctx.faces
     receivers = np.asarray(ctx.surfaces.position_m[faces], np.float64)
     casters = extrude_to_box(receivers, ctx.sun.direction, sm.scene_bounds(ctx.scene))
-    return faces, receivers, normal[faces], casters
-
-
-class Warped:
-    """A single warped shadow map; subclasses name the warp."""
-
-    name = "warped"
-    warp = "none"
-
-    def run(self, ctx):
-        import time
-
-        from cityshade.shadows import MapUse, ShadowResult
-        from cityshade.shadows import shadowmap as sm
-
-        map_settings = sm.ShadowMapSettings.from_options(ctx.options)
-        size = int(map_settings.map_px)
-        lit = np.zeros(ctx.surfaces.valid.shape, np.float32)
-        diagnostics = {"technique": self.name, "map_px": [], "texel_m": 0.0,
-                       "aliasing_m": {"max": 0.0, "mean": 0.0}, "shadow_s": 0.0}
-        if not ctx.sun.above_horizon:
-            diagnostics["note"] = "sun at or below the horizon: everything in shadow"
-            return ShadowResult(lit=lit, diagnostics=diagnostics)
-        started = time.perf_counter()
-        faces, receivers, normals, casters = focus(ctx)
-        if receivers.shape[0] == 0:
-            diagnostics["note"] = "no visible surface faces the sun"
-            diagnostics["shadow_s"] = time.perf_counter() - started
-            return ShadowResult(lit=lit, diagnostics=diagnostics)
-        m, info = warp_matrix(self.warp, ctx.camera, ctx.sun.direction, receivers, casters)
-        view = sm.LightView(m, size, size, self.name)
-        dmap = sm.render_depth_map(ctx.scene, view, ctx.t_days)
-        diagnostics.update({"map_px": [(size, size)], "warp": info, "depth_map": dmap.stats})
-        # Under ``hybrid`` only the map is wanted (option ``classify_only``).
-        if not ctx.options.get("classify_only", False):
-            lit_faces, texel_m = lookup(dmap, receivers, normals, ctx.sun.direction,
-                                        map_settings)
-            lit[faces] = lit_faces
-            alias = sm.aliasing_m(view, ctx.camera, ctx.surfaces, mask=faces)
-            diagnostics.update({"texel_m": float(np.median(texel_m)),
-                                "aliasing_m": {"max": alias["max"], "mean": alias["mean"]}})
-        diagnostics["shadow_s"] = time.perf_counter() - started
-        self.view, self.depth_map = view, dmap
-        return ShadowResult(lit=lit, diagnostics=diagnostics,
-                            maps=[MapUse(dmap, faces, 0, map_settings)])
-
-
-class PSM(Warped):
-    """``psm``: perspective shadow map (:func:`psm_matrix`)."""
-
-    name = "psm"
-    warp = "psm"
-
-
-class LiSPSM(Warped):
-    """``lispsm``: light-space perspective shadow map (:func:`lispsm_matrix`)."""
-
-    name = "lispsm"
-    warp = "lispsm"
-
-
-class XPSM(Warped):
-    """``xpsm``: extended perspective shadow map (:func:`xpsm_matrix`)."""
-
-    name = "xpsm"
-    warp = "xpsm"
+    return faces, receivers, ctx.normal[faces], casters

@@ -46,9 +46,8 @@ def _tree_of(tree) -> KdTree:
 
 
 def _padded_box(tree: KdTree) -> tuple[np.ndarray, np.ndarray]:
-    lo = np.asarray(tree.bounds[0, :3], dtype=np.float64)
-    hi = np.asarray(tree.bounds[1, :3], dtype=np.float64)
-    pad = BOX_PAD_REL * max(float(np.max(hi - lo)), float(np.max(np.abs(np.r_[lo, hi]))), 1.0)
+    lo, hi, scale_m = tree.box_scale_m()
+    pad = BOX_PAD_REL * scale_m
     return lo - pad, hi + pad
 
 
@@ -139,8 +138,7 @@ def occluded(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     if origins.shape[0] == 0 or kd.tri_records.shape[0] == 0:
         return out
     lo, hi = _padded_box(kd)
-    occluded_bricks(kd.nodes, kd.node_splits, kd.tri_records, kd.records_f64, lo, hi,
-                    origins, directions, 0.0, tmax_arr, t, brick, out)
+    occluded_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, out)
     return out
 
 
@@ -175,8 +173,8 @@ def intersect(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     if n == 0 or kd.tri_records.shape[0] == 0:
         return dist, tri, u, v
     lo, hi = _padded_box(kd)
-    intersect_bricks(kd.nodes, kd.node_splits, kd.tri_records, kd.records_f64, lo, hi,
-                     origins, directions, 0.0, tmax_arr, t, brick, dist, tri, u, v)
+    intersect_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, dist, tri,
+                     u, v)
     return dist, tri, u, v
 
 

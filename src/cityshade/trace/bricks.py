@@ -12,7 +12,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit, prange
 
-from cityshade.trace.kernels import STACK_SIZE, any_hit, closest_hit
+from cityshade.accel.kdtree_layout import record_id
+from cityshade.trace.kernels import any_hit, closest_hit, new_stack
 
 #: Rays per brick: large enough to amortise the per-brick stack allocation and to keep the
 #: caster cache warm (a 16x16 pixel tile in tile order), small enough for two threads to
@@ -34,56 +35,61 @@ def _brick_of(j, n_bricks):
     return b if b < n_bricks else -1
 
 
+@njit(cache=True, inline="always")
+def _brick_rays(j, n, brick_size):
+    """Rays ``[i0, i1)`` of the brick traced at prange iteration j (empty for padding)."""
+    b = _brick_of(j, (n + brick_size - 1) // brick_size)
+    if b < 0:
+        return 0, 0
+    return b * brick_size, min(n, (b + 1) * brick_size)
+
+
+@njit(cache=True, inline="always")
+def _n_iter(n, brick_size):
+    """prange iterations over n rays: the bricks padded to a multiple of STRIPES."""
+    return STRIPES * (((n + brick_size - 1) // brick_size + STRIPES - 1) // STRIPES)
+
+
 @njit(cache=True, parallel=True)
-def occluded_bricks(nodes, splits, recs, recs_f64, box_lo, box_hi, origins, directions,
-                    tmin, tmax, t_days, brick_size, out):
+def occluded_bricks(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_days, brick_size,
+                    out):
     """``out[i] = True`` when ray i hits a triangle valid at ``t_days`` within its segment.
 
-    ``origins``, ``directions``: (N, 3) float64; ``tmin``: scalar; ``tmax``: (N,) float64.
+    ``tree``: :class:`~cityshade.accel.kdtree_layout.KdViews`; ``origins``, ``directions``:
+    (N, 3) float64; ``tmin``: scalar; ``tmax``: (N,) float64.
     """
     n = origins.shape[0]
-    n_bricks = (n + brick_size - 1) // brick_size
-    n_iter = STRIPES * ((n_bricks + STRIPES - 1) // STRIPES)
-    for j in prange(n_iter):
-        b = _brick_of(j, n_bricks)
-        if b < 0:
+    for j in prange(_n_iter(n, brick_size)):
+        i0, i1 = _brick_rays(j, n, brick_size)
+        if i0 >= i1:
             continue
-        st_node = np.empty(STACK_SIZE, np.int64)
-        st_t0 = np.empty(STACK_SIZE)
-        st_t1 = np.empty(STACK_SIZE)
+        stack = new_stack()
         cache_k = -1
-        for i in range(b * brick_size, min(n, (b + 1) * brick_size)):
-            k = any_hit(nodes, splits, recs, recs_f64, box_lo, box_hi,
-                        origins[i, 0], origins[i, 1], origins[i, 2],
+        for i in range(i0, i1):
+            k = any_hit(tree, box_lo, box_hi, origins[i, 0], origins[i, 1], origins[i, 2],
                         directions[i, 0], directions[i, 1], directions[i, 2],
-                        tmin, tmax[i], t_days, cache_k, st_node, st_t0, st_t1)
+                        tmin, tmax[i], t_days, cache_k, stack)
             out[i] = k >= 0
             if k >= 0:
                 cache_k = k
 
 
 @njit(cache=True, parallel=True)
-def intersect_bricks(nodes, splits, recs, recs_f64, box_lo, box_hi, origins, directions,
-                     tmin, tmax, t_days, brick_size, out_t, out_tri, out_u, out_v):
+def intersect_bricks(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_days, brick_size,
+                     out_t, out_tri, out_u, out_v):
     """Closest hits of all rays; misses get ``t = inf``, ``tri = -1``, ``u = v = 0``."""
     n = origins.shape[0]
-    n_bricks = (n + brick_size - 1) // brick_size
-    rec_ids = recs.view(np.int32)
-    n_iter = STRIPES * ((n_bricks + STRIPES - 1) // STRIPES)
-    for j in prange(n_iter):
-        b = _brick_of(j, n_bricks)
-        if b < 0:
+    for j in prange(_n_iter(n, brick_size)):
+        i0, i1 = _brick_rays(j, n, brick_size)
+        if i0 >= i1:
             continue
-        st_node = np.empty(STACK_SIZE, np.int64)
-        st_t0 = np.empty(STACK_SIZE)
-        st_t1 = np.empty(STACK_SIZE)
-        for i in range(b * brick_size, min(n, (b + 1) * brick_size)):
-            t, k, u, v = closest_hit(nodes, splits, recs, recs_f64, rec_ids, box_lo, box_hi,
-                                     origins[i, 0], origins[i, 1], origins[i, 2],
-                                     directions[i, 0], directions[i, 1], directions[i, 2],
-                                     tmin, tmax[i], t_days, st_node, st_t0, st_t1)
+        stack = new_stack()
+        for i in range(i0, i1):
+            t, k, u, v = closest_hit(tree, box_lo, box_hi, origins[i, 0], origins[i, 1],
+                                     origins[i, 2], directions[i, 0], directions[i, 1],
+                                     directions[i, 2], tmin, tmax[i], t_days, stack)
             out_t[i] = t
-            out_tri[i] = rec_ids[k, 9] if k >= 0 else -1
+            out_tri[i] = record_id(tree, k) if k >= 0 else -1
             out_u[i] = u
             out_v[i] = v
 

@@ -1,8 +1,8 @@
 """Numba kernels: watertight ray/triangle test and kd-tree traversal (closest hit, any hit).
 
-All kernels take the flat tree of :mod:`cityshade.accel.kdtree_layout` as separate views of
-the same memory (``nodes`` uint32 (M, 2), ``splits`` its float32 view, ``recs`` float32
-(K, 16) records and ``recs_f64`` their float64 view), so they work on read-only memory maps.
+All kernels take the flat tree of :mod:`cityshade.accel.kdtree_layout` as one
+:class:`~cityshade.accel.kdtree_layout.KdViews` tuple (views of the same memory, so they work on
+read-only memory maps) and decode it with that module's inline decoders.
 
 Ray/triangle test: Woop, Benthin and Wald, "Watertight Ray/Triangle Intersection", JCGT 2(1),
 2013. The ray is sheared so that it runs along +z through the origin; the three 2-D edge
@@ -22,6 +22,10 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from cityshade.accel.kdtree_layout import (LEAF_CODE, TIME_AXIS, leaf_first, node_split,
+                                           node_word, record_id, record_present, word_axis,
+                                           word_payload)
+
 #: Entries of the fixed traversal stack: at most one push per level, and the build caps the
 #: depth at 60 (``cityshade.accel.kdtree_build.MAX_DEPTH_LIMIT``).
 STACK_SIZE = 64
@@ -31,12 +35,6 @@ STACK_SIZE = 64
 SPLIT_REL_TOL = 1e-9
 #: Absolute floor of that slack, metres along a unit ray.
 SPLIT_ABS_TOL = 1e-9
-#: Axis code of a leaf, of a time split (``kdtree_layout``).
-_LEAF = 4
-_TIME = 3
-#: Columns in the record views (``kdtree_layout``).
-_T_BEGIN = 5
-_T_END = 6
 
 
 @njit(cache=True, inline="always")
@@ -128,61 +126,58 @@ def clip_to_box(box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax):
 
 
 @njit(cache=True, inline="always")
-def closest_hit(nodes, splits, recs, recs_f64, rec_ids, box_lo, box_hi, ox, oy, oz, dx, dy, dz,
-                tmin, tmax, t_days, st_node, st_t0, st_t1):
-    """Closest hit of one ray in ``[tmin, tmax]`` at city time ``t_days``.
-
-    Returns ``(t, k, u, v)`` with ``k`` the record index (-1 and ``t = inf`` on a miss).
-    ``rec_ids`` is the int32 view of ``recs`` (made once by the caller: a view per ray would
-    cost an allocation). ``st_*`` are scratch stacks of ``STACK_SIZE`` entries owned by the
-    calling thread.
-    """
-    best_t = np.inf
-    best_k = -1
-    best_id = -1
-    best_u = 0.0
-    best_v = 0.0
-    seg0, seg1 = clip_to_box(box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax)
-    if seg0 > seg1:
-        return best_t, best_k, best_u, best_v
+def _sheared(ox, oy, oz, dx, dy, dz):
+    """The ray as :func:`hit_record` takes it: ``(okx, oky, okz, kx, ky, kz, sx, sy, sz)``,
+    the origin on the permuted axes and the shear of :func:`ray_shear`."""
     kx, ky, kz, sx, sy, sz = ray_shear(dx, dy, dz)
-    okx = ox if kx == 0 else (oy if kx == 1 else oz)
-    oky = ox if ky == 0 else (oy if ky == 1 else oz)
-    okz = ox if kz == 0 else (oy if kz == 1 else oz)
-    inv_x = 1.0 / dx if dx != 0.0 else 0.0
-    inv_y = 1.0 / dy if dy != 0.0 else 0.0
-    inv_z = 1.0 / dz if dz != 0.0 else 0.0
-    node = 0
-    sp = 0
+    return (ox if kx == 0 else (oy if kx == 1 else oz), ox if ky == 0 else (oy if ky == 1 else oz),
+            ox if kz == 0 else (oy if kz == 1 else oz), kx, ky, kz, sx, sy, sz)
+
+
+@njit(cache=True, inline="always")
+def _inverse(d):
+    """1/d for the slab tests, 0 for a zero component (never used then: the ray is parallel)."""
+    return 1.0 / d if d != 0.0 else 0.0
+
+
+@njit(cache=True, inline="always")
+def _hit_at(tree, k, t_days, tmin, tmax, ray):
+    """:func:`hit_record` of record ``k`` for the :func:`_sheared` ray when its triangle stands
+    at ``t_days``; a hit counts only inside ``[tmin, tmax]``. Returns ``(hit, t, u, v)``."""
+    if not record_present(tree, k, t_days):
+        return False, 0.0, 0.0, 0.0
+    okx, oky, okz, kx, ky, kz, sx, sy, sz = ray
+    hit, t, u, v = hit_record(tree.recs, k, okx, oky, okz, kx, ky, kz, sx, sy, sz)
+    return hit and tmin <= t <= tmax, t, u, v
+
+
+@njit(cache=True, inline="always")
+def _pop(stack, sp):
+    """Pop the next pending subtree: ``(sp, node, seg0, seg1)``."""
+    sp -= 1
+    return sp, stack[0][sp], stack[1][sp], stack[2][sp]
+
+
+@njit(cache=True, inline="always")
+def _descend(tree, node, seg0, seg1, sp, ox, oy, oz, dx, dy, dz, inv_x, inv_y, inv_z, t_days,
+             stack):
+    """Walk from ``node`` down to a leaf along the ray segment ``[seg0, seg1]``, front to back.
+
+    Time nodes send the ray to the child holding ``t_days``; a spatial split the segment
+    crosses pushes its far child with the far part of the segment on ``stack`` (the tuple
+    ``(node, t0, t1)`` of ``STACK_SIZE`` arrays) and goes on in the near child. Returns
+    ``(first, count, seg1, sp)``: the leaf's record range and the new segment end and stack
+    pointer (``seg0`` is unchanged).
+    """
+    st_node, st_t0, st_t1 = stack
     while True:
-        w0 = np.int64(nodes[node, 0])
-        axis = w0 & 7
-        if axis == _LEAF:
-            # Test the leaf's triangles valid at t_days; keep the nearest (ties: lower id).
-            first = np.int64(nodes[node, 1])
-            for k in range(first, first + (w0 >> 3)):
-                if not (recs_f64[k, _T_BEGIN] <= t_days < recs_f64[k, _T_END]):
-                    continue
-                hit, t, u, v = hit_record(recs, k, okx, oky, okz, kx, ky, kz, sx, sy, sz)
-                if hit and tmin <= t <= tmax:
-                    tri = rec_ids[k, 9]
-                    if t < best_t or (t == best_t and tri < best_id):
-                        best_t = t
-                        best_k = k
-                        best_id = tri
-                        best_u = u
-                        best_v = v
-            # Nothing unvisited lies before seg1, so a hit before it is final.
-            if best_t < seg1 or sp == 0:
-                break
-            sp -= 1
-            node = st_node[sp]
-            seg0 = st_t0[sp]
-            seg1 = st_t1[sp]
-            continue
-        split = np.float64(splits[node, 1])
-        right = w0 >> 3
-        if axis == _TIME:
+        w0 = node_word(tree, node)
+        axis = word_axis(w0)
+        if axis == LEAF_CODE:
+            return leaf_first(tree, node), word_payload(w0), seg1, sp
+        split = node_split(tree, node)
+        right = word_payload(w0)
+        if axis == TIME_AXIS:
             node = node + 1 if t_days < split else right
             continue
         if axis == 0:
@@ -230,98 +225,77 @@ def closest_hit(nodes, splits, recs, recs_f64, rec_ids, box_lo, box_hi, ox, oy, 
             sp += 1
             node = near
             seg1 = ts
+
+
+@njit(cache=True, inline="always")
+def closest_hit(tree, box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax, t_days, stack):
+    """Closest hit of one ray in ``[tmin, tmax]`` at city time ``t_days``.
+
+    ``tree`` is the :class:`~cityshade.accel.kdtree_layout.KdViews` tuple, ``box_lo`` /
+    ``box_hi`` the (padded) scene box, ``stack`` the calling thread's scratch tuple
+    ``(node int64, t0, t1)`` of ``STACK_SIZE`` entries each. Returns ``(t, k, u, v)`` with ``k``
+    the record index (-1 and ``t = inf`` on a miss).
+    """
+    best_t = np.inf
+    best_k = -1
+    best_id = -1
+    best_u = 0.0
+    best_v = 0.0
+    seg0, seg1 = clip_to_box(box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax)
+    if seg0 > seg1:
+        return best_t, best_k, best_u, best_v
+    ray = _sheared(ox, oy, oz, dx, dy, dz)
+    inv_x, inv_y, inv_z = _inverse(dx), _inverse(dy), _inverse(dz)
+    node, sp = 0, 0
+    while True:
+        first, count, seg1, sp = _descend(tree, node, seg0, seg1, sp, ox, oy, oz, dx, dy, dz,
+                                          inv_x, inv_y, inv_z, t_days, stack)
+        # Test the leaf's triangles valid at t_days; keep the nearest (ties: lower id).
+        for k in range(first, first + count):
+            hit, t, u, v = _hit_at(tree, k, t_days, tmin, tmax, ray)
+            if hit:
+                tri = record_id(tree, k)
+                if t < best_t or (t == best_t and tri < best_id):
+                    best_t = t
+                    best_k = k
+                    best_id = tri
+                    best_u = u
+                    best_v = v
+        # Nothing unvisited lies before seg1, so a hit before it is final.
+        if best_t < seg1 or sp == 0:
+            break
+        sp, node, seg0, seg1 = _pop(stack, sp)
     return best_t, best_k, best_u, best_v
 
 
 @njit(cache=True, inline="always")
-def any_hit(nodes, splits, recs, recs_f64, box_lo, box_hi, ox, oy, oz, dx, dy, dz,
-            tmin, tmax, t_days, cache_k, st_node, st_t0, st_t1):
+def any_hit(tree, box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax, t_days, cache_k, stack):
     """Record index of some triangle valid at ``t_days`` hit in ``[tmin, tmax]``, else -1.
 
-    ``cache_k`` (or -1) is the brick's shadow-caster cache: that record is tested first, so
-    coherent shadow rays behind the same occluder skip the traversal. ``st_*`` are scratch
-    stacks of ``STACK_SIZE`` entries owned by the calling thread.
+    Arguments as for :func:`closest_hit`; ``cache_k`` (or -1) is the brick's shadow-caster
+    cache: that record is tested first, so coherent shadow rays behind the same occluder skip
+    the traversal.
     """
-    kx, ky, kz, sx, sy, sz = ray_shear(dx, dy, dz)
-    okx = ox if kx == 0 else (oy if kx == 1 else oz)
-    oky = ox if ky == 0 else (oy if ky == 1 else oz)
-    okz = ox if kz == 0 else (oy if kz == 1 else oz)
-    if cache_k >= 0 and recs_f64[cache_k, _T_BEGIN] <= t_days < recs_f64[cache_k, _T_END]:
-        hit, t, u, v = hit_record(recs, cache_k, okx, oky, okz, kx, ky, kz, sx, sy, sz)
-        if hit and tmin <= t <= tmax:
-            return cache_k
+    ray = _sheared(ox, oy, oz, dx, dy, dz)
+    if cache_k >= 0 and _hit_at(tree, cache_k, t_days, tmin, tmax, ray)[0]:
+        return cache_k
     seg0, seg1 = clip_to_box(box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax)
     if seg0 > seg1:
         return -1
-    inv_x = 1.0 / dx if dx != 0.0 else 0.0
-    inv_y = 1.0 / dy if dy != 0.0 else 0.0
-    inv_z = 1.0 / dz if dz != 0.0 else 0.0
-    node = 0
-    sp = 0
+    inv_x, inv_y, inv_z = _inverse(dx), _inverse(dy), _inverse(dz)
+    node, sp = 0, 0
     while True:
-        w0 = np.int64(nodes[node, 0])
-        axis = w0 & 7
-        if axis == _LEAF:
-            first = np.int64(nodes[node, 1])
-            for k in range(first, first + (w0 >> 3)):
-                if not (recs_f64[k, _T_BEGIN] <= t_days < recs_f64[k, _T_END]):
-                    continue
-                hit, t, u, v = hit_record(recs, k, okx, oky, okz, kx, ky, kz, sx, sy, sz)
-                if hit and tmin <= t <= tmax:
-                    return k
-            if sp == 0:
-                return -1
-            sp -= 1
-            node = st_node[sp]
-            seg0 = st_t0[sp]
-            seg1 = st_t1[sp]
-            continue
-        split = np.float64(splits[node, 1])
-        right = w0 >> 3
-        if axis == _TIME:
-            node = node + 1 if t_days < split else right
-            continue
-        if axis == 0:
-            o = ox
-            d = dx
-            inv = inv_x
-        elif axis == 1:
-            o = oy
-            d = dy
-            inv = inv_y
-        else:
-            o = oz
-            d = dz
-            inv = inv_z
-        if d == 0.0:
-            if o < split:
-                node = node + 1
-            elif o > split:
-                node = right
-            else:
-                st_node[sp] = right
-                st_t0[sp] = seg0
-                st_t1[sp] = seg1
-                sp += 1
-                node = node + 1
-            continue
-        t_split = (split - o) * inv
-        if d > 0.0:
-            near = node + 1
-            far = right
-        else:
-            near = right
-            far = node + 1
-        tol = SPLIT_REL_TOL * abs(t_split) + SPLIT_ABS_TOL
-        if t_split > seg1 + tol:
-            node = near
-        elif t_split < seg0 - tol:
-            node = far
-        else:
-            ts = min(max(t_split, seg0), seg1)
-            st_node[sp] = far
-            st_t0[sp] = ts
-            st_t1[sp] = seg1
-            sp += 1
-            node = near
-            seg1 = ts
+        first, count, seg1, sp = _descend(tree, node, seg0, seg1, sp, ox, oy, oz, dx, dy, dz,
+                                          inv_x, inv_y, inv_z, t_days, stack)
+        for k in range(first, first + count):
+            if _hit_at(tree, k, t_days, tmin, tmax, ray)[0]:
+                return k
+        if sp == 0:
+            return -1
+        sp, node, seg0, seg1 = _pop(stack, sp)
+
+
+@njit(cache=True, inline="always")
+def new_stack():
+    """A traversal scratch stack for one thread: ``(node, t0, t1)`` of ``STACK_SIZE`` entries."""
+    return np.empty(STACK_SIZE, np.int64), np.empty(STACK_SIZE), np.empty(STACK_SIZE)

@@ -32,6 +32,7 @@ from typing import Any, Callable
 
 import numpy as np
 
+from cityshade.config import StressSettings
 from cityshade.errors import InputError
 
 #: Share of pixels (or rays) on which two exact methods must agree: 1 in 10^4 may differ on
@@ -66,36 +67,6 @@ def error_bound_pct(technique: str, elevation_deg: float, map_px: int) -> float:
     if map_px < 1024:
         bound *= 2.0
     return bound
-
-
-@dataclass(frozen=True)
-class StressSettings:
-    """Sizes and technique lists of the stress set (``quick`` for CI)."""
-
-    quick: bool = False
-    #: Perspective view size (W, H) and map-view pixel size of the model's cases.
-    view_px: tuple[int, int] = (480, 270)
-    map_side_px: int = 400
-    #: Map sizes of the elevation and geometry cases.
-    map_sizes: tuple[int, ...] = (1024, 2048)
-    #: Map sizes of the size sweep (shadowmap and pcf).
-    sweep_sizes: tuple[int, ...] = (256, 512, 1024, 2048, 4096, 8192)
-    cascades: tuple[int, ...] = (1, 2, 3, 4, 5, 6, 7, 8)
-    techniques: tuple[str, ...] = ("shadowmap", "pcf", "vsm", "psm", "lispsm", "xpsm", "csm",
-                                   "pcf+smooth", "hybrid:shadowmap", "hybrid:vsm",
-                                   "hybrid:csm")
-    elevations_deg: tuple[float, ...] = (0.1, 1.0, 3.0, 45.0, 89.9, 90.0, -5.0)
-    #: Dates of the time-slice case (0: every date of the model).
-    max_dates: int = 0
-
-    @classmethod
-    def quick_set(cls) -> "StressSettings":
-        """The CI set: small views and maps, fewer techniques and dates, no 8192² map."""
-        return cls(quick=True, view_px=(192, 108), map_side_px=160, map_sizes=(1024,),
-                   sweep_sizes=(256, 1024, 2048), cascades=(1, 2, 8),
-                   techniques=("shadowmap", "pcf", "vsm", "lispsm", "csm", "hybrid:shadowmap",
-                               "hybrid:vsm"),
-                   max_dates=2)
 
 
 @dataclass
@@ -144,39 +115,41 @@ class _Checker:
         return self.case
 
 
-def _frame(scene, camera, t_days):
-    from cityshade.raster.gbuffer import resolve
-    from cityshade.raster.rasterize import rasterize
+def _frame(scene, camera, t_days, s: StressSettings):
+    """The pipeline's camera pass, with the set's ground plane (as ``render --ground``)."""
+    from cityshade.pipeline import camera_pass
 
-    gbuf = rasterize(scene, camera, t_days)
-    return gbuf, resolve(scene, gbuf)
+    return camera_pass(scene, camera, t_days, ground=s.ground)
+
+
+def _run(cp, sun, technique: str, **flags):
+    """One technique's result on a camera pass (flags: :meth:`ShadowSettings.override`)."""
+    from cityshade.config import ShadowSettings
+    from cityshade.pipeline import shadow_pass
+
+    return shadow_pass(cp, sun, technique, ShadowSettings().override(**flags)).result
 
 
 def _check_techniques(chk: _Checker, scene, camera, sun, t_days, techniques, sizes,
-                      options: dict | None = None, label: str = "") -> dict:
+                      s: StressSettings, label: str = "") -> dict:
     """Run raytrace and every technique × size on one frame; check finiteness, hybrid
     agreement and the error bounds. Returns {"ref": lit, "worst": {tech: pct}, ...}."""
-    from cityshade.evaluate import compare, make_reference
-    from cityshade.shadows import ShadowContext, get_technique
+    from cityshade.evaluate.metrics import compare, make_reference
 
-    gbuf, surfaces = _frame(scene, camera, t_days)
+    cp = _frame(scene, camera, t_days, s)
+    gbuf, surfaces = cp.gbuffer, cp.surfaces
     for name, arr in (("depth", gbuf.depth[surfaces.valid]), ("position", surfaces.position_m[
             surfaces.valid]), ("normal", surfaces.normal[surfaces.valid])):
         if not np.isfinite(arr).all():
             chk.fail(f"{label}G-buffer {name} has NaN or infinity")
-    ctx = ShadowContext(scene=scene, surfaces=surfaces, camera=camera, sun=sun, t_days=t_days,
-                        options=dict(options or {}))
-    ref_res = get_technique("raytrace").run(ctx)
+    ref_res = _run(cp, sun, "raytrace")
     _finite(chk, f"{label}raytrace", ref_res)
     ref = make_reference(ref_res.lit, surfaces.valid, surfaces.position_m)
     worst: dict[str, float] = {}
     for tech in techniques:
         for size in sizes:
-            opts = dict(options or {}, map_px=int(size))
-            ctx = ShadowContext(scene=scene, surfaces=surfaces, camera=camera, sun=sun,
-                                t_days=t_days, options=opts)
             try:
-                res = get_technique(tech).run(ctx)
+                res = _run(cp, sun, tech, map_px=int(size))
             except Exception as exc:  # a crash is a FAIL of the case, not the end of the set
                 chk.fail(f"{label}{tech}@{size} raised {type(exc).__name__}: {exc}")
                 continue
@@ -187,24 +160,25 @@ def _check_techniques(chk: _Checker, scene, camera, sun, t_days, techniques, siz
             bound = error_bound_pct(tech, sun.elevation_deg, size)
             if pct > bound + 1e-12:
                 chk.fail(f"{label}{tech}@{size} {pct:.3f} % wrong > bound {bound:g} %")
-    return {"ref": ref_res, "surfaces": surfaces, "gbuffer": gbuf, "worst": worst,
+    return {"ref": ref_res, "pass": cp, "surfaces": surfaces, "gbuffer": gbuf, "worst": worst,
             "valid_px": int(surfaces.valid.sum())}
 
 
 def _finite(chk: _Checker, what: str, result) -> None:
-    from cityshade.evaluate import _finite_check
+    from cityshade.evaluate.metrics import finite_check
 
-    bad = _finite_check(result)
+    bad = finite_check(result)
     if bad:
         chk.fail(f"{what}: {bad}")
 
 
-def _facing_rays(scene, surfaces, camera, sun):
-    from cityshade.shadows import facing_sun
+def _facing_rays(cp, sun):
     from cityshade.trace import shadow_rays_from_surface
 
-    normal, faces = facing_sun(surfaces, camera, sun.direction)
-    origins = shadow_rays_from_surface(surfaces.position_m[faces], normal[faces], sun.direction)
+    ctx = cp.context(sun)
+    faces = ctx.faces
+    origins = shadow_rays_from_surface(cp.surfaces.position_m[faces], ctx.normal[faces],
+                                       sun.direction)
     directions = np.ascontiguousarray(np.broadcast_to(sun.direction, origins.shape))
     return origins, directions
 
@@ -382,7 +356,7 @@ def _views(scene, s: StressSettings, t_days: float | None = None):
     side = float(np.max(box[1, :2] - box[0, :2]))
     w, h = s.view_px
     return [("overview", cams.overview(scene, w, h)),
-            ("map", cams.map_view(scene, cams._nice_ceil(side / s.map_side_px)))]
+            ("map", cams.map_view(scene, cams.nice_ceil(side / s.map_side_px)))]
 
 
 def _street_view(scene, s: StressSettings):
@@ -392,7 +366,7 @@ def _street_view(scene, s: StressSettings):
     box = cams.scene_box(scene)
     c = 0.5 * (box[0, :2] + box[1, :2])
     half = 0.1 * float(np.max(box[1, :2] - box[0, :2]))
-    px = cams._nice_ceil(2 * half / s.map_side_px)
+    px = cams.nice_ceil(2 * half / s.map_side_px)
     return cams.map_view(scene, px, bbox=(c[0] - half, c[1] - half, c[0] + half, c[1] + half))
 
 
@@ -403,14 +377,14 @@ def case_elevation(scene, s: StressSettings, elevation_deg: float, t_days: float
     sun = sun_from_angles(STRESS_AZIMUTH_DEG, elevation_deg, scene.crs, scene.origin_m)
     worst: dict[str, float] = {}
     for view, cam in _views(scene, s):
-        out = _check_techniques(chk, scene, cam, sun, t_days, s.techniques, s.map_sizes,
+        out = _check_techniques(chk, scene, cam, sun, t_days, s.techniques, s.map_sizes, s,
                                 label=f"{view}: ")
         for k, v in out["worst"].items():
             worst[k] = max(worst.get(k, 0.0), v)
         if elevation_deg <= 0.0 and (out["ref"].lit != 0).any():
             chk.fail(f"{view}: raytrace lit pixels with the sun below the horizon")
         if view == "overview" and elevation_deg > 0.0:
-            o, d = _facing_rays(scene, out["surfaces"], cam, sun)
+            o, d = _facing_rays(out["pass"], sun)
             agree = embree_agreement(scene, o, d, t_days)
             chk.case.numbers["embree agree %"] = ("n/a (embreex not installed)" if agree is None
                                                   else 100.0 * agree)
@@ -428,7 +402,6 @@ def case_elevation(scene, s: StressSettings, elevation_deg: float, t_days: float
 
 def case_shift(source_gml: Path, scene, s: StressSettings, t_days: float) -> CaseResult:
     from cityshade.build import build_scene_from_file
-    from cityshade.shadows import ShadowContext, get_technique
     from cityshade.sun import sun_from_angles
 
     chk = _Checker(f"model shifted by {SHIFT_M:g} m in x and y")
@@ -452,8 +425,7 @@ def case_shift(source_gml: Path, scene, s: StressSettings, t_days: float) -> Cas
             sun_b = sun_from_angles(STRESS_AZIMUTH_DEG, elevation, None)
             lits = []
             for sc, cam, sun in ((base, cam_a, sun_a), (moved, cam_b, sun_b)):
-                _, surfaces = _frame(sc, cam, t_days)
-                res = get_technique("raytrace").run(ShadowContext(sc, surfaces, cam, sun, t_days))
+                res = _run(_frame(sc, cam, t_days, s), sun, "raytrace")
                 _finite(chk, f"{view} raytrace", res)
                 lits.append(res.lit)
             total += lits[0].size
@@ -497,13 +469,13 @@ def case_geometry(s: StressSettings) -> CaseResult:
         # Sun from the north-west: the tower's shadow runs to the south-east quarter.
         sun = sun_from_angles(315.0, elevation, scene.crs, scene.origin_m)
         for view, cam in views:
-            out = _check_techniques(chk, scene, cam, sun, 0.0, s.techniques, s.map_sizes,
+            out = _check_techniques(chk, scene, cam, sun, 0.0, s.techniques, s.map_sizes, s,
                                     label=f"{view} el {elevation:g}: ")
             if view == "tower-shadow map" and elevation == 3.0:
                 shade = 1.0 - float(out["ref"].lit[out["surfaces"].valid].mean())
                 chk.case.numbers["tower view shadow %"] = 100.0 * shade
             if view == "overview":
-                o, d = _facing_rays(scene, out["surfaces"], cam, sun)
+                o, d = _facing_rays(out["pass"], sun)
                 agree = embree_agreement(scene, o, d, 0.0)
                 if agree is not None:
                     chk.case.numbers[f"embree agree % el {elevation:g}"] = 100.0 * agree
@@ -610,7 +582,7 @@ def case_time_slices(scene, s: StressSettings) -> CaseResult:
                              f"{'d' if t == d else 'd - 1 day'} (d = {d:g} days)")
         for t in (d - 1.0, d, d + 1.0):
             _check_techniques(chk, scene, view, sun, t, ("shadowmap", "hybrid:shadowmap"),
-                              s.map_sizes[-1:], label=f"t {t:g}: ")
+                              s.map_sizes[-1:], s, label=f"t {t:g}: ")
     chk.case.numbers["probe rays"] = probes
     return chk.done()
 
@@ -622,28 +594,27 @@ def case_map_sizes(scene, s: StressSettings, t_days: float) -> CaseResult:
     sun = sun_from_angles(STRESS_AZIMUTH_DEG, 30.0, scene.crs, scene.origin_m)
     cam = _views(scene, s)[0][1]
     for size in s.sweep_sizes:
-        out = _check_techniques(chk, scene, cam, sun, t_days, ("shadowmap", "pcf"), (size,),
+        out = _check_techniques(chk, scene, cam, sun, t_days, ("shadowmap", "pcf"), (size,), s,
                                 label=f"{size}²: ")
         chk.case.numbers[f"{size}² wrong %"] = out["worst"].get("shadowmap", float("nan"))
     return chk.done()
 
 
 def case_cascades(scene, s: StressSettings, t_days: float) -> CaseResult:
-    from cityshade.evaluate import compare, make_reference
-    from cityshade.shadows import ShadowContext, get_technique
+    from cityshade.evaluate.metrics import compare, make_reference
     from cityshade.sun import sun_from_angles
 
     chk = _Checker(f"CSM with {s.cascades[0]} to {s.cascades[-1]} cascades")
     sun = sun_from_angles(STRESS_AZIMUTH_DEG, 30.0, scene.crs, scene.origin_m)
     cam = _views(scene, s)[0][1]
     size = s.map_sizes[-1]
-    _, surfaces = _frame(scene, cam, t_days)
-    ref_res = get_technique("raytrace").run(ShadowContext(scene, surfaces, cam, sun, t_days))
+    cp = _frame(scene, cam, t_days, s)
+    surfaces = cp.surfaces
+    ref_res = _run(cp, sun, "raytrace")
     ref = make_reference(ref_res.lit, surfaces.valid, surfaces.position_m)
     for k in s.cascades:
-        ctx = ShadowContext(scene, surfaces, cam, sun, t_days, {"cascades": k, "map_px": size})
         try:
-            res = get_technique("csm").run(ctx)
+            res = _run(cp, sun, "csm", cascades=k, map_px=size)
         except Exception as exc:
             chk.fail(f"csm with {k} cascades raised {type(exc).__name__}: {exc}")
             continue
@@ -661,16 +632,16 @@ def case_cascades(scene, s: StressSettings, t_days: float) -> CaseResult:
 
 def case_street(scene, s: StressSettings, t_days: float) -> CaseResult:
     """A view of one street does not shade the whole city."""
-    from cityshade.shadows import ShadowContext, get_technique
     from cityshade.sun import sun_from_angles
 
     chk = _Checker("a view of one street draws a fraction of the city")
     cam = _street_view(scene, s)
     sun = sun_from_angles(STRESS_AZIMUTH_DEG, 30.0, scene.crs, scene.origin_m)
-    gbuf, surfaces = _frame(scene, cam, t_days)
+    cp = _frame(scene, cam, t_days, s)
+    gbuf = cp.gbuffer
     present = int(((np.asarray(scene.tri_t_begin_days) <= t_days)
                    & (t_days < np.asarray(scene.tri_t_end_days))).sum())
-    res = get_technique("shadowmap").run(ShadowContext(scene, surfaces, cam, sun, t_days))
+    res = _run(cp, sun, "shadowmap")
     dm = res.diagnostics.get("depth_map", {})
     casters = int(dm.get("casters_drawn", present))
     chk.case.numbers["triangles standing"] = present
@@ -687,7 +658,7 @@ def case_street(scene, s: StressSettings, t_days: float) -> CaseResult:
 def _model_source(path: Path) -> tuple[Any, Path | None]:
     """(scene, CityGML source) of FILE: a .gml is built in memory, a .cityshade is loaded and
     its recorded source used for the shift case (None when that file is gone)."""
-    from cityshade.evaluate import open_scene
+    from cityshade.evaluate.run import open_scene
 
     path = Path(path)
     scene = open_scene(path)

@@ -1,0 +1,365 @@
+"""The frame loop of ``cityshade evaluate``: every technique on the pipeline's frames.
+
+For each view (camera), sun position, technique and shadow-map size, the camera pass
+(:func:`cityshade.pipeline.camera_pass`, ground plane included) runs once and the shadow pass
+``repeat + 1`` times on it: the first run is reported separately as the warm-up (Numba compile
+or cache load, first-touch allocations), the median of the others as the run time. The error
+against the exact reference, ``raytrace``, on the same pixels is :mod:`.metrics`'s; for map
+techniques the rows also hold the aliasing measure m (screen extent of one shadow-map texel,
+max and mean; Lloyd et al. 2008) that the techniques report, and for ``hybrid`` the share of
+the surface pixels it ray traced. :mod:`.report` writes the results.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Any, Callable, Sequence
+
+import numpy as np
+
+from cityshade.config import EvaluateSettings, ShadowSettings
+from cityshade.errors import UsageError
+from cityshade.evaluate.metrics import compare, finite_check, make_reference, median_s
+
+if TYPE_CHECKING:
+    from cityshade.geometry.scene import Scene
+    from cityshade.raster.camera import Camera
+    from cityshade.sun import SunPosition
+
+__all__ = ["EvaluateSettings", "Case", "Evaluation", "expand_techniques", "uses_map",
+           "evaluate_frame", "run_evaluation", "sun_label", "make_camera", "open_scene",
+           "parse_suns", "suns_of_day"]
+
+
+def expand_techniques(spec: str | Sequence[str]) -> list[str]:
+    """Technique names of ``--shadows``: ``all``, or a comma list of registry names.
+
+    ``all`` is every map technique of the registry
+    (:func:`cityshade.shadows.map_technique_names`), each ``+smooth``, and ``hybrid:NAME``
+    for each of them. ``raytrace`` is always the reference and is not listed.
+    Unknown names raise the registry's :class:`~cityshade.errors.UsageError`.
+    """
+    from cityshade.shadows import get_technique, map_technique_names
+
+    names = [s.strip() for s in (spec.split(",") if isinstance(spec, str) else spec)]
+    names = [n for n in names if n]
+    if not names:
+        raise UsageError("--shadows needs 'all' or a comma-separated list of techniques")
+    out: list[str] = []
+    for name in names:
+        maps = [n for n in map_technique_names() if not n.startswith("csm:")]
+        group = ([*maps, *(f"{n}+smooth" for n in maps), *(f"hybrid:{n}" for n in maps)]
+                 if name == "all" else [name])
+        for n in group:
+            if n == "raytrace":
+                continue
+            get_technique(n)  # unknown names fail before any work
+            if n not in out:
+                out.append(n)
+    return out
+
+
+def uses_map(technique: str) -> bool:
+    """Whether the technique draws shadow maps (so its ``map_px`` matters)."""
+    return technique.partition("+")[0] != "raytrace"
+
+
+@dataclass
+class Case:
+    """One rendered comparison kept for a difference image."""
+
+    view: str
+    sun_label: str
+    technique: str
+    map_px: int | None
+    misclassified_pct: float
+    false_lit: np.ndarray
+    false_shadow: np.ndarray
+
+
+@dataclass
+class Evaluation:
+    """Result of :func:`run_evaluation`."""
+
+    rows: list[dict[str, Any]] = field(default_factory=list)
+    #: view name → list of worst cases (most wrong pixels first).
+    worst: dict[str, list[Case]] = field(default_factory=dict)
+    #: (view, sun label) → the shaded reference picture (H, W, 3) uint8.
+    pictures: dict[tuple[str, str], np.ndarray] = field(default_factory=dict)
+    #: view name → lines of :func:`skipped_work` (from its reference and first map frame).
+    skipped: dict[str, list[str]] = field(default_factory=dict)
+    meta: dict[str, Any] = field(default_factory=dict)
+
+
+def sun_label(sun) -> str:
+    """Short label of a sun position: ``az135 el30`` (true azimuth, elevation, degrees)."""
+    return f"az{sun.azimuth_true_deg:g} el{sun.elevation_deg:g}"
+
+
+def _stage_medians(diags: list[dict]) -> dict[str, float]:
+    """Median of every ``timings_s`` entry of a technique's diagnostics over runs."""
+    keys: dict[str, list[float]] = {}
+    for d in diags:
+        for k, v in (d.get("timings_s") or {}).items():
+            if isinstance(v, (int, float)):
+                keys.setdefault(k, []).append(float(v))
+        smooth = d.get("smooth")
+        if isinstance(smooth, dict) and isinstance(smooth.get("smooth_s"), (int, float)):
+            keys.setdefault("smooth_s", []).append(float(smooth["smooth_s"]))
+    return {k: median_s(v) for k, v in keys.items()}
+
+
+def evaluate_frame(scene: "Scene", camera: "Camera", view: str, sun: "SunPosition", t_days: float,
+                   techniques: Sequence[str], sizes: Sequence[int], settings: EvaluateSettings,
+                   evaluation: Evaluation, shadows: ShadowSettings | None = None,
+                   progress: Callable[[str], None] | None = None,
+                   reference_lit: np.ndarray | None = None,
+                   ground: str | None = None) -> dict[str, Any]:
+    """Evaluate every technique and size on one view and sun; rows go into ``evaluation``.
+
+    The frame is the pipeline's (:func:`cityshade.pipeline.camera_pass`, with ``ground`` like
+    ``render --ground``), timed ``repeat + 1`` times; each technique runs through
+    :func:`cityshade.pipeline.shadow_pass` on the same camera pass.
+
+    Returns a dict with the frame's G-buffer, surfaces, reference lit fraction and the
+    results of the last run of each (technique, size) (``results``), for callers (the stress
+    set) that check more.
+    """
+    from cityshade.diagnostics import skipped_work
+    from cityshade.pipeline import camera_pass, shadow_pass
+    from cityshade.shadows import get_technique
+
+    runs = settings.repeat + 1
+    shadows = shadows or ShadowSettings()
+    g_times, r_times = [], []
+    for _ in range(runs):
+        cp = camera_pass(scene, camera, t_days, ground=ground)
+        g_times.append(cp.timings_s["gbuffer_s"])
+        r_times.append(cp.timings_s["resolve_s"])
+    gbuf, surfaces = cp.gbuffer, cp.surfaces
+    gbuffer_s, resolve_s = median_s(g_times[1:]), median_s(r_times[1:])
+    label = sun_label(sun)
+    common = {"view": view, "view_px": f"{camera.width_px}x{camera.height_px}",
+              "camera": camera.kind, "sun": label,
+              "sun_az_deg": round(float(sun.azimuth_true_deg), 6),
+              "sun_el_deg": round(float(sun.elevation_deg), 6),
+              "gbuffer_s": gbuffer_s, "resolve_s": resolve_s}
+
+    def timed(tech, technique_settings):
+        """(seconds per run, diagnostics per run, last result) of ``runs`` shadow passes."""
+        seconds, diags, result = [], [], None
+        for _ in range(runs):
+            sp = shadow_pass(cp, sun, tech, technique_settings)
+            seconds.append(sp.seconds)
+            diags.append(sp.result.diagnostics)
+            result = sp.result
+        return seconds, diags, result
+
+    if progress:
+        progress(f"{view} {label} raytrace")
+    secs, diags, ref_result = timed(get_technique("raytrace"), shadows)
+    ref_lit = ref_result.lit if reference_lit is None else reference_lit
+    ref = make_reference(ref_lit, surfaces.valid, surfaces.position_m)
+    row = {**common, "technique": "raytrace", "map_px": "", "runs": settings.repeat,
+           "warmup_s": secs[0], "shadow_s": median_s(secs[1:]), "valid_px": int(ref.valid.sum()),
+           "wrong_px": 0, "misclassified_pct": 0.0, "false_lit_pct": 0.0,
+           "false_shadow_pct": 0.0, "lit_mae": 0.0, "edge_mean_m": 0.0, "edge_p95_m": 0.0,
+           "edge_max_m": 0.0, "aliasing_max_m": "", "aliasing_mean_m": "",
+           "traced_share": 1.0, "stages": _fmt_stages(_stage_medians(diags[1:])), "error": ""}
+    bad = finite_check(ref_result)
+    if bad:
+        row["error"] = bad
+    row["frame_s"] = gbuffer_s + resolve_s + row["shadow_s"]
+    evaluation.rows.append(row)
+    skipped = evaluation.skipped.setdefault(view, [])
+    if not skipped:
+        skipped += skipped_work(scene, gbuf.stats, ref_result.diagnostics, surfaces, sun)
+    _keep_picture(scene, camera, gbuf, surfaces, ref.lit, sun, view, label, evaluation)
+    results: dict[tuple[str, int | None], Any] = {("raytrace", None): ref_result}
+    for name in techniques:
+        tech = get_technique(name)
+        for size in (sizes if uses_map(name) else [None]):
+            if progress:
+                progress(f"{view} {label} {name} {size or ''}".rstrip())
+            sized = shadows.override(map_px=int(size)) if size is not None else shadows
+            row = {**common, "technique": name, "map_px": size or "", "runs": settings.repeat}
+            try:
+                secs, diags, result = timed(tech, sized)
+            except Exception as exc:  # a crash is a result of the evaluation, not its end
+                row.update(error=f"{type(exc).__name__}: {exc}", warmup_s="", shadow_s="",
+                           frame_s="")
+                evaluation.rows.append(row)
+                results[(name, size)] = exc
+                continue
+            results[(name, size)] = result
+            err = compare(result.lit, ref, settings.edge_percentile)
+            d = result.diagnostics
+            alias = d.get("aliasing_m") or {}
+            if not (alias.get("max") or alias.get("mean")):
+                alias = {}   # not measured (e.g. hybrid's base, whose maps are only prepared)
+            row.update({
+                "warmup_s": secs[0], "shadow_s": median_s(secs[1:]),
+                "valid_px": err["valid_px"], "wrong_px": err["wrong_px"],
+                **{k: err[k] for k in ("misclassified_pct", "false_lit_pct", "false_shadow_pct",
+                                       "lit_mae", "edge_mean_m", "edge_p95_m", "edge_max_m")},
+                "aliasing_max_m": alias.get("max", ""), "aliasing_mean_m": alias.get("mean", ""),
+                "traced_share": d.get("traced_share", ""),
+                "stages": _fmt_stages(_stage_medians(diags[1:])),
+                "error": finite_check(result) or "",
+            })
+            row["frame_s"] = gbuffer_s + resolve_s + row["shadow_s"]
+            evaluation.rows.append(row)
+            if len(skipped) and not any(s.startswith(("shadow map", "hybrid")) for s in skipped):
+                skipped += [s for s in skipped_work(scene, None, d) if
+                            s.startswith(("shadow map", "base shadow map", "hybrid"))]
+            _keep_worst(evaluation, settings.worst_cases, Case(
+                view, label, name, size, err["misclassified_pct"], err["false_lit"],
+                err["false_shadow"]))
+    return {"gbuffer": gbuf, "surfaces": surfaces, "reference": ref, "results": results}
+
+
+def _fmt_stages(stages: dict[str, float]) -> str:
+    return " ".join(f"{k[:-2] if k.endswith('_s') else k}={v * 1000:.2f}ms"
+                    for k, v in stages.items())
+
+
+def _keep_worst(evaluation: Evaluation, k: int, case: Case) -> None:
+    if k <= 0 or case.misclassified_pct <= 0.0:
+        return
+    worst = evaluation.worst.setdefault(case.view, [])
+    worst.append(case)
+    worst.sort(key=lambda c: -c.misclassified_pct)
+    del worst[k:]
+
+
+def _keep_picture(scene, camera, gbuf, surfaces, ref_lit, sun, view, label, evaluation) -> None:
+    """The shaded reference picture of a view and sun (the background of diff images)."""
+    from cityshade.shading import shade, to_srgb8
+
+    if evaluation.meta.get("no_pictures"):
+        return
+    rgb = shade(scene, surfaces, camera, ref_lit.astype(np.float32), sun.direction,
+                prim_id=gbuf.prim_id)
+    evaluation.pictures[(view, label)] = to_srgb8(rgb)
+
+
+def make_camera(scene, view: str, size: tuple[int, int] = (1280, 720),
+                pixel_size_m: float | None = None, t_days: float | None = None,
+                cameras_file=None):
+    """Camera of a view name: ``overview``, ``map`` or a preset of ``configs/cameras.toml``
+    (or of the user's preset file ``cameras_file``)."""
+    from cityshade.raster import camera as cams
+
+    w, h = size
+    if view == "overview":
+        return cams.overview(scene, w, h, t_days=t_days)
+    if view == "map":
+        return cams.map_view(scene, pixel_size_m)
+    return cams.preset(view, scene, w, h, extra=cameras_file)
+
+
+def run_evaluation(scene: "Scene", views: Sequence[tuple[str, Any]], suns: Sequence, t_days: float,
+                   techniques: Sequence[str], settings: EvaluateSettings | None = None,
+                   shadows: ShadowSettings | None = None,
+                   progress: Callable[[int, int, str], None] | None = None,
+                   model: str = "", ground: str | None = None) -> Evaluation:
+    """Evaluate techniques × sizes on every view and sun.
+
+    Parameters
+    ----------
+    scene : Scene
+        With its kd-tree.
+    views : sequence of (name, Camera)
+    suns : sequence of SunPosition
+    t_days : float
+        City time, days since 1970-01-01 UTC.
+    techniques : sequence of str
+        Registry names (see :func:`expand_techniques`); ``raytrace`` is always the reference.
+    settings : EvaluateSettings, optional
+    shadows : ShadowSettings, optional
+        The techniques' tunables; ``map.px`` is replaced by each of ``settings.sizes``.
+    progress : callable(done, total, label), optional
+        Called before each technique run.
+    model : str
+        Name of the model for the rows.
+    ground : str, optional
+        Ground plane of every frame, as ``render --ground``.
+
+    Returns
+    -------
+    Evaluation
+    """
+    settings = settings or EvaluateSettings()
+    if scene.kdtree is None:
+        raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
+    if not views or not suns:
+        raise UsageError("evaluate needs at least one view and one sun position")
+    per_frame = 1 + sum(len(settings.sizes) if uses_map(n) else 1 for n in techniques)
+    total = per_frame * len(views) * len(suns)
+    done = [0]
+
+    def step(label: str) -> None:
+        if progress:
+            progress(done[0], total, label)
+        done[0] += 1
+
+    evaluation = Evaluation(meta={"model": model, "t_days": t_days,
+                                  "techniques": list(techniques),
+                                  "sizes": list(settings.sizes), "repeat": settings.repeat})
+    for view, camera in views:
+        for sun in suns:
+            evaluate_frame(scene, camera, view, sun, t_days, techniques, settings.sizes,
+                           settings, evaluation, shadows, step, ground=ground)
+    for row in evaluation.rows:
+        row["model"] = model
+    if progress:
+        progress(total, total, "done")
+    return evaluation
+
+
+# --- inputs of the command ----------------------------------------------------------------
+
+def open_scene(path, settings=None):
+    """A scene with its kd-tree: a ``.cityshade`` file is loaded, a city model (CityGML,
+    CityJSON: anything else) is built in memory (nothing written)."""
+    from cityshade.build import build_scene_from_file
+    from cityshade.cache import is_cache_file
+    from cityshade.scenefile import load_scene
+
+    path = Path(path)
+    if is_cache_file(path) or not path.exists():
+        return load_scene(path)
+    return build_scene_from_file(path, settings)
+
+
+def parse_suns(text: str, scene) -> list:
+    """``"az,el;az,el"`` (degrees, azimuth from true north) → sun positions of the model."""
+    from cityshade.sun import sun_from_angles
+
+    suns = []
+    for part in (p.strip() for p in text.split(";")):
+        if not part:
+            continue
+        try:
+            az, el = (float(v) for v in part.split(","))
+        except ValueError:
+            raise UsageError(f"--sun must be 'AZIMUTH,ELEVATION;...' in degrees, not {part!r}") \
+                from None
+        suns.append(sun_from_angles(az, el, scene.crs, scene.origin_m))
+    if not suns:
+        raise UsageError("--sun needs at least one 'AZIMUTH,ELEVATION' pair")
+    return suns
+
+
+def suns_of_day(day: str, times: str, tz: str | None, scene, spa=None) -> list:
+    """Sun positions (SPA) at local ``times`` ("HH:MM,HH:MM") of ``day`` (YYYY-MM-DD)."""
+    from cityshade.citygml.temporal import parse_user_date
+    from cityshade.sun import SpaSettings, suns_from_instants
+
+    instants = []
+    for t in (s.strip() for s in times.split(",")):
+        if t:
+            instants.append(parse_user_date(f"{day.strip()}T{t}", tz).instant_utc)
+    if not instants:
+        raise UsageError("--times needs at least one HH:MM")
+    return suns_from_instants(instants, scene.crs, scene.origin_m, spa or SpaSettings())

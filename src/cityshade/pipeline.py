@@ -1,0 +1,171 @@
+"""The frame pipeline: the camera pass once, the shadow pass per sun.
+
+Every command that makes pictures or numbers of shadows goes through here: ``render`` (one
+frame), ``batch`` (one camera pass, a shadow pass per sun step), ``evaluate`` and the stress set
+(one camera pass, every technique's shadow pass on it). None of them rasterizes or builds a
+:class:`~cityshade.shadows.ShadowContext` on its own, so what is evaluated is what users run,
+ground plane included.
+
+:func:`camera_pass`
+    Rasterize the kd-tree for the camera at the city time (:mod:`cityshade.raster.rasterize`),
+    resolve the G-buffer into surfaces, add the optional ground plane and turn the normals to
+    the seen side: everything that does not depend on the sun, in a :class:`CameraPass`.
+:func:`shadow_pass`
+    One technique for one sun on a camera pass (the facing-the-sun rule computed once for
+    the context), the lit fraction cleaned for the outputs (0 where there is no surface).
+"""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from cityshade.config import ShadowSettings
+from cityshade.diagnostics import FrameDiagnostics, GroundInfo, skipped_work
+from cityshade.errors import ContractError, UsageError
+
+if TYPE_CHECKING:
+    from cityshade.geometry.scene import Scene
+    from cityshade.raster.camera import Camera
+    from cityshade.raster.gbuffer import GBuffer, Surfaces
+    from cityshade.shadows import ShadowContext, ShadowResult, Technique
+    from cityshade.sun import SunPosition
+
+
+@dataclass
+class CameraPass:
+    """The sun-independent part of a frame.
+
+    Attributes
+    ----------
+    scene : Scene
+    camera : Camera
+    t_days : float
+        City time, days since 1970-01-01 UTC.
+    gbuffer : GBuffer
+    surfaces : Surfaces
+        Resolved pixels (with the ground plane's pixels when one was added).
+    normal : (H, W, 3) float64
+        Unit normals turned to the side the camera sees
+        (:func:`cityshade.shadows.oriented_normals`).
+    ground : GroundInfo or None
+    timings_s : dict
+        ``gbuffer_s``, ``resolve_s``.
+    """
+
+    scene: "Scene"
+    camera: "Camera"
+    t_days: float
+    gbuffer: "GBuffer"
+    surfaces: "Surfaces"
+    normal: np.ndarray
+    ground: GroundInfo | None = None
+    timings_s: dict[str, float] = field(default_factory=dict)
+
+    @property
+    def valid(self) -> np.ndarray:
+        """(H, W) bool: pixels showing a surface."""
+        return np.asarray(self.surfaces.valid, bool)
+
+    def context(self, sun: "SunPosition", settings: ShadowSettings | None = None
+                ) -> "ShadowContext":
+        """The shadow context of one sun on this pass."""
+        from cityshade.shadows import ShadowContext
+
+        return ShadowContext(scene=self.scene, surfaces=self.surfaces, camera=self.camera,
+                             sun=sun, t_days=float(self.t_days),
+                             settings=settings or ShadowSettings(), oriented_normal=self.normal)
+
+
+def camera_pass(scene: "Scene", camera: "Camera", t_days: float, *, ground: str | None = None
+                ) -> CameraPass:
+    """Rasterize, resolve, add the ground plane: the camera pass of a frame.
+
+    Parameters
+    ----------
+    scene : Scene
+        With its kd-tree (loaded from a .cityshade file).
+    camera : Camera
+    t_days : float
+        City time, days since 1970-01-01 UTC.
+    ground : str, optional
+        "min", "auto" or a CRS height: add a ground plane where no surface was drawn
+        (:mod:`cityshade.ground`).
+
+    Raises
+    ------
+    UsageError
+        The scene has no kd-tree, or the ground mode is not understood.
+    """
+    from cityshade.raster.gbuffer import resolve
+    from cityshade.raster.rasterize import rasterize
+    from cityshade.shadows import oriented_normals
+
+    if getattr(scene, "kdtree", None) is None:
+        raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
+    if not hasattr(camera, "kind"):
+        raise ContractError(f"camera_pass needs a Camera, not {type(camera).__name__}")
+    t = time.perf_counter()
+    gbuf = rasterize(scene, camera, float(t_days))
+    gbuffer_s = time.perf_counter() - t
+    t = time.perf_counter()
+    surfaces = resolve(scene, gbuf)
+    ground_info = None
+    if ground is not None:
+        from cityshade.ground import add_ground_plane, ground_height_m
+
+        z = ground_height_m(scene, ground)
+        surfaces, filled = add_ground_plane(scene, camera, surfaces, z)
+        ground_info = GroundInfo(mode=str(ground), z_crs_m=z + float(scene.origin_m[2]),
+                                 pixels=int(filled))
+    normal = oriented_normals(surfaces, camera)
+    resolve_s = time.perf_counter() - t
+    return CameraPass(scene=scene, camera=camera, t_days=float(t_days), gbuffer=gbuf,
+                      surfaces=surfaces, normal=normal, ground=ground_info,
+                      timings_s={"gbuffer_s": gbuffer_s, "resolve_s": resolve_s})
+
+
+@dataclass
+class ShadowPass:
+    """One technique's answer for one sun on a camera pass.
+
+    Attributes
+    ----------
+    result : ShadowResult
+        As the technique returned it (evaluate checks it for NaN and range).
+    lit : (H, W) float32
+        The lit fraction for outputs: NaN-free, 0 where no surface.
+    seconds : float
+        Time of the technique's ``run``.
+    """
+
+    result: "ShadowResult"
+    lit: np.ndarray
+    seconds: float
+    sun: "SunPosition | None" = None
+
+    def diagnostics(self, cp: CameraPass) -> FrameDiagnostics:
+        """The frame's typed diagnostics, with what it left out (:func:`skipped_work`)."""
+        return FrameDiagnostics(
+            gbuffer=cp.gbuffer.stats, shadow=dict(self.result.diagnostics), ground=cp.ground,
+            skipped=skipped_work(cp.scene, cp.gbuffer.stats, self.result.diagnostics,
+                                 cp.surfaces, self.sun))
+
+
+def shadow_pass(cp: CameraPass, sun: "SunPosition", technique: "str | Technique",
+                settings: ShadowSettings | None = None) -> ShadowPass:
+    """Run one shadow technique (a registry name or an instance) for one sun on ``cp``."""
+    from cityshade.shadows import get_technique
+
+    if settings is not None and not isinstance(settings, ShadowSettings):
+        raise ContractError(f"shadow settings must be a ShadowSettings, not "
+                            f"{type(settings).__name__}")
+    tech = get_technique(technique) if isinstance(technique, str) else technique
+    ctx = cp.context(sun, settings)
+    t = time.perf_counter()
+    result = tech.run(ctx)
+    seconds = time.perf_counter() - t
+    lit = np.where(cp.valid, np.nan_to_num(result.lit, nan=0.0), 0.0).astype(np.float32)
+    return ShadowPass(result=result, lit=lit, seconds=seconds, sun=sun)

@@ -1,0 +1,108 @@
+"""The shared triangle core (raster/triangles.py), the depth pass's walk order and the kd-tree
+layout's decoders and typed errors."""
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from cityshade.accel import build_kdtree
+from cityshade.accel import kdtree_layout as kl
+from cityshade.errors import CityshadeError
+from cityshade.raster import camera as cams
+from cityshade.raster import triangles as tc
+from cityshade.raster.depthpass import box_planes, projection_centre
+from cityshade.shadows import shadowmap as sm
+from test_kdtree import box_city
+from test_rasterize import mini_scene
+
+
+@pytest.fixture(scope="module")
+def dated():
+    v, t, b, e, m = box_city(150, seed=11, extent_m=200.0)
+    return v, t, b, e, build_kdtree(v, t, b, e, m)
+
+
+def _walk_all(tree, t_days, planes, order_point, n_triangles, batch):
+    walk = tc.CulledWalk(tree, t_days, planes, order_point, n_triangles)
+    emitted = []
+    while not walk.done:
+        emitted.extend(tree.prim_indices[walk.next(batch)].tolist())
+    return emitted
+
+
+@pytest.mark.parametrize("t_days", [-30000.0, 0.0, 12000.0])
+def test_walk_emits_each_standing_triangle_once_in_any_order(dated, t_days):
+    v, t, b, e, tree = dated
+    standing = set(np.flatnonzero((b <= t_days) & (t_days < e)).tolist())
+    orders = [np.array([-50.0, -50.0, 10.0, 1.0]), np.array([100.0, 100.0, 5.0, 1.0]),
+              np.array([0.0, 0.0, 1.0, 0.0]), np.array([0.6, -0.64, -0.48, 0.0])]
+    no_planes = np.zeros((0, 4))
+    for order in orders:
+        emitted = _walk_all(tree, t_days, no_planes, order, t.shape[0], 37)
+        assert len(emitted) == len(set(emitted))
+        assert set(emitted) == standing
+    # Culled to a box: every order point emits the same triangles, all standing, and every
+    # standing triangle lying inside the box among them (the walk is conservative).
+    box = np.array([[40.0, 30.0, -5.0], [120.0, 90.0, 60.0]])
+    planes = box_planes(box, 0.0)
+    sets = []
+    for order in orders:
+        emitted = _walk_all(tree, t_days, planes, order, t.shape[0], 1000)
+        assert len(emitted) == len(set(emitted))
+        sets.append(set(emitted))
+    assert all(s == sets[0] for s in sets) and sets[0] <= standing
+    tri_lo, tri_hi = v[t].min(axis=1), v[t].max(axis=1)
+    inside = np.flatnonzero(((tri_lo >= box[0]) & (tri_hi <= box[1])).all(axis=1))
+    assert {int(i) for i in inside if int(i) in standing} <= sets[0]
+    assert len(sets[0]) < len(standing)
+
+
+def test_projection_centre_of_light_and_camera_views():
+    for az, el in ((135.0, 30.0), (10.0, 80.0), (250.0, 3.0)):
+        a, z = np.radians(az), np.radians(el)
+        sun = np.array([np.sin(a) * np.cos(z), np.cos(a) * np.cos(z), np.sin(z)])
+        view = sm.ortho_view(sun, (-50.0, 50.0), (-40.0, 40.0), (-200.0, 200.0), 64, 64)
+        c = projection_centre(view.clip_from_world)
+        assert c[3] == 0.0
+        np.testing.assert_allclose(c[:3] / np.linalg.norm(c[:3]), sun, atol=1e-12)
+    cam = cams.perspective([10.0, -250.0, 80.0], [0.0, 0.0, 0.0], vfov_deg=50.0, width_px=64,
+                           height_px=48, near_m=0.5, far_m=2000.0)
+    c = projection_centre(cam.clip_from_world())
+    assert c[3] == 1.0
+    np.testing.assert_allclose(c[:3], cam.eye_m, rtol=1e-9, atol=1e-6)
+
+
+def test_kernel_tree_of_a_scene_without_kdtree():
+    scene = mini_scene([[0, 0, 0], [1, 0, 0], [0, 1, 0]], [[0, 1, 2]], tree=False)
+    views = tc.kernel_tree(scene)
+    assert isinstance(views, kl.KdViews) and views.recs.shape == (1, kl.RECORD_WORDS)
+
+
+def test_layout_decoders_agree_with_unpack(dated):
+    *_, tree = dated
+    axis, child, second = tree.unpack()
+    views = tree.views
+    for node in range(0, tree.nodes.shape[0], max(1, tree.nodes.shape[0] // 300)):
+        w0 = kl.node_word(views, node)
+        assert kl.word_axis(w0) == axis[node] and kl.word_payload(w0) == child[node]
+        if axis[node] == kl.LEAF_CODE:
+            assert kl.leaf_first(views, node) == second[node]
+        else:
+            assert kl.node_split(views, node) == second[node]
+    for k in range(0, tree.prim_indices.shape[0], 97):
+        assert kl.record_id(views, k) == tree.prim_indices[k]
+        begin, end = tree.records_f64[k, kl.REC_T_BEGIN64], tree.records_f64[k, kl.REC_T_END64]
+        for t in (begin - 1.0, begin, end, 0.0):
+            assert kl.record_present(views, k, t) == bool(begin <= t < end)
+
+
+def test_layout_errors_are_typed(dated):
+    *_, tree = dated
+    arrays = tree.to_arrays()
+    with pytest.raises(kl.KdTreeLayoutError, match="missing: kdtree_bounds"):
+        kl.KdTree.from_arrays({k: a for k, a in arrays.items() if k != "kdtree_bounds"})
+    with pytest.raises(kl.KdTreeLayoutError, match="uint32"):
+        kl.KdTree.from_arrays({**arrays, "kdtree_nodes": arrays["kdtree_nodes"].astype(np.int64)})
+    with pytest.raises(kl.KdTreeLayoutError, match="too large"):
+        kl.pack_nodes([0], [2 ** 29], [0], [0.0])
+    assert issubclass(kl.KdTreeLayoutError, CityshadeError)
