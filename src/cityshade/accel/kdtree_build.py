@@ -178,26 +178,6 @@ def _clip_poly(px, py, pz, n, axis, value, keep_below, qx, qy, qz):
     return m
 
 
-@njit(cache=True, inline="always")
-def _put_ref(tri_v, ids, lo, hi, r, straddles, axis, p, left, cb_lo, cb_hi, ids_c, lo_c, hi_c,
-             ic, clo, chi, scratch):
-    """Reference ``r`` of a node becomes entry ``ic`` of a child (box ``cb_lo``-``cb_hi``); a
-    triangle straddling a spatial split keeps its true extent inside the child (perfect
-    split), or the child's side of the plane when the clipping finds nothing."""
-    ids_c[ic] = ids[r]
-    lo_c[ic] = lo[r]
-    hi_c[ic] = hi[r]
-    if straddles:
-        if _clipped_box(tri_v, ids[r], cb_lo, cb_hi, clo, chi, scratch):
-            for c in range(3):
-                lo_c[ic, c] = max(lo[r, c], max(cb_lo[c], _f32_down(clo[c])))
-                hi_c[ic, c] = min(hi[r, c], min(cb_hi[c], _f32_up(chi[c])))
-        elif left:
-            hi_c[ic, axis] = p
-        else:
-            lo_c[ic, axis] = p
-
-
 @njit(cache=True)
 def _clipped_box(tri_v, tri, box_lo, box_hi, out_lo, out_hi, scratch):
     """Bounding box of triangle ``tri`` clipped to the 3-D box; False if nothing is left."""
@@ -606,12 +586,31 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         for r in range(n):
             s = side[r]
             if s & 1:
-                _put_ref(tri_v, ids, lo, hi, r, s == 3 and axis != TIME_AXIS, axis, p, True,
-                         blo_l, bhi_l, ids_l, lo_l, hi_l, il, clo, chi, scratch)
+                # Written out for each side: a shared helper taking the 17 arguments costs
+                # 40 % of the whole build (1M-triangle city, 10.1 s against 7.2 s), even inlined.
+                ids_l[il] = ids[r]
+                lo_l[il] = lo[r]
+                hi_l[il] = hi[r]
+                if s == 3 and axis != TIME_AXIS:
+                    # Perfect split: the true extent of the triangle inside the child box.
+                    if _clipped_box(tri_v, ids[r], blo_l, bhi_l, clo, chi, scratch):
+                        for c in range(3):
+                            lo_l[il, c] = max(lo[r, c], max(blo_l[c], _f32_down(clo[c])))
+                            hi_l[il, c] = min(hi[r, c], min(bhi_l[c], _f32_up(chi[c])))
+                    else:
+                        hi_l[il, axis] = p
                 il += 1
             if s & 2:
-                _put_ref(tri_v, ids, lo, hi, r, s == 3 and axis != TIME_AXIS, axis, p, False,
-                         blo_r, bhi_r, ids_r, lo_r, hi_r, ir, clo, chi, scratch)
+                ids_r[ir] = ids[r]
+                lo_r[ir] = lo[r]
+                hi_r[ir] = hi[r]
+                if s == 3 and axis != TIME_AXIS:
+                    if _clipped_box(tri_v, ids[r], blo_r, bhi_r, clo, chi, scratch):
+                        for c in range(3):
+                            lo_r[ir, c] = max(lo[r, c], max(blo_r[c], _f32_down(clo[c])))
+                            hi_r[ir, c] = min(hi[r, c], min(bhi_r[c], _f32_up(chi[c])))
+                    else:
+                        lo_r[ir, axis] = p
                 ir += 1
 
         node_axis[node] = axis
