@@ -233,3 +233,34 @@ def test_bad_inputs_raise_typed_errors(city):
     with pytest.raises(ConfigError):
         KdTreeSettings(max_depth=99)
     assert KdTreeSettings().depth_cap(2 ** 20) == 34
+
+
+def test_parallel_subtrees_stitch_into_the_undivided_tree_for_1_and_2_threads(city):
+    """Nodes of at most ``subtree_refs`` references are built apart (from threads, several at
+    once) and stitched back: every array equals the build that never divides (the root is
+    then the only subtree), for any subtree size and thread count, and the statistics agree."""
+    import numba
+
+    whole = build_kdtree(*city, settings=KdTreeSettings(subtree_refs=10 ** 9))
+    threads = sorted({1, min(2, numba.config.NUMBA_NUM_THREADS)})
+    before = numba.get_num_threads()
+    try:
+        for subtree_refs in (30, 400):
+            for n_threads in threads:
+                numba.set_num_threads(n_threads)
+                split = build_kdtree(*city, settings=KdTreeSettings(subtree_refs=subtree_refs))
+                where = f"subtree_refs={subtree_refs}, {n_threads} thread(s)"
+                np.testing.assert_array_equal(split.nodes, whole.nodes, err_msg=where)
+                np.testing.assert_array_equal(split.prim_indices, whole.prim_indices,
+                                              err_msg=where)
+                np.testing.assert_array_equal(split.tri_records, whole.tri_records,
+                                              err_msg=where)
+                for key, value in whole.stats.items():
+                    if key == "sah_cost":  # summed in another order: last bits only
+                        assert split.stats[key] == pytest.approx(value, rel=1e-12), where
+                    elif key != "build_s":
+                        assert split.stats[key] == value, f"{key}, {where}"
+    finally:
+        numba.set_num_threads(before)
+    with pytest.raises(ConfigError, match="subtree_refs"):
+        KdTreeSettings(subtree_refs=-1)
