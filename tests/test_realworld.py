@@ -401,6 +401,55 @@ def test_render_with_local_apparent_time_puts_the_sun_south(tmp_path):
     assert "--tz local-mean" in result.output
 
 
+# --- 11. ground plane by default ---------------------------------------------------------------
+
+def _two_boxes_without_terrain(tmp_path):
+    """A 20 m box at the south-west corner and a 2 m one at the north-east, no terrain: the map
+    view spans 42 m × 42 m of which only 104 m² are roofs."""
+    from cityshade.build import build_file
+    x0, y0 = 690_000.0, 5_336_000.0
+    src = tmp_path / "boxes.gml"
+    src.write_text(city(building("tall", box_polygons(x0, y0, 0.0, 10, 10, 20, "t")),
+                        building("low", box_polygons(x0 + 40, y0 + 40, 0.0, 2, 2, 2, "l"))),
+                   encoding="utf-8")
+    out, _, _ = build_file(src, tmp_path / "boxes.cityshade")
+    return out
+
+
+def test_ground_auto_is_the_default_and_none_switches_it_off(tmp_path):
+    """Issue 13 point 11: without terrain a default render showed no cast shadow and the EXR Z
+    was +inf on the plane; now --ground auto is the default, with the plane's depth in Z."""
+    from cityshade.cli.main import cli
+    from cityshade.imageio import read_exr
+    scene_path = _two_boxes_without_terrain(tmp_path)
+    base = ["render", str(scene_path), "--date", "2000", "--sun-azimuth", "180",
+            "--sun-elevation", "45", "--camera", "map", "--pixel-size", "1"]
+    result = CliRunner().invoke(cli, base + ["-o", str(tmp_path / "auto.exr")])
+    assert result.exit_code == 0, result.output
+    ch, meta = read_exr(tmp_path / "auto.exr")
+    assert meta["cityshade:ground"] == "auto plane at z=0.000 m"
+    ground_px = ch["objid"] == -1
+    assert ground_px.sum() > 1500 and np.isfinite(ch["Z"]).all()
+    roof_tall = ch["Z"] == ch["Z"].min()
+    # The plane's depth is the camera height above z = 0: 20 m below the tall roof.
+    assert set(np.unique(ch["Z"][ground_px] - ch["Z"].min())) == {20.0}
+    assert roof_tall.sum() == 100
+    # The tall box's shadow on the ground: 10 m wide, 20 m long (45°), north of it.
+    in_shadow = ground_px & (ch["shadow"] == 0)
+    assert 190 <= in_shadow.sum() <= 210
+    rows, cols = np.nonzero(roof_tall)
+    srows, scols = np.nonzero(in_shadow)
+    assert srows.max() < rows.min() and set(scols) <= set(cols)  # north (up), same columns
+    result = CliRunner().invoke(cli, base + ["-o", str(tmp_path / "none.exr"), "--ground",
+                                             "none"])
+    assert result.exit_code == 0, result.output
+    ch, meta = read_exr(tmp_path / "none.exr")
+    assert meta["cityshade:ground"] == "none"
+    assert (np.isinf(ch["Z"]) == (ch["objid"] == -1)).all() and (ch["objid"] >= 0).sum() == 104
+    help_text = CliRunner().invoke(cli, ["render", "--help"]).output
+    assert "[default: auto]" in " ".join(help_text.split())
+
+
 # --- 13. smaller things -----------------------------------------------------------------------
 
 def test_scene_file_gets_the_umask(tmp_path):

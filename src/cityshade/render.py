@@ -158,7 +158,8 @@ def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
         channels = {
             "R": frame.rgb[..., 0], "G": frame.rgb[..., 1], "B": frame.rgb[..., 2],
             "shadow": frame.lit,
-            "Z": np.where(s.valid, frame.gbuffer.depth, np.inf).astype(np.float32),
+            # The resolved depth: the ground plane's pixels carry the plane's.
+            "Z": np.where(s.valid, s.depth, np.inf).astype(np.float32),
             "N.x": normal[..., 0], "N.y": normal[..., 1], "N.z": normal[..., 2],
             "primid": frame.gbuffer.prim_id, "objid": s.obj_id,
         }
