@@ -545,3 +545,75 @@ def test_batch_and_evaluate_accept_solar_time(tmp_path):
     scene = load_scene(scene_path)
     sun, = suns_of_day("2024-11-03", "12:00", solar_zone_of_scene("local-apparent", scene), scene)
     assert sun.azimuth_true_deg == pytest.approx(180.0, abs=0.05)
+
+
+def test_explicit_sun_with_time_is_an_error(tmp_path):
+    from cityshade.cli.main import cli
+    scene_path = _two_boxes_without_terrain(tmp_path)
+    result = CliRunner().invoke(cli, [
+        "render", str(scene_path), "--date", "2024-06-21", "--time", "15:00", "--tz",
+        "Europe/Berlin", "--sun-azimuth", "135", "--sun-elevation", "30", "-o",
+        str(tmp_path / "x.exr")])
+    assert result.exit_code == 2 and result.output.strip().splitlines() == [
+        "cityshade: error: --time computes the sun for the model's place and --sun-azimuth/"
+        "--sun-elevation give it: use one or the other"]
+    assert not (tmp_path / "x.exr").exists()
+
+
+def test_flags_of_other_techniques_are_warned_about_and_presets_listed(tmp_path):
+    from cityshade.cli.main import cli
+    from cityshade.cli.options import inapplicable_flags
+    scene_path = _two_boxes_without_terrain(tmp_path)
+    result = CliRunner().invoke(cli, [
+        "render", str(scene_path), "--date", "2000", "--sun-azimuth", "135",
+        "--sun-elevation", "30", "--camera", "map", "--pixel-size", "2", "--shadows",
+        "raytrace", "--cascades", "3", "-o", str(tmp_path / "r.exr")])
+    assert result.exit_code == 0 and (tmp_path / "r.exr").is_file()
+    assert ("cityshade: warning: --cascades does not apply to --shadows raytrace; ignored"
+            in result.output.splitlines())
+    assert inapplicable_flags("csm:lispsm+smooth", {"cascades": 3, "pcf_kernel": 5}) == [
+        "pcf_kernel"]
+    assert inapplicable_flags("izb,hybrid", {"vsm_blur": 2, "bias": 0.1}) == []
+    assert inapplicable_flags("izb", {"bias": 0.1, "map_px": None}) == ["bias"]
+    help_text = " ".join(CliRunner().invoke(cli, ["render", "--help"]).output.split())
+    assert "south, east, north, west, bird" in help_text
+
+
+def test_progress_lines_every_tenth_or_ten_seconds(capsys):
+    from cityshade.cli.options import ProgressLines
+    now = [0.0]
+    lines = ProgressLines("steps", clock=lambda: now[0])
+    for done in range(1, 101):
+        now[0] += 0.01 if done < 50 else 30.0  # slow from the 50th step on
+        lines(done, 1000)
+    seen = capsys.readouterr().err.splitlines()
+    # 10 % is step 100; before step 50 nothing, then a line every step (each takes 30 s).
+    assert seen[0] == "cityshade: steps 50/1000 (5 %)" and len(seen) == 51
+    assert seen[-1] == "cityshade: steps 100/1000 (10 %)"
+
+
+def test_batch_prints_progress_lines_when_stderr_is_not_a_terminal(tmp_path):
+    from cityshade.cli.main import cli
+    scene_path = _two_boxes_without_terrain(tmp_path)
+    result = CliRunner().invoke(cli, [
+        "batch", str(scene_path), "--date", "2024-06-21", "--from", "08:00", "--to", "18:00",
+        "--every", "1h", "--tz", "Europe/Berlin", "--pixel-size", "4", "-o",
+        str(tmp_path / "b")])
+    assert result.exit_code == 0, result.output
+    progress = [line for line in result.output.splitlines()
+                if line.startswith("cityshade: sun positions ")]
+    assert progress[-1] == "cityshade: sun positions 10/10 (100 %)" and len(progress) == 10
+
+
+def test_only_terrain_standing_is_warned_about():
+    from types import SimpleNamespace
+    from cityshade.citygml.namespaces import SURFACE_CODE
+    from cityshade.render import only_terrain_stands
+    terrain, roof = SURFACE_CODE["terrain"], SURFACE_CODE["roof"]
+    scene = SimpleNamespace(tri_class=np.array([terrain, terrain, roof], np.uint8),
+                            tri_t_begin_days=np.array([-np.inf, -np.inf, 100.0]),
+                            tri_t_end_days=np.array([np.inf, np.inf, 200.0]))
+    assert only_terrain_stands(scene, 50.0) and only_terrain_stands(scene, 200.0)
+    assert not only_terrain_stands(scene, 100.0)
+    scene.tri_class[:] = roof
+    assert not only_terrain_stands(scene, 50.0)  # nothing at all stands: not "only terrain"

@@ -52,6 +52,22 @@ def city_time_range(scene) -> tuple[float, float] | None:
     return (float(np.min(scene.obj_t_begin_days)), float(np.max(scene.obj_t_end_days)))
 
 
+def only_terrain_stands(scene, t_days: float) -> bool:
+    """Whether terrain triangles are present at ``t_days`` and nothing else is."""
+    from cityshade.citygml.namespaces import SURFACE_CODE
+
+    t = float(t_days)
+    present = (np.asarray(scene.tri_t_begin_days) <= t) & (t < np.asarray(scene.tri_t_end_days))
+    terrain = np.asarray(scene.tri_class) == SURFACE_CODE["terrain"]
+    return bool((present & terrain).any()) and not bool((present & ~terrain).any())
+
+
+def _range_text(rng) -> str:
+    from cityshade.citygml.temporal import days_to_iso
+
+    return f"{days_to_iso(rng[0])} … {days_to_iso(rng[1])}"
+
+
 def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosition",
                  technique: str = "raytrace", settings: ShadowSettings | None = None,
                  sky: bool = True, ground: str | None = None) -> Frame:
@@ -85,11 +101,12 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
         warnings.append(f"the sun is at or below the horizon (elevation {sun.elevation_deg:g}°): "
                         f"everything is in shadow")
     rng = city_time_range(scene)
-    if rng is not None and not rng[0] <= t_days < rng[1]:
-        from cityshade.citygml.temporal import days_to_iso
-
-        warnings.append(f"the date is outside the model's time range "
-                        f"({days_to_iso(rng[0])} … {days_to_iso(rng[1])}): nothing stands then")
+    if only_terrain_stands(scene, t_days):
+        warnings.append("only terrain stands at this date: no building or other object is "
+                        "present then (`cityshade info` shows the model's time range)")
+    elif rng is not None and not rng[0] <= t_days < rng[1]:
+        warnings.append(f"the date is outside the model's time range ({_range_text(rng)}): "
+                        f"nothing stands then")
     cp = camera_pass(scene, camera, t_days, ground=ground)
     timings: dict[str, float] = dict(cp.timings_s)
     sp = shadow_pass(cp, sun, tech, settings)
