@@ -617,3 +617,47 @@ def test_only_terrain_standing_is_warned_about():
     assert not only_terrain_stands(scene, 100.0)
     scene.tri_class[:] = roof
     assert not only_terrain_stands(scene, 50.0)  # nothing at all stands: not "only terrain"
+
+
+# --- 7. outputs checked before the work ----------------------------------------------------------
+
+def test_render_checks_every_output_before_the_work(tmp_path, monkeypatch):
+    """Issue 13 point 7: a bad --png extension or a --geotiff of a perspective view failed
+    after rendering and left the EXR written before it."""
+    from cityshade import render as R
+    from cityshade.cli.main import cli
+    scene_path = _two_boxes_without_terrain(tmp_path)
+
+    def no_work(*a, **k):
+        raise AssertionError("rendered before the outputs were checked")
+
+    monkeypatch.setattr(R, "render_frame", no_work)
+    base = ["render", str(scene_path), "--date", "2000", "--sun-azimuth", "135",
+            "--sun-elevation", "30", "-o", str(tmp_path / "a.exr")]
+    cases = [
+        (["--png", str(tmp_path / "a.jpg")], 2,
+         f"--png {tmp_path / 'a.jpg'}: the file name must end in .png, not '.jpg'"),
+        (["--geotiff", str(tmp_path / "a.tif")], 2,
+         "--geotiff needs the map view (--camera map): a perspective picture has no place on "
+         "a map"),
+        (["--png", str(tmp_path / "p.png"), "--mask", str(tmp_path / "p.png")], 2,
+         f"--mask and --png would both write {tmp_path / 'p.png'}"),
+    ]
+    for extra, code, message in cases:
+        result = CliRunner().invoke(cli, base + extra)
+        lines = result.output.strip().splitlines()
+        assert result.exit_code == code and len(lines) == 1, result.output
+        assert lines[0].startswith("cityshade: error: ") and message in lines[0], lines[0]
+    exr = ["render", str(scene_path), "--date", "2000", "--sun-azimuth", "135",
+           "--sun-elevation", "30", "-o"]
+    (tmp_path / "dir.exr").mkdir()
+    from cityshade.errors import OutputError
+    with pytest.raises(OutputError, match="is a folder, not a file name"):
+        R.check_frame_outputs("map", exr=tmp_path / "dir.exr")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["boxes.cityshade", "boxes.gml",
+                                                          "dir.exr"]
+    # A missing folder is created, as build does; then the work runs.
+    monkeypatch.undo()
+    result = CliRunner().invoke(cli, exr + [str(tmp_path / "new" / "sub" / "a.exr"), "--camera",
+                                            "map", "--pixel-size", "4"])
+    assert result.exit_code == 0 and (tmp_path / "new" / "sub" / "a.exr").is_file()

@@ -160,6 +160,52 @@ def frame_metadata(frame: Frame, scene, date_text: str) -> dict[str, Any]:
     return meta
 
 
+#: The outputs of a frame: option, keyword of write_frame, allowed extensions.
+FRAME_OUTPUTS = (("-o", "exr", (".exr",)), ("--png", "png", (".png",)),
+                 ("--mask", "mask", (".png",)), ("--geotiff", "georef", (".tif", ".tiff")))
+
+
+def check_frame_outputs(camera_kind: str, **paths) -> None:
+    """Check every output of a frame before any work: extension, the map view for a
+    GeoTIFF, no two outputs on the same file, and
+    a writable folder (created when missing, as ``build`` does).
+
+    Raises
+    ------
+    UsageError
+        An extension, a GeoTIFF of a perspective view or a clash.
+    OutputError
+        A folder that cannot be created or written, or an output path that is a folder.
+    """
+    import os
+
+    from cityshade.errors import OutputError
+    from cityshade.util import make_folder
+
+    taken: dict[Path, str] = {}
+    for option, key, suffixes in FRAME_OUTPUTS:
+        path = paths.get(key)
+        if path is None:
+            continue
+        path = Path(path)
+        if path.suffix.lower() not in suffixes:
+            raise UsageError(f"{option} {path}: the file name must end in "
+                             f"{' or '.join(suffixes)}, not {path.suffix or '(nothing)'!r}")
+        if key == "georef" and camera_kind != "map":
+            raise UsageError("--geotiff needs the map view (--camera map): a perspective "
+                             "picture has no place on a map")
+        resolved = path.resolve()
+        if resolved in taken:
+            raise UsageError(f"{option} and {taken[resolved]} would both write {path}")
+        taken[resolved] = option
+        if path.is_dir():
+            raise OutputError(f"{option} {path} is a folder, not a file name", path=str(path))
+        folder = make_folder(path.parent)
+        if not os.access(folder, os.W_OK):
+            raise OutputError(f"{option} {path}: the folder {folder} is not writable",
+                              path=str(path))
+
+
 def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
                 png: Path | None = None, mask: Path | None = None,
                 georef: Path | None = None) -> list[Path]:
@@ -167,6 +213,7 @@ def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
     from cityshade import imageio
     from cityshade.shading import to_srgb8
 
+    check_frame_outputs(frame.camera.kind, exr=exr, png=png, mask=mask, georef=georef)
     meta = frame_metadata(frame, scene, date_text)
     written = []
     s = frame.surfaces
@@ -192,8 +239,6 @@ def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
         imageio.write_mask_png(mask, mask_px, attributes=meta)
         written.append(Path(mask))
     if georef is not None:
-        if frame.camera.kind != "map":
-            raise UsageError("a georeferenced mask needs the map view (--camera map)")
         written += imageio.write_georeferenced(
             georef, mask_px, frame.camera.geotransform(scene.origin_m),
             epsg=scene.crs.horizontal_epsg, nodata=imageio.MASK_NODATA, attributes=meta)

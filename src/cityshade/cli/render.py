@@ -75,6 +75,9 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     for warning in user_date.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
     cam = make_camera(scene, camera, eye, target, fov, size, pixel_size, cameras_file)
+    from cityshade.render import check_frame_outputs
+
+    check_frame_outputs(cam.kind, exr=output, png=png, mask=mask, georef=geotiff)  # before work
     if sun_azimuth is not None:
         sun = sun_from_angles(sun_azimuth, sun_elevation, scene.crs, scene.origin_m)
     else:
