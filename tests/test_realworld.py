@@ -661,3 +661,37 @@ def test_render_checks_every_output_before_the_work(tmp_path, monkeypatch):
     result = CliRunner().invoke(cli, exr + [str(tmp_path / "new" / "sub" / "a.exr"), "--camera",
                                             "map", "--pixel-size", "4"])
     assert result.exit_code == 0 and (tmp_path / "new" / "sub" / "a.exr").is_file()
+
+
+# --- 10. memory estimate before allocating -------------------------------------------------------
+
+def test_a_frame_that_does_not_fit_in_memory_is_refused_before_allocating(tmp_path, monkeypatch):
+    """Issue 13 point 10: --pixel-size 0.021 on the sample passed and needed about 50 GB."""
+    from types import SimpleNamespace
+    from cityshade.cli.main import cli
+    from cityshade.pipeline import check_frame_memory
+    cam = SimpleNamespace(width_px=2000, height_px=1000, kind="map")
+    assert check_frame_memory(cam, available_bytes=600_000_000) == 600_000_000  # 300 B/px
+    with pytest.raises(UsageError) as err:
+        check_frame_memory(cam, available_bytes=599_999_999)
+    assert str(err.value) == ("the picture of 2000 × 1000 pixels needs about 0.6 GB (300 bytes "
+                              "per pixel) but 0.6 GB are available: use a larger --pixel-size "
+                              "or a smaller map extent")
+    scene_path = _two_boxes_without_terrain(tmp_path)
+    import cityshade.pipeline
+    monkeypatch.setattr(cityshade.pipeline, "available_memory_bytes", lambda: 8_000_000_000)
+    result = CliRunner().invoke(cli, [
+        "render", str(scene_path), "--date", "2000", "--sun-azimuth", "135",
+        "--sun-elevation", "30", "--camera", "map", "--pixel-size", "0.003", "-o",
+        str(tmp_path / "huge.exr")])
+    lines = result.output.strip().splitlines()
+    assert result.exit_code == 2 and len(lines) == 1, result.output
+    import re
+    found = re.fullmatch(r"cityshade: error: the picture of (\d+) × (\d+) pixels needs about "
+                         r"([\d.]+) GB \(300 bytes per pixel\) but 8.0 GB are available: use "
+                         r"a larger --pixel-size or a smaller map extent", lines[0])
+    assert found, lines[0]
+    w, h, gb = int(found[1]), int(found[2]), float(found[3])
+    assert 14_000 <= w <= 14_002 and 14_000 <= h <= 14_002  # 42 m at 3 mm
+    assert gb == pytest.approx(58.8, abs=0.1)
+    assert not (tmp_path / "huge.exr").exists()
