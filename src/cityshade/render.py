@@ -200,6 +200,10 @@ def check_frame_outputs(camera_kind: str, **paths) -> None:
         taken[resolved] = option
         if path.is_dir():
             raise OutputError(f"{option} {path} is a folder, not a file name", path=str(path))
+        existing = next(a for a in path.parents if a.exists())
+        if not existing.is_dir():
+            raise OutputError(f"{option} {path}: {existing} is a file, not a folder",
+                              path=str(path))
         folder = make_folder(path.parent)
         if not os.access(folder, os.W_OK):
             raise OutputError(f"{option} {path}: the folder {folder} is not writable",
