@@ -1,6 +1,7 @@
 """Batch runs: time steps, sun-hour maps against analytic shadows, resume bit for bit, CLI."""
 from __future__ import annotations
 
+import hashlib
 import json
 from datetime import date, datetime, timedelta, timezone
 
@@ -282,6 +283,9 @@ def test_interrupted_and_resumed_run_is_bit_identical(scene, tmp_path):
     ck.path.write_bytes(b"not a state")
     with pytest.raises(UsageError, match="damaged.*--overwrite"):
         B.sun_hours(scene, cam, instants, 0.0, checkpoint=ck, **kwargs)
+    ck.path.write_bytes(b"PK\x03\x04" + b"\0" * 40)  # a truncated zip: not BadZipFile
+    with pytest.raises(UsageError, match="damaged.*--overwrite"):
+        B.sun_hours(scene, cam, instants, 0.0, checkpoint=ck, **kwargs)
 
 
 # --- outputs ------------------------------------------------------------------------------------
@@ -433,6 +437,37 @@ def test_cli_batch_failures(files, tmp_path):
     _one_line_error(_run("batch", nocrs, *base[2:]), "--crs", 1)
     missing_tz = _run("batch", scene_path, "--date", "2024-06-21", "-o", tmp_path / "h")
     assert missing_tz.exit_code == 2 and "--tz" in missing_tz.output
+
+
+@pytest.mark.parametrize("damage", ["truncated", "bit-flipped"])
+def test_damaged_state_is_detected_and_its_steps_start_again(files, tmp_path, damage):
+    """Issue 13 point 9: a truncated or altered state.npz gave zipfile.BadZipFile (or, worse,
+    was read); the manifest's checksum finds it, one warning line, the steps are redone."""
+    from cityshade.imageio import read_exr
+
+    scene_path, _ = files
+    out = tmp_path / "run"
+    assert _run("batch", scene_path, *ARGS, "-o", out).exit_code == 0
+    hours = read_exr(out / "sun_hours.exr")[0]["sun_hours"].copy()
+    state = out / B.STATE_NAME
+    data = bytearray(state.read_bytes())
+    if damage == "truncated":
+        data = data[: len(data) // 2]
+    else:
+        data[len(data) - 200] ^= 0x10  # inside the pixel sums: still a readable zip
+    state.write_bytes(bytes(data))
+    again = _run("batch", scene_path, *ARGS, "-o", out, "-v")
+    assert again.exit_code == 0, again.output
+    warnings = [line for line in again.output.splitlines() if "warning" in line]
+    assert warnings == [f"cityshade: warning: the saved state {state} is damaged (its checksum "
+                        f"does not match the manifest); the unfinished steps start again"]
+    assert "16 sun positions computed, 0 taken from the saved state" in again.output
+    assert read_exr(out / "sun_hours.exr")[0]["sun_hours"].tobytes() == hours.tobytes()
+    manifest = json.loads((out / "manifest.json").read_text())
+    assert manifest["state_sha256"] == [hashlib.sha256(state.read_bytes()).hexdigest()]
+    # The state now matches again: a third run takes everything from it, silently.
+    third = _run("batch", scene_path, *ARGS, "-o", out, "-v")
+    assert "16 taken from the saved state" in third.output and "warning" not in third.output
 
 
 def test_run_batch_from_python_resumes_and_refuses_other_parameters(files, tmp_path):

@@ -401,6 +401,55 @@ def test_render_with_local_apparent_time_puts_the_sun_south(tmp_path):
     assert "--tz local-mean" in result.output
 
 
+# --- 11. ground plane by default ---------------------------------------------------------------
+
+def _two_boxes_without_terrain(tmp_path):
+    """A 20 m box at the south-west corner and a 2 m one at the north-east, no terrain: the map
+    view spans 42 m × 42 m of which only 104 m² are roofs."""
+    from cityshade.build import build_file
+    x0, y0 = 690_000.0, 5_336_000.0
+    src = tmp_path / "boxes.gml"
+    src.write_text(city(building("tall", box_polygons(x0, y0, 0.0, 10, 10, 20, "t")),
+                        building("low", box_polygons(x0 + 40, y0 + 40, 0.0, 2, 2, 2, "l"))),
+                   encoding="utf-8")
+    out, _, _ = build_file(src, tmp_path / "boxes.cityshade")
+    return out
+
+
+def test_ground_auto_is_the_default_and_none_switches_it_off(tmp_path):
+    """Issue 13 point 11: without terrain a default render showed no cast shadow and the EXR Z
+    was +inf on the plane; now --ground auto is the default, with the plane's depth in Z."""
+    from cityshade.cli.main import cli
+    from cityshade.imageio import read_exr
+    scene_path = _two_boxes_without_terrain(tmp_path)
+    base = ["render", str(scene_path), "--date", "2000", "--sun-azimuth", "180",
+            "--sun-elevation", "45", "--camera", "map", "--pixel-size", "1"]
+    result = CliRunner().invoke(cli, base + ["-o", str(tmp_path / "auto.exr")])
+    assert result.exit_code == 0, result.output
+    ch, meta = read_exr(tmp_path / "auto.exr")
+    assert meta["cityshade:ground"] == "auto plane at z=0.000 m"
+    ground_px = ch["objid"] == -1
+    assert ground_px.sum() > 1500 and np.isfinite(ch["Z"]).all()
+    roof_tall = ch["Z"] == ch["Z"].min()
+    # The plane's depth is the camera height above z = 0: 20 m below the tall roof.
+    assert set(np.unique(ch["Z"][ground_px] - ch["Z"].min())) == {20.0}
+    assert roof_tall.sum() == 100
+    # The tall box's shadow on the ground: 10 m wide, 20 m long (45°), north of it.
+    in_shadow = ground_px & (ch["shadow"] == 0)
+    assert 190 <= in_shadow.sum() <= 210
+    rows, cols = np.nonzero(roof_tall)
+    srows, scols = np.nonzero(in_shadow)
+    assert srows.max() < rows.min() and set(scols) <= set(cols)  # north (up), same columns
+    result = CliRunner().invoke(cli, base + ["-o", str(tmp_path / "none.exr"), "--ground",
+                                             "none"])
+    assert result.exit_code == 0, result.output
+    ch, meta = read_exr(tmp_path / "none.exr")
+    assert meta["cityshade:ground"] == "none"
+    assert (np.isinf(ch["Z"]) == (ch["objid"] == -1)).all() and (ch["objid"] >= 0).sum() == 104
+    help_text = CliRunner().invoke(cli, ["render", "--help"]).output
+    assert "[default: auto]" in " ".join(help_text.split())
+
+
 # --- 13. smaller things -----------------------------------------------------------------------
 
 def test_scene_file_gets_the_umask(tmp_path):
@@ -496,3 +545,153 @@ def test_batch_and_evaluate_accept_solar_time(tmp_path):
     scene = load_scene(scene_path)
     sun, = suns_of_day("2024-11-03", "12:00", solar_zone_of_scene("local-apparent", scene), scene)
     assert sun.azimuth_true_deg == pytest.approx(180.0, abs=0.05)
+
+
+def test_explicit_sun_with_time_is_an_error(tmp_path):
+    from cityshade.cli.main import cli
+    scene_path = _two_boxes_without_terrain(tmp_path)
+    result = CliRunner().invoke(cli, [
+        "render", str(scene_path), "--date", "2024-06-21", "--time", "15:00", "--tz",
+        "Europe/Berlin", "--sun-azimuth", "135", "--sun-elevation", "30", "-o",
+        str(tmp_path / "x.exr")])
+    assert result.exit_code == 2 and result.output.strip().splitlines() == [
+        "cityshade: error: --time computes the sun for the model's place and --sun-azimuth/"
+        "--sun-elevation give it: use one or the other"]
+    assert not (tmp_path / "x.exr").exists()
+
+
+def test_flags_of_other_techniques_are_warned_about_and_presets_listed(tmp_path):
+    from cityshade.cli.main import cli
+    from cityshade.cli.options import inapplicable_flags
+    scene_path = _two_boxes_without_terrain(tmp_path)
+    result = CliRunner().invoke(cli, [
+        "render", str(scene_path), "--date", "2000", "--sun-azimuth", "135",
+        "--sun-elevation", "30", "--camera", "map", "--pixel-size", "2", "--shadows",
+        "raytrace", "--cascades", "3", "-o", str(tmp_path / "r.exr")])
+    assert result.exit_code == 0 and (tmp_path / "r.exr").is_file()
+    assert ("cityshade: warning: --cascades does not apply to --shadows raytrace; ignored"
+            in result.output.splitlines())
+    assert inapplicable_flags("csm:lispsm+smooth", {"cascades": 3, "pcf_kernel": 5}) == [
+        "pcf_kernel"]
+    assert inapplicable_flags("izb,hybrid", {"vsm_blur": 2, "bias": 0.1}) == []
+    assert inapplicable_flags("izb", {"bias": 0.1, "map_px": None}) == ["bias"]
+    help_text = " ".join(CliRunner().invoke(cli, ["render", "--help"]).output.split())
+    assert "south, east, north, west, bird" in help_text
+
+
+def test_progress_lines_every_tenth_or_ten_seconds(capsys):
+    from cityshade.cli.options import ProgressLines
+    now = [0.0]
+    lines = ProgressLines("steps", clock=lambda: now[0])
+    for done in range(1, 101):
+        now[0] += 0.01 if done < 50 else 30.0  # slow from the 50th step on
+        lines(done, 1000)
+    seen = capsys.readouterr().err.splitlines()
+    # 10 % is step 100; before step 50 nothing, then a line every step (each takes 30 s).
+    assert seen[0] == "cityshade: steps 50/1000 (5 %)" and len(seen) == 51
+    assert seen[-1] == "cityshade: steps 100/1000 (10 %)"
+
+
+def test_batch_prints_progress_lines_when_stderr_is_not_a_terminal(tmp_path):
+    from cityshade.cli.main import cli
+    scene_path = _two_boxes_without_terrain(tmp_path)
+    result = CliRunner().invoke(cli, [
+        "batch", str(scene_path), "--date", "2024-06-21", "--from", "08:00", "--to", "18:00",
+        "--every", "1h", "--tz", "Europe/Berlin", "--pixel-size", "4", "-o",
+        str(tmp_path / "b")])
+    assert result.exit_code == 0, result.output
+    progress = [line for line in result.output.splitlines()
+                if line.startswith("cityshade: sun positions ")]
+    assert progress[-1] == "cityshade: sun positions 10/10 (100 %)" and len(progress) == 10
+
+
+def test_only_terrain_standing_is_warned_about():
+    from types import SimpleNamespace
+    from cityshade.citygml.namespaces import SURFACE_CODE
+    from cityshade.render import only_terrain_stands
+    terrain, roof = SURFACE_CODE["terrain"], SURFACE_CODE["roof"]
+    scene = SimpleNamespace(tri_class=np.array([terrain, terrain, roof], np.uint8),
+                            tri_t_begin_days=np.array([-np.inf, -np.inf, 100.0]),
+                            tri_t_end_days=np.array([np.inf, np.inf, 200.0]))
+    assert only_terrain_stands(scene, 50.0) and only_terrain_stands(scene, 200.0)
+    assert not only_terrain_stands(scene, 100.0)
+    scene.tri_class[:] = roof
+    assert not only_terrain_stands(scene, 50.0)  # nothing at all stands: not "only terrain"
+
+
+# --- 7. outputs checked before the work ----------------------------------------------------------
+
+def test_render_checks_every_output_before_the_work(tmp_path, monkeypatch):
+    """Issue 13 point 7: a bad --png extension or a --geotiff of a perspective view failed
+    after rendering and left the EXR written before it."""
+    from cityshade import render as R
+    from cityshade.cli.main import cli
+    scene_path = _two_boxes_without_terrain(tmp_path)
+
+    def no_work(*a, **k):
+        raise AssertionError("rendered before the outputs were checked")
+
+    monkeypatch.setattr(R, "render_frame", no_work)
+    base = ["render", str(scene_path), "--date", "2000", "--sun-azimuth", "135",
+            "--sun-elevation", "30", "-o", str(tmp_path / "a.exr")]
+    cases = [
+        (["--png", str(tmp_path / "a.jpg")], 2,
+         f"--png {tmp_path / 'a.jpg'}: the file name must end in .png, not '.jpg'"),
+        (["--geotiff", str(tmp_path / "a.tif")], 2,
+         "--geotiff needs the map view (--camera map): a perspective picture has no place on "
+         "a map"),
+        (["--png", str(tmp_path / "p.png"), "--mask", str(tmp_path / "p.png")], 2,
+         f"--mask and --png would both write {tmp_path / 'p.png'}"),
+    ]
+    for extra, code, message in cases:
+        result = CliRunner().invoke(cli, base + extra)
+        lines = result.output.strip().splitlines()
+        assert result.exit_code == code and len(lines) == 1, result.output
+        assert lines[0].startswith("cityshade: error: ") and message in lines[0], lines[0]
+    exr = ["render", str(scene_path), "--date", "2000", "--sun-azimuth", "135",
+           "--sun-elevation", "30", "-o"]
+    (tmp_path / "dir.exr").mkdir()
+    from cityshade.errors import OutputError
+    with pytest.raises(OutputError, match="is a folder, not a file name"):
+        R.check_frame_outputs("map", exr=tmp_path / "dir.exr")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["boxes.cityshade", "boxes.gml",
+                                                          "dir.exr"]
+    # A missing folder is created, as build does; then the work runs.
+    monkeypatch.undo()
+    result = CliRunner().invoke(cli, exr + [str(tmp_path / "new" / "sub" / "a.exr"), "--camera",
+                                            "map", "--pixel-size", "4"])
+    assert result.exit_code == 0 and (tmp_path / "new" / "sub" / "a.exr").is_file()
+
+
+# --- 10. memory estimate before allocating -------------------------------------------------------
+
+def test_a_frame_that_does_not_fit_in_memory_is_refused_before_allocating(tmp_path, monkeypatch):
+    """Issue 13 point 10: --pixel-size 0.021 on the sample passed and needed about 50 GB."""
+    from types import SimpleNamespace
+    from cityshade.cli.main import cli
+    from cityshade.pipeline import check_frame_memory
+    cam = SimpleNamespace(width_px=2000, height_px=1000, kind="map")
+    assert check_frame_memory(cam, available_bytes=600_000_000) == 600_000_000  # 300 B/px
+    with pytest.raises(UsageError) as err:
+        check_frame_memory(cam, available_bytes=599_999_999)
+    assert str(err.value) == ("the picture of 2000 × 1000 pixels needs about 0.6 GB (300 bytes "
+                              "per pixel) but 0.6 GB are available: use a larger --pixel-size "
+                              "or a smaller map extent")
+    scene_path = _two_boxes_without_terrain(tmp_path)
+    import cityshade.pipeline
+    monkeypatch.setattr(cityshade.pipeline, "available_memory_bytes", lambda: 8_000_000_000)
+    result = CliRunner().invoke(cli, [
+        "render", str(scene_path), "--date", "2000", "--sun-azimuth", "135",
+        "--sun-elevation", "30", "--camera", "map", "--pixel-size", "0.003", "-o",
+        str(tmp_path / "huge.exr")])
+    lines = result.output.strip().splitlines()
+    assert result.exit_code == 2 and len(lines) == 1, result.output
+    import re
+    found = re.fullmatch(r"cityshade: error: the picture of (\d+) × (\d+) pixels needs about "
+                         r"([\d.]+) GB \(300 bytes per pixel\) but 8.0 GB are available: use "
+                         r"a larger --pixel-size or a smaller map extent", lines[0])
+    assert found, lines[0]
+    w, h, gb = int(found[1]), int(found[2]), float(found[3])
+    assert 14_000 <= w <= 14_002 and 14_000 <= h <= 14_002  # 42 m at 3 mm
+    assert gb == pytest.approx(58.8, abs=0.1)
+    assert not (tmp_path / "huge.exr").exists()

@@ -20,10 +20,12 @@ georeferenced float raster) and the manifest helpers used by ``cityshade batch``
 from __future__ import annotations
 
 import hashlib
+import io
 import json
 import math
 import re
 import time
+import zipfile
 from dataclasses import dataclass, field
 from datetime import date, datetime, timedelta, timezone
 from pathlib import Path
@@ -258,6 +260,10 @@ class Checkpoint:
         self.key = str(key)
         self.saves = 0
         self.save_s = 0.0
+        self.sha256: str | None = None  # of the last state written, for the manifest
+        # Called with the new state's checksum before it replaces the old one (run_batch records
+        # both in the manifest, so an interruption between the two writes loses nothing).
+        self.before_write: Callable[[str], None] | None = None
 
     def load(self, n_units: int, pixel_shape, n_samples: int):
         """``(units_done, pixel_sum, sample_sum)`` of a saved state, or None when there is none.
@@ -276,7 +282,7 @@ class Checkpoint:
                 done = int(z["units_done"])
                 pixel_sum = np.array(z["pixel_sum"], dtype=np.float64)
                 sample_sum = np.array(z["sample_sum"], dtype=np.float64)
-        except (OSError, ValueError, KeyError) as exc:
+        except (OSError, ValueError, KeyError, zipfile.BadZipFile) as exc:
             raise UsageError(f"the saved state {self.path} is damaged ({exc}); {hint}") from None
         if key != self.key:
             raise UsageError(f"the saved state {self.path} belongs to a run with other "
@@ -292,17 +298,31 @@ class Checkpoint:
         try:
             with np.load(self.path, allow_pickle=False) as z:
                 return int(z["units_done"]) if str(z["key"]) == self.key else 0
-        except (OSError, ValueError, KeyError):
+        except (OSError, ValueError, KeyError, zipfile.BadZipFile):
             return 0
+
+    def file_sha256(self) -> str | None:
+        """SHA-256 of the state file as it is on disk (None without one)."""
+        try:
+            return hashlib.sha256(self.path.read_bytes()).hexdigest()
+        except FileNotFoundError:
+            return None
 
     def save(self, units_done: int, pixel_sum: np.ndarray, sample_sum: np.ndarray) -> None:
         """Write the state to a temporary name and rename it over the previous one."""
         from cityshade.util import atomic_write
 
         t0 = time.perf_counter()
+        buf = io.BytesIO()
+        np.savez(buf, key=np.array(self.key), units_done=np.array(units_done),
+                 pixel_sum=pixel_sum, sample_sum=sample_sum)
+        data = buf.getvalue()
+        digest = hashlib.sha256(data).hexdigest()
+        if self.before_write is not None:
+            self.before_write(digest)
         with atomic_write(self.path, "wb", what="the batch state") as fh:
-            np.savez(fh, key=np.array(self.key), units_done=np.array(units_done),
-                     pixel_sum=pixel_sum, sample_sum=sample_sum)
+            fh.write(data)
+        self.sha256 = digest
         self.saves += 1
         self.save_s += time.perf_counter() - t0
 
@@ -913,6 +933,18 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
         if not overwrite:
             raise UsageError(f"{state.path} has no manifest next to it; use --overwrite")
         state.remove()
+    state_warning = None
+    if old is not None and state.path.exists():
+        # The manifest holds the checksum of the last state saved: a truncated or altered state
+        # is discarded and its steps are computed again, never half-read.
+        expected = old.get("state_sha256") or []
+        found = state.file_sha256()
+        if found not in expected:
+            state_warning = (f"the saved state {state.path} is damaged (its checksum does not "
+                             f"match the manifest); the unfinished steps start again")
+            state.remove()
+        else:
+            state.sha256 = found
 
     manifest: dict[str, Any] = {
         "cityshade_version": __version__, "key": key, "params": params, "status": "running",
@@ -920,7 +952,15 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
                    "weight_h": s.weight_h} for s in steps],
         "finished_steps": [],
     }
+    if state.sha256 is not None:
+        manifest["state_sha256"] = [state.sha256]
     write_manifest(outdir, manifest)
+
+    def before_state_write(digest):
+        manifest["state_sha256"] = [h for h in (state.sha256, digest) if h is not None]
+        write_manifest(outdir, manifest)
+
+    state.before_write = before_state_write
     frames_dir = outdir / "frames"
     if frames:
         frames_dir.mkdir(exist_ok=True)
@@ -940,6 +980,8 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
         finished.extend(unit.steps)
         manifest["finished_steps"] = sorted(finished)
         manifest["sun_positions_done"] = done
+        if state.sha256 is not None:
+            manifest["state_sha256"] = [state.sha256]
         write_manifest(outdir, manifest)
         if on_step is not None:
             on_step(done, total, unit)
@@ -956,6 +998,8 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
                        samples_per_m2=samples_per_m2, checkpoint=state,
                        reuse_rays=settings.batch.reuse_rays, on_step=step_done,
                        on_frame=frame_done if frames else None)
+    if state_warning is not None:
+        result.warnings.insert(0, state_warning)
     if frames and below:
         from cityshade.imageio import mask_from_lit, write_mask_png
 

@@ -16,6 +16,7 @@ ground plane included.
 """
 from __future__ import annotations
 
+import os
 import time
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
@@ -79,6 +80,46 @@ class CameraPass:
                              settings=settings or ShadowSettings(), oriented_normal=self.normal)
 
 
+#: Peak bytes per pixel of a frame (G-buffer, float64 surfaces, oriented normals, shadow rays,
+#: shading and outputs): the figure issue 13 measured on the sample city (about 300).
+FRAME_BYTES_PER_PX = 300
+
+
+def available_memory_bytes() -> int | None:
+    """The memory the system can give without swapping (``MemAvailable``), None if unknown."""
+    try:
+        with open("/proc/meminfo", encoding="ascii") as fh:
+            for line in fh:
+                if line.startswith("MemAvailable:"):
+                    return int(line.split()[1]) * 1024
+    except (OSError, ValueError, IndexError):
+        pass
+    try:
+        return os.sysconf("SC_AVPHYS_PAGES") * os.sysconf("SC_PAGE_SIZE")
+    except (OSError, ValueError, AttributeError):
+        return None
+
+
+def check_frame_memory(camera: "Camera", available_bytes: int | None = None) -> int:
+    """The estimated peak bytes of a frame of ``camera``; refuse one that does not fit.
+
+    Raises
+    ------
+    UsageError
+        The estimate exceeds the available memory (the message gives both and the way out).
+    """
+    pixels = int(camera.width_px) * int(camera.height_px)
+    need = pixels * FRAME_BYTES_PER_PX
+    have = available_memory_bytes() if available_bytes is None else int(available_bytes)
+    if have is not None and need > have:
+        hint = ("a larger --pixel-size or a smaller map extent" if camera.kind == "map"
+                else "a smaller --size")
+        raise UsageError(f"the picture of {camera.width_px} × {camera.height_px} pixels needs "
+                         f"about {need / 1e9:.1f} GB ({FRAME_BYTES_PER_PX} bytes per pixel) "
+                         f"but {have / 1e9:.1f} GB are available: use {hint}")
+    return need
+
+
 def camera_pass(scene: "Scene", camera: "Camera", t_days: float, *, ground: str | None = None
                 ) -> CameraPass:
     """Rasterize, resolve, add the ground plane: the camera pass of a frame.
@@ -107,6 +148,7 @@ def camera_pass(scene: "Scene", camera: "Camera", t_days: float, *, ground: str 
         raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
     if not hasattr(camera, "kind"):
         raise ContractError(f"camera_pass needs a Camera, not {type(camera).__name__}")
+    check_frame_memory(camera)  # before any allocation
     t = time.perf_counter()
     gbuf = rasterize(scene, camera, float(t_days))
     gbuffer_s = time.perf_counter() - t

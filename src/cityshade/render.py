@@ -52,6 +52,22 @@ def city_time_range(scene) -> tuple[float, float] | None:
     return (float(np.min(scene.obj_t_begin_days)), float(np.max(scene.obj_t_end_days)))
 
 
+def only_terrain_stands(scene, t_days: float) -> bool:
+    """Whether terrain triangles are present at ``t_days`` and nothing else is."""
+    from cityshade.citygml.namespaces import SURFACE_CODE
+
+    t = float(t_days)
+    present = (np.asarray(scene.tri_t_begin_days) <= t) & (t < np.asarray(scene.tri_t_end_days))
+    terrain = np.asarray(scene.tri_class) == SURFACE_CODE["terrain"]
+    return bool((present & terrain).any()) and not bool((present & ~terrain).any())
+
+
+def _range_text(rng) -> str:
+    from cityshade.citygml.temporal import days_to_iso
+
+    return f"{days_to_iso(rng[0])} … {days_to_iso(rng[1])}"
+
+
 def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosition",
                  technique: str = "raytrace", settings: ShadowSettings | None = None,
                  sky: bool = True, ground: str | None = None) -> Frame:
@@ -85,11 +101,12 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
         warnings.append(f"the sun is at or below the horizon (elevation {sun.elevation_deg:g}°): "
                         f"everything is in shadow")
     rng = city_time_range(scene)
-    if rng is not None and not rng[0] <= t_days < rng[1]:
-        from cityshade.citygml.temporal import days_to_iso
-
-        warnings.append(f"the date is outside the model's time range "
-                        f"({days_to_iso(rng[0])} … {days_to_iso(rng[1])}): nothing stands then")
+    if only_terrain_stands(scene, t_days):
+        warnings.append("only terrain stands at this date: no building or other object is "
+                        "present then (`cityshade info` shows the model's time range)")
+    elif rng is not None and not rng[0] <= t_days < rng[1]:
+        warnings.append(f"the date is outside the model's time range ({_range_text(rng)}): "
+                        f"nothing stands then")
     cp = camera_pass(scene, camera, t_days, ground=ground)
     timings: dict[str, float] = dict(cp.timings_s)
     sp = shadow_pass(cp, sun, tech, settings)
@@ -143,6 +160,56 @@ def frame_metadata(frame: Frame, scene, date_text: str) -> dict[str, Any]:
     return meta
 
 
+#: The outputs of a frame: option, keyword of write_frame, allowed extensions.
+FRAME_OUTPUTS = (("-o", "exr", (".exr",)), ("--png", "png", (".png",)),
+                 ("--mask", "mask", (".png",)), ("--geotiff", "georef", (".tif", ".tiff")))
+
+
+def check_frame_outputs(camera_kind: str, **paths) -> None:
+    """Check every output of a frame before any work: extension, the map view for a
+    GeoTIFF, no two outputs on the same file, and
+    a writable folder (created when missing, as ``build`` does).
+
+    Raises
+    ------
+    UsageError
+        An extension, a GeoTIFF of a perspective view or a clash.
+    OutputError
+        A folder that cannot be created or written, or an output path that is a folder.
+    """
+    import os
+
+    from cityshade.errors import OutputError
+    from cityshade.util import make_folder
+
+    taken: dict[Path, str] = {}
+    for option, key, suffixes in FRAME_OUTPUTS:
+        path = paths.get(key)
+        if path is None:
+            continue
+        path = Path(path)
+        if path.suffix.lower() not in suffixes:
+            raise UsageError(f"{option} {path}: the file name must end in "
+                             f"{' or '.join(suffixes)}, not {path.suffix or '(nothing)'!r}")
+        if key == "georef" and camera_kind != "map":
+            raise UsageError("--geotiff needs the map view (--camera map): a perspective "
+                             "picture has no place on a map")
+        resolved = path.resolve()
+        if resolved in taken:
+            raise UsageError(f"{option} and {taken[resolved]} would both write {path}")
+        taken[resolved] = option
+        if path.is_dir():
+            raise OutputError(f"{option} {path} is a folder, not a file name", path=str(path))
+        existing = next(a for a in path.parents if a.exists())
+        if not existing.is_dir():
+            raise OutputError(f"{option} {path}: {existing} is a file, not a folder",
+                              path=str(path))
+        folder = make_folder(path.parent)
+        if not os.access(folder, os.W_OK):
+            raise OutputError(f"{option} {path}: the folder {folder} is not writable",
+                              path=str(path))
+
+
 def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
                 png: Path | None = None, mask: Path | None = None,
                 georef: Path | None = None) -> list[Path]:
@@ -150,6 +217,7 @@ def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
     from cityshade import imageio
     from cityshade.shading import to_srgb8
 
+    check_frame_outputs(frame.camera.kind, exr=exr, png=png, mask=mask, georef=georef)
     meta = frame_metadata(frame, scene, date_text)
     written = []
     s = frame.surfaces
@@ -158,7 +226,8 @@ def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
         channels = {
             "R": frame.rgb[..., 0], "G": frame.rgb[..., 1], "B": frame.rgb[..., 2],
             "shadow": frame.lit,
-            "Z": np.where(s.valid, frame.gbuffer.depth, np.inf).astype(np.float32),
+            # The resolved depth: the ground plane's pixels carry the plane's.
+            "Z": np.where(s.valid, s.depth, np.inf).astype(np.float32),
             "N.x": normal[..., 0], "N.y": normal[..., 1], "N.z": normal[..., 2],
             "primid": frame.gbuffer.prim_id, "objid": s.obj_id,
         }
@@ -174,8 +243,6 @@ def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
         imageio.write_mask_png(mask, mask_px, attributes=meta)
         written.append(Path(mask))
     if georef is not None:
-        if frame.camera.kind != "map":
-            raise UsageError("a georeferenced mask needs the map view (--camera map)")
         written += imageio.write_georeferenced(
             georef, mask_px, frame.camera.geotransform(scene.origin_m),
             epsg=scene.crs.horizontal_epsg, nodata=imageio.MASK_NODATA, attributes=meta)

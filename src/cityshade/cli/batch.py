@@ -5,8 +5,8 @@ from pathlib import Path
 
 import click
 
-from cityshade.cli.options import (camera_options, make_camera, parse_size, parse_triple,
-                                   shadow_options)
+from cityshade.cli.options import (camera_options, ground_option, make_camera, parse_size,
+                                   parse_triple, shadow_options)
 
 
 @click.command("batch")
@@ -28,8 +28,7 @@ from cityshade.cli.options import (camera_options, make_camera, parse_size, pars
               "change during a run.")
 @camera_options("map")
 @shadow_options("izb")
-@click.option("--ground", help="Ground plane where the model has no surface: min, auto or a "
-              "height in metres.")
+@ground_option
 @click.option("--no-refraction", is_flag=True, help="Geometric sun elevation (no refraction).")
 @click.option("--frames", is_flag=True, help="Also write every step's shadow mask (frames/).")
 @click.option("--surfaces", is_flag=True, help="Also write surfaces.csv: mean sun-hours of "
@@ -94,19 +93,30 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
         "every_day": every_day,
     }
     bar = None
+    lines = None
 
     def on_plan(todo):
-        nonlocal bar
-        if sys.stderr.isatty() and todo > 0:
+        nonlocal bar, lines
+        if todo > 0 and sys.stderr.isatty():
             bar = click.progressbar(length=todo, label="sun positions", show_eta=True,
                                     file=sys.stderr)
             bar.__enter__()
+        elif todo > 0:
+            from cityshade.cli.options import ProgressLines
+
+            lines = ProgressLines("sun positions")
+
+    def on_step(done, total, unit):
+        if bar is not None:
+            bar.update(1)
+        elif lines is not None:
+            lines(done, total)
 
     try:
         run = B.run_batch(outdir, scene, cam, steps, city.city_days, request=request,
                           technique=technique, settings=settings, ground=ground, frames=frames,
                           surfaces_csv=surfaces, overwrite=overwrite, on_plan=on_plan,
-                          on_step=lambda done, total, unit: bar is not None and bar.update(1))
+                          on_step=on_step)
     finally:
         if bar is not None:
             bar.__exit__(None, None, None)

@@ -6,20 +6,24 @@ from pathlib import Path
 
 import click
 
-from cityshade.cli.options import crs_option, shadow_options
+from cityshade.cli.options import crs_option, ground_option, shadow_options
 
 
 class _Bar:
-    """A one-line progress bar on a terminal's stderr (silent when stderr is not a terminal)."""
+    """A one-line progress bar on a terminal's stderr; plain progress lines otherwise."""
 
     WIDTH = 30
 
     def __init__(self, enabled: bool | None = None):
+        from cityshade.cli.options import ProgressLines
+
         self.enabled = sys.stderr.isatty() if enabled is None else enabled
         self.shown = False
+        self.lines = ProgressLines("evaluate")
 
     def __call__(self, done: int, total: int, label: str) -> None:
         if not self.enabled:
+            self.lines(done, total, label[:60])
             return
         fill = int(self.WIDTH * done / max(total, 1))
         sys.stderr.write(f"\r\033[K[{'#' * fill}{'.' * (self.WIDTH - fill)}] {done}/{total}  "
@@ -65,8 +69,7 @@ def _int_list(text: str, what: str) -> tuple[int, ...]:
               "map view (default: fits 2048 px).")
 @click.option("--cameras", "cameras_file", type=click.Path(dir_okay=False),
               help="TOML file of more camera presets for --views.")
-@click.option("--ground", help="Ground plane where the model has no surface, as for render: "
-              "min, auto or a height in metres.")
+@ground_option
 @click.option("--repeat", type=click.IntRange(1, 100), help="Timed runs after the warm-up run "
               "(median reported; default 3 or [evaluate] repeat).")
 @click.option("--stress", is_flag=True, help="Run the fixed stress set and check its invariants "
@@ -94,7 +97,9 @@ def evaluate(file, views, sun_text, date_text, times, tz, settings, sizes, size,
         from cityshade.util import make_folder, write_text_atomic
 
         stress_settings = StressSettings.quick_set() if quick else settings.stress
-        if ground is not None:
+        # The stress set has its own cases with and without ground; only an explicit
+        # --ground replaces them.
+        if click.get_current_context().get_parameter_source("ground").name != "DEFAULT":
             stress_settings = dataclasses.replace(stress_settings, ground=ground)
         try:
             report = run_stress(file, stress_settings, progress=bar,

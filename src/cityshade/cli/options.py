@@ -270,6 +270,9 @@ def shadow_options(default_technique: str, *, technique_help: str | None = None,
             if kwargs.pop("smooth") and not technique.endswith("+smooth"):
                 technique += "+smooth"
             flags = {k: kwargs.pop(k, None) for k in _SHADOW_FLAGS}
+            for flag in inapplicable_flags(technique, flags):
+                click.echo(f"cityshade: warning: --{flag.replace('_', '-')} does not apply to "
+                           f"--shadows {technique}; ignored", err=True)
             shadows = dataclasses.replace(settings.shadows.override(**flags),
                                           technique=technique)
             kwargs["settings"] = dataclasses.replace(settings, shadows=shadows)
@@ -302,7 +305,76 @@ def shadow_options(default_technique: str, *, technique_help: str | None = None,
     return decorate
 
 
+def _flag_applies(flag: str, name: str) -> bool:
+    """Whether a tunable of ``[shadows]`` changes technique ``name`` (without +smooth)."""
+    if name in ("all", ""):
+        return True
+    if flag == "cascades":
+        return "csm" in name
+    if flag == "pcf_kernel":
+        return "pcf" in name
+    if flag == "vsm_blur":
+        return "vsm" in name or name == "hybrid"  # hybrid's default base is vsm
+    return name not in ("raytrace", "izb")  # the map's size and biases: every map technique
+
+
+def inapplicable_flags(technique: str, flags: dict) -> list[str]:
+    """The shadow flags given (not None) that apply to none of the comma-separated techniques."""
+    names = [n.strip().removesuffix("+smooth") for n in str(technique).split(",")]
+    return [flag for flag, value in flags.items() if value is not None
+            and not any(_flag_applies(flag, n) for n in names)]
+
+
+class ProgressLines:
+    """Progress for a stderr that is not a terminal (a log, CI): one plain line every
+    ``every_s`` seconds or every tenth of the work, whichever comes first."""
+
+    def __init__(self, label: str, every_s: float = 10.0, clock=None):
+        import time
+
+        self.label = label
+        self.every_s = float(every_s)
+        self.clock = clock or time.monotonic
+        self.last_t = self.clock()
+        self.last_tenth = 0
+
+    def __call__(self, done: int, total: int, what: str = "") -> None:
+        now = self.clock()
+        tenth = 10 * done // max(total, 1)
+        if tenth > self.last_tenth or now - self.last_t >= self.every_s:
+            self.last_t, self.last_tenth = now, tenth
+            click.echo(f"cityshade: {self.label} {done}/{total} ({100 * done // max(total, 1)} %)"
+                       + (f" {what}" if what else ""), err=True)
+
+
+# --- the ground plane option of render, batch and evaluate -------------------------------------
+
+GROUND_HELP = ("Ground plane where the model shows no surface, so cast shadows fall on "
+               "something: auto (the typical ground level, the median of the objects' lowest "
+               "points), min (the lowest point), a height in metres, or none.")
+
+
+def _ground_value(ctx, param, value):
+    """'none' switches the plane off (None for the library); other values are checked there."""
+    return None if value is None or value.strip().lower() == "none" else value.strip()
+
+
+def ground_option(func):
+    """--ground, default auto (DESIGN §14: most real files carry no terrain)."""
+    return click.option("--ground", default="auto", show_default=True, callback=_ground_value,
+                        help=GROUND_HELP)(func)
+
+
 # --- camera options shared by render, batch and evaluate ---------------------------------------
+
+def _preset_names() -> list[str]:
+    from cityshade.raster.camera import BUILTIN_PRESETS
+
+    return [n for n in BUILTIN_PRESETS if n != "overview"]
+
+
+_PRESET_NAMES = _preset_names()
+
 
 def camera_options(default_camera: str):
     """Decorator adding --camera, --eye, --target, --fov, --size, --pixel-size and
@@ -310,8 +382,8 @@ def camera_options(default_camera: str):
     def decorate(func):
         for option in reversed([
             click.option("--camera", default=default_camera, show_default=True,
-                         help="overview, map, or a preset of configs/cameras.toml or of "
-                              "--cameras."),
+                         help=f"overview, map, or a preset: {', '.join(_PRESET_NAMES)} "
+                              f"(configs/cameras.toml) or one of --cameras."),
             click.option("--eye", help="Camera position X,Y,Z in the model CRS (metres); "
                          "with --target."),
             click.option("--target", help="Point looked at, X,Y,Z in the model CRS (metres)."),

@@ -5,8 +5,8 @@ from pathlib import Path
 
 import click
 
-from cityshade.cli.options import (camera_options, make_camera, parse_size, parse_triple,
-                                   shadow_options)
+from cityshade.cli.options import (camera_options, ground_option, make_camera, parse_size,
+                                   parse_triple, shadow_options)
 
 
 @click.command("render")
@@ -31,8 +31,7 @@ from cityshade.cli.options import (camera_options, make_camera, parse_size, pars
               help="8-bit shadow mask PNG: 255 sun, 0 shadow, 128 no surface.")
 @click.option("--geotiff", type=click.Path(dir_okay=False, path_type=Path),
               help="Map view: georeferenced mask (TIFF + world file + .prj) for QGIS/GDAL.")
-@click.option("--ground", help="Add a ground plane where the model has no surface: min (lowest "
-              "point), auto (typical ground level) or a height in metres.")
+@ground_option
 @click.option("--no-sky", is_flag=True, help="Black background instead of the sky gradient.")
 @click.option("-v", "--verbose", is_flag=True, help="Stage timings and technique diagnostics.")
 def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_elevation, camera,
@@ -57,6 +56,9 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     get_technique(technique)  # unknown names fail before any work
     if (sun_azimuth is None) != (sun_elevation is None):
         raise UsageError("give both --sun-azimuth and --sun-elevation")
+    if sun_azimuth is not None and time_text is not None:
+        raise UsageError("--time computes the sun for the model's place and --sun-azimuth/"
+                         "--sun-elevation give it: use one or the other")
     if (eye is None) != (target is None):
         raise UsageError("give both --eye and --target, or neither")
     parse_triple(eye, "--eye"), parse_triple(target, "--target"), parse_size(size)  # fail early
@@ -73,6 +75,9 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     for warning in user_date.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
     cam = make_camera(scene, camera, eye, target, fov, size, pixel_size, cameras_file)
+    from cityshade.render import check_frame_outputs
+
+    check_frame_outputs(cam.kind, exr=output, png=png, mask=mask, georef=geotiff)  # before work
     if sun_azimuth is not None:
         sun = sun_from_angles(sun_azimuth, sun_elevation, scene.crs, scene.origin_m)
     else:
