@@ -4,6 +4,7 @@ build, a render and a batch."""
 from __future__ import annotations
 
 import os
+import re
 import signal
 import subprocess
 import sys
@@ -43,8 +44,10 @@ def _check(rc, err, folder):
     assert not leftovers, f"partial files left: {leftovers}"
     assert rc in (0, 130), f"exit status {rc}: {err}"
     if rc == 130:
+        # Warnings and the progress lines of a non-terminal stderr may precede the last line.
         lines = [line for line in err.splitlines()
-                 if line.strip() and not line.startswith("cityshade: warning:")]
+                 if line.strip() and not line.startswith("cityshade: warning:")
+                 and not re.fullmatch(r"cityshade: .* \d+/\d+ \(\d+ %\).*", line)]
         assert lines == ["cityshade: interrupted"], err
     return rc == 130
 

@@ -657,15 +657,23 @@ def _f32_outward(values: np.ndarray, down: bool) -> np.ndarray:
     return f.astype(np.float64)
 
 
+@njit(cache=True)
+def _task_arrays(task_ids, task_lo, task_hi, task_blo, task_bhi, k):
+    """Task k's arrays out of the kernel's typed lists. Indexing a typed list from Python
+    compiles its accessors anew in every process (about a second, uncached); this cached
+    kernel does not."""
+    return task_ids[k], task_lo[k], task_hi[k], task_blo[k], task_bhi[k]
+
+
 def _build_subtrees(tri_v, material, tasks, constants, root_surface) -> list[tuple]:
     """Build every deferred subtree (largest first, one per Numba thread at a time); the
     results are kept by task index, so their order never depends on the threads."""
     import numba
 
     task_ids, task_lo, task_hi, task_blo, task_bhi, task_depth = tasks
-    n_tasks = len(task_ids)
-    inputs = [(task_ids[k], task_lo[k], task_hi[k], task_blo[k], task_bhi[k], int(task_depth[k]))
-              for k in range(n_tasks)]
+    n_tasks = len(task_depth)
+    inputs = [(*_task_arrays(task_ids, task_lo, task_hi, task_blo, task_bhi, k),
+               int(task_depth[k])) for k in range(n_tasks)]
     results: list[tuple | None] = [None] * n_tasks
 
     def build(k: int) -> None:
