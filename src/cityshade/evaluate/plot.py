@@ -69,7 +69,7 @@ def error_time_plot(entries: Sequence[dict], title: str = "") -> np.ndarray | No
     (640, 1100, 3) uint8, or None without matplotlib
         x: shadow-stage time in ms, y: misclassified pixels in %; points with no error sit on
         a "0" row below the lowest decade; marker colour = base technique, shape = plain (o),
-        smoothed (square), hybrid (triangle), raytrace (diamond), size grows with the map; the
+        smoothed (square), hybrid (triangle), exact techniques (diamond), size grows with the map; the
         Pareto front is the black staircase.
     """
     if not have_matplotlib():
@@ -116,11 +116,11 @@ def error_time_plot(entries: Sequence[dict], title: str = "") -> np.ndarray | No
     if title:
         ax.set_title(title)
     seen = list(dict.fromkeys(base_technique(e["technique"]) for e in pts))
-    handles = [Line2D([], [], ls="", marker="D" if b == "raytrace" else "o", ms=8, mec="black",
+    handles = [Line2D([], [], ls="", marker=_marker(b), ms=8, mec="black",
                       mfc=tuple(c / 255.0 for c in technique_colour(b)), label=b) for b in seen]
     handles += [Line2D([], [], ls="", marker=m, ms=8, mec="black", mfc="white", label=label)
                 for m, label in (("o", "plain"), ("s", "+smooth"), ("^", "hybrid:base"),
-                                 ("D", "raytrace"))]
+                                 ("D", "exact"))]
     handles.append(Line2D([], [], color="black", lw=2, label="Pareto front"))
     fig.legend(handles=handles, loc="upper left", bbox_to_anchor=(0.76, 0.9), frameon=False,
                title="colour: base technique\nbigger marker: bigger map")
