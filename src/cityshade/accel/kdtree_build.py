@@ -405,6 +405,17 @@ def _grow(a, n):
     return b
 
 
+@njit(cache=True, inline="always")
+def _push_node(l_ids, l_lo, l_hi, l_blo, l_bhi, ids, lo, hi, blo, bhi):
+    """Append one node's arrays (reference ids, their boxes, the node box) to the five lists of
+    a stack or of the deferred tasks."""
+    l_ids.append(ids)
+    l_lo.append(lo)
+    l_hi.append(hi)
+    l_blo.append(blo)
+    l_bhi.append(bhi)
+
+
 @njit(cache=True, nogil=True)
 def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t0, t1,
                   ct, ci, bonus, max_depth, min_leaf, sweep_threshold, nbins, depth0,
@@ -446,11 +457,8 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
     st_bhi = List()
     st_depth = np.empty(4 * MAX_DEPTH_LIMIT + 8, np.int64)
     st_parent = np.empty(4 * MAX_DEPTH_LIMIT + 8, np.int64)
-    st_ids.append(ids0)
-    st_lo.append(lo0)
-    st_hi.append(hi0)
-    st_blo.append(root_lo.copy())
-    st_bhi.append(root_hi.copy())
+    _push_node(st_ids, st_lo, st_hi, st_blo, st_bhi, ids0, lo0, hi0, root_lo.copy(),
+               root_hi.copy())
     st_depth[0] = depth0
     st_parent[0] = -1
     sp = 1
@@ -496,11 +504,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
             node_child[node] = 0
             node_first[node] = n_tasks
             node_split[node] = 0.0
-            task_ids.append(ids)
-            task_lo.append(lo)
-            task_hi.append(hi)
-            task_blo.append(blo)
-            task_bhi.append(bhi)
+            _push_node(task_ids, task_lo, task_hi, task_blo, task_bhi, ids, lo, hi, blo, bhi)
             task_depth = _grow(task_depth, n_tasks + 1)
             task_depth[n_tasks] = depth
             n_tasks += 1
@@ -617,19 +621,11 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         node_split[node] = p
         node_first[node] = 0
         # Push the right child first so the left child is emitted next, at node + 1.
-        st_ids.append(ids_r)
-        st_lo.append(lo_r)
-        st_hi.append(hi_r)
-        st_blo.append(blo_r)
-        st_bhi.append(bhi_r)
+        _push_node(st_ids, st_lo, st_hi, st_blo, st_bhi, ids_r, lo_r, hi_r, blo_r, bhi_r)
         st_depth[sp] = depth + 1
         st_parent[sp] = node
         sp += 1
-        st_ids.append(ids_l)
-        st_lo.append(lo_l)
-        st_hi.append(hi_l)
-        st_blo.append(blo_l)
-        st_bhi.append(bhi_l)
+        _push_node(st_ids, st_lo, st_hi, st_blo, st_bhi, ids_l, lo_l, hi_l, blo_l, bhi_l)
         st_depth[sp] = depth + 1
         st_parent[sp] = -1
         sp += 1
