@@ -922,9 +922,10 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
     tile_px : int, optional
         Split the receivers into tiles of this many pixels a side (:mod:`cityshade.tiles`);
         the result is identical.
-    scheduler : str, optional
+    scheduler : str or cityshade.distributed.DaskExecutor, optional
         ``local[:N]`` or ``tcp://HOST:PORT``: run the tasks on Dask (:mod:`cityshade.distributed`);
-        needs ``scene_path``, which every worker memory-maps.
+        needs ``scene_path``, which every worker memory-maps. An executor object is used as
+        it is (e.g. with another number of threads per worker).
     step_month : sequence of str, optional
         A month label per step: also write per-month sun-hours (``monthly/``).
 

@@ -337,7 +337,8 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
     instants = list(instants_utc)
     weights = _weights(instants, weights_h)
     suns = list(suns)
-    timings = dict.fromkeys(("suns_s", "camera_s", "samples_s", "shadow_s", "checkpoint_s"), 0.0)
+    timings = dict.fromkeys(("suns_s", "camera_s", "samples_s", "shadow_s", "accumulate_s",
+                             "checkpoint_s"), 0.0)
     warnings: list[str] = []
     units, below, duplicates = plan_run(scene, instants, t_days, suns, weights, warnings)
     months, unit_w = unit_month_weights(units, weights, step_month)
@@ -391,7 +392,9 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
         pending[t][lo] = bits
         while int(state.tile_done[t]) in pending[t]:
             start = int(state.tile_done[t])
+            t0 = time.perf_counter()
             add(t, start, pending[t].pop(start))
+            timings["accumulate_s"] += time.perf_counter() - t0
             done_tasks += 1
             now_done = int(state.tile_done.min())
             newly = list(range(finished_units, now_done))
