@@ -31,10 +31,7 @@ from __future__ import annotations
 import argparse
 import hashlib
 import json
-import os
-import platform
 import statistics
-import subprocess
 import sys
 import tempfile
 import time
@@ -42,17 +39,12 @@ from datetime import date
 from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from render import _commit, _machine  # noqa: E402  (the benchmarks' shared provenance)
+
 BENCH = Path("/work/bench_data")
 DAY_2000 = 10957.0  # 2000-01-01 in days since 1970-01-01
 ALL_RUNS = ("plain-1t", "plain-2t", "tiled-1t", "local:1", "local:2")
-
-
-def _commit() -> str:
-    try:
-        return subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=REPO, text=True,
-                              capture_output=True, check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
 
 
 def _default_scene() -> Path:
@@ -133,12 +125,12 @@ def main(argv=None) -> dict:
     med = {n: statistics.median(r["wall_s"] for r in rs) for n, rs in results.items()}
     any_run = next(iter(results.values()))[0]
     px_steps = any_run["pixels"] * any_run["units"]
-    out = {"commit": _commit(), "python": platform.python_version(), "scene": str(scene_path),
+    out = {"commit": _commit(), "scene": str(scene_path),
            "triangles": scene.n_triangles, "pixel_size_m": args.pixel_size,
            "map_px": [cam.width_px, cam.height_px], "surface_px": any_run["pixels"],
            "sun_positions": any_run["units"], "tile_px": args.tile_px,
            "identical_in_all_runs": len(digests) == 1, "median_wall_s": med,
-           "runs": results, "cpu_count": os.cpu_count()}
+           "runs": results, "machine": _machine()}
     if "local:1" in med and "tiled-1t" in med:
         out["dask_overhead_vs_tiled"] = med["local:1"] / med["tiled-1t"] - 1.0
     if "local:1" in med and "plain-1t" in med:
