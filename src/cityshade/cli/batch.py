@@ -164,6 +164,14 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
                    f"{result.steps_duplicate} sharing a sun position), {result.units} sun "
                    f"positions computed, {result.units_resumed} taken from the saved state",
                    err=True)
+        tiles = result.diagnostics.get("tiles")
+        if tiles:
+            click.echo(f"tiles    {tiles['tiles']} of {tiles['tile_px'] or 'all'} px, "
+                       f"{tiles['tasks']} tasks of {tiles['sun_positions_per_task']} sun "
+                       f"positions, {tiles['receivers']:,} receivers, shadow reach "
+                       f"{tiles['halo_m']:.0f} m"
+                       + (f", {tiles['workers']} Dask workers ({tiles['scheduler']})"
+                          if tiles.get("scheduler") else ""), err=True)
         up = [s for s in run.suns if s.above_horizon] or run.suns
         for label, s in (("first", up[0]), ("last", up[-1])):
             click.echo(f"{label:<8} {s.instant_utc} UTC: azimuth {s.azimuth_true_deg:.3f}° "
