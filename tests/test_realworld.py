@@ -588,8 +588,10 @@ def test_progress_lines_every_tenth_or_ten_seconds(capsys):
         lines(done, 1000)
     seen = capsys.readouterr().err.splitlines()
     # 10 % is step 100; before step 50 nothing, then a line every step (each takes 30 s).
-    assert seen[0] == "cityshade: steps 50/1000 (5 %)" and len(seen) == 51
-    assert seen[-1] == "cityshade: steps 100/1000 (10 %)"
+    # The ETA: the time per step since the first call times the steps left (at step 50:
+    # 30.48 s / 49 steps × 950 steps = 590.9 s).
+    assert seen[0] == "cityshade: steps 50/1000 (5 %, ETA 0:09:50)" and len(seen) == 51
+    assert seen[-1] == "cityshade: steps 100/1000 (10 %, ETA 3:51:53)"
 
 
 def test_batch_prints_progress_lines_when_stderr_is_not_a_terminal(tmp_path):

@@ -335,16 +335,25 @@ class ProgressLines:
         self.label = label
         self.every_s = float(every_s)
         self.clock = clock or time.monotonic
-        self.last_t = self.clock()
+        self.last_t = self.start_t = self.clock()
         self.last_tenth = 0
+        self.first_done: int | None = None
 
     def __call__(self, done: int, total: int, what: str = "") -> None:
         now = self.clock()
+        if self.first_done is None:
+            # Work taken from a saved state does not count for the rate.
+            self.first_done, self.start_t = done, now
         tenth = 10 * done // max(total, 1)
         if tenth > self.last_tenth or now - self.last_t >= self.every_s:
             self.last_t, self.last_tenth = now, tenth
-            click.echo(f"cityshade: {self.label} {done}/{total} ({100 * done // max(total, 1)} %)"
-                       + (f" {what}" if what else ""), err=True)
+            eta = ""
+            if done > self.first_done and done < total:
+                left_s = (now - self.start_t) / (done - self.first_done) * (total - done)
+                eta = f", ETA {int(left_s) // 3600}:{int(left_s) % 3600 // 60:02d}:" \
+                      f"{int(left_s) % 60:02d}"
+            click.echo(f"cityshade: {self.label} {done}/{total} ({100 * done // max(total, 1)} %"
+                       f"{eta})" + (f" {what}" if what else ""), err=True)
 
 
 # --- the ground plane option of render, batch and evaluate -------------------------------------
