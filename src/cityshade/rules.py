@@ -266,11 +266,14 @@ def evaluate(rule: Rule, after: Measures, before: Measures | None = None) -> Ver
     # Point rules: every receiver on its own.
     details = []
     n_ok = 0
+    relative_only = rule.min_hours <= 0.0 and rule.relative is not None
     for i in range(value_a.size):
         va = float(value_a[i])
         row: dict[str, Any] = {"receiver": after.labels[i] if i < len(after.labels) else str(i),
                                "after_h": va}
-        ok = bool(_meets(np.array([va]), rule.min_hours)[0])
+        # Without an absolute threshold (min_hours 0, e.g. BRE's APSH test whose absolute part
+        # needs data we lack) only the relative test decides.
+        ok = not relative_only and bool(_meets(np.array([va]), rule.min_hours)[0])
         if rule.levels:
             row["grade"] = _grade(va, rule.levels)
         if value_b is not None:
@@ -280,16 +283,22 @@ def evaluate(rule: Rule, after: Measures, before: Measures | None = None) -> Ver
                 row["ratio"] = va / vb if vb > 0 else math.inf
                 if not ok:
                     ok = va >= rule.relative * vb - _EPS_H
+        elif relative_only:
+            ok = True  # nothing to compare with
         row["status"] = "pass" if ok else "fail"
         n_ok += ok
         details.append(row)
     n = value_a.size
     status = "pass" if n_ok == n else "fail"
-    if needs and rule.receivers != "area" and rule.min_hours == 0:
-        status = "not assessed"
-    text = f"{n_ok} of {n} receivers reach ≥ {rule.min_hours:g} h ({what})"
-    if rule.relative is not None and value_b is not None:
-        text += f" or keep ≥ {rule.relative:g} × their former value"
+    if relative_only:
+        text = (f"{n_ok} of {n} receivers keep ≥ {rule.relative:g} × their former {what}")
+        if needs:
+            status = "not assessed"
+            text += " (an indication only: the rule's own test is not assessed, see below)"
+    else:
+        text = f"{n_ok} of {n} receivers reach ≥ {rule.min_hours:g} h ({what})"
+        if rule.relative is not None and value_b is not None:
+            text += f" or keep ≥ {rule.relative:g} × their former value"
     return Verdict(rule, status, text, {"receivers": n, "passing": n_ok,
                                         "min_hours": rule.min_hours}, details, needs)
 
