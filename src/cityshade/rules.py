@@ -208,7 +208,7 @@ class Verdict:
     not_assessed: tuple[str, ...] = ()
 
 
-# Hours are compared with a tolerance of 1 µs: sums of step weights (e.g. twelve 10-minute steps)
+# Hours are compared with a tolerance of 1e-9 h (3.6 µs): sums of step weights (e.g. six 20-minute steps)
 # are not exact in binary, and a receiver with exactly 2 h of sun must meet a 2 h threshold.
 _EPS_H = 1e-9
 

@@ -182,6 +182,8 @@ def _run_rule(rule, scene, scene_after, before, after, year, tz, every_text, cam
     """The rule's own day, window and receivers, before and after → its verdict."""
     import dataclasses
 
+    import numpy as np
+
     from cityshade.cli.options import solar_zone_of_scene
     from cityshade.raster.camera import map_view
     from cityshade.sun import suns_from_instants
@@ -198,6 +200,16 @@ def _run_rule(rule, scene, scene_after, before, after, year, tz, every_text, cam
         # Below the rule's minimum altitude the sun does not count: such steps are sun-down.
         suns = [s if s.elevation_deg >= rule.min_elevation_deg else
                 dataclasses.replace(s, elevation_deg=min(s.elevation_deg, 0.0)) for s in suns]
+    polygons = R.receiver_polygons(rule, scene)
+    if polygons is not None:
+        if rule.receivers == "openings":
+            polygons = polygons & np.isin(np.arange(len(polygons)), [
+                p for o in C.openings_of(scene) for p in o.polygons])
+        if not polygons.any():
+            kind = "windows or doors (LoD3 openings)" if rule.receivers == "openings" else \
+                f"surfaces of class {', '.join(rule.classes)}"
+            return R.Verdict(rule, "not assessed", f"the model has no {kind}",
+                             not_assessed=rule.not_assessed)
     camera = None
     if rule.receivers == "area":
         box = R.area_bbox(rule) or area
@@ -215,7 +227,7 @@ def _run_rule(rule, scene, scene_after, before, after, year, tz, every_text, cam
         technique=technique, settings=settings, ground=ground, suns=suns,
         samples_per_m2=settings.batch.samples_per_m2 if rule.receivers == "surfaces" else None,
         opening_samples_per_m2=0.0 if rule.receivers == "area" else C.OPENING_SAMPLES_PER_M2,
-        polygons=R.receiver_polygons(rule, scene), min_stretch_h=rule.min_stretch_h)
+        polygons=polygons, min_stretch_h=rule.min_stretch_h)
     m_before, m_after = R.measures_from(rule, comp)
     verdict = R.evaluate(rule, m_after, m_before)
     verdict.numbers["steps"] = len(steps)
