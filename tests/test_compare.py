@@ -350,3 +350,28 @@ def test_compare_between_two_dates_is_the_difference_of_two_batch_runs(sample_ci
     both = b.samples.sampled & a.samples.sampled
     assert both.sum() > 100
     assert np.array_equal(comp.polygon_after_h[both], a.polygon_hours[both])
+
+
+def test_merge_scenes_keeps_the_existing_indices_and_refuses_another_crs(tmp_path):
+    from cityshade.compare import merge_scenes, openings_of
+    from cityshade.errors import UsageError
+
+    shed = building("SHED", box_polygons(20.0, 20.0, 0.0, 2.0, 2.0, 2.0, "s"))  # with a srsName
+    existing = _build(tmp_path, city(_window_building(), shed), "a.gml")
+    far = building("P", box_polygons(500.0, 800.0, 0.0, 10.0, 10.0, 10.0, "q"))
+    proposal = _build(tmp_path, city(far), "b.gml")
+    merged = merge_scenes(existing, proposal)
+    n_poly, n_tri = len(existing.poly_ids), existing.n_triangles
+    assert merged.poly_ids[:n_poly] == existing.poly_ids
+    assert merged.obj_ids == ["HOUSE", "SHED", "P"]
+    assert np.array_equal(merged.triangles[:n_tri], existing.triangles)
+    assert np.array_equal(merged.tri_polygon[n_tri:], np.asarray(proposal.tri_polygon) + n_poly)
+    # The proposal's points land where they are in the CRS.
+    xyz = np.asarray(merged.vertices, np.float64)[merged.triangles[n_tri:]].reshape(-1, 3) \
+        + merged.origin_m
+    assert xyz[:, 0].min() == 500.0 and xyz[:, 1].max() == 810.0
+    assert merged.kdtree is not None
+    assert [o.opening_id for o in openings_of(merged)] == ["WIN"]
+    other = _build(tmp_path, city(far.replace("EPSG:25832", "EPSG:25833")), "c.gml")
+    with pytest.raises(UsageError, match="not the model's"):
+        merge_scenes(existing, other)
