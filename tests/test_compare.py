@@ -375,3 +375,22 @@ def test_merge_scenes_keeps_the_existing_indices_and_refuses_another_crs(tmp_pat
     other = _build(tmp_path, city(far.replace("EPSG:25832", "EPSG:25833")), "c.gml")
     with pytest.raises(UsageError, match="not the model's"):
         merge_scenes(existing, other)
+
+
+@pytest.mark.shared
+def test_fzk_haus_citygml3_openings_are_windows_and_doors_with_their_ids():
+    """CityGML 3.0 con:WindowSurface/con:DoorSurface (filling surfaces of the walls) were read
+    as walls before; each is now an opening of its own, named by its gml:id."""
+    from conftest import shared_file
+
+    from cityshade.build import build_scene_from_file
+    from cityshade.compare import openings_of
+
+    scene = build_scene_from_file(
+        shared_file("fzk-haus/citygml3.0/FZK-Haus-LoD3-KIT-IAI-KHH-B36-V1__v3.gml"))
+    openings = {o.opening_id: o for o in openings_of(scene)}
+    assert sorted(o.surface_class for o in openings.values()) == ["door"] * 2 + ["window"] * 11
+    # gml:name "Window South" (it sits in the west wall, x = 457842.12) and "Door West".
+    assert openings["GML_9e0e6137-a907-4e4b-bc30-a6b95641f4c0"].surface_class == "window"
+    assert openings["GML_c137f11d-9a8c-4126-9aeb-9a6c9b4e1cbd"].surface_class == "door"
+    assert all(len(o.polygons) == 1 for o in openings.values())
