@@ -568,3 +568,31 @@ def reference_nearest_feature_distance2(feature):
     rows, cols = np.mgrid[0:h, 0:w]
     d2 = (rows[..., None] - fr) ** 2 + (cols[..., None] - fc) ** 2
     return d2.min(axis=-1).astype(np.int64)
+
+
+# --- runs (continuous sunshine) ---------------------------------------------------------------
+
+def reference_stretches(lit_steps, starts_s, ends_s, min_stretch_h=0.0):
+    """Longest stretch and hours in stretches >= ``min_stretch_h`` per receiver, by listing the
+    stretches: maximal runs of lit steps, each step starting where the previous one ended.
+
+    lit_steps : (S, N) bool in time order; starts_s, ends_s : (S,) seconds.
+    """
+    lit_steps = np.asarray(lit_steps, bool)
+    n_steps, n = lit_steps.shape
+    longest = np.zeros(n)
+    qualified = np.zeros(n)
+    for r in range(n):
+        stretches = []
+        for s in range(n_steps):
+            if not lit_steps[s, r]:
+                continue
+            w = (ends_s[s] - starts_s[s]) / 3600.0
+            continues = s > 0 and lit_steps[s - 1, r] and starts_s[s] == ends_s[s - 1]
+            if continues:
+                stretches[-1] += w
+            else:
+                stretches.append(w)
+        longest[r] = max(stretches, default=0.0)
+        qualified[r] = sum(x for x in stretches if x >= min_stretch_h)
+    return longest, qualified

@@ -264,6 +264,9 @@ class Checkpoint:
         # Called with the new state's checksum before it replaces the old one (run_batch records
         # both in the manifest, so an interruption between the two writes loses nothing).
         self.before_write: Callable[[str], None] | None = None
+        # Further arrays of the run (the sunlit stretches, :mod:`cityshade.runs`), saved with
+        # the sums under ``x_`` names and read back by :meth:`load`.
+        self.extra: dict[str, np.ndarray] = {}
 
     def load(self, n_units: int, pixel_shape, n_samples: int):
         """``(units_done, pixel_sum, sample_sum)`` of a saved state, or None when there is none.
@@ -282,6 +285,7 @@ class Checkpoint:
                 done = int(z["units_done"])
                 pixel_sum = np.array(z["pixel_sum"], dtype=np.float64)
                 sample_sum = np.array(z["sample_sum"], dtype=np.float64)
+                self.extra = {n[2:]: np.array(z[n]) for n in z.files if n.startswith("x_")}
         except (OSError, ValueError, KeyError, zipfile.BadZipFile) as exc:
             raise UsageError(f"the saved state {self.path} is damaged ({exc}); {hint}") from None
         if key != self.key:
@@ -308,9 +312,12 @@ class Checkpoint:
         except FileNotFoundError:
             return None
 
-    def save(self, units_done: int, pixel_sum: np.ndarray, sample_sum: np.ndarray) -> None:
-        """Write the state to a temporary name and rename it over the previous one."""
-        self.save_arrays(units_done, pixel_sum=pixel_sum, sample_sum=sample_sum)
+    def save(self, units_done: int, pixel_sum: np.ndarray, sample_sum: np.ndarray,
+             extra: dict[str, np.ndarray] | None = None) -> None:
+        """Write the state (and ``extra`` arrays) to a temporary name and rename it over the
+        previous one."""
+        self.save_arrays(units_done, pixel_sum=pixel_sum, sample_sum=sample_sum,
+                         **{f"x_{k}": v for k, v in (extra or {}).items()})
 
     def save_arrays(self, units_done: int, **arrays: np.ndarray) -> None:
         """:meth:`save` with other arrays (a tiled run's, :mod:`cityshade.tiles`)."""
@@ -380,6 +387,8 @@ class SunHours:
     timings_s: dict[str, float] = field(default_factory=dict)
     diagnostics: dict[str, Any] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    #: The sunlit stretches (:class:`cityshade.runs.Stretches`) when asked for, else None.
+    stretches: Any = None
 
 
 class _PixelRays:
@@ -493,8 +502,8 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
               ground: str | None = None, spa=None, suns: Sequence | None = None,
               samples_per_m2: float | None = None, checkpoint: Checkpoint | None = None,
               reuse_rays: bool = True, on_step: Callable[[int, int, Unit], None] | None = None,
-              on_frame: Callable[[Unit, np.ndarray, np.ndarray], None] | None = None
-              ) -> SunHours:
+              on_frame: Callable[[Unit, np.ndarray, np.ndarray], None] | None = None,
+              samples=None, stretches=None) -> SunHours:
     """Sun-hours per pixel of a fixed camera (and per surface) over many sun positions.
 
     Parameters
@@ -536,6 +545,12 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
         here, e.g. KeyboardInterrupt, stops the run with the state saved).
     on_frame : callable(unit, lit, valid), optional
         Receives each position's per-pixel lit fraction (for ``--frames``).
+    samples : cityshade.surfaces.SurfaceSamples, optional
+        Surface samples to use instead of sampling at ``samples_per_m2`` (the same receivers
+        in two runs, e.g. ``compare``).
+    stretches : cityshade.runs.Stretches, optional
+        Also keep every receiver's sunlit stretches (continuous sunshine) over the steps,
+        which must be the instants' steps; returned as ``result.stretches``.
 
     Returns
     -------
@@ -562,7 +577,7 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
             raise UsageError(f"instants must be aware datetimes, not {t!r}")
     if math.isnan(float(t_days)):
         raise UsageError("t_days must be a number of days, not NaN")
-    if camera is None and samples_per_m2 is None:
+    if camera is None and samples_per_m2 is None and samples is None:
         raise UsageError("nothing to compute: give a camera, samples_per_m2, or both")
     weights = _weights(instants, weights_h)
     tech = get_technique(technique) if camera is not None else None
@@ -585,8 +600,10 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
 
     # Camera pass, once.
     diagnostics: dict[str, Any] = {}
-    cp, samples = receivers_pass(scene, camera, t_days, ground, samples_per_m2, timings,
+    cp, sampled = receivers_pass(scene, camera, t_days, ground,
+                                 samples_per_m2 if samples is None else None, timings,
                                  diagnostics)
+    samples = samples if samples is not None else sampled
     valid = cp.valid if cp is not None else None
     rays = _PixelRays(cp, technique) if cp is not None and reuse_rays and \
         technique in ("izb", "raytrace") else None
@@ -600,10 +617,15 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
         state = checkpoint.load(len(units), pixel_shape, sample_sum.shape[0])
         if state is not None:
             done, pixel_sum, sample_sum = state
+    if stretches is not None:
+        stretches.plan(units, valid.shape if valid is not None else None, sample_sum.shape[0])
+        if done:
+            stretches.restore(checkpoint.extra)
     resumed = done
 
     for k in range(done, len(units)):
         unit = units[k]
+        lit = slit = None
         if camera is not None:
             t0 = time.perf_counter()
             if rays is not None:
@@ -618,17 +640,22 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
             from cityshade.surfaces import samples_lit
 
             t0 = time.perf_counter()
-            sample_sum += unit.weight_h * samples_lit(
-                scene, samples, unit.sun, float(t_days),
-                engine="raytrace" if technique == "raytrace" else "izb").astype(np.float64)
+            slit = samples_lit(scene, samples, unit.sun, float(t_days),
+                               engine="raytrace" if technique == "raytrace" else "izb")
+            sample_sum += unit.weight_h * slit.astype(np.float64)
             timings["surface_rays_s"] += time.perf_counter() - t0
+        if stretches is not None:
+            stretches.add(k, lit, slit)
         if checkpoint is not None:
             t0 = time.perf_counter()
-            checkpoint.save(k + 1, pixel_sum, sample_sum)
+            checkpoint.save(k + 1, pixel_sum, sample_sum,
+                            stretches.state() if stretches is not None else None)
             timings["checkpoint_s"] += time.perf_counter() - t0
         if on_step is not None:
             on_step(k + 1, len(units), unit)
 
+    if stretches is not None:
+        stretches.finish()
     hours = None
     if camera is not None:
         hours = np.where(valid, pixel_sum, np.nan).astype(np.float32)
@@ -649,7 +676,7 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
                     hours_sun_up=float(sum(w for i, w in enumerate(weights)
                                            if i not in below_set)),
                     suns=list(suns), timings_s=timings, diagnostics=diagnostics,
-                    warnings=warnings)
+                    warnings=warnings, stretches=stretches)
 
 
 def surface_sun_hours(scene, instants_utc: Sequence[datetime], t_days: float, *,
@@ -781,8 +808,12 @@ def write_sun_hours(outdir, result: SunHours, scene, camera, meta: dict[str, Any
     written: list[Path] = []
     if result.hours is not None:
         exr = outdir / "sun_hours.exr"
-        imageio.write_exr(exr, {"sun_hours": result.hours,
-                                "objid": np.asarray(result.surfaces.obj_id)}, meta)
+        channels = {"sun_hours": result.hours, "objid": np.asarray(result.surfaces.obj_id)}
+        if result.stretches is not None:
+            # Longest continuous sunlit stretch per pixel (NaN where no surface).
+            channels["longest_sun_h"] = np.where(result.valid, result.stretches.pixel_longest_h(),
+                                                 np.nan).astype(np.float32)
+        imageio.write_exr(exr, channels, meta)
         written.append(exr)
         png = outdir / "sun_hours.png"
         imageio.write_png_rgb(png, colour_map_png(result.hours),
@@ -953,6 +984,8 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
               **({"tile_px": tile_px} if tile_px is not None or scheduler is not None
                  or step_month is not None else {}),
               **({"monthly": True} if step_month is not None else {}),
+              **({} if tile_px is not None or scheduler is not None or step_month is not None
+                 else {"stretches": True}),
               "shadow_settings": dataclasses.asdict(dataclasses.replace(settings.shadows,
                                                                         technique=None))}
     key = params_key(params)
@@ -1035,6 +1068,7 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
     if tile_px is not None or scheduler is not None or step_month is not None:
         from cityshade.distributed import run_tiled
 
+        # Tiled runs keep no sunlit stretches yet (sums only).
         result, tiled = run_tiled(scene, camera, instants, t_days, weights_h=weights, suns=suns,
                                   units=units, technique=technique, ground=ground,
                                   samples_per_m2=samples_per_m2, checkpoint=state,
@@ -1044,11 +1078,14 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
                                   write_manifest=lambda: write_manifest(outdir, manifest),
                                   on_step=on_step)
     else:
+        from cityshade.runs import Stretches
+
         result = sun_hours(scene, camera, instants, t_days, weights_h=weights,
                            technique=technique, settings=settings.shadows, ground=ground,
                            suns=suns, samples_per_m2=samples_per_m2, checkpoint=state,
                            reuse_rays=settings.batch.reuse_rays, on_step=step_done,
-                           on_frame=frame_done if frames else None)
+                           on_frame=frame_done if frames else None,
+                           stretches=Stretches.for_steps(steps))
     if state_warning is not None:
         result.warnings.insert(0, state_warning)
     if frames and below:

@@ -113,7 +113,8 @@ def _subdivision_centroids(v0, e1, e2, m, first, points_out):
 
 
 def sample_surfaces(scene, samples_per_m2: float = 1.0, t_days: float = 0.0,
-                    settings: SampleSettings | None = None) -> SurfaceSamples:
+                    settings: SampleSettings | None = None,
+                    polygon_density: np.ndarray | None = None) -> SurfaceSamples:
     """Stratified sample points on every polygon standing at city time ``t_days``.
 
     Parameters
@@ -125,6 +126,9 @@ def sample_surfaces(scene, samples_per_m2: float = 1.0, t_days: float = 0.0,
         City time, days since 1970-01-01 UTC (objects standing then are sampled).
     settings : SampleSettings, optional
         Limits; its density is replaced by ``samples_per_m2``.
+    polygon_density : (P,) float, optional
+        Density per polygon instead of ``samples_per_m2`` (0: not sampled), e.g. denser on
+        windows.
 
     Returns
     -------
@@ -149,9 +153,19 @@ def sample_surfaces(scene, samples_per_m2: float = 1.0, t_days: float = 0.0,
     cross = np.cross(e1, e2)
     twice_area = np.linalg.norm(cross, axis=1)
     # Degenerate triangles carry no area and have no normal: they get no points.
+    density = settings.samples_per_m2
+    if polygon_density is not None:
+        dens_p = np.asarray(polygon_density, np.float64)
+        if dens_p.shape != (len(scene.poly_ids),) or not (np.isfinite(dens_p).all()
+                                                         and (dens_p >= 0.0).all()):
+            raise UsageError("polygon_density must be (P,) finite densities >= 0")
+        density = dens_p[np.asarray(scene.tri_polygon)]
+        present &= density > 0.0
     keep = np.flatnonzero(present & (twice_area > 0.0))
     area = 0.5 * twice_area[keep]
-    m = np.maximum(1, np.rint(np.sqrt(area * settings.samples_per_m2))).astype(np.int64)
+    if polygon_density is not None:
+        density = density[keep]
+    m = np.maximum(1, np.rint(np.sqrt(area * density))).astype(np.int64)
     counts = m * m
     total = int(counts.sum())
     if total > settings.max_samples:

@@ -67,6 +67,8 @@ THEMATIC_SURFACES = {
     "OuterFloorSurface": "outer_floor", "FloorSurface": "floor",
     "InteriorWallSurface": "interior_wall", "CeilingSurface": "ceiling",
     "Door": "door", "Window": "window", "TrafficArea": "traffic",
+    # CityGML 3.0 filling surfaces (con:fillingSurface of a wall): the 2.0 openings' surfaces.
+    "DoorSurface": "door", "WindowSurface": "window",
     "AuxiliaryTrafficArea": "auxiliary_traffic", "Marking": "marking",
     "WaterSurface": "water", "WaterGroundSurface": "water", "WaterClosureSurface": "closure",
     "GenericThematicSurface": "generic", "HoleSurface": "closure",

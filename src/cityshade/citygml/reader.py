@@ -15,6 +15,7 @@ What the walker records
   that forward references anywhere in the file resolve after the last member;
 - aggregates: gml:ids of geometry aggregates and thematic surfaces → the polygons and
   references inside them (appearance targets and xlinks may point at them);
+- openings: gml:ids of Window/Door elements and their polygons;
 - appearances (see :mod:`cityshade.citygml.appearance`), srsName counts, counters.
 
 Safety: no DTD is loaded, no entity is resolved, nothing is fetched from a network; a document
@@ -46,6 +47,8 @@ _PARSE_BATCH_CHARS = 16_000_000
 _PROLOG_BYTES = 65536
 
 _LOD_PROPERTY = re.compile(r"^lod([0-4])[A-Z]")
+#: Surface classes of openings, whose elements' gml:ids are kept (per-opening results).
+_OPENING_CODES = frozenset((ns.SURFACE_CODE["window"], ns.SURFACE_CODE["door"]))
 
 # Walker element kinds (cached per tag string).
 K_SKIP, K_DESCEND, K_OBJECT, K_THEMATIC, K_LOD, K_POLYGON, K_AGG, K_ORIENTABLE, K_APPEARANCE, \
@@ -95,6 +98,8 @@ class RawModel:
     ref_target: list[str] = field(default_factory=list)
     # Aggregates: id → (first polygon, end polygon, first ref, end ref).
     aggregates: dict[str, tuple[int, int, int, int]] = field(default_factory=dict)
+    # Openings (Window/Door, 3.0 WindowSurface/DoorSurface): (gml:id, first polygon, end polygon).
+    openings: list[tuple[str, int, int]] = field(default_factory=list)
     appearance: AppearanceCollector = field(default_factory=AppearanceCollector)
     srs_names: Counter = field(default_factory=Counter)
     counters: Counter = field(default_factory=Counter)
@@ -374,6 +379,8 @@ class _Walker:
                 self.walk(child, obj, payload, lod, flip)
                 if surface_id is not None:
                     m.aggregates.setdefault(surface_id, (p0, len(self.polys), r0, len(self.refs)))
+                    if payload in _OPENING_CODES:
+                        m.openings.append((surface_id, p0, len(self.polys)))
             elif kind == K_ORIENTABLE:
                 flipped = flip ^ (1 if child.get("orientation", "+").strip() == "-" else 0)
                 agg_id = self.element_id(child)

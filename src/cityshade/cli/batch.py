@@ -6,24 +6,12 @@ from pathlib import Path
 import click
 
 from cityshade.cli.options import (camera_options, ground_option, make_camera, parse_size,
-                                   parse_triple, shadow_options)
+                                   parse_triple, shadow_options, time_plan_options)
 
 
 @click.command("batch")
 @click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
-@click.option("--date", "date_text", required=True, help="First day, YYYY-MM-DD.")
-@click.option("--from", "from_text", default="00:00", show_default=True,
-              help="Local start time of each day, HH:MM.")
-@click.option("--to", "to_text", default="24:00", show_default=True,
-              help="Local end time of each day, HH:MM (24:00 = midnight at the end).")
-@click.option("--every", "every_text", default="10min", show_default=True,
-              help="Step length: 10min, 1h, 30s, 1h30min.")
-@click.option("--tz", required=True, help="IANA time zone of --from/--to, e.g. Europe/Berlin "
-              "(UTC for UTC); local-mean or local-apparent: mean or true solar time at the "
-              "model's longitude (for historical dates).")
-@click.option("--days", type=int, help="Number of days (default 1), --every-day apart.")
-@click.option("--to-date", "to_date_text", help="Last day (inclusive), YYYY-MM-DD.")
-@click.option("--every-day", type=int, default=1, show_default=True, help="Days between days.")
+@time_plan_options
 @click.option("--city-date", help="State of the city (default: --date); the city does not "
               "change during a run.")
 @camera_options("map")

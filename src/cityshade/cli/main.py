@@ -18,6 +18,7 @@ COMMANDS = {
     "info": ("cityshade.cli.info:info", "Describe a .cityshade file (or a CityGML file)."),
     "render": ("cityshade.cli.render:render", "Render a picture and shadow mask at a date and sun."),
     "batch": ("cityshade.cli.batch:batch", "Sun-hour maps and per-surface sun-hours over times."),
+    "compare": ("cityshade.cli.compare:compare", "Sun-hours before and after a change; rules."),
     "evaluate": ("cityshade.cli.evaluate:evaluate", "Shadow error against run time; the stress set."),
 }
 

@@ -542,6 +542,9 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
         "counters": {k: int(v) for k, v in sorted(counters.items())},
         "warnings": warnings,
     }
+    openings = _opening_groups(getattr(raw, "openings", ()), orig_poly)
+    if openings:
+        report["openings"] = openings
     return Scene(
         origin_m=origin.astype(np.float64), crs=crs, vertices=vertices, uv=uv,
         triangles=triangles.astype(np.int32),
@@ -558,6 +561,23 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
         poly_normal=normals[drawn].astype(np.float32),
         poly_repairs=np.asarray(tri.repairs, np.uint16)[drawn],
         materials=materials, textures=textures, report=report)
+
+
+def _opening_groups(openings, orig_poly) -> list:
+    """``[[gml:id, [drawn polygon, ...]], ...]`` of the openings (Window/Door elements) whose
+    polygons are drawn; a nested opening's polygons belong to the innermost one."""
+    if not len(openings):
+        return []
+    owner = {}
+    for k, (_, p0, p1) in enumerate(openings):
+        for p in range(p0, p1):
+            owner.setdefault(p, k)  # inner elements end first, so they are listed first
+    groups: dict[int, list[int]] = {}
+    for d, p in enumerate(np.asarray(orig_poly).tolist()):
+        k = owner.get(p)
+        if k is not None:
+            groups.setdefault(k, []).append(d)
+    return [[openings[k][0], groups[k]] for k in sorted(groups)]
 
 
 def _apply_appearance(raw, theme, drawn, polys, rings, ring_offsets,

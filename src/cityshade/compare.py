@@ -1,0 +1,454 @@
+"""Planning answers: sun-hours of the same receivers in two states of a city.
+
+Two states are either two dates of one time-dependent model (a proposed building carries a
+``validFrom`` in the future) or the existing model and the same model with a proposal added
+(:func:`merge_scenes`; the existing objects, polygons and triangles keep their indices, so a
+receiver means the same surface in both). :func:`compare_states` runs :func:`cityshade.batch.sun_hours`
+once per state over the same steps, camera and surface samples, with the sunlit stretches
+(:mod:`cityshade.runs`) of every receiver, and derives the loss. Pixels whose surface is not
+the same in both states (a new building stands there, or an old one is gone) are *changed*:
+they have no loss. Openings (:func:`openings_of`) get their own denser samples and a reference
+point. :func:`write_comparison` writes the pictures, rasters and tables; :mod:`cityshade.report`
+... see :func:`write_report`.
+"""
+from __future__ import annotations
+
+import csv
+import math
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Callable, Sequence
+
+import numpy as np
+
+from cityshade.errors import UsageError
+
+__all__ = ["Opening", "Comparison", "merge_scenes", "openings_of", "compare_states",
+           "write_comparison", "SURFACE_COLUMNS", "OPENING_COLUMNS"]
+
+#: Sample density on openings (points per m²): a 1.2 m² window gets ~36 points.
+OPENING_SAMPLES_PER_M2 = 30.0
+
+
+@dataclass(frozen=True)
+class Opening:
+    """A window or door: its gml:id (the Window/Door element's, else the polygon's), object,
+    class and polygons."""
+
+    opening_id: str
+    object_index: int
+    surface_class: str
+    polygons: tuple[int, ...]
+
+
+def openings_of(scene) -> list[Opening]:
+    """The openings of a scene: Window/Door elements recorded by the reader (their polygons
+    grouped), then every other window/door polygon as an opening of its own (CityJSON
+    semantics, scene files built before openings were kept)."""
+    from cityshade.citygml.namespaces import SURFACE_CLASSES, SURFACE_CODE
+
+    codes = (SURFACE_CODE["window"], SURFACE_CODE["door"])
+    poly_class = np.asarray(scene.poly_class)
+    out: list[Opening] = []
+    grouped = np.zeros(len(poly_class), bool)
+    for oid, polys in (scene.report or {}).get("openings", []):
+        polys = tuple(int(p) for p in polys if poly_class[int(p)] in codes)
+        if not polys:
+            continue
+        grouped[list(polys)] = True
+        out.append(Opening(str(oid), int(scene.poly_object[polys[0]]),
+                           SURFACE_CLASSES[int(poly_class[polys[0]])], polys))
+    for p in np.flatnonzero(np.isin(poly_class, codes) & ~grouped):
+        pid = scene.poly_ids[p] or f"{scene.obj_ids[int(scene.poly_object[p])]}#polygon{p}"
+        out.append(Opening(pid, int(scene.poly_object[p]), SURFACE_CLASSES[int(poly_class[p])],
+                           (int(p),)))
+    return out
+
+
+def merge_scenes(existing, proposal, settings=None):
+    """The existing scene with the proposal's objects added (same CRS), with a new kd-tree.
+
+    The existing arrays come first, so its object, polygon and triangle indices stay valid;
+    the proposal's coordinates are moved into the existing scene's origin.
+
+    Raises
+    ------
+    UsageError
+        The two scenes are in different (or unknown) CRSs.
+    """
+    import dataclasses
+
+    from cityshade.build import _build_tree
+    from cityshade.config import Settings
+
+    ea, pa = existing.crs.horizontal_epsg, proposal.crs.horizontal_epsg
+    if ea != pa or (ea is None and existing.crs.name != proposal.crs.name):
+        raise UsageError(f"the proposal's CRS ({proposal.crs.name}) is not the model's "
+                         f"({existing.crs.name}); give both in the same CRS")
+    shift = np.asarray(proposal.origin_m, np.float64) - np.asarray(existing.origin_m, np.float64)
+    nv, no, npoly = len(existing.vertices), len(existing.obj_ids), len(existing.poly_ids)
+    nmat, ntex = len(existing.materials), len(existing.textures)
+
+    def offset(a, n):
+        a = np.asarray(a)
+        return np.where(a >= 0, a + n, a).astype(a.dtype)
+
+    cat = np.concatenate
+    scene = dataclasses.replace(
+        existing,
+        vertices=cat([np.asarray(existing.vertices),
+                      (np.asarray(proposal.vertices, np.float64) + shift).astype(
+                          np.asarray(existing.vertices).dtype)]),
+        uv=cat([np.asarray(existing.uv), np.asarray(proposal.uv)]),
+        triangles=cat([np.asarray(existing.triangles),
+                       np.asarray(proposal.triangles) + nv]).astype(np.int32),
+        tri_object=cat([existing.tri_object, np.asarray(proposal.tri_object) + no]).astype(np.int32),
+        tri_polygon=cat([existing.tri_polygon,
+                         np.asarray(proposal.tri_polygon) + npoly]).astype(np.int32),
+        tri_class=cat([existing.tri_class, proposal.tri_class]),
+        tri_material=cat([existing.tri_material, offset(proposal.tri_material, nmat)]),
+        tri_texture=cat([existing.tri_texture, offset(proposal.tri_texture, ntex)]),
+        tri_t_begin_days=cat([existing.tri_t_begin_days, proposal.tri_t_begin_days]),
+        tri_t_end_days=cat([existing.tri_t_end_days, proposal.tri_t_end_days]),
+        obj_ids=list(existing.obj_ids) + list(proposal.obj_ids),
+        obj_types=list(existing.obj_types) + list(proposal.obj_types),
+        obj_parent=cat([existing.obj_parent, offset(proposal.obj_parent, no)]).astype(np.int32),
+        obj_t_begin_days=cat([existing.obj_t_begin_days, proposal.obj_t_begin_days]),
+        obj_t_end_days=cat([existing.obj_t_end_days, proposal.obj_t_end_days]),
+        obj_time_source=cat([existing.obj_time_source, proposal.obj_time_source]),
+        obj_lod=cat([existing.obj_lod, proposal.obj_lod]),
+        poly_ids=list(existing.poly_ids) + list(proposal.poly_ids),
+        poly_object=cat([existing.poly_object, np.asarray(proposal.poly_object) + no]).astype(np.int32),
+        poly_class=cat([existing.poly_class, proposal.poly_class]),
+        poly_area_m2=cat([existing.poly_area_m2, proposal.poly_area_m2]),
+        poly_normal=cat([existing.poly_normal, proposal.poly_normal]),
+        poly_repairs=cat([existing.poly_repairs, proposal.poly_repairs]),
+        materials=list(existing.materials) + list(proposal.materials),
+        textures=list(existing.textures) + list(proposal.textures),
+        report={**(existing.report or {}),
+                "openings": list((existing.report or {}).get("openings", [])) + [
+                    [oid, [int(p) + npoly for p in polys]]
+                    for oid, polys in (proposal.report or {}).get("openings", [])],
+                "proposal_objects": [no, no + len(proposal.obj_ids)]},
+        kdtree=None, header=dict(existing.header or {}))
+    scene.kdtree = _build_tree(scene, settings or Settings(), None, {})
+    return scene
+
+
+@dataclass
+class Comparison:
+    """Result of :func:`compare_states`.
+
+    Pixel arrays are (H, W) float32, NaN where there is no surface; ``loss_*`` also NaN on
+    ``changed`` pixels. Per polygon (P,) float64, NaN where not sampled. Per opening (O,)
+    float64. ``*_longest_h``: the longest continuous sunlit stretch.
+    """
+
+    before: Any
+    after: Any
+    camera: Any
+    scene_before: Any
+    scene_after: Any
+    t_before_days: float
+    t_after_days: float
+    step_h: float
+    changed: np.ndarray | None = None
+    loss_h: np.ndarray | None = None
+    loss_pct: np.ndarray | None = None
+    polygon_before_h: np.ndarray | None = None
+    polygon_after_h: np.ndarray | None = None
+    polygon_standing_after: np.ndarray | None = None
+    openings: list[Opening] = field(default_factory=list)
+    opening: dict[str, np.ndarray] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
+
+    @property
+    def samples(self):
+        return self.before.samples
+
+
+def _standing(scene, t_days: float) -> np.ndarray:
+    """(P,) bool: polygons whose object stands at ``t_days``."""
+    obj = np.asarray(scene.poly_object)
+    return ((np.asarray(scene.obj_t_begin_days)[obj] <= t_days)
+            & (t_days < np.asarray(scene.obj_t_end_days)[obj]))
+
+
+def _loss_pct(before, after):
+    with np.errstate(invalid="ignore", divide="ignore"):
+        return np.where(before > 0, 100.0 * (before - after) / before, np.nan)
+
+
+def compare_states(scene_before, t_before_days: float, scene_after, t_after_days: float,
+                   camera, steps: Sequence, *, technique: str = "izb", settings=None,
+                   ground: str | None = None, suns=None, samples_per_m2: float | None = 1.0,
+                   opening_samples_per_m2: float = OPENING_SAMPLES_PER_M2,
+                   polygons: np.ndarray | None = None, min_stretch_h: float = 0.0,
+                   on_step: Callable[[int, int], None] | None = None) -> Comparison:
+    """Sun-hours before and after, on the same receivers.
+
+    Parameters
+    ----------
+    scene_before, scene_after : Scene
+        The same scene (two dates) or the existing one and :func:`merge_scenes`'s result.
+    t_before_days, t_after_days : float
+        City times of the two states.
+    camera : Camera or None
+        Pixel receivers (the same view in both states); None: surfaces only.
+    steps : sequence of cityshade.batch.Step
+        Time steps (:func:`cityshade.batch.plan_steps`).
+    samples_per_m2 : float or None
+        Sample density on the polygons standing before (None: no surface receivers except
+        the openings).
+    opening_samples_per_m2 : float
+        Density on windows and doors (0: like the other polygons).
+    polygons : (P,) bool, optional
+        Only these polygons are surface receivers (rules that look at some surfaces only).
+    min_stretch_h : float
+        Stretches shorter than this do not count toward the ``qualified`` hours.
+    on_step : callable(done, total), optional
+        Progress over both states' sun positions.
+    """
+    from cityshade.batch import plan_units, sun_hours
+    from cityshade.config import Settings
+    from cityshade.runs import Stretches
+    from cityshade.sun import suns_from_instants
+    from cityshade.surfaces import sample_surfaces
+
+    settings = settings or Settings()
+    if not steps:
+        raise UsageError("a comparison needs at least one time step")
+    instants = [s.centre_utc for s in steps]
+    weights = [s.weight_h for s in steps]
+    if suns is None:
+        suns = suns_from_instants(instants, scene_before.crs, scene_before.origin_m,
+                                  settings.sun)
+    if ground is not None:
+        from cityshade.ground import ground_height_m
+
+        # One height for both states (a proposal must not move the ground plane).
+        ground = repr(ground_height_m(scene_before, ground) + float(scene_before.origin_m[2]))
+
+    # Receivers: surface samples of the polygons standing before, denser on openings.
+    openings = openings_of(scene_before)
+    n_poly = len(scene_before.poly_ids)
+    density = np.full(n_poly, float(samples_per_m2 or 0.0))
+    if polygons is not None:
+        density[~np.asarray(polygons, bool)] = 0.0
+    if opening_samples_per_m2 > 0:
+        for o in openings:
+            for p in o.polygons:
+                if polygons is None or polygons[p]:
+                    density[p] = opening_samples_per_m2
+    samples = None
+    if density.any():
+        samples = sample_surfaces(scene_before, 1.0, float(t_before_days),
+                                  settings=None, polygon_density=density)
+    if camera is None and samples is None:
+        raise UsageError("nothing to compare: no pixels and no surface receivers")
+    n_units = len(plan_units(suns, weights)[0])
+    results = []
+    for k, (scene, t) in enumerate(((scene_before, t_before_days), (scene_after, t_after_days))):
+        def progress(done, total, unit, k=k):
+            if on_step is not None:
+                on_step(k * n_units + done, 2 * n_units)
+
+        results.append(sun_hours(
+            scene, camera, instants, float(t), weights_h=weights, technique=technique,
+            settings=settings.shadows, ground=ground, suns=suns, samples=samples,
+            reuse_rays=settings.batch.reuse_rays, on_step=progress,
+            stretches=Stretches.for_steps(steps, min_stretch_h)))
+    before, after = results
+    comp = Comparison(before=before, after=after, camera=camera, scene_before=scene_before,
+                      scene_after=scene_after, t_before_days=float(t_before_days),
+                      t_after_days=float(t_after_days),
+                      step_h=float(max(weights)) if weights else 0.0,
+                      warnings=[w for w in before.warnings] +
+                      [w for w in after.warnings if w not in before.warnings])
+    if camera is not None:
+        same = (before.valid & after.valid
+                & (np.asarray(before.surfaces.obj_id) == np.asarray(after.surfaces.obj_id)))
+        comp.changed = (before.valid | after.valid) & ~same
+        b = np.where(same, before.hours, np.nan)
+        a = np.where(same, after.hours, np.nan)
+        comp.loss_h = (b - a).astype(np.float32)
+        comp.loss_pct = _loss_pct(b, a).astype(np.float32)
+    if samples is not None:
+        standing = _standing(scene_after, float(t_after_days))[:n_poly]
+        comp.polygon_standing_after = standing
+        comp.polygon_before_h = before.polygon_hours
+        comp.polygon_after_h = np.where(standing, after.polygon_hours, np.nan)
+        comp.openings = [o for o in openings if samples.sampled[list(o.polygons)].any()]
+        comp.opening = _opening_results(comp)
+    return comp
+
+
+def _opening_results(comp: Comparison) -> dict[str, np.ndarray]:
+    """Per opening: area, samples, mean hours before/after, and at its reference point (the
+    sample nearest the opening's area centroid) hours, longest stretch and qualified hours."""
+    samples = comp.samples
+    scene = comp.scene_before
+    n = len(comp.openings)
+    out = {k: np.full(n, np.nan) for k in (
+        "area_m2", "samples", "before_h", "after_h", "ref_before_h", "ref_after_h",
+        "ref_longest_before_h", "ref_longest_after_h", "ref_qualified_before_h",
+        "ref_qualified_after_h", "facing_deg")}
+    out["ref_sample"] = np.full(n, -1, np.int64)
+    if not n:
+        return out
+    opening_of_poly = np.full(len(scene.poly_ids), -1, np.int64)
+    for k, o in enumerate(comp.openings):
+        opening_of_poly[list(o.polygons)] = k
+    sample_opening = opening_of_poly[samples.polygon]
+    b_h, a_h = comp.before.sample_hours, comp.after.sample_hours
+    bs, as_ = comp.before.stretches.samples, comp.after.stretches.samples
+    for k, o in enumerate(comp.openings):
+        idx = np.flatnonzero(sample_opening == k)
+        if not len(idx):
+            continue
+        w = samples.weight_m2[idx]
+        centroid = (samples.points_m[idx] * w[:, None]).sum(axis=0) / w.sum()
+        ref = int(idx[np.argmin(np.linalg.norm(samples.points_m[idx] - centroid, axis=1))])
+        normal = (samples.normals[idx] * w[:, None]).sum(axis=0)
+        standing = bool(comp.polygon_standing_after[list(o.polygons)].all())
+        out["area_m2"][k] = float(np.asarray(scene.poly_area_m2)[list(o.polygons)].sum())
+        out["samples"][k] = len(idx)
+        out["before_h"][k] = float((b_h[idx] * w).sum() / w.sum())
+        out["after_h"][k] = float((a_h[idx] * w).sum() / w.sum()) if standing else np.nan
+        out["ref_sample"][k] = ref
+        out["ref_before_h"][k] = b_h[ref]
+        out["ref_longest_before_h"][k] = bs.longest_h[ref]
+        out["ref_qualified_before_h"][k] = bs.qualified_h[ref]
+        if standing:
+            out["ref_after_h"][k] = a_h[ref]
+            out["ref_longest_after_h"][k] = as_.longest_h[ref]
+            out["ref_qualified_after_h"][k] = as_.qualified_h[ref]
+        out["facing_deg"][k] = math.degrees(math.atan2(normal[0], normal[1])) % 360.0
+    return out
+
+
+# --- outputs ------------------------------------------------------------------------------------
+
+SURFACE_COLUMNS = ("object_id", "polygon_id", "polygon_index", "surface_class", "area_m2",
+                   "samples", "hours_before", "hours_after", "loss_h", "loss_pct",
+                   "longest_before_h", "longest_after_h")
+OPENING_COLUMNS = ("opening_id", "object_id", "surface_class", "polygon_ids", "area_m2",
+                   "samples", "facing_deg", "hours_before", "hours_after", "loss_h", "loss_pct",
+                   "ref_hours_before", "ref_hours_after", "ref_longest_before_h",
+                   "ref_longest_after_h")
+
+
+def _f(v, digits=4) -> str:
+    return "" if v is None or not np.isfinite(v) else f"{float(v):.{digits}f}"
+
+
+def polygon_longest(comp: Comparison, which: str) -> np.ndarray:
+    """(P,) the longest stretch of any sample of each polygon (before or after)."""
+    res = comp.before if which == "before" else comp.after
+    longest = res.stretches.samples.longest_h
+    out = np.full(len(comp.scene_before.poly_ids), -np.inf)
+    np.maximum.at(out, comp.samples.polygon, longest)
+    out[~np.isfinite(out)] = np.nan
+    if which == "after" and comp.polygon_standing_after is not None:
+        out[~comp.polygon_standing_after] = np.nan
+    return out
+
+
+def surface_rows(comp: Comparison):
+    """Rows of ``surfaces.csv`` as tuples (see :data:`SURFACE_COLUMNS`), numbers unformatted."""
+    from cityshade.citygml.namespaces import SURFACE_CLASSES
+
+    scene, samples = comp.scene_before, comp.samples
+    counts = np.bincount(samples.polygon, minlength=len(scene.poly_ids))
+    lb, la = polygon_longest(comp, "before"), polygon_longest(comp, "after")
+    b, a = comp.polygon_before_h, comp.polygon_after_h
+    pct = _loss_pct(b, a)
+    for p in np.flatnonzero(samples.sampled):
+        cls = int(scene.poly_class[p])
+        yield (scene.obj_ids[int(scene.poly_object[p])], scene.poly_ids[p], int(p),
+               SURFACE_CLASSES[cls] if cls < len(SURFACE_CLASSES) else str(cls),
+               float(scene.poly_area_m2[p]), int(counts[p]), b[p], a[p], b[p] - a[p], pct[p],
+               lb[p], la[p])
+
+
+def loss_picture(comp: Comparison) -> np.ndarray:
+    """(H + legend, W, 3) uint8: the loss in hours colour-mapped with its legend (gains shown as
+    0), changed pixels grey."""
+    from cityshade.batch import colour_map_png
+
+    loss = np.where(np.isfinite(comp.loss_h), np.maximum(comp.loss_h, 0.0), np.nan)
+    img = colour_map_png(loss)
+    h, w = comp.changed.shape
+    img[:h, :w][comp.changed] = (150, 150, 150)  # built over or demolished: no loss
+    return img
+
+
+def write_comparison(outdir, comp: Comparison, meta: dict[str, Any]) -> list[Path]:
+    """Write ``compare.exr`` (before_h, after_h, loss_h, loss_pct, longest stretches, changed,
+    objid), ``before.png``/``after.png`` (one colour scale) and ``loss.png`` with legends, for
+    map views ``before_h/after_h/loss_h/loss_pct.tif`` (+ .tfw, .prj), ``surfaces.csv`` and
+    ``openings.csv``. Returns the paths written."""
+    from cityshade import imageio
+    from cityshade.batch import colour_map_png
+    from cityshade.util import atomic_write
+
+    outdir = Path(outdir)
+    written: list[Path] = []
+    attrs = {k: str(v) for k, v in meta.items()}
+    cam = comp.camera
+    if cam is not None:
+        before, after = comp.before, comp.after
+        lb = np.where(before.valid, before.stretches.pixel_longest_h(), np.nan)
+        la = np.where(after.valid, after.stretches.pixel_longest_h(), np.nan)
+        exr = outdir / "compare.exr"
+        imageio.write_exr(exr, {
+            "before_h": before.hours, "after_h": after.hours, "loss_h": comp.loss_h,
+            "loss_pct": comp.loss_pct, "longest_before_h": lb.astype(np.float32),
+            "longest_after_h": la.astype(np.float32), "changed": comp.changed.astype(np.uint8),
+            "objid_before": np.asarray(before.surfaces.obj_id),
+            "objid_after": np.asarray(after.surfaces.obj_id)}, meta)
+        written.append(exr)
+        finite = np.concatenate([h[np.isfinite(h)] for h in (before.hours, after.hours)])
+        vmax = max(1.0, math.ceil(float(finite.max()))) if finite.size else 1.0
+        for name, hours in (("before", before.hours), ("after", after.hours)):
+            png = outdir / f"{name}.png"
+            imageio.write_png_rgb(png, colour_map_png(hours, vmax), attributes=attrs)
+            written.append(png)
+        png = outdir / "loss.png"
+        imageio.write_png_rgb(png, loss_picture(comp), attributes=attrs)
+        written.append(png)
+        if cam.kind == "map":
+            gt = cam.geotransform(comp.scene_before.origin_m)
+            epsg = comp.scene_before.crs.horizontal_epsg
+            for name, arr in (("before_h", before.hours), ("after_h", after.hours),
+                              ("loss_h", comp.loss_h), ("loss_pct", comp.loss_pct)):
+                written += imageio.write_georeferenced(outdir / f"{name}.tif", arr, gt,
+                                                       epsg=epsg, nodata=float("nan"),
+                                                       attributes=attrs)
+    if comp.samples is not None:
+        path = outdir / "surfaces.csv"
+        with atomic_write(path, newline="", what="the surface table") as fh:
+            writer = csv.writer(fh)
+            writer.writerow(SURFACE_COLUMNS)
+            for row in surface_rows(comp):
+                writer.writerow(list(row[:4]) + [f"{row[4]:.3f}", row[5]] +
+                                [_f(v) for v in row[6:10]] + [_f(v) for v in row[10:]])
+        written.append(path)
+        path = outdir / "openings.csv"
+        with atomic_write(path, newline="", what="the openings table") as fh:
+            writer = csv.writer(fh)
+            writer.writerow(OPENING_COLUMNS)
+            o = comp.opening
+            scene = comp.scene_before
+            for k, op in enumerate(comp.openings):
+                b, a = o["before_h"][k], o["after_h"][k]
+                writer.writerow([op.opening_id, scene.obj_ids[op.object_index], op.surface_class,
+                                 " ".join(scene.poly_ids[p] or str(p) for p in op.polygons),
+                                 _f(o["area_m2"][k], 3), int(o["samples"][k]),
+                                 _f(o["facing_deg"][k], 1), _f(b), _f(a), _f(b - a),
+                                 _f(_loss_pct(np.array(b), np.array(a))),
+                                 _f(o["ref_before_h"][k]), _f(o["ref_after_h"][k]),
+                                 _f(o["ref_longest_before_h"][k]),
+                                 _f(o["ref_longest_after_h"][k])])
+        written.append(path)
+    return written

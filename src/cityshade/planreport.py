@@ -1,0 +1,199 @@
+"""``report.md`` of ``cityshade compare``: what was compared, the maps, the worst-hit surfaces
+and openings, and every rule's verdict with its source and numbers — a page a planner can
+attach to a file. Also ``rules.json`` (the verdicts as data) and ``worst.png`` (the loss map
+with the worst-hit surfaces numbered, map view, needs matplotlib)."""
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+from typing import Any, Sequence
+
+import numpy as np
+
+__all__ = ["write_report", "worst_surfaces"]
+
+#: Surfaces smaller than this are left out of the worst-hit list (slivers say little).
+MIN_LISTED_AREA_M2 = 1.0
+#: Classes in the worst-hit list: the surfaces of buildings. Terrain and other ground surfaces
+#: under a new building's footprint lose all their sun without anyone losing it (the maps show
+#: the ground, with such pixels grey), so they are left out of the list, not of surfaces.csv.
+LISTED_CLASSES = frozenset(("roof", "wall", "window", "door", "outer_ceiling", "outer_floor",
+                            "closure", "installation", "unclassified", "generic"))
+
+
+def _h(v) -> str:
+    return "–" if v is None or not np.isfinite(v) else f"{float(v):.2f}"
+
+
+def _pct(v) -> str:
+    return "–" if v is None or not np.isfinite(v) else f"{float(v):.0f} %"
+
+
+def worst_surfaces(comp, n: int = 10) -> list[tuple]:
+    """The ``n`` surface rows (see :data:`cityshade.compare.SURFACE_COLUMNS`) with the largest
+    loss in hours, of polygons of at least :data:`MIN_LISTED_AREA_M2`."""
+    from cityshade.compare import surface_rows
+
+    if comp.samples is None:
+        return []
+    rows = [r for r in surface_rows(comp) if r[4] >= MIN_LISTED_AREA_M2 and np.isfinite(r[8])
+            and r[8] > 0.0 and r[3] in LISTED_CLASSES]
+    rows.sort(key=lambda r: (-r[8], r[2]))
+    return rows[:n]
+
+
+def _worst_picture(outdir: Path, comp, rows) -> Path | None:
+    """loss.png with the worst-hit surfaces' centres numbered (map view only)."""
+    from cityshade.util import agg_canvas, canvas_pixels, have_matplotlib
+
+    cam = comp.camera
+    if cam is None or cam.kind != "map" or not rows or not have_matplotlib():
+        return None
+    from cityshade import imageio
+    from cityshade.compare import loss_picture
+
+    img = loss_picture(comp)
+    h, w = img.shape[:2]
+    fig, canvas = agg_canvas(w, h)
+    ax = fig.add_axes((0.0, 0.0, 1.0, 1.0))
+    ax.imshow(img, interpolation="nearest")
+    ax.set_axis_off()
+    samples = comp.samples
+    origin = np.asarray(comp.scene_before.origin_m)
+    for k, row in enumerate(rows, 1):
+        pts = samples.points_m[samples.polygon == row[2]]
+        c = pts.mean(axis=0) + origin
+        col, r = cam.pixel_of_world(c[None, :2], origin)[0]
+        ax.plot([col], [r], "o", ms=10, mfc="none", mec="red", mew=1.5)
+        ax.annotate(str(k), (col, r), xytext=(6, 6), textcoords="offset points", color="red",
+                    fontsize=max(7, min(12, w // 60)), weight="bold")
+    path = outdir / "worst.png"
+    imageio.write_png_rgb(path, canvas_pixels(canvas)[:h, :w])
+    return path
+
+
+def _verdict_md(v) -> list[str]:
+    r = v.rule
+    out = [f"### {r.name}", "", f"- **Verdict: {v.status.upper()}** — {v.summary}",
+           f"- Rule `{r.id}`; source: {r.source}"]
+    nums = v.numbers
+    if "period" in nums:
+        out.append(f"- Measured on {nums['period']}, {r.time_from}–{r.time_to}"
+                   f"{' (' + r.tz + ')' if r.tz else ''}, {nums['steps']} steps of "
+                   f"{nums['step_min']:g} min (a stretch is exact to one step); measure: "
+                   f"{r.measure}" + (f", stretches of at least {r.min_stretch_min:g} min"
+                                     if r.measure == "stretches" else "")
+                   + (f", sun above {r.min_elevation_deg:g}°" if r.min_elevation_deg else ""))
+    if r.notes:
+        out.append(f"- {r.notes}")
+    for need in v.not_assessed:
+        out.append(f"- *Not assessed:* {need}")
+    if v.details:
+        out += ["", "| receiver | before h | after h | after/before | grade | result |",
+                "|---|---:|---:|---:|---|---|"]
+        for d in v.details[:25]:
+            ratio = d.get("ratio")
+            out.append(f"| `{d['receiver']}` | {_h(d.get('before_h'))} | {_h(d['after_h'])} | "
+                       f"{'–' if ratio is None or not math.isfinite(ratio) else f'{ratio:.2f}'}"
+                       f" | {d.get('grade', '')} | {d['status']} |")
+        if len(v.details) > 25:
+            out.append(f"| … {len(v.details) - 25} more in rules.json | | | | | |")
+    out.append("")
+    return out
+
+
+def write_report(outdir, comp, verdicts: Sequence, request: dict[str, Any],
+                 steps: Sequence) -> list[Path]:
+    """Write ``report.md``, ``rules.json`` and (map view) ``worst.png``; returns the paths."""
+    from cityshade.citygml.temporal import days_to_iso
+    from cityshade.util import write_text_atomic
+
+    outdir = Path(outdir)
+    written: list[Path] = []
+    step_min = comp.step_h * 60.0
+    sun_up = comp.before.hours_sun_up
+    lines = ["# Sunlight before and after", "",
+             f"Model `{Path(request['file']).name}`; before: the city on "
+             f"{days_to_iso(comp.t_before_days)}; after: "
+             + (f"with the proposal `{Path(request['with']).name}` added"
+                if request.get("with") else f"the city on {days_to_iso(comp.t_after_days)}")
+             + ".", "",
+             f"Period: {request['date']}" + (f" to {request['to_date']}" if request.get("to_date")
+                                             else "")
+             + f", {request['from']}–{request['to']} ({request['tz']}), {len(steps)} steps of "
+             f"{step_min:g} min, {sun_up:.2f} h with the sun up. Shadows: `{request['technique']}` "
+             f"(exact). Each step counts whole when the sun reaches the receiver at its middle, "
+             f"so sun-hours are exact to the midpoint rule and a continuous stretch is exact to "
+             f"one step ({step_min:g} min).", ""]
+    worst = worst_surfaces(comp)
+    if comp.camera is not None:
+        loss = comp.loss_h[np.isfinite(comp.loss_h)]
+        changed = int(comp.changed.sum())
+        px_m2 = (comp.camera.pixel_size_m ** 2) if comp.camera.kind == "map" else None
+        lines += ["## Maps", "",
+                  "| before | after | loss |", "|---|---|---|",
+                  "| ![before](before.png) | ![after](after.png) | ![loss](loss.png) |", "",
+                  f"Sun-hours per pixel on one colour scale (before, after) and the loss "
+                  f"(before − after; grey: {changed} pixels whose surface changed — built over "
+                  f"or demolished — and have no loss). Rasters: `compare.exr`"
+                  + (", `before_h.tif`, `after_h.tif`, `loss_h.tif`, `loss_pct.tif` "
+                     "(georeferenced)" if comp.camera.kind == "map" else "") + ".", ""]
+        if loss.size:
+            hit = loss > 0.5 * step_min / 60.0
+            lines += [f"- Pixels compared: {loss.size}"
+                      + (f" ({loss.size * px_m2:.0f} m²)" if px_m2 else "")
+                      + f"; losing sun: {int(hit.sum())} ({100 * hit.mean():.1f} %); "
+                      f"gaining: {int((loss < -0.5 * step_min / 60.0).sum())}.",
+                      f"- Loss: mean {loss.mean():.2f} h, largest {loss.max():.2f} h.", ""]
+        pic = _worst_picture(outdir, comp, worst)
+        if pic is not None:
+            written.append(pic)
+            lines += ["The worst-hit surfaces (numbers as in the table below):", "",
+                      "![worst-hit surfaces](worst.png)", ""]
+    if worst:
+        lines += ["## Worst-hit surfaces", "", "Roofs, walls, windows and doors of at least "
+                  f"{MIN_LISTED_AREA_M2:g} m² with the largest loss:", "",
+                  "| # | object | polygon | class | area m² | before h | after h | loss h | loss |",
+                  "|---:|---|---|---|---:|---:|---:|---:|---:|"]
+        for k, r in enumerate(worst, 1):
+            lines.append(f"| {k} | `{r[0]}` | `{r[1] or r[2]}` | {r[3]} | {r[4]:.1f} | "
+                         f"{_h(r[6])} | {_h(r[7])} | {_h(r[8])} | {_pct(r[9])} |")
+        lines += ["", "All surfaces: `surfaces.csv` (area-weighted means of sample points; "
+                  "longest continuous stretch of any sample).", ""]
+    elif comp.samples is not None:
+        lines += ["## Surfaces", "", "No surface of at least 1 m² loses sun.", ""]
+    if comp.openings:
+        o = comp.opening
+        order = sorted(range(len(comp.openings)),
+                       key=lambda k: -np.nan_to_num(o["before_h"][k] - o["after_h"][k], nan=-1))
+        lines += ["## Windows and doors", "",
+                  f"{len(comp.openings)} openings, each with its own sample points; at the "
+                  "reference point (the sample nearest its centre): hours and the longest "
+                  "continuous sunlit stretch.", "",
+                  "| opening | class | facing | before h | after h | loss h | longest before h "
+                  "| longest after h |", "|---|---|---:|---:|---:|---:|---:|---:|"]
+        for k in order[:20]:
+            op = comp.openings[k]
+            lines.append(f"| `{op.opening_id}` | {op.surface_class} | {o['facing_deg'][k]:.0f}° | "
+                         f"{_h(o['before_h'][k])} | {_h(o['after_h'][k])} | "
+                         f"{_h(o['before_h'][k] - o['after_h'][k])} | "
+                         f"{_h(o['ref_longest_before_h'][k])} | {_h(o['ref_longest_after_h'][k])} |")
+        if len(order) > 20:
+            lines.append(f"| … {len(order) - 20} more in openings.csv | | | | | | | |")
+        lines += ["", "Facing: azimuth of the outward normal, clockwise from grid north.", ""]
+    if verdicts:
+        lines += ["## Rules", ""]
+        for v in verdicts:
+            lines += _verdict_md(v)
+        data = [{"rule": v.rule.id, "name": v.rule.name, "source": v.rule.source,
+                 "status": v.status, "summary": v.summary, "numbers": v.numbers,
+                 "details": v.details, "not_assessed": list(v.not_assessed)} for v in verdicts]
+        written.append(write_text_atomic(outdir / "rules.json",
+                                         json.dumps(data, indent=2, default=float) + "\n",
+                                         what="the rule verdicts"))
+    for warning in comp.warnings:
+        lines.append(f"> Warning: {warning}")
+    lines += ["", f"Made by cityshade from `{json.dumps(request, sort_keys=True)}`.", ""]
+    written.append(write_text_atomic(outdir / "report.md", "\n".join(lines), what="the report"))
+    return written
