@@ -906,7 +906,7 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
 
     from cityshade.config import Settings
     from cityshade.sun import suns_from_instants
-    from cityshade.util import make_folder
+    from cityshade.util import check_outputs, output_group
 
     settings = settings or Settings()
     outdir = Path(outdir)
@@ -918,7 +918,7 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
               "shadow_settings": dataclasses.asdict(dataclasses.replace(settings.shadows,
                                                                         technique=None))}
     key = params_key(params)
-    make_folder(outdir)
+    check_outputs(("-o", outdir, None))  # a folder that can be written, before any work
     old = read_manifest(outdir)
     state = Checkpoint(outdir / STATE_NAME, key)
     if old is not None and old.get("key") != key:
@@ -1009,7 +1009,8 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
             write_mask_png(frames_dir / frame_name(steps[i]), nothing_lit)
     meta = run_metadata(result, scene, params)
     t1 = time.perf_counter()
-    written = write_sun_hours(outdir, result, scene, camera, meta, surfaces_csv=surfaces_csv)
+    with output_group():  # the maps and surfaces.csv appear together, or none of them
+        written = write_sun_hours(outdir, result, scene, camera, meta, surfaces_csv=surfaces_csv)
     write_s = time.perf_counter() - t1
     manifest["status"] = "finished"
     manifest["finished_steps"] = sorted(finished)
