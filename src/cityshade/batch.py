@@ -906,6 +906,7 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
 
     from cityshade.config import Settings
     from cityshade.sun import suns_from_instants
+    from cityshade.pipeline import check_frame_memory
     from cityshade.util import check_outputs, output_group
 
     settings = settings or Settings()
@@ -918,6 +919,8 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
               "shadow_settings": dataclasses.asdict(dataclasses.replace(settings.shadows,
                                                                         technique=None))}
     key = params_key(params)
+    if camera is not None:
+        check_frame_memory(camera, technique=technique, batch=True)  # before any work
     check_outputs(("-o", outdir, None))  # a folder that can be written, before any work
     old = read_manifest(outdir)
     state = Checkpoint(outdir / STATE_NAME, key)

@@ -89,13 +89,14 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
         "min", "auto" or a CRS height: add a ground plane where no surface was drawn
         (:mod:`cityshade.ground`).
     """
-    from cityshade.pipeline import camera_pass, shadow_pass
+    from cityshade.pipeline import camera_pass, check_frame_memory, shadow_pass
     from cityshade.shading import shade
     from cityshade.shadows import get_technique
 
     if scene.kdtree is None:
         raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
     tech = get_technique(technique)
+    check_frame_memory(camera, technique=technique, settings=settings)  # before any allocation
     warnings: list[str] = []
     if not sun.above_horizon:
         warnings.append(f"the sun is at or below the horizon (elevation {sun.elevation_deg:g}°): "
