@@ -972,7 +972,8 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
 
     from cityshade.config import Settings
     from cityshade.sun import suns_from_instants
-    from cityshade.util import make_folder
+    from cityshade.pipeline import check_frame_memory
+    from cityshade.util import check_outputs, output_group
 
     settings = settings or Settings()
     outdir = Path(outdir)
@@ -989,7 +990,9 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
               "shadow_settings": dataclasses.asdict(dataclasses.replace(settings.shadows,
                                                                         technique=None))}
     key = params_key(params)
-    make_folder(outdir)
+    if camera is not None:
+        check_frame_memory(camera, technique=technique, batch=True)  # before any work
+    check_outputs(("-o", outdir, None))  # a folder that can be written, before any work
     old = read_manifest(outdir)
     state = Checkpoint(outdir / STATE_NAME, key)
     if old is not None and old.get("key") != key:
@@ -1097,12 +1100,13 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
             write_mask_png(frames_dir / frame_name(steps[i]), nothing_lit)
     meta = run_metadata(result, scene, params)
     t1 = time.perf_counter()
-    written = write_sun_hours(outdir, result, scene, camera, meta, surfaces_csv=surfaces_csv,
-                              cog=tiled is not None)
-    if tiled is not None:
-        from cityshade.distributed import write_tiled_extras
+    with output_group():  # the maps, surfaces.csv and the tiled extras appear together
+        written = write_sun_hours(outdir, result, scene, camera, meta,
+                                  surfaces_csv=surfaces_csv, cog=tiled is not None)
+        if tiled is not None:
+            from cityshade.distributed import write_tiled_extras
 
-        written += write_tiled_extras(outdir, tiled, result, scene, camera, meta)
+            written += write_tiled_extras(outdir, tiled, result, scene, camera, meta)
     write_s = time.perf_counter() - t1
     manifest["status"] = "finished"
     manifest["finished_steps"] = sorted(finished)

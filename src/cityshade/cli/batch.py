@@ -54,8 +54,10 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     from cityshade.scenefile import load_scene
     from cityshade.shadows import get_technique
     from cityshade.surfaces import SampleSettings
+    from cityshade.util import check_outputs
 
     t_start = time.perf_counter()
+    check_outputs(("-o", outdir, None))  # before any work
     technique = settings.shadows.technique
     get_technique(technique)  # unknown names fail before any work
     if samples_per_m2 is not None:

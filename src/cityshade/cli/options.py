@@ -33,15 +33,55 @@ class Interrupted(LibraryFailure):
 
 
 #: Set by :func:`on_sigint`: every failure after a Ctrl-C is the interrupt's consequence.
-_interrupt = {"seen": False}
+#: ``held``: a Ctrl-C that came while Numba compiled, raised when the compile is over.
+_interrupt = {"seen": False, "held": False, "listening": False}
 
 
 def on_sigint(signum, frame) -> None:
     """SIGINT handler of the command: raise KeyboardInterrupt once, ignore further Ctrl-Cs so
-    the clean-up (temporary files removed, nothing half-written) runs to its end."""
+    the clean-up (temporary files removed, nothing half-written) runs to its end.
+
+    While Numba compiles (a first call after an install, about a minute) the exception would
+    be raised inside llvmlite, whose clean-up then prints its own traceback (a half-made
+    ``PassBuilder``): it is held until the compiler's current pass ends
+    (:func:`_raise_after_compile`)."""
     _interrupt["seen"] = True
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    if _numba_compiling():
+        _raise_after_compile()
+        return
     raise KeyboardInterrupt
+
+
+def _numba_compiling() -> bool:
+    """Whether this thread holds Numba's compiler lock (not importing Numba to find out)."""
+    lock = sys.modules.get("numba.core.compiler_lock")
+    return lock is not None and lock.global_compiler_lock.is_locked()
+
+
+def _raise_after_compile() -> None:
+    """Raise KeyboardInterrupt in the main thread at the end of Numba's current compiler pass
+    (its ``numba:run_pass`` event) or when its compiler lock is released: between passes the
+    compiler is plain Python and no llvmlite object is half made."""
+    import threading
+
+    from numba.core import event
+
+    class AfterPass(event.Listener):
+        def on_start(self, ev) -> None:
+            pass
+
+        def on_end(self, ev) -> None:
+            if _interrupt["held"] and threading.current_thread() is threading.main_thread():
+                _interrupt["held"] = False
+                raise KeyboardInterrupt
+
+    _interrupt["held"] = True
+    if not _interrupt["listening"]:
+        listener = AfterPass()
+        event.register("numba:run_pass", listener)
+        event.register("numba:compiler_lock", listener)
+        _interrupt["listening"] = True
 
 
 def interrupt_seen() -> bool:
@@ -50,11 +90,20 @@ def interrupt_seen() -> bool:
 
 
 def install_sigint_handler() -> None:
-    """Route Ctrl-C through :func:`on_sigint` (only in the main thread, e.g. not in tests)."""
+    """Route Ctrl-C through :func:`on_sigint` (only in the main thread, e.g. not in tests), and
+    keep an interrupt that lands in a destructor (``Exception ignored in ...``) quiet: the
+    command ends with its one line anyway."""
     import threading
 
     if threading.current_thread() is threading.main_thread():
         signal.signal(signal.SIGINT, on_sigint)
+        previous = sys.unraisablehook
+
+        def unraisable(info) -> None:
+            if not (_interrupt["seen"] and isinstance(info.exc_value, KeyboardInterrupt)):
+                previous(info)
+
+        sys.unraisablehook = unraisable
 
 
 def _caused_by_interrupt(exc: BaseException) -> bool:
