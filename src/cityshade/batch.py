@@ -401,21 +401,27 @@ class _PixelRays:
     (:func:`cityshade.trace.occluded`), the same answer."""
 
     def __init__(self, cp, technique: str = "izb"):
+        from cityshade.lightspace import SurfaceReceivers
+
         self.cp = cp
         self.valid = cp.valid
         self.technique = technique
+        # The valid pixels' points, normals and offsets, checked once: per step one pass makes
+        # the facing pixels' origins (the numpy gathers and temporaries cost more than izb's
+        # binning on the 1M-triangle city).
+        self.receivers = SurfaceReceivers(cp.surfaces.position_m[self.valid],
+                                          cp.normal[self.valid])
 
     def lit(self, scene, sun, t_days: float) -> np.ndarray:
         """(H, W) float32: 1 lit, 0 shadow or no surface."""
         from cityshade import lightspace
-        from cityshade.trace import occluded, shadow_rays_from_surface
+        from cityshade.trace import occluded
 
         faces = self.cp.context(sun).faces
         lit = np.zeros(self.valid.shape, np.float32)
         if faces.any():
             direction = np.asarray(sun.direction, dtype=np.float64)
-            origins = shadow_rays_from_surface(self.cp.surfaces.position_m[faces],
-                                               self.cp.normal[faces], direction)
+            origins = self.receivers.origins(direction, faces[self.valid])
             if self.technique == "izb":
                 blocked = lightspace.occluded(scene, origins, direction, t_days)
             else:
