@@ -344,15 +344,15 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
         kind = values.dtype.kind
         if kind == "f":
             float_names.append(name)
-            float_planes.append(values.astype(np.float32))
+            float_planes.append(values)
         elif kind in "biu":
-            wide = values.astype(np.int64)
-            lo, hi = int(wide.min()), int(wide.max())
+            lo, hi = int(values.min()), int(values.max())
             if lo >= -_FLOAT32_EXACT_INT and hi <= _FLOAT32_EXACT_INT:
                 float_names.append(name)
-                float_planes.append(wide.astype(np.float32))
+                float_planes.append(values)
                 int_names.append(name)
             elif lo >= -1 and hi < _UINT32_NONE:
+                wide = values.astype(np.int64)
                 uint_names.append(name)
                 uint_planes.append(np.where(wide < 0, _UINT32_NONE, wide).astype(np.uint32))
             else:
@@ -371,7 +371,12 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
             continue
         if len(set(names)) != len(names):
             raise ImageIOError(f"channel names must be distinct: {names!r}", path=str(path))
-        pixels = np.ascontiguousarray(np.stack(planes, axis=-1))
+        # One interleaved (H, W, C) buffer, each plane converted straight into it (exact:
+        # integers here are at most 2**24 in magnitude).
+        pixels = np.empty(shape + (len(planes),), np.float32 if part_name == "data"
+                          else np.uint32)
+        for index, plane in enumerate(planes):
+            pixels[..., index] = plane
         part_attrs = dict(attrs)
         part_attrs["name"] = part_name
         if pixels.dtype == np.uint32:

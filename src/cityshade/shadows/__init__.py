@@ -267,14 +267,9 @@ def oriented_normals(surfaces: "Surfaces", camera: "Camera") -> np.ndarray:
     A pixel may show the back of a triangle (an open model, a wall seen from inside); its
     surface for shading and shadows is the side that is seen.
     """
-    normal = np.asarray(surfaces.normal, dtype=np.float64)
-    if camera.kind == "map":
-        to_viewer = np.asarray(camera.eye_m, np.float64) - np.asarray(camera.target_m, np.float64)
-        to_viewer = np.broadcast_to(to_viewer, normal.shape)
-    else:
-        to_viewer = np.asarray(camera.eye_m, np.float64) - surfaces.position_m
-    seen_from_back = np.einsum("ijk,ijk->ij", normal, to_viewer) < 0
-    return np.where(seen_from_back[..., None], -normal, normal)
+    from cityshade.raster.gbuffer import seen_side_normals
+
+    return seen_side_normals(surfaces, camera)
 
 
 def facing_mask(normal, valid, sun_direction) -> np.ndarray:
