@@ -183,7 +183,7 @@ def test_techniques_agree_with_raytrace(sample, kind, el):
     ref = render_frame(sample, cam, T_1990, sun, "raytrace")
     valid = ref.surfaces.valid
     for name in MAP_TECHNIQUES:
-        frame = render_frame(sample, cam, T_1990, sun, name)
+        frame = render_frame(sample, cam, T_1990, sun, name, measure=True)
         assert np.isfinite(frame.lit).all()
         agree = ((frame.lit[valid] >= 0.5) == (ref.lit[valid] >= 0.5)).mean()
         assert agree >= 0.95, f"{name}: {100 * agree:.2f} % of pixels agree with raytrace"
@@ -230,7 +230,7 @@ def test_bias_no_acne_no_gap_at_3_degrees(one_box):
     # Along the shadow direction from the box centre on a 0.25 m map.
     px = 0.25
     cam = cams.map_view(one_box, px, bbox=(-40, -40, 40, 40))
-    frame = render_frame(one_box, cam, 0.0, sun, "shadowmap")
+    frame = render_frame(one_box, cam, 0.0, sun, "shadowmap", measure=True)
     texel = frame.diagnostics.shadow["texel_light_m"]
     d = -np.array([math.sin(math.radians(az)), math.cos(math.radians(az))])
     exit_m = 5.0 / max(abs(d[0]), abs(d[1]))             # the wall, box half-size 5 m

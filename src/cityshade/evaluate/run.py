@@ -37,7 +37,8 @@ def expand_techniques(spec: str | Sequence[str]) -> list[str]:
     ``all`` is every exact technique but the reference
     (:func:`cityshade.shadows.exact_technique_names`: ``izb``), every map technique of the
     registry (:func:`cityshade.shadows.map_technique_names`), each ``+smooth``, and
-    ``hybrid:NAME`` for each map technique. ``raytrace`` is always the reference and is not
+    ``hybrid:NAME`` for each map technique; ``all+smooth`` (``--shadows all --smooth``) is
+    each of those with the smoothing filter. ``raytrace`` is always the reference and is not
     listed.
     Unknown names raise the registry's :class:`~cityshade.errors.UsageError`.
     """
@@ -50,8 +51,14 @@ def expand_techniques(spec: str | Sequence[str]) -> list[str]:
     out: list[str] = []
     for name in names:
         maps = [n for n in map_technique_names() if not n.startswith("csm:")]
-        group = ([*exact_technique_names(), *maps, *(f"{n}+smooth" for n in maps),
-                  *(f"hybrid:{n}" for n in maps)] if name == "all" else [name])
+        every = [*exact_technique_names(), *maps, *(f"{n}+smooth" for n in maps),
+                 *(f"hybrid:{n}" for n in maps)]
+        if name == "all":
+            group = every
+        elif name == "all+smooth":
+            group = [n if n.endswith("+smooth") else f"{n}+smooth" for n in every]
+        else:
+            group = [name]
         for n in group:
             if n == "raytrace":
                 continue
@@ -150,13 +157,15 @@ def evaluate_frame(scene: "Scene", camera: "Camera", view: str, sun: "SunPositio
               "gbuffer_s": gbuffer_s, "resolve_s": resolve_s}
 
     def timed(tech, technique_settings):
-        """(seconds per run, diagnostics per run, last result) of ``runs`` shadow passes."""
+        """(seconds per run, diagnostics per run, the warm-up run's result) of ``runs`` shadow
+        passes. The warm-up run also takes the map techniques' per-frame measures (aliasing
+        m, texel size) for the row; the timed runs do what a frame does, no more."""
         seconds, diags, result = [], [], None
-        for _ in range(runs):
-            sp = shadow_pass(cp, sun, tech, technique_settings)
+        for k in range(runs):
+            sp = shadow_pass(cp, sun, tech, technique_settings, measure=(k == 0))
             seconds.append(sp.seconds)
             diags.append(sp.result.diagnostics)
-            result = sp.result
+            result = sp.result if k == 0 else result
         return seconds, diags, result
 
     if progress:

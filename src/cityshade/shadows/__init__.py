@@ -61,7 +61,9 @@ class ShadowContext:
 
     ``normal`` (oriented to the viewer) comes from the camera pass when the pipeline built the
     context, and ``faces`` is computed at most once, however many techniques (a base, a
-    smoothing, a hybrid) read it.
+    smoothing, a hybrid) read it. ``measure`` asks map techniques for their per-frame measures
+    (texel footprint, aliasing m: ``render -v``, ``evaluate``); they cost as much as a lookup,
+    so a plain frame leaves them out.
     """
 
     scene: "Scene"
@@ -71,6 +73,7 @@ class ShadowContext:
     t_days: float
     settings: ShadowSettings = field(default_factory=ShadowSettings)
     oriented_normal: np.ndarray | None = None
+    measure: bool = False
 
     @functools.cached_property
     def normal(self) -> np.ndarray:

@@ -282,7 +282,7 @@ class MapTechnique:
         t1 = time.perf_counter()
         lit = self.look_up(ctx, prepared)
         t2 = time.perf_counter()
-        if prepared.maps:
+        if prepared.maps and ctx.measure:
             diagnostics.update(self.planner.measure(ctx, prepared))
         t3 = time.perf_counter()
         diagnostics["shadow_s"] = t2 - t0
