@@ -193,7 +193,7 @@ class ShadowPass:
     def diagnostics(self, cp: CameraPass) -> FrameDiagnostics:
         """The frame's typed diagnostics, with what it left out (:func:`skipped_work`)."""
         return FrameDiagnostics(
-            gbuffer=cp.gbuffer.stats, shadow=dict(self.result.diagnostics), ground=cp.ground,
+            gbuffer=cp.gbuffer.stats, shadow=self.result.diagnostics, ground=cp.ground,
             skipped=skipped_work(cp.scene, cp.gbuffer.stats, self.result.diagnostics,
                                  cp.surfaces, self.sun))
 

@@ -354,11 +354,11 @@ class Smoothed:
                          settings.depth_threshold_rel, mask=faces, max_gain=settings.max_gain)
         lit[~faces] = 0.0
         smooth_s = time.perf_counter() - t0
-        diagnostics = dict(result.diagnostics)
-        diagnostics["technique"] = self.name
-        diagnostics["smooth"] = {"sigma_px": settings.sigma_px,
-                                 "depth_threshold_rel": settings.depth_threshold_rel,
-                                 "max_gain": settings.max_gain, "smooth_s": smooth_s}
-        diagnostics["shadow_s"] = float(diagnostics.get("shadow_s", 0.0)) + smooth_s
+        diagnostics = dataclasses.replace(result.diagnostics)
+        diagnostics.technique = self.name
+        diagnostics.smooth = {"sigma_px": settings.sigma_px,
+                              "depth_threshold_rel": settings.depth_threshold_rel,
+                              "max_gain": settings.max_gain, "smooth_s": smooth_s}
+        diagnostics.shadow_s = float(diagnostics.get("shadow_s", 0.0)) + smooth_s
         # Keep every other field of the inner result (extra channels, maps used, ...).
         return dataclasses.replace(result, lit=lit, diagnostics=diagnostics)

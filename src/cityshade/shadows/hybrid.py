@@ -43,7 +43,7 @@ import numpy as np
 from numba import njit, prange
 
 from cityshade.errors import UsageError
-from cityshade.shadows import TECHNIQUES, ShadowContext, ShadowResult
+from cityshade.shadows import TECHNIQUES, ShadowContext, ShadowResult, TechniqueDiagnostics
 
 #: Receiver states of the classifiers.
 SURE_LIT, SURE_SHADOW, UNCERTAIN = 0, 1, 2
@@ -271,7 +271,8 @@ class Hybrid:
         # The bracket classifier needs the base's map(s) only, not its filtered answer.
         if settings.classifier == "bracket":
             prepared = self.base.prepare(ctx)
-            base_diagnostics = {"technique": self.base.name, **prepared.diagnostics}
+            base_diagnostics = TechniqueDiagnostics(technique=self.base.name).update(
+                prepared.diagnostics)
             maps = prepared.maps
             base_lit = None
         else:
@@ -282,8 +283,8 @@ class Hybrid:
         shape = surfaces.valid.shape
         lit = np.zeros(shape, np.float32)
         refined = np.zeros(shape, bool)
-        diagnostics = {"technique": self.name, "base": base_diagnostics,
-                       "classifier": settings.classifier}
+        diagnostics = TechniqueDiagnostics(technique=self.name, base=base_diagnostics,
+                                           classifier=settings.classifier)
         if not ctx.sun.above_horizon:
             diagnostics.update(traced_px=0, traced_share=0.0, note="sun below the horizon")
             return ShadowResult(lit=lit, diagnostics=diagnostics,
@@ -308,7 +309,7 @@ class Hybrid:
             state[faces] = np.where(b[faces] >= settings.high, SURE_LIT,
                                     np.where(b[faces] <= settings.low, SURE_SHADOW, UNCERTAIN))
             classifier_used = "vsm" if settings.classifier == "vsm" else "vsm (base exposes no map)"
-        diagnostics["classifier"] = classifier_used
+        diagnostics.classifier = classifier_used
         lit[faces & (state == SURE_LIT)] = 1.0
         t2 = time.perf_counter()
 
@@ -337,17 +338,17 @@ class Hybrid:
             passes += 1
         t3 = time.perf_counter()
         n_facing = int(faces.sum())
-        diagnostics.update({
-            "uncertain_px": int(classified_uncertain.sum()),
-            "boundary_px": boundary_rays, "boundary_passes": passes,
-            "traced_px": rays + boundary_rays,
-            "traced_share": (rays + boundary_rays) / max(int(valid.sum()), 1),
-            "facing_px": n_facing,
-            "map_px": base_diagnostics.get("map_px"),
-            "texel_m": base_diagnostics.get("texel_m"),
-            "aliasing_m": base_diagnostics.get("aliasing_m"),
-            "shadow_s": t3 - t0,
-            "timings_s": {"base_s": t1 - t0, "classify_s": t2 - t1, "rays_s": t3 - t2},
-        })
+        diagnostics.update(
+            uncertain_px=int(classified_uncertain.sum()),
+            boundary_px=boundary_rays, boundary_passes=passes,
+            traced_px=rays + boundary_rays,
+            traced_share=(rays + boundary_rays) / max(int(valid.sum()), 1),
+            facing_px=n_facing,
+            map_px=base_diagnostics.map_px,
+            texel_m=base_diagnostics.texel_m,
+            aliasing_m=base_diagnostics.aliasing_m,
+            shadow_s=t3 - t0,
+            timings_s={"base_s": t1 - t0, "classify_s": t2 - t1, "rays_s": t3 - t2},
+        )
         return ShadowResult(lit=lit, diagnostics=diagnostics,
                             extra_channels={"refined": refined.astype(np.float32)})
