@@ -138,3 +138,20 @@ def cam_context(scene, cam, sun, settings):
     from cityshade.pipeline import camera_pass
 
     return camera_pass(scene, cam, 0.0).context(sun, settings)
+
+
+def test_refining_with_izb_gives_the_same_frame(scene, references, monkeypatch):
+    """The uncertain pixels refined by the light-space engine instead of kd-tree rays: the same
+    lit values, bit for bit, and the same traced pixels."""
+    import cityshade.shadows.hybrid as H
+
+    t, refs = references
+    cam, sun, _ = refs["overview", 30.0]
+    rays = render_frame(scene, cam, t, sun, "hybrid:vsm")
+    monkeypatch.setattr(H, "IZB_REFINE_MIN_RAYS", 0)
+    izb = render_frame(scene, cam, t, sun, "hybrid:vsm")
+    assert rays.diagnostics.shadow["refined_with"] == "raytrace"
+    assert izb.diagnostics.shadow["refined_with"] == "izb"
+    assert izb.diagnostics.shadow["traced_px"] == rays.diagnostics.shadow["traced_px"] > 0
+    assert np.array_equal(izb.lit, rays.lit)
+    assert np.array_equal(izb.extra_channels["refined"], rays.extra_channels["refined"])

@@ -88,6 +88,24 @@ class ShadowContext:
         """(H, W) bool: surface pixels facing the sun (the shared rule)."""
         return facing_mask(self.normal, self.surfaces.valid, self.sun.direction)
 
+    @functools.cached_property
+    def facing_points(self) -> np.ndarray:
+        """(N, 3) float64 surface points of the :attr:`faces` pixels (row-major order),
+        gathered once for the planner, the lookup and the rays."""
+        return np.ascontiguousarray(self.surfaces.position_m[self.faces], np.float64)
+
+    @functools.cached_property
+    def facing_normals(self) -> np.ndarray:
+        """(N, 3) float64 oriented normals of the :attr:`faces` pixels."""
+        return np.ascontiguousarray(self.normal[self.faces], np.float64)
+
+    def receivers(self, pixels: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(points, oriented normals) of the pixels of mask ``pixels`` (the gathered facing
+        ones when ``pixels`` is :attr:`faces` itself)."""
+        if pixels is self.faces:
+            return self.facing_points, self.facing_normals
+        return self.surfaces.position_m[pixels], self.normal[pixels]
+
 
 @dataclass
 class MapUse:
@@ -158,8 +176,10 @@ _DIAGNOSTIC_FAMILIES: dict[str, dict[str, Any]] = {
     "cascades": dict(cascades=int, cascades_rendered=int, cascades_skipped=list,
                      splits_m=list, per_cascade=list),
     # hybrid: its base technique's diagnostics and what the rays refined
+    # (refined_with: the exact engine(s) that traced, "raytrace" and/or "izb")
     "hybrid": dict(base=_Reported, classifier=str, uncertain_px=int, boundary_px=int,
-                   boundary_passes=int, traced_px=int, traced_share=_NUMBER, facing_px=int),
+                   boundary_passes=int, traced_px=int, traced_share=_NUMBER, facing_px=int,
+                   refined_with=str),
     # +smooth: its settings and time
     "smooth": dict(smooth=dict),
 }

@@ -232,6 +232,27 @@ def bracket_states(depth_map, scene, points_m, normals, own_poly, sun_direction,
     return state
 
 
+#: Uncertain pixels from which the light-space engine (``izb``) refines them instead of the
+#: kd-tree's shadow rays: both give the same answer, bit for bit, but izb pays a per-call setup
+#: (projecting and binning every caster over the receivers' light-plane box, which for pixels
+#: scattered over a whole view is the whole city) that only many receivers repay. Measured on
+#: the 1M-triangle city (CPU time, one thread): see the closing note of issue 12.
+IZB_REFINE_MIN_RAYS = 400_000
+
+
+def refine_engine(n_rays: int):
+    """(name, sunlit function) of the exact engine that refines ``n_rays`` uncertain pixels:
+    :func:`cityshade.lightspace.sunlit` from :data:`IZB_REFINE_MIN_RAYS` on, else
+    :func:`cityshade.trace.sunlit` (the same answer either way)."""
+    if n_rays >= IZB_REFINE_MIN_RAYS:
+        from cityshade.lightspace import sunlit
+
+        return "izb", sunlit
+    from cityshade.trace import sunlit
+
+    return "raytrace", sunlit
+
+
 def _boundary(binary: np.ndarray, candidates: np.ndarray) -> np.ndarray:
     """Candidates with a 4-neighbour candidate of the other class."""
     out = np.zeros_like(candidates)
@@ -264,8 +285,6 @@ class Hybrid:
         self.name = f"hybrid:{base}"
 
     def run(self, ctx: ShadowContext) -> ShadowResult:
-        from cityshade.trace import sunlit
-
         settings = ctx.settings.hybrid
         t0 = time.perf_counter()
         # The bracket classifier needs the base's map(s) only, not its filtered answer.
@@ -313,10 +332,14 @@ class Hybrid:
         lit[faces & (state == SURE_LIT)] = 1.0
         t2 = time.perf_counter()
 
+        engines: list[str] = []
+
         def trace(mask: np.ndarray) -> int:
             points = surfaces.position_m[mask]
             if not len(points):
                 return 0
+            engine, sunlit = refine_engine(len(points))
+            engines.append(engine)
             lit[mask] = sunlit(ctx.scene, points, normal[mask], ctx.sun.direction,
                                ctx.t_days).astype(np.float32)
             refined[mask] = True
@@ -344,6 +367,7 @@ class Hybrid:
             traced_px=rays + boundary_rays,
             traced_share=(rays + boundary_rays) / max(int(valid.sum()), 1),
             facing_px=n_facing,
+            refined_with="+".join(dict.fromkeys(engines)) or None,
             map_px=base_diagnostics.map_px,
             texel_m=base_diagnostics.texel_m,
             aliasing_m=base_diagnostics.aliasing_m,
