@@ -646,14 +646,7 @@ def _lookup_receivers(m, width, height, projective, points, normals, sun, consta
         u, v, z = _clip_point(m, qx, qy, qz, width, height)
         if projective:
             # Two tangents of the receiver's plane, 1 cm long (receiver_plane_gradient).
-            if abs(nz) < 0.9:
-                hx, hy, hz = 0.0, 0.0, 1.0
-            else:
-                hx, hy, hz = 1.0, 0.0, 0.0
-            ax, ay, az = ny * hz - nz * hy, nz * hx - nx * hz, nx * hy - ny * hx
-            la = math.sqrt(ax * ax + ay * ay + az * az)
-            ax, ay, az = ax / la, ay / la, az / la
-            bx, by, bz = ny * az - nz * ay, nz * ax - nx * az, nx * ay - ny * ax
+            ax, ay, az, bx, by, bz = _tangent_frame(nx, ny, nz)
             u1, v1, z1 = _clip_point(m, qx + 0.01 * ax, qy + 0.01 * ay, qz + 0.01 * az, width,
                                      height)
             u2, v2, z2 = _clip_point(m, qx + 0.01 * bx, qy + 0.01 * by, qz + 0.01 * bz, width,
