@@ -70,14 +70,16 @@ class CameraPass:
         """(H, W) bool: pixels showing a surface."""
         return np.asarray(self.surfaces.valid, bool)
 
-    def context(self, sun: "SunPosition", settings: ShadowSettings | None = None
-                ) -> "ShadowContext":
-        """The shadow context of one sun on this pass."""
+    def context(self, sun: "SunPosition", settings: ShadowSettings | None = None,
+                measure: bool = False) -> "ShadowContext":
+        """The shadow context of one sun on this pass (``measure``: the map techniques' texel
+        and aliasing measures too)."""
         from cityshade.shadows import ShadowContext
 
         return ShadowContext(scene=self.scene, surfaces=self.surfaces, camera=self.camera,
                              sun=sun, t_days=float(self.t_days),
-                             settings=settings or ShadowSettings(), oriented_normal=self.normal)
+                             settings=settings or ShadowSettings(), oriented_normal=self.normal,
+                             measure=bool(measure))
 
 
 #: Peak bytes per pixel of a frame, by technique family, measured with
@@ -237,15 +239,16 @@ class ShadowPass:
 
 
 def shadow_pass(cp: CameraPass, sun: "SunPosition", technique: "str | Technique",
-                settings: ShadowSettings | None = None) -> ShadowPass:
-    """Run one shadow technique (a registry name or an instance) for one sun on ``cp``."""
+                settings: ShadowSettings | None = None, measure: bool = False) -> ShadowPass:
+    """Run one shadow technique (a registry name or an instance) for one sun on ``cp``
+    (``measure``: with the map techniques' per-frame measures, :class:`ShadowContext`)."""
     from cityshade.shadows import get_technique
 
     if settings is not None and not isinstance(settings, ShadowSettings):
         raise ContractError(f"shadow settings must be a ShadowSettings, not "
                             f"{type(settings).__name__}")
     tech = get_technique(technique) if isinstance(technique, str) else technique
-    ctx = cp.context(sun, settings)
+    ctx = cp.context(sun, settings, measure)
     t = time.perf_counter()
     result = tech.run(ctx)
     seconds = time.perf_counter() - t

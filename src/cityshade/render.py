@@ -70,7 +70,7 @@ def _range_text(rng) -> str:
 
 def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosition",
                  technique: str = "raytrace", settings: ShadowSettings | None = None,
-                 sky: bool = True, ground: str | None = None) -> Frame:
+                 sky: bool = True, ground: str | None = None, measure: bool = False) -> Frame:
     """Render one frame: the pipeline's camera pass and shadow pass, then shading.
 
     Parameters
@@ -88,6 +88,9 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
     ground : str, optional
         "min", "auto" or a CRS height: add a ground plane where no surface was drawn
         (:mod:`cityshade.ground`).
+    measure : bool
+        Also the map techniques' per-frame measures (texel footprint, aliasing m), as
+        ``render -v`` reports them.
     """
     from cityshade.pipeline import camera_pass, check_frame_memory, shadow_pass
     from cityshade.shading import shade
@@ -110,7 +113,7 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
                         f"nothing stands then")
     cp = camera_pass(scene, camera, t_days, ground=ground)
     timings: dict[str, float] = dict(cp.timings_s)
-    sp = shadow_pass(cp, sun, tech, settings)
+    sp = shadow_pass(cp, sun, tech, settings, measure)
     timings["shadow_s"] = sp.seconds
     t = time.perf_counter()
     shade_report: dict = {}

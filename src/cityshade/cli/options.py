@@ -316,8 +316,10 @@ def shadow_options(default_technique: str, *, technique_help: str | None = None,
             settings = load_config(kwargs.pop("config_path"))
             technique = kwargs.pop("technique") or settings.shadows.technique \
                 or default_technique
-            if kwargs.pop("smooth") and not technique.endswith("+smooth"):
-                technique += "+smooth"
+            if kwargs.pop("smooth"):
+                # Every name of a list (evaluate's "shadowmap,pcf", "all") gets the filter.
+                technique = ",".join(n if n.strip().endswith("+smooth") else f"{n.strip()}+smooth"
+                                     for n in technique.split(",") if n.strip())
             flags = {k: kwargs.pop(k, None) for k in _SHADOW_FLAGS}
             for flag in inapplicable_flags(technique, flags):
                 click.echo(f"cityshade: warning: --{flag.replace('_', '-')} does not apply to "

@@ -88,7 +88,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
             spa = dataclasses.replace(spa, refraction=False)
         sun = sun_from_instant(user_date.instant_utc, scene.crs, scene.origin_m, spa)
     frame = render_frame(scene, cam, user_date.city_days, sun, technique, settings.shadows,
-                         sky=not no_sky, ground=ground)
+                         sky=not no_sky, ground=ground, measure=verbose)
     for warning in frame.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
     t1 = time.perf_counter()

@@ -62,7 +62,9 @@ class ShadowContext:
 
     ``normal`` (oriented to the viewer) comes from the camera pass when the pipeline built the
     context, and ``faces`` is computed at most once, however many techniques (a base, a
-    smoothing, a hybrid) read it.
+    smoothing, a hybrid) read it. ``measure`` asks map techniques for their per-frame measures
+    (texel footprint, aliasing m: ``render -v``, ``evaluate``); they cost as much as a lookup,
+    so a plain frame leaves them out.
     """
 
     scene: "Scene"
@@ -72,6 +74,7 @@ class ShadowContext:
     t_days: float
     settings: ShadowSettings = field(default_factory=ShadowSettings)
     oriented_normal: np.ndarray | None = None
+    measure: bool = False
 
     @functools.cached_property
     def normal(self) -> np.ndarray:
@@ -84,6 +87,24 @@ class ShadowContext:
     def faces(self) -> np.ndarray:
         """(H, W) bool: surface pixels facing the sun (the shared rule)."""
         return facing_mask(self.normal, self.surfaces.valid, self.sun.direction)
+
+    @functools.cached_property
+    def facing_points(self) -> np.ndarray:
+        """(N, 3) float64 surface points of the :attr:`faces` pixels (row-major order),
+        gathered once for the planner, the lookup and the rays."""
+        return np.ascontiguousarray(self.surfaces.position_m[self.faces], np.float64)
+
+    @functools.cached_property
+    def facing_normals(self) -> np.ndarray:
+        """(N, 3) float64 oriented normals of the :attr:`faces` pixels."""
+        return np.ascontiguousarray(self.normal[self.faces], np.float64)
+
+    def receivers(self, pixels: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(points, oriented normals) of the pixels of mask ``pixels`` (the gathered facing
+        ones when ``pixels`` is :attr:`faces` itself)."""
+        if pixels is self.faces:
+            return self.facing_points, self.facing_normals
+        return self.surfaces.position_m[pixels], self.normal[pixels]
 
 
 @dataclass
@@ -155,8 +176,10 @@ _DIAGNOSTIC_FAMILIES: dict[str, dict[str, Any]] = {
     "cascades": dict(cascades=int, cascades_rendered=int, cascades_skipped=list,
                      splits_m=list, per_cascade=list),
     # hybrid: its base technique's diagnostics and what the rays refined
+    # (refined_with: the exact engine(s) that traced, "raytrace" and/or "izb")
     "hybrid": dict(base=_Reported, classifier=str, uncertain_px=int, boundary_px=int,
-                   boundary_passes=int, traced_px=int, traced_share=_NUMBER, facing_px=int),
+                   boundary_passes=int, traced_px=int, traced_share=_NUMBER, facing_px=int,
+                   refined_with=str),
     # +smooth: its settings and time
     "smooth": dict(smooth=dict),
 }

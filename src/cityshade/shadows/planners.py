@@ -72,7 +72,7 @@ class Uniform:
 
         settings = ctx.settings
         faces = ctx.faces
-        points = ctx.surfaces.position_m[faces]
+        points = ctx.facing_points
         out = PreparedMaps(sun_direction=ctx.sun.direction)
         if points.shape[0] == 0:
             # No visible surface faces the sun: nothing to look up, no map to draw.
@@ -97,8 +97,8 @@ class Uniform:
         from cityshade.shadows.shadowmap import map_diagnostics
 
         faces = ctx.faces
-        return map_diagnostics(prepared.views, ctx, ctx.surfaces.position_m[faces],
-                               ctx.normal[faces], faces)
+        return map_diagnostics(prepared.views, ctx, ctx.facing_points, ctx.facing_normals,
+                               faces)
 
 
 class Warped:
@@ -266,8 +266,8 @@ class MapTechnique:
         """(H, W) float32 lit fraction: each map read for the pixels it serves, 0 elsewhere."""
         lit = np.zeros(ctx.surfaces.valid.shape, np.float32)
         for use in prepared.maps:
-            lit[use.pixels] = self.lookup(use.depth_map, ctx.surfaces.position_m[use.pixels],
-                                          ctx.normal[use.pixels], prepared.sun_direction,
+            points, normals = ctx.receivers(use.pixels)
+            lit[use.pixels] = self.lookup(use.depth_map, points, normals, prepared.sun_direction,
                                           ctx.settings)
         return lit
 
@@ -280,7 +280,7 @@ class MapTechnique:
         t1 = time.perf_counter()
         lit = self.look_up(ctx, prepared)
         t2 = time.perf_counter()
-        if prepared.maps:
+        if prepared.maps and ctx.measure:
             diagnostics.update(self.planner.measure(ctx, prepared))
         t3 = time.perf_counter()
         diagnostics.shadow_s = t2 - t0
