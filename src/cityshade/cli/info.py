@@ -59,6 +59,7 @@ def describe(scene) -> dict:
         "warnings": rep.get("warnings", []),
         "timings": rep.get("timings", {}),
         "kdtree": scene.kdtree.stats if scene.kdtree is not None else None,
+        "tiles": rep.get("tiles"),
     }
     return out
 
@@ -68,6 +69,10 @@ def _text(d: dict) -> str:
     add = lines.append
     if d["file"]:
         add(f"source        {d['file']}")
+    tiles = d.get("tiles")
+    if tiles:
+        add(f"tiles         {tiles['files']} files; {tiles['duplicate_objects']:,} objects met "
+            f"again in a later file (same gml:id) kept once")
     # Versions of the input format (the key keeps its old name: CityJSON's are listed too).
     add(f"{d['input_format']:<14}{', '.join(d['citygml_versions']) or '?'}")
     objs = ", ".join(f"{n} {t}" for t, n in d["objects"]["by_type"].items())
