@@ -58,8 +58,12 @@ def save_scene(scene: Scene, path: str | os.PathLike, source: dict[str, Any],
     return write_cache(path, header, arrays)
 
 
-def load_scene(path: str | os.PathLike, verify: bool = True, with_kdtree: bool = True) -> Scene:
+def load_scene(path: str | os.PathLike, verify: bool | str = "auto",
+               with_kdtree: bool = True) -> Scene:
     """Load a scene file written by :func:`save_scene` (memory-mapped, read-only arrays).
+
+    ``verify`` is :func:`cityshade.cache.open_cache`'s: by default the arrays' checksums are
+    checked unless a verified stamp vouches for this very file; True checks them always.
 
     Raises
     ------
