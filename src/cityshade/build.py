@@ -11,6 +11,7 @@ from typing import Callable, Iterable
 
 from cityshade.config import Settings
 from cityshade.errors import ContractError
+from cityshade.util import release_freed_memory
 from cityshade.geometry.scene import Scene
 
 #: Read size when hashing the source file (large reads keep hashing near disk speed).
@@ -23,24 +24,6 @@ def file_sha256(path: str | os.PathLike) -> str:
         while chunk := fh.read(_HASH_CHUNK):
             digest.update(chunk)
     return digest.hexdigest()
-
-
-def release_freed_memory() -> None:
-    """Hand the free pages of the C heap back to the operating system (glibc; elsewhere a no-op).
-
-    The reader's records (hundreds of thousands of small strings and tuples) and the scene's
-    temporaries leave the heap fragmented once freed, so without this the kd-tree build would
-    start from the read stage's high-water mark (measured on the 1M-triangle city: 190 MB of
-    resident memory returned, in about 20 ms).
-    """
-    if not sys.platform.startswith("linux"):
-        return
-    try:
-        import ctypes
-
-        ctypes.CDLL("libc.so.6").malloc_trim(0)
-    except (OSError, AttributeError):  # not glibc (musl has no malloc_trim)
-        pass
 
 
 def default_output(source: str | os.PathLike) -> Path:

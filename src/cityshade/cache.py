@@ -35,6 +35,7 @@ import os
 import struct
 import time
 from pathlib import Path
+from collections.abc import Sequence
 from typing import Any, Mapping
 
 import numpy as np
@@ -118,6 +119,46 @@ def pack_strings(values: list[str]) -> tuple[np.ndarray, np.ndarray]:
 def unpack_strings(blob: np.ndarray, offsets: np.ndarray) -> list[str]:
     data = bytes(blob)
     return [data[offsets[i]:offsets[i + 1]].decode("utf-8") for i in range(len(offsets) - 1)]
+
+
+class PackedStrings(Sequence):
+    """A read-only list of strings over a :func:`pack_strings` blob, decoded on access.
+
+    A loaded scene's gml:id tables (millions of polygons in a 10^7-triangle city) would take
+    most of a load's time to decode as a list, and most commands never read them.
+    """
+
+    def __init__(self, blob: np.ndarray, offsets: np.ndarray):
+        self._blob = blob
+        self._offsets = offsets
+
+    def __len__(self) -> int:
+        return len(self._offsets) - 1
+
+    def __getitem__(self, index):
+        if isinstance(index, slice):
+            return [self[i] for i in range(*index.indices(len(self)))]
+        n = len(self)
+        i = int(index)
+        if i < 0:
+            i += n
+        if not 0 <= i < n:
+            raise IndexError("string index out of range")
+        return bytes(self._blob[self._offsets[i]:self._offsets[i + 1]]).decode("utf-8")
+
+    def __iter__(self):
+        data = bytes(self._blob)
+        offsets = self._offsets.tolist()
+        for i in range(len(offsets) - 1):
+            yield data[offsets[i]:offsets[i + 1]].decode("utf-8")
+
+    def __eq__(self, other) -> bool:
+        if isinstance(other, (list, tuple, PackedStrings)):
+            return len(self) == len(other) and all(a == b for a, b in zip(self, other))
+        return NotImplemented
+
+    def __repr__(self) -> str:
+        return f"PackedStrings({len(self)} strings)"
 
 
 def write_cache(path: str | os.PathLike, header: Mapping[str, Any],

@@ -12,7 +12,7 @@ from typing import Any
 import numpy as np
 
 from cityshade import __version__
-from cityshade.cache import FORMAT_VERSION, open_cache, pack_strings, unpack_strings, write_cache
+from cityshade.cache import FORMAT_VERSION, PackedStrings, open_cache, pack_strings, write_cache
 from cityshade.citygml.crs import CrsInfo
 from cityshade.errors import CacheError
 from cityshade.geometry.scene import Scene
@@ -80,9 +80,9 @@ def load_scene(path: str | os.PathLike, verify: bool | str = "auto",
     obj_types = [type_names[int(c)] for c in cache.array("obj_type")]
     scene = Scene(
         crs=CrsInfo.from_json(header["crs"]),
-        obj_ids=unpack_strings(cache.array("obj_id_blob"), cache.array("obj_id_offsets")),
+        obj_ids=PackedStrings(cache.array("obj_id_blob"), cache.array("obj_id_offsets")),
         obj_types=obj_types,
-        poly_ids=unpack_strings(cache.array("poly_id_blob"), cache.array("poly_id_offsets")),
+        poly_ids=PackedStrings(cache.array("poly_id_blob"), cache.array("poly_id_offsets")),
         materials=header["materials"], textures=header["textures"], report=header["report"],
         **fields)
     if with_kdtree and header.get("kdtree_stats") is not None:
