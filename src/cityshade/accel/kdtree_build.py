@@ -581,11 +581,11 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         bhi_r = bhi.copy()
         blo_r[axis] = p
         ids_l = np.empty(n_l, ids.dtype)
-        lo_l = np.empty((n_l, 4))
-        hi_l = np.empty((n_l, 4))
+        lo_l = np.empty((n_l, 4), lo.dtype)
+        hi_l = np.empty((n_l, 4), hi.dtype)
         ids_r = np.empty(n_r, ids.dtype)
-        lo_r = np.empty((n_r, 4))
-        hi_r = np.empty((n_r, 4))
+        lo_r = np.empty((n_r, 4), lo.dtype)
+        hi_r = np.empty((n_r, 4), hi.dtype)
         il = 0
         ir = 0
         for r in range(n):
@@ -836,8 +836,11 @@ def build_kdtree(vertices, triangles, t_begin_days, t_end_days, material,
     has_time = time_range is not None
     t0, t1 = time_range if has_time else (0.0, 0.0)
 
-    lo0 = np.empty((ids0.size, 4))
-    hi0 = np.empty((ids0.size, 4))
+    # Reference boxes in float32: every bound is a float32 value (corners, outward-rounded
+    # times and clipped extents, float32 split planes), so the narrow type is exact and halves
+    # the build's largest arrays.
+    lo0 = np.empty((ids0.size, 4), np.float32)
+    hi0 = np.empty((ids0.size, 4), np.float32)
     if ids0.size:
         # Usually every triangle is valid: then no (T, 3, 3) copy is made for the boxes.
         valid_v = tri_v if ids0.size == n_tri else tri_v[ids0]
