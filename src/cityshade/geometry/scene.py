@@ -515,6 +515,7 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
     if render_space:
         origin = render_origin(world.min(axis=0), world.max(axis=0))
         vertices = (world - origin).astype(np.float32)
+        del world
     else:
         origin, vertices = np.zeros(3), world
 
@@ -526,14 +527,17 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
     orig_poly = polys[drawn]
     poly_material = np.full(len(drawn), -1, np.int32)
     poly_texture = np.full(len(drawn), -1, np.int32)
-    point_uv = np.zeros((len(coords), 2), np.float64)
+    # float32: each texture coordinate is rounded once either way (the cache stores float32).
+    point_uv = np.zeros((len(coords) if theme is not None else 0, 2), np.float32)
     materials: list[dict] = []
     textures: list[dict] = []
     if theme is not None:
         _apply_appearance(raw, theme, drawn, polys, rings, ring_offsets,
                           poly_ring_offsets, coords, poly_material, poly_texture, point_uv,
                           materials, textures, warnings, counters)
-    uv = point_uv[used_points].astype(np.float32)
+    uv = point_uv[used_points] if theme is not None else np.zeros((len(used_points), 2),
+                                                                   np.float32)
+    del point_uv
 
     # 10. Tables.
     p_obj_drawn = p_obj[drawn]
