@@ -7,6 +7,7 @@ from __future__ import annotations
 import contextlib
 import math
 import os
+import sys
 import tomllib
 import uuid
 from pathlib import Path
@@ -273,3 +274,22 @@ def canvas_pixels(canvas) -> Any:
 
     canvas.draw()
     return np.array(canvas.buffer_rgba())[..., :3].copy()
+
+
+def release_freed_memory() -> None:
+    """Hand the free pages of the C heap back to the operating system (glibc; elsewhere a no-op).
+
+    The reader's records (hundreds of thousands of small strings and tuples), the scene's
+    temporaries and the kd-tree kernel's per-node arrays leave the heap fragmented once freed,
+    so without this each build stage would start from the last one's high-water mark
+    (measured on the 1M-triangle city: 190 MB of resident memory returned after reading, in
+    about 20 ms).
+    """
+    if not sys.platform.startswith("linux"):
+        return
+    try:
+        import ctypes
+
+        ctypes.CDLL("libc.so.6").malloc_trim(0)
+    except (OSError, AttributeError):  # not glibc (musl has no malloc_trim)
+        pass

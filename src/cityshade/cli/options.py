@@ -153,13 +153,21 @@ def translate_errors(verbose: bool = False):
 class Progress:
     """A one-line progress display on a terminal's stderr (silent otherwise or with --quiet)."""
 
-    def __init__(self, enabled: bool | None = None):
+    def __init__(self, enabled: bool | None = None, files: bool = False):
         self.enabled = sys.stderr.isatty() if enabled is None else enabled
+        # A build of several files says which file it reads: a line per file when stderr is
+        # not a terminal (logs), in the bar otherwise.
+        self.file_lines = files and not self.enabled
         self.t0 = time.perf_counter()
         self.last = 0.0
         self.stage = None
 
     def __call__(self, stage: str, done: int, total: int) -> None:
+        if self.file_lines and stage.startswith("file ") and stage != self.stage:
+            self.stage = stage
+            name, _, count = stage[5:].rpartition(" ")
+            sys.stderr.write(f"cityshade: reading {count} {name}\n")
+            sys.stderr.flush()
         if not self.enabled:
             return
         now = time.perf_counter()
@@ -169,6 +177,12 @@ class Progress:
         if stage == "read" and total:
             rate = done / max(now - self.t0, 1e-9) / 1e6
             text = f"reading {100 * done / total:5.1f}%  {rate:6.1f} MB/s"
+        elif stage.startswith("file ") and total:
+            name, _, count = stage[5:].rpartition(" ")
+            i, n = (int(v) for v in count.split("/"))
+            share = (i - 1 + done / total) / n
+            bar = "#" * int(30 * share)
+            text = f"[{bar:<30}] file {count} {name} {100 * done / total:5.1f}%"
         else:
             text = f"{stage}..."
         sys.stderr.write("\r\033[K" + text)
