@@ -373,19 +373,136 @@ QUERY_BLOCK_CELLS = 64
 QUERY_STRIPES = 8
 
 
+#: A cell whose list holds at most this many casters is queried caster by caster over chunks of
+#: :data:`QUERY_CHUNK` receivers (a branch-free pass over the chunk per caster: box and depth
+#: plane as one mask, then the exact test where it is set), a longer one receiver by receiver
+#: (the key order stops each scan early). Measured on the 1M-triangle city (CPU time, one
+#: thread): the caster-major pass is 20-35 % faster on the 30° workloads and on summer batch
+#: steps, and 30 % slower than the receiver-major one on low-sun maps with ~80 casters a cell.
+QUERY_SHORT_LIST = 40
+QUERY_CHUNK = 64
+
+
+@njit(cache=True, inline="always")
+def _query_receiver_major(packed, refs, p0, p1, origins, r0, r1, kx, ky, kz, sx, sy, sz, sgn,
+                          depth_margin_m, tmin, tmax, out, cache_k):
+    """Receivers r0..r1 of one cell, each against the last occluder, then its list in key
+    order until the first hit or the first caster behind it; returns (tests, last occluder)."""
+    tests = 0
+    for i in range(r0, r1):
+        okx = origins[i, kx]
+        oky = origins[i, ky]
+        okz = origins[i, kz]
+        rkey = sgn * okz
+        rx = okx - sx * okz
+        ry = oky - sy * okz
+        out[i] = False
+        # The last occluder first (coherent receivers share it), after the same exact skips as
+        # a list entry: most receivers have left its box.
+        if cache_k >= 0 and _may_hit(packed, cache_k, rx, ry, rkey, depth_margin_m):
+            tests += 1
+            hit, t, u, v = hit_record(packed, cache_k, okx, oky, okz, kx, ky, kz, sx, sy, sz)
+            if hit and tmin <= t <= tmax:
+                out[i] = True
+                continue
+        for p in range(p0, p1):
+            j = refs[p]
+            # Sorted by key: this caster and all after it lie behind the origin.
+            if np.float64(packed[j, PACK_KEY]) < rkey:
+                break
+            if j == cache_k or not _may_hit(packed, j, rx, ry, rkey, depth_margin_m):
+                continue
+            tests += 1
+            hit, t, u, v = hit_record(packed, j, okx, oky, okz, kx, ky, kz, sx, sy, sz)
+            if hit and tmin <= t <= tmax:
+                out[i] = True
+                cache_k = j
+                break
+    return tests, cache_k
+
+
+@njit(cache=True, inline="always")
+def _query_caster_major(packed, refs, p0, p1, origins, c0, m, kx, ky, kz, sx, sy, sz, sgn,
+                        depth_margin_m, tmin, tmax, out, cache_k, rx, ry, rk, alive, cand):
+    """Receivers c0..c0+m of one cell (m <= QUERY_CHUNK; ``rx .. cand`` scratch of that size)
+    against the last occluder, then the cell's list in key order: per caster one branch-free
+    mask over the receivers still lit (the skips of :func:`_may_hit`, the same float
+    operations), then :func:`hit_record` where it is set; stops when every receiver is
+    shadowed or the casters lie behind the lowest one. Returns (tests, last occluder)."""
+    tests = 0
+    k_low = np.inf
+    for q in range(m):
+        okz = origins[c0 + q, kz]
+        rx[q] = origins[c0 + q, kx] - sx * okz
+        ry[q] = origins[c0 + q, ky] - sy * okz
+        rk[q] = sgn * okz
+        k_low = min(k_low, rk[q])
+        alive[q] = True
+        out[c0 + q] = False
+    left = m
+    first = cache_k
+    for p in range(p0 - 1, p1):
+        if p < p0:
+            j = first
+            if j < 0:
+                continue
+        else:
+            j = refs[p]
+            if j == first:
+                continue
+        key = np.float64(packed[j, PACK_KEY])
+        if key < k_low:
+            if p < p0:
+                continue
+            break  # sorted by key: this caster and all after it lie behind every receiver
+        x0 = np.float64(packed[j, PACK_BOX])
+        x1 = np.float64(packed[j, PACK_BOX + 1])
+        y0 = np.float64(packed[j, PACK_BOX + 2])
+        y1 = np.float64(packed[j, PACK_BOX + 3])
+        pa = np.float64(packed[j, PACK_PLANE])
+        pb = np.float64(packed[j, PACK_PLANE + 1])
+        kc = key + np.float64(packed[j, PACK_PLANE + 2])
+        n_cand = 0
+        for q in range(m):
+            zp = kc + pa * (rx[q] - x0) + pb * (ry[q] - y0)
+            ok = (alive[q] & (rk[q] <= key) & (rx[q] >= x0) & (rx[q] <= x1) & (ry[q] >= y0)
+                  & (ry[q] <= y1) & (zp >= rk[q] - depth_margin_m))
+            cand[q] = ok
+            n_cand += ok
+        if n_cand == 0:
+            continue
+        for q in range(m):
+            if cand[q]:
+                i = c0 + q
+                tests += 1
+                hit, t, u, v = hit_record(packed, j, origins[i, kx], origins[i, ky],
+                                          origins[i, kz], kx, ky, kz, sx, sy, sz)
+                if hit and tmin <= t <= tmax:
+                    out[i] = True
+                    alive[q] = False
+                    cache_k = j
+                    left -= 1
+        if left == 0:
+            break
+    return tests, cache_k
+
+
 @njit(cache=True, parallel=True)
 def query(packed, ref_start, refs, rec_start, origins, kx, ky, kz, sx, sy, sz, sgn,
           depth_margin_m, tmin, tmax, out, out_tests):
     """``out[q]`` (every entry written) True when the shadow ray of receiver q (in cell order)
     hits a caster of its cell.
 
-    ``packed`` (M, 16) float32 caster records of :func:`pack_casters` sorted by key
+    ``packed`` (M, 17) float32 caster records of :func:`pack_casters` sorted by key
     (descending), ``refs`` the cells' caster lists (``ref_start`` (n_cells + 1,)),
-    ``origins`` the receivers' origins grouped by cell (``rec_start``). A receiver outside a caster's
-    widened box is outside the triangle (the binning argument), so the box check only skips
-    tests that cannot hit; so does the depth plane: a caster whose plane lies more than
-    ``depth_margin_m`` behind the receiver along the shear axis gives t < 0. The test is :func:`hit_record` with ``tmin <= t <= tmax``, exactly as
-    in :func:`cityshade.trace.kernels.any_hit`. ``out_tests`` (n_blocks,) int64 counts the
+    ``origins`` the receivers' origins grouped by cell (``rec_start``). A receiver outside a
+    caster's widened box is outside the triangle (the binning argument), so the box check only
+    skips tests that cannot hit; so does the depth plane: a caster whose plane lies more than
+    ``depth_margin_m`` behind the receiver along the shear axis gives t < 0. The test is
+    :func:`hit_record` with ``tmin <= t <= tmax``, exactly as in
+    :func:`cityshade.trace.kernels.any_hit`; the decision is "some candidate passes", so the
+    order in which a cell's pairs are tested (receiver- or caster-major, see
+    :data:`QUERY_SHORT_LIST`) changes only the time. ``out_tests`` (n_blocks,) int64 counts the
     triangle tests per block (a profile, not used for the answer).
     """
     n_cells = ref_start.shape[0] - 1
@@ -395,6 +512,11 @@ def query(packed, ref_start, refs, rec_start, origins, kx, ky, kz, sx, sy, sz, s
         b = stripe_interleave(it, n_blocks, QUERY_STRIPES)
         if b < 0:
             continue
+        rx = np.empty(QUERY_CHUNK)
+        ry = np.empty(QUERY_CHUNK)
+        rk = np.empty(QUERY_CHUNK)
+        alive = np.empty(QUERY_CHUNK, np.bool_)
+        cand = np.empty(QUERY_CHUNK, np.bool_)
         tests = 0
         cache_k = -1
         for cell in range(b * QUERY_BLOCK_CELLS, min(n_cells, (b + 1) * QUERY_BLOCK_CELLS)):
@@ -405,35 +527,16 @@ def query(packed, ref_start, refs, rec_start, origins, kx, ky, kz, sx, sy, sz, s
             if p0 == p1:
                 for i in range(r0, r1):
                     out[i] = False
-                continue
-            for i in range(r0, r1):
-                okx = origins[i, kx]
-                oky = origins[i, ky]
-                okz = origins[i, kz]
-                rkey = sgn * okz
-                rx = okx - sx * okz
-                ry = oky - sy * okz
-                out[i] = False
-                # Test the block's last occluder first (coherent receivers share it), after the
-                # same exact skips as a list entry: most receivers have left its box.
-                if cache_k >= 0 and _may_hit(packed, cache_k, rx, ry, rkey, depth_margin_m):
-                    tests += 1
-                    hit, t, u, v = hit_record(packed, cache_k, okx, oky, okz, kx, ky, kz,
-                                              sx, sy, sz)
-                    if hit and tmin <= t <= tmax:
-                        out[i] = True
-                        continue
-                for p in range(p0, p1):
-                    j = refs[p]
-                    # Sorted by key: this caster and all after it lie behind the origin.
-                    if np.float64(packed[j, PACK_KEY]) < rkey:
-                        break
-                    if j == cache_k or not _may_hit(packed, j, rx, ry, rkey, depth_margin_m):
-                        continue
-                    tests += 1
-                    hit, t, u, v = hit_record(packed, j, okx, oky, okz, kx, ky, kz, sx, sy, sz)
-                    if hit and tmin <= t <= tmax:
-                        out[i] = True
-                        cache_k = j
-                        break
+            elif p1 - p0 > QUERY_SHORT_LIST:
+                n_t, cache_k = _query_receiver_major(
+                    packed, refs, p0, p1, origins, r0, r1, kx, ky, kz, sx, sy, sz, sgn,
+                    depth_margin_m, tmin, tmax, out, cache_k)
+                tests += n_t
+            else:
+                for c0 in range(r0, r1, QUERY_CHUNK):
+                    n_t, cache_k = _query_caster_major(
+                        packed, refs, p0, p1, origins, c0, min(r1, c0 + QUERY_CHUNK) - c0,
+                        kx, ky, kz, sx, sy, sz, sgn, depth_margin_m, tmin, tmax, out, cache_k,
+                        rx, ry, rk, alive, cand)
+                    tests += n_t
         out_tests[b] = tests
