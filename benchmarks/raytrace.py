@@ -31,6 +31,7 @@ import statistics
 import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
 
 import numba
 import numpy as np
@@ -171,6 +172,39 @@ def shadow_rays(vertices, triangles, origins, directions, dist, tri, sun):
     return so, np.ascontiguousarray(np.broadcast_to(sun, so.shape))
 
 
+@numba.njit(parallel=True, cache=True)
+def _probe_kernel(n):
+    """A trivial parallel loop (64 equal items of pure arithmetic): what 2 threads can give."""
+    s = np.zeros(64)
+    for j in numba.prange(64):
+        acc = 0.0
+        for i in range(n):
+            acc += np.sqrt(i + j + 1.0)
+        s[j] = acc
+    return s.sum()
+
+
+def core_probe(threads_list, runs):
+    """Seconds of the trivial parallel loop per thread count: a 2-thread figure below ~1.9x
+    of it says the second core was busy with other work during the run."""
+    _probe_kernel(10)
+    out = {}
+    for th in threads_list:
+        numba.set_num_threads(th)
+        out[th], _ = timed(lambda: _probe_kernel(2_000_000), runs)
+    return out
+
+
+def _commit() -> str:
+    import subprocess
+    try:
+        return subprocess.run(["git", "rev-parse", "--short", "HEAD"], text=True,
+                              capture_output=True, check=True,
+                              cwd=Path(__file__).resolve().parents[1]).stdout.strip()
+    except (OSError, subprocess.CalledProcessError):
+        return "unknown"
+
+
 def timed(fn, runs, clock=time.perf_counter):
     """Median seconds of ``runs`` calls of ``fn`` and its last result."""
     times = []
@@ -258,7 +292,7 @@ def run(args):
     numba_threads = numba.get_num_threads()
     verts, tris, t_begin, t_end, material = synthetic_city(args.triangles, seed=1)
     n_tri = tris.shape[0]
-    result = {"triangles": int(n_tri), "city_time_days": CITY_TIME_DAYS,
+    result = {"commit": _commit(), "triangles": int(n_tri), "city_time_days": CITY_TIME_DAYS,
               "sun": {"elevation_deg": SUN_ELEVATION_DEG, "azimuth_deg": SUN_AZIMUTH_DEG},
               "runs": args.runs, "workloads": {}}
     # Warm the kernels (compile or load the cache) on a tiny scene before timing the build.
@@ -351,6 +385,10 @@ def run(args):
             for key in [k for k in er if k.endswith("t") and "mrays" in k]:
                 er[f"ratio_ours_to_{e.name}_{key}"] = wres[key] / er[key]
             wres[e.name] = er
+        # The trivial parallel loop right after this workload: did 2 threads have 2 cores?
+        probe = core_probe(threads_list, args.runs)
+        if 2 in probe:
+            wres["probe_scaling_2t"] = probe[1] / probe[2]
         result["workloads"][wname] = wres
         print_table(wname, wres, engines, threads_list)
     numba.set_num_threads(numba_threads)
@@ -362,6 +400,9 @@ def print_table(wname, wres, engines, threads_list):
           f"{100 * wres['shadowed_fraction']:.1f} % shadowed")
     cols = [f"{kind} {th}t" for kind in ("closest", "anyhit") for th in threads_list]
     keys = [f"{kind}_mrays_s_{th}t" for kind in ("closest", "anyhit") for th in threads_list]
+    if "probe_scaling_2t" in wres:
+        print(f"trivial prange loop, 2 threads / 1 thread in this run: "
+              f"{wres['probe_scaling_2t']:.2f}x (about 2 when both cores were free)")
     print(f"{'Mrays/s':<12}" + "".join(f"{c:>14}" for c in cols) + f"{'agree hit/occ':>18}")
     print(f"{'cityshade':<12}" + "".join(f"{wres[k]:>14.2f}" for k in keys))
     izb_cols = "".join(f"{wres[f'izb_mrays_s_{th}t']:>14.2f}" for th in threads_list)

@@ -596,3 +596,64 @@ def reference_stretches(lit_steps, starts_s, ends_s, min_stretch_h=0.0):
         longest[r] = max(stretches, default=0.0)
         qualified[r] = sum(x for x in stretches if x >= min_stretch_h)
     return longest, qualified
+
+
+def reference_resolve(scene, prim, bary):
+    """Per-pixel surface attributes of a G-buffer in plain numpy (twin of
+    ``cityshade.raster.gbuffer.resolve``): a dict of the Surfaces fields."""
+    prim = np.asarray(prim)
+    valid = prim >= 0
+    h, w = prim.shape
+    ids = prim[valid]
+    bu = bary[valid, 0].astype(np.float64)[:, None]
+    bv = bary[valid, 1].astype(np.float64)[:, None]
+    bw = 1.0 - bu - bv
+    corners = np.asarray(scene.triangles)[ids]
+    verts = np.asarray(scene.vertices)
+    v0 = verts[corners[:, 0]].astype(np.float64)
+    v1 = verts[corners[:, 1]].astype(np.float64)
+    v2 = verts[corners[:, 2]].astype(np.float64)
+    position = np.full((h, w, 3), np.nan)
+    position[valid] = bw * v0 + bu * v1 + bv * v2
+    n = np.cross(v1 - v0, v2 - v0)
+    length = np.linalg.norm(n, axis=1, keepdims=True)
+    n = np.divide(n, length, out=np.zeros_like(n), where=length > 0.0)
+    normal = np.zeros((h, w, 3), np.float32)
+    normal[valid] = n
+    uvs = np.asarray(scene.uv)
+    uv = np.zeros((h, w, 2), np.float32)
+    if uvs.size:
+        uv[valid] = (bw * uvs[corners[:, 0]] + bu * uvs[corners[:, 1]]
+                     + bv * uvs[corners[:, 2]]).astype(np.float32)
+
+    def per_pixel(values, fill, dtype):
+        out = np.full((h, w), fill, dtype)
+        out[valid] = np.asarray(values)[ids]
+        return out
+
+    return {"position_m": position, "normal": normal, "uv": uv, "valid": valid,
+            "obj_id": per_pixel(scene.tri_object, -1, np.int32),
+            "material": per_pixel(scene.tri_material, -1, np.int32),
+            "texture": per_pixel(scene.tri_texture, -1, np.int32),
+            "cls": per_pixel(scene.tri_class, 0, np.uint8)}
+
+
+def reference_oriented_normals(surfaces, camera):
+    """Normals turned to the seen side in plain numpy (twin of
+    ``cityshade.shadows.oriented_normals``)."""
+    normal = np.asarray(surfaces.normal, dtype=np.float64)
+    if camera.kind == "map":
+        to_viewer = np.asarray(camera.eye_m, np.float64) - np.asarray(camera.target_m, np.float64)
+        to_viewer = np.broadcast_to(to_viewer, normal.shape)
+    else:
+        to_viewer = np.asarray(camera.eye_m, np.float64) - surfaces.position_m
+    seen_from_back = np.einsum("ijk,ijk->ij", normal, to_viewer) < 0
+    return np.where(seen_from_back[..., None], -normal, normal)
+
+
+def reference_shadow_origins(points, normals, sun_dir):
+    """Shadow-ray origins in plain numpy (twin of ``cityshade.trace.shadow_rays_from_surface``):
+    ``p + (n + sun) * 2^-18 * max(|p|_inf, 1 m)``."""
+    points = np.asarray(points, np.float64)
+    scale = np.maximum(np.abs(points).max(axis=1), 1.0)
+    return points + (np.asarray(normals, np.float64) + sun_dir) * (2.0 ** -18 * scale)[:, None]

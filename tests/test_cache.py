@@ -108,3 +108,94 @@ def test_interrupted_write_leaves_no_file(tmp_path, monkeypatch):
     with pytest.raises(KeyboardInterrupt):
         write_cache(target, {"kind": "x"}, {"a": np.arange(1000)})
     assert list(tmp_path.iterdir()) == []
+
+
+def _age(path, seconds: float = 5.0) -> None:
+    """Move the file's times into the past, as if it had been written a while ago (mtime by
+    utime; ctime cannot be set, so the stamp is re-made by a full check)."""
+    import os
+
+    st = path.stat()
+    os.utime(path, ns=(st.st_atime_ns, st.st_mtime_ns - int(seconds * 1e9)))
+
+
+def test_verified_stamp_skips_the_checksum_pass(built, tmp_path, monkeypatch):
+    """A load after a full check trusts the stamp (no pass over the arrays); a file changed
+    afterwards is checked again on its next load and its damage is caught."""
+    import time
+
+    import cityshade.cache as cache_mod
+
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    monkeypatch.setattr(cache_mod, "RACY_S", 0.05)
+    out = built[0]
+    time.sleep(0.1)
+    assert open_cache(out, verify=True).verified == "full"  # writes a trusted stamp
+    assert open_cache(out).verified == "stamp"
+    # Damage the file in place: its times change, so the stamp no longer vouches for it.
+    cache = open_cache(out, verify=False)
+    start = cache.header["data_start"] + cache.header["arrays"]["triangles"]["offset"]
+    data = bytearray(out.read_bytes())
+    data[start] ^= 0x01
+    out.write_bytes(bytes(data))
+    with pytest.raises(CacheCorruptError, match="checksum"):
+        open_cache(out)
+    with pytest.raises(CacheCorruptError, match="checksum"):
+        load_scene(out)
+
+
+def test_stamp_racy_and_unwritable(built, tmp_path, monkeypatch):
+    """A stamp made right after the file's last change is not trusted (a write in the same
+    clock tick keeps the times); without a writable cache folder every load checks."""
+    import cityshade.cache as cache_mod
+
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    out = built[0]
+    assert open_cache(out).verified == "full"  # the build's stamp went to another folder
+    # Racy: stamped within RACY_S of the file's last change (ctime: the rename of the build).
+    monkeypatch.setattr(cache_mod, "RACY_S", 60.0)
+    assert open_cache(out).verified == "full"
+    blocker = tmp_path / "file"
+    blocker.write_text("")
+    monkeypatch.setenv("XDG_CACHE_HOME", str(blocker))
+    assert open_cache(out).verified == "full" and open_cache(out).verified == "full"
+
+
+def test_info_verify(built, tmp_path, monkeypatch):
+    """`info --verify` checks every array even when a stamp vouches for the file."""
+    import os
+
+    from click.testing import CliRunner
+
+    import cityshade.cache as cache_mod
+    from cityshade.cli.main import cli
+
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    monkeypatch.setattr(cache_mod, "RACY_S", 0.0)
+    out = built[0]
+    result = CliRunner().invoke(cli, ["info", str(out), "--verify"])
+    assert result.exit_code == 0 and "verified      all" in result.output, result.output
+    assert open_cache(out).verified == "stamp"
+    # Damage that keeps the size and the mtime (ctime cannot be kept): --verify catches it.
+    st = out.stat()
+    cache = open_cache(out, verify=False)
+    start = cache.header["data_start"] + cache.header["arrays"]["vertices"]["offset"]
+    with open(out, "r+b") as fh:
+        fh.seek(start)
+        byte = fh.read(1)
+        fh.seek(start)
+        fh.write(bytes([byte[0] ^ 0x10]))
+    os.utime(out, ns=(st.st_atime_ns, st.st_mtime_ns))
+    result = CliRunner().invoke(cli, ["info", str(out), "--verify"])
+    assert result.exit_code == 1 and "checksum" in result.output, result.output
+
+
+def test_large_build_stamp_is_trusted(tmp_path, monkeypatch):
+    """A build of a large file waits out the racy window, so its first load needs no pass."""
+    import cityshade.cache as cache_mod
+
+    monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
+    monkeypatch.setattr(cache_mod, "STAMP_WAIT_BYTES", 0)
+    out = tmp_path / "big.cityshade"
+    write_cache(out, {"kind": "x"}, {"a": np.arange(1000)})
+    assert open_cache(out).verified == "stamp"

@@ -59,7 +59,8 @@ def test_cascades_cover_the_visible_frustum_without_gaps(sample):
     from cityshade.shadows import ShadowContext
 
     sun = sun_from_angles(135.0, 30.0, sample.crs, sample.origin_m)
-    ctx = ShadowContext(sample, resolve(sample, rasterize(sample, cam, t)), cam, sun, t)
+    ctx = ShadowContext(sample, resolve(sample, rasterize(sample, cam, t)), cam, sun, t,
+                        measure=True)
     tech = get_technique("csm")
     result = tech.run(ctx)
     layers, views = result.prepared.layers, result.prepared.views

@@ -98,6 +98,10 @@ def test_expand_techniques():
     assert len(names) == 22 and "raytrace" not in names and names[0] == "izb"
     assert {"csm+smooth", "hybrid:xpsm", "lispsm"} <= set(names)
     assert expand_techniques("pcf, raytrace,pcf") == ["pcf"]
+    # `evaluate --smooth` with the default `all`: every technique of `all`, smoothed, once.
+    smoothed = expand_techniques("all+smooth")
+    assert len(smoothed) == 16 and all(n.endswith("+smooth") for n in smoothed)
+    assert {"raytrace+smooth", "izb+smooth", "pcf+smooth", "hybrid:vsm+smooth"} <= set(smoothed)
     with pytest.raises(UsageError, match="unknown shadow technique"):
         expand_techniques("pcf,nonsense")
     with pytest.raises(UsageError):

@@ -79,6 +79,20 @@ def test_vsm_matches_twin_and_bounds():
         assert fast.min() >= 0.0 and fast.max() <= 1.0
 
 
+def test_vsm_moments_equal_the_stacked_moments_filtered():
+    """The fused moments pass against its obvious twin: (d, d²) of the depth in metres
+    (empty texels at the far plane), stacked, then separable_filter; equal to the bit."""
+    rng = np.random.default_rng(3)
+    depth = rng.uniform(-1, 1, (17, 23)).astype(np.float32)
+    depth[rng.random(depth.shape) < 0.2] = np.inf
+    d = (np.minimum(depth.astype(np.float64), 1.0) + 1.0) * 40.0
+    stacked = np.stack([d, d * d], axis=-1)
+    for weights in (flt.gaussian_weights(1.5), flt.box_weights(2), np.ones(1)):
+        want = stacked if weights.shape[0] == 1 else flt.separable_filter(stacked, weights)
+        assert np.array_equal(flt.vsm_moments(depth, 40.0, weights), want)
+    assert np.array_equal(flt.vsm_moments(depth, 40.0), stacked)
+
+
 def test_vsm_chebyshev_known_value():
     # Unfiltered constant map: mean 10 m, variance = min_variance 1 m²: a receiver 2 m behind
     # gets 1 / (1 + 4) = 0.2; with bleeding reduction 0.1 → (0.2 - 0.1) / 0.9.

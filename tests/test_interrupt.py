@@ -69,8 +69,8 @@ def city_gml(tmp_path_factory):
 @pytest.fixture(scope="module")
 def scene_file(tmp_path_factory, city_gml):
     """The city built once, then rendered and batched once without a signal: every kernel the
-    interrupted runs use is compiled and cached before them. (A Ctrl-C during a first-call
-    compile can still end in a traceback from llvmlite's clean-up: a known gap, not tested.)"""
+    interrupted runs use is compiled and cached before them (a Ctrl-C during a first-call
+    compile has its own test, :func:`test_sigint_during_a_first_call_compile`)."""
     folder = tmp_path_factory.mktemp("interrupt")
     out = folder / "city.cityshade"
     for args in (["build", city_gml, "-o", out, "-q"],
@@ -142,6 +142,33 @@ def test_sigint_during_batch(tmp_path, scene_file):
         folder.mkdir(exist_ok=True)
         interrupted += _check(rc, err, folder)
     assert interrupted
+
+
+def test_sigint_during_a_first_call_compile(tmp_path):
+    """A fresh Numba cache, as after an install: the render compiles its kernels first. A
+    SIGINT that landed in the compiler printed llvmlite's traceback after the one line
+    (``Exception ignored in: ObjectRef.__del__ ... 'PassBuilder' object has no attribute
+    '_as_parameter_'``); it is now held to the end of the compiler's current pass."""
+    scene = tmp_path / "sample.cityshade"
+    done = subprocess.run([sys.executable, "-m", "cityshade", "build", str(SAMPLE), "-o",
+                           str(scene), "-q"], capture_output=True, text=True, timeout=600)
+    assert done.returncode == 0, done.stderr
+    cache = tmp_path / "numba_cache"
+    out = tmp_path / "out"
+    out.mkdir()
+    env = dict(os.environ, PYTHONUNBUFFERED="1", NUMBA_CACHE_DIR=str(cache))
+    proc = subprocess.Popen([sys.executable, "-m", "cityshade", *map(str, render_args(scene)),
+                             "-o", out / "a.exr"], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, env=env, text=True)
+    # The first kernel written to the fresh cache: the compiles have begun (about 5 s in
+    # here), and the next one runs when the signal comes.
+    while proc.poll() is None and not list(cache.rglob("*.nbi")):
+        time.sleep(0.02)
+    time.sleep(0.3)
+    proc.send_signal(signal.SIGINT)
+    _, err = proc.communicate(timeout=300)
+    assert _check(proc.returncode, err, out), "the render finished before the signal"
+    assert not (out / "a.exr").exists()
 
 
 def test_numba_systemerror_from_an_interrupt_is_an_interrupt():

@@ -237,6 +237,33 @@ def test_read_only_inputs_and_validation(tmp_path):
         lightspace.occluded(tree, origins, d, float("nan"))
 
 
+def test_surface_receivers_make_the_origins_of_shadow_rays_from_surface():
+    """A batch's receivers (points checked once, origins per sun from one kernel) give
+    shadow_rays_from_surface's origins bit for bit, for masks, index lists and every sun."""
+    rng = np.random.default_rng(5)
+    points = rng.uniform(-3000.0, 3000.0, (500, 3))
+    points[:50] *= 1e-4  # below the offset's 1 m floor
+    normals = rng.normal(size=(500, 3))
+    normals /= np.linalg.norm(normals, axis=1)[:, None]
+    receivers = lightspace.SurfaceReceivers(points, normals)
+    for elevation, azimuth in SUNS:
+        d = np.asarray(sun_from_angles(azimuth, elevation).direction, np.float64)
+        faces = normals @ d > 0
+        np.testing.assert_array_equal(receivers.origins(d, faces),
+                                      shadow_rays_from_surface(points[faces], normals[faces], d))
+    index = np.array([7, 3, 499, 3])
+    np.testing.assert_array_equal(receivers.origins(d, index),
+                                  shadow_rays_from_surface(points[index], normals[index], d))
+    np.testing.assert_array_equal(receivers.origins(d),
+                                  shadow_rays_from_surface(points, normals, d))
+    with pytest.raises(TraceInputError, match="unit length"):
+        lightspace.SurfaceReceivers(points, normals * 2.0)
+    with pytest.raises(TraceInputError, match="NaN"):
+        lightspace.SurfaceReceivers(np.full((2, 3), np.nan), normals[:2])
+    with pytest.raises(TraceInputError, match="unit length"):
+        receivers.origins([0.0, 0.0, 2.0])
+
+
 def test_kernels_run_without_jit():
     """NUMBA_DISABLE_JIT=1: the engine as plain Python gives the compiled engine's answer."""
     script = r"""

@@ -59,10 +59,15 @@ class FakeCamera:
     kind: str
     eye_m: np.ndarray
     target_m: np.ndarray
-    directions: np.ndarray | None = None
+    #: The pixel rays of a 2x2 picture, ``xs[c] right + ys[r] up + forward`` as a real camera
+    #: makes them: rays (0, 1, 0), (0, 0, 1) on the top row, (0, 0.6, -0.8) bottom left.
+    sky_frame: tuple = ((0.0, -1.0, 1.0), (0.0, -0.4, -0.8), (0.0, 1.0, 0.0))
 
-    def primary_rays(self):
-        return np.zeros_like(self.directions), self.directions
+    def screen_coordinates(self):
+        return np.array([0.0, 1.0]), np.array([0.0, 1.0])
+
+    def frame(self):
+        return tuple(np.array(v) for v in self.sky_frame)
 
 
 MAP = FakeCamera("map", np.array([0.0, 0.0, 100.0]), np.array([0.0, 0.0, 0.0]))
@@ -166,9 +171,7 @@ def test_every_surface_class_has_a_distinct_default_colour():
 
 
 def test_background_sky_for_perspective_nodata_for_maps():
-    dirs = np.array([[0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [0.0, 0.6, -0.8], [0.0, 1.0, 0.0]])
-    camera = FakeCamera("perspective", np.array([0.0, 0.0, 10.0]), np.array([0.0, 1.0, 10.0]),
-                        directions=dirs)
+    camera = FakeCamera("perspective", np.array([0.0, 0.0, 10.0]), np.array([0.0, 1.0, 10.0]))
     surf = _surfaces(2, 2)
     surf.valid[:] = False
     surf.valid[1, 1] = True

@@ -183,7 +183,7 @@ def test_techniques_agree_with_raytrace(sample, kind, el):
     ref = render_frame(sample, cam, T_1990, sun, "raytrace")
     valid = ref.surfaces.valid
     for name in MAP_TECHNIQUES:
-        frame = render_frame(sample, cam, T_1990, sun, name)
+        frame = render_frame(sample, cam, T_1990, sun, name, measure=True)
         assert np.isfinite(frame.lit).all()
         agree = ((frame.lit[valid] >= 0.5) == (ref.lit[valid] >= 0.5)).mean()
         assert agree >= 0.95, f"{name}: {100 * agree:.2f} % of pixels agree with raytrace"
@@ -230,7 +230,7 @@ def test_bias_no_acne_no_gap_at_3_degrees(one_box):
     # Along the shadow direction from the box centre on a 0.25 m map.
     px = 0.25
     cam = cams.map_view(one_box, px, bbox=(-40, -40, 40, 40))
-    frame = render_frame(one_box, cam, 0.0, sun, "shadowmap")
+    frame = render_frame(one_box, cam, 0.0, sun, "shadowmap", measure=True)
     texel = frame.diagnostics.shadow["texel_light_m"]
     d = -np.array([math.sin(math.radians(az)), math.cos(math.radians(az))])
     exit_m = 5.0 / max(abs(d[0]), abs(d[1]))             # the wall, box half-size 5 m
@@ -382,3 +382,68 @@ def test_every_planner_works_with_every_lookup(sample):
         if name.endswith("/vsm"):  # a filtered lookup gives fractions, not only 0 and 1
             soft = frame.lit[valid]
             assert ((soft > 0.0) & (soft < 1.0)).any(), name
+
+
+@pytest.mark.parametrize("warp", ["uniform", "lispsm"])
+def test_lookup_receivers_match_the_step_by_step_twins(sample, warp):
+    """The fused lookup pass (bias, projection, receiver-plane bias of projective views)
+    against offset_receivers + project + receiver_plane_gradient on the same receivers."""
+    from cityshade.shadows.warps import focus, warp_matrix
+
+    cam = cams.overview(sample, 160, 100)
+    sun = sun_from_angles(135.0, 30.0, sample.crs, sample.origin_m)
+    from cityshade.pipeline import camera_pass
+
+    ctx = camera_pass(sample, cam, T_1990).context(sun)
+    faces, points, normals, casters = focus(ctx)
+    if warp == "uniform":
+        view = sm.fit_uniform(sample, ctx, 512)
+    else:
+        m, _ = warp_matrix(warp, cam, sun.direction, points, casters, ctx.settings.warp)
+        view = sm.LightView(m, 512, 512, warp)
+    settings = ShadowSettings()
+    for radius in (0, 2):
+        u, v, z = sm.lookup_receivers(view, points, normals, sun.direction, settings, radius)
+        q = sm.offset_receivers(view, points, normals, sun.direction, settings, radius)
+        u0, v0, z0 = sm.project(view, q)
+        if view.is_projective:
+            gu, gv = sm.receiver_plane_gradient(view, q, normals, u0, v0, z0)
+            z0 = z0 - (np.abs(gu) + np.abs(gv)) * (0.5 + radius)
+        assert view.is_projective == (warp != "uniform") and len(u) == len(points) > 1000
+        np.testing.assert_allclose(u, u0, rtol=0, atol=1e-9)
+        np.testing.assert_allclose(v, v0, rtol=0, atol=1e-9)
+        np.testing.assert_allclose(z, z0, rtol=0, atol=1e-12)
+
+
+def test_light_box_matches_numpy():
+    rng = np.random.default_rng(5)
+    points = rng.normal(0, 300, (5000, 3))
+    basis = np.stack(sm.light_basis([0.3, -0.5, 0.8]), axis=1)
+    lo, hi = sm.light_box(points, basis)
+    light = points @ basis
+    np.testing.assert_allclose(lo, light.min(axis=0), rtol=1e-14)
+    np.testing.assert_allclose(hi, light.max(axis=0), rtol=1e-14)
+
+
+def test_depth_map_reuse_draws_each_map_once(one_box):
+    """Inside DepthMapReuse the same request returns the same map (and its depth-pass time
+    is counted as reused); another view, or no reuse block, draws anew."""
+    sun = sun_from_angles(200.0, 30.0)
+    cam = cams.overview(one_box, 64, 40)
+    from cityshade.pipeline import camera_pass
+
+    ctx = camera_pass(one_box, cam, 0.0).context(sun)
+    view = sm.fit_uniform(one_box, ctx, 128)
+    other = sm.fit_uniform(one_box, ctx, 64)
+    with sm.DepthMapReuse() as reuse:
+        first = sm.render_depth_map(one_box, view, 0.0)
+        assert reuse.take_reused_s() == 0.0
+        again = sm.render_depth_map(one_box, view, 0.0)
+        assert again is first and reuse.reused == 1
+        assert reuse.take_reused_s() == first.stats["timings_s"]["total_s"] > 0
+        assert sm.render_depth_map(one_box, other, 0.0) is not first
+        assert sm.render_depth_map(one_box, view, 1e9) is not first     # another city time
+        reuse.clear()
+        assert sm.render_depth_map(one_box, view, 0.0) is not first
+    outside = sm.render_depth_map(one_box, view, 0.0)
+    assert outside is not first and np.array_equal(outside.depth, first.depth)

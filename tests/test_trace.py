@@ -412,3 +412,52 @@ def test_sample_pixel_at_a_roof_step_is_lit():
     sun = sun_from_angles(135.0, 30.0, scene.crs, scene.origin_m)
     frame = render_frame(scene, cam, parse_user_date("1990").city_days, sun, "raytrace")
     assert frame.lit[99, 264] == 1.0, "the pixel at the foot of the sun-facing wall is in shadow"
+
+
+def test_shadow_origins_equal_their_numpy_twin_bit_for_bit():
+    from reference import reference_shadow_origins
+
+    rng = np.random.default_rng(11)
+    pts = rng.uniform(-3000.0, 3000.0, (5000, 3))
+    pts[:50] = rng.uniform(-0.5, 0.5, (50, 3))                # below the 1 m floor of the scale
+    pts[50:60] *= 1e4                                           # far from the origin
+    normals = unit(rng.normal(size=(5000, 3)))
+    sun = unit([0.3, -0.6, 0.7])
+    np.testing.assert_array_equal(shadow_rays_from_surface(pts, normals, sun),
+                                  reference_shadow_origins(pts, normals, sun))
+    suns = unit(rng.normal(size=(5000, 3)))                    # one sun per point
+    np.testing.assert_array_equal(shadow_rays_from_surface(pts, normals, suns),
+                                  reference_shadow_origins(pts, normals, suns))
+    bad = pts.copy()
+    bad[3, 1] = np.nan
+    with pytest.raises(TraceInputError, match="points contain NaN"):
+        shadow_rays_from_surface(bad, normals, sun)
+    bad = normals.copy()
+    bad[7, 2] = np.inf
+    with pytest.raises(TraceInputError, match="normals contain NaN"):
+        shadow_rays_from_surface(pts, bad, sun)
+    with pytest.raises(TraceInputError, match="normals must be unit length"):
+        shadow_rays_from_surface(pts, normals * 1.01, sun)
+
+
+def test_shared_direction_shadow_rays_agree_with_brute_force(city, tree):
+    """Sun rays (one direction for all, whose terms the kernel computes once) give the
+    brute-force answer, and the same as the per-ray path on the same rays."""
+    from cityshade.trace.bricks import occluded_bricks
+    from cityshade.trace import _padded_box
+
+    v, t, begin, end, mat = city
+    rng = np.random.default_rng(4)
+    origins = rng.uniform((-20, -20, 0), (270, 270, 30), (800, 3))
+    sun = unit([0.5, -0.4, 0.35])
+    directions = np.tile(sun, (800, 1))
+    occ = occluded(tree, origins, directions, 20000.0)
+    want = np.array([reference_ray_hits(v, t, begin, end, o, sun, 20000.0)[1].size > 0
+                     for o in origins])
+    assert 100 < want.sum() < 700
+    np.testing.assert_array_equal(occ, want)
+    per_ray = np.zeros(800, np.bool_)
+    lo, hi = _padded_box(tree)
+    occluded_bricks(tree.views, lo, hi, origins, directions, 0.0, np.full(800, np.inf), 20000.0,
+                    256, per_ray)
+    np.testing.assert_array_equal(per_ray, occ)

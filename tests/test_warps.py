@@ -261,7 +261,7 @@ def agreement(scene, cam, t_days, sun, technique, options=None):
 
     ref = render_frame(scene, cam, t_days, sun, "raytrace")
     frame = render_frame(scene, cam, t_days, sun, technique,
-                         ShadowSettings().override(**(options or {})))
+                         ShadowSettings().override(**(options or {})), measure=True)
     assert not np.isnan(frame.lit).any()
     valid = ref.surfaces.valid
     same = (frame.lit >= 0.5) == (ref.lit >= 0.5)

@@ -316,13 +316,16 @@ class Checkpoint:
              extra: dict[str, np.ndarray] | None = None) -> None:
         """Write the state (and ``extra`` arrays) to a temporary name and rename it over the
         previous one."""
+        self.save_arrays(units_done, pixel_sum=pixel_sum, sample_sum=sample_sum,
+                         **{f"x_{k}": v for k, v in (extra or {}).items()})
+
+    def save_arrays(self, units_done: int, **arrays: np.ndarray) -> None:
+        """:meth:`save` with other arrays (a tiled run's, :mod:`cityshade.tiles`)."""
         from cityshade.util import atomic_write
 
         t0 = time.perf_counter()
         buf = io.BytesIO()
-        np.savez(buf, key=np.array(self.key), units_done=np.array(units_done),
-                 pixel_sum=pixel_sum, sample_sum=sample_sum,
-                 **{f"x_{k}": v for k, v in (extra or {}).items()})
+        np.savez(buf, key=np.array(self.key), units_done=np.array(units_done), **arrays)
         data = buf.getvalue()
         digest = hashlib.sha256(data).hexdigest()
         if self.before_write is not None:
@@ -398,21 +401,27 @@ class _PixelRays:
     (:func:`cityshade.trace.occluded`), the same answer."""
 
     def __init__(self, cp, technique: str = "izb"):
+        from cityshade.lightspace import SurfaceReceivers
+
         self.cp = cp
         self.valid = cp.valid
         self.technique = technique
+        # The valid pixels' points, normals and offsets, checked once: per step one pass makes
+        # the facing pixels' origins (the numpy gathers and temporaries cost more than izb's
+        # binning on the 1M-triangle city).
+        self.receivers = SurfaceReceivers(cp.surfaces.position_m[self.valid],
+                                          cp.normal[self.valid])
 
     def lit(self, scene, sun, t_days: float) -> np.ndarray:
         """(H, W) float32: 1 lit, 0 shadow or no surface."""
         from cityshade import lightspace
-        from cityshade.trace import occluded, shadow_rays_from_surface
+        from cityshade.trace import occluded
 
         faces = self.cp.context(sun).faces
         lit = np.zeros(self.valid.shape, np.float32)
         if faces.any():
             direction = np.asarray(sun.direction, dtype=np.float64)
-            origins = shadow_rays_from_surface(self.cp.surfaces.position_m[faces],
-                                               self.cp.normal[faces], direction)
+            origins = self.receivers.origins(direction, faces[self.valid])
             if self.technique == "izb":
                 blocked = lightspace.occluded(scene, origins, direction, t_days)
             else:
@@ -455,6 +464,42 @@ def _city_changes(scene, instants, t_days) -> str | None:
         return (f"{n} object dates fall inside the run; the city is shown as it stood at "
                 f"{days_to_iso(t_days) if math.isfinite(t_days) else 'any time'} throughout")
     return None
+
+
+def plan_run(scene, instants, t_days: float, suns, weights, warnings: list[str]):
+    """:func:`plan_units` of a run, with its warnings (sun never up, the city changing)."""
+    units, below, duplicates = plan_units(suns, weights)
+    if not units:
+        warnings.append(f"the sun stays at or below the horizon in all {len(suns)} steps: "
+                        f"nothing is lit, sun-hours are 0 everywhere")
+    change = _city_changes(scene, instants, float(t_days))
+    if change:
+        warnings.append(change)
+    return units, below, duplicates
+
+
+def receivers_pass(scene, camera, t_days: float, ground, samples_per_m2, timings: dict,
+                   diagnostics: dict):
+    """What a batch computes once: the camera pass (None without a camera) and the surface
+    samples (None without ``samples_per_m2``); fills ``camera_s``/``samples_s`` and the
+    G-buffer and ground diagnostics."""
+    cp = samples = None
+    if camera is not None:
+        from cityshade.pipeline import camera_pass
+
+        t0 = time.perf_counter()
+        cp = camera_pass(scene, camera, float(t_days), ground=ground)
+        diagnostics["gbuffer"] = cp.gbuffer.stats
+        if cp.ground is not None:
+            diagnostics["ground"] = cp.ground
+        timings["camera_s"] = time.perf_counter() - t0
+    if samples_per_m2 is not None:
+        from cityshade.surfaces import sample_surfaces
+
+        t0 = time.perf_counter()
+        samples = sample_surfaces(scene, samples_per_m2, float(t_days))
+        timings["samples_s"] = time.perf_counter() - t0
+    return cp, samples
 
 
 def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[datetime], t_days: float, *,
@@ -557,35 +602,17 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
         if len(suns) != len(instants):
             raise UsageError(f"give one sun per instant ({len(instants)}), not {len(suns)}")
     timings["suns_s"] = time.perf_counter() - t0
-    units, below, duplicates = plan_units(suns, weights)
-    if not units:
-        warnings.append(f"the sun stays at or below the horizon in all {len(suns)} steps: "
-                        f"nothing is lit, sun-hours are 0 everywhere")
-    change = _city_changes(scene, instants, float(t_days))
-    if change:
-        warnings.append(change)
+    units, below, duplicates = plan_run(scene, instants, t_days, suns, weights, warnings)
 
     # Camera pass, once.
-    cp = valid = rays = None
     diagnostics: dict[str, Any] = {}
-    if camera is not None:
-        from cityshade.pipeline import camera_pass
-
-        t0 = time.perf_counter()
-        cp = camera_pass(scene, camera, float(t_days), ground=ground)
-        valid = cp.valid
-        diagnostics["gbuffer"] = cp.gbuffer.stats
-        if cp.ground is not None:
-            diagnostics["ground"] = cp.ground
-        if reuse_rays and technique in ("izb", "raytrace"):
-            rays = _PixelRays(cp, technique)
-        timings["camera_s"] = time.perf_counter() - t0
-    if samples is None and samples_per_m2 is not None:
-        from cityshade.surfaces import sample_surfaces
-
-        t0 = time.perf_counter()
-        samples = sample_surfaces(scene, samples_per_m2, float(t_days))
-        timings["samples_s"] = time.perf_counter() - t0
+    cp, sampled = receivers_pass(scene, camera, t_days, ground,
+                                 samples_per_m2 if samples is None else None, timings,
+                                 diagnostics)
+    samples = samples if samples is not None else sampled
+    valid = cp.valid if cp is not None else None
+    rays = _PixelRays(cp, technique) if cp is not None and reuse_rays and \
+        technique in ("izb", "raytrace") else None
 
     # Running float64 sums, restored from a saved state when there is one.
     pixel_shape = valid.shape if valid is not None else (0, 0)
@@ -776,10 +803,11 @@ def run_metadata(result: SunHours, scene, params: dict[str, Any]) -> dict[str, A
 
 
 def write_sun_hours(outdir, result: SunHours, scene, camera, meta: dict[str, Any],
-                    surfaces_csv: bool = False) -> list[Path]:
+                    surfaces_csv: bool = False, cog: bool = False) -> list[Path]:
     """Write ``sun_hours.exr`` (channels ``sun_hours``, ``objid``), ``sun_hours.png``
     (colour-mapped, legend), for map views ``sun_hours.tif`` (+ .tfw, .prj; float32, NaN
-    nodata), and with ``surfaces_csv`` ``surfaces.csv``. Returns the paths written."""
+    nodata; with ``cog`` a Cloud-Optimized GeoTIFF written by GDAL), and with ``surfaces_csv``
+    ``surfaces.csv``. Returns the paths written."""
     from cityshade import imageio
 
     outdir = Path(outdir)
@@ -797,7 +825,12 @@ def write_sun_hours(outdir, result: SunHours, scene, camera, meta: dict[str, Any
         imageio.write_png_rgb(png, colour_map_png(result.hours),
                               attributes={k: str(v) for k, v in meta.items()})
         written.append(png)
-        if camera.kind == "map":
+        if camera.kind == "map" and cog:
+            written += imageio.write_cog(
+                outdir / "sun_hours.tif", result.hours, camera.geotransform(scene.origin_m),
+                epsg=scene.crs.horizontal_epsg, nodata=float("nan"),
+                attributes={k: str(v) for k, v in meta.items()})
+        elif camera.kind == "map":
             written += imageio.write_georeferenced(
                 outdir / "sun_hours.tif", result.hours, camera.geotransform(scene.origin_m),
                 epsg=scene.crs.horizontal_epsg, nodata=float("nan"),
@@ -886,7 +919,9 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
               settings=None, ground: str | None = None, frames: bool = False,
               surfaces_csv: bool = False, overwrite: bool = False,
               on_plan: Callable[[int], None] | None = None,
-              on_step: Callable[[int, int, Unit], None] | None = None) -> BatchRun:
+              on_step: Callable[[int, int, Unit], None] | None = None,
+              tile_px: int | None = None, scheduler: str | None = None,
+              scene_path=None, step_month: Sequence[str] | None = None) -> BatchRun:
     """A resumable sun-hour run in ``outdir``: manifest, parameter hash, saved state, outputs.
 
     The parameters (``request``, the camera, technique, settings, ground, outputs) are hashed
@@ -920,7 +955,16 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
         Called once the sun positions are known (progress bars).
     on_step : callable(units_done, units_total, unit), optional
         Called after each sun position (an exception raised here stops the run with the state
-        saved).
+        saved). In a tiled run: after each task, ``(tasks_done, tasks_total, None)``.
+    tile_px : int, optional
+        Split the receivers into tiles of this many pixels a side (:mod:`cityshade.tiles`);
+        the result is identical.
+    scheduler : str or cityshade.distributed.DaskExecutor, optional
+        ``local[:N]`` or ``tcp://HOST:PORT``: run the tasks on Dask (:mod:`cityshade.distributed`);
+        needs ``scene_path``, which every worker memory-maps. An executor object is used as
+        it is (e.g. with another number of threads per worker).
+    step_month : sequence of str, optional
+        A month label per step: also write per-month sun-hours (``monthly/``).
 
     Raises
     ------
@@ -934,7 +978,8 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
 
     from cityshade.config import Settings
     from cityshade.sun import suns_from_instants
-    from cityshade.util import make_folder
+    from cityshade.pipeline import check_frame_memory
+    from cityshade.util import check_outputs, output_group
 
     settings = settings or Settings()
     outdir = Path(outdir)
@@ -942,11 +987,18 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
     params = {**(request or {}), "city_days": float(t_days), "camera": camera_params(camera),
               "technique": technique, "ground": ground,
               "refraction": bool(settings.sun.refraction), "frames": frames,
-              "samples_per_m2": samples_per_m2, "stretches": True,
+              "samples_per_m2": samples_per_m2,
+              **({"tile_px": tile_px} if tile_px is not None or scheduler is not None
+                 or step_month is not None else {}),
+              **({"monthly": True} if step_month is not None else {}),
+              **({} if tile_px is not None or scheduler is not None or step_month is not None
+                 else {"stretches": True}),
               "shadow_settings": dataclasses.asdict(dataclasses.replace(settings.shadows,
                                                                         technique=None))}
     key = params_key(params)
-    make_folder(outdir)
+    if camera is not None:
+        check_frame_memory(camera, technique=technique, batch=True)  # before any work
+    check_outputs(("-o", outdir, None))  # a folder that can be written, before any work
     old = read_manifest(outdir)
     state = Checkpoint(outdir / STATE_NAME, key)
     if old is not None and old.get("key") != key:
@@ -1021,14 +1073,28 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
         for i in unit.steps:
             write_mask_png(frames_dir / frame_name(steps[i]), mask)
 
-    from cityshade.runs import Stretches
+    tiled = None
+    if tile_px is not None or scheduler is not None or step_month is not None:
+        from cityshade.distributed import run_tiled
 
-    result = sun_hours(scene, camera, instants, t_days, weights_h=weights, technique=technique,
-                       settings=settings.shadows, ground=ground, suns=suns,
-                       samples_per_m2=samples_per_m2, checkpoint=state,
-                       reuse_rays=settings.batch.reuse_rays, on_step=step_done,
-                       on_frame=frame_done if frames else None,
-                       stretches=Stretches.for_steps(steps))
+        # Tiled runs keep no sunlit stretches yet (sums only).
+        result, tiled = run_tiled(scene, camera, instants, t_days, weights_h=weights, suns=suns,
+                                  units=units, technique=technique, ground=ground,
+                                  samples_per_m2=samples_per_m2, checkpoint=state,
+                                  tile_px=tile_px, scheduler=scheduler, scene_path=scene_path,
+                                  step_month=step_month, workdir=outdir, frames=frames,
+                                  finished=finished, manifest=manifest,
+                                  write_manifest=lambda: write_manifest(outdir, manifest),
+                                  on_step=on_step)
+    else:
+        from cityshade.runs import Stretches
+
+        result = sun_hours(scene, camera, instants, t_days, weights_h=weights,
+                           technique=technique, settings=settings.shadows, ground=ground,
+                           suns=suns, samples_per_m2=samples_per_m2, checkpoint=state,
+                           reuse_rays=settings.batch.reuse_rays, on_step=step_done,
+                           on_frame=frame_done if frames else None,
+                           stretches=Stretches.for_steps(steps))
     if state_warning is not None:
         result.warnings.insert(0, state_warning)
     if frames and below:
@@ -1040,7 +1106,13 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
             write_mask_png(frames_dir / frame_name(steps[i]), nothing_lit)
     meta = run_metadata(result, scene, params)
     t1 = time.perf_counter()
-    written = write_sun_hours(outdir, result, scene, camera, meta, surfaces_csv=surfaces_csv)
+    with output_group():  # the maps, surfaces.csv and the tiled extras appear together
+        written = write_sun_hours(outdir, result, scene, camera, meta,
+                                  surfaces_csv=surfaces_csv, cog=tiled is not None)
+        if tiled is not None:
+            from cityshade.distributed import write_tiled_extras
+
+            written += write_tiled_extras(outdir, tiled, result, scene, camera, meta)
     write_s = time.perf_counter() - t1
     manifest["status"] = "finished"
     manifest["finished_steps"] = sorted(finished)

@@ -10,6 +10,8 @@ from pathlib import Path
 from typing import Callable, Iterable
 
 from cityshade.config import Settings
+from cityshade.errors import ContractError
+from cityshade.util import release_freed_memory
 from cityshade.geometry.scene import Scene
 
 #: Read size when hashing the source file (large reads keep hashing near disk speed).
@@ -22,24 +24,6 @@ def file_sha256(path: str | os.PathLike) -> str:
         while chunk := fh.read(_HASH_CHUNK):
             digest.update(chunk)
     return digest.hexdigest()
-
-
-def release_freed_memory() -> None:
-    """Hand the free pages of the C heap back to the operating system (glibc; elsewhere a no-op).
-
-    The reader's records (hundreds of thousands of small strings and tuples) and the scene's
-    temporaries leave the heap fragmented once freed, so without this the kd-tree build would
-    start from the read stage's high-water mark (measured on the 1M-triangle city: 190 MB of
-    resident memory returned, in about 20 ms).
-    """
-    if not sys.platform.startswith("linux"):
-        return
-    try:
-        import ctypes
-
-        ctypes.CDLL("libc.so.6").malloc_trim(0)
-    except (OSError, AttributeError):  # not glibc (musl has no malloc_trim)
-        pass
 
 
 def default_output(source: str | os.PathLike) -> Path:
@@ -87,6 +71,7 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
 
         generic = [n for n in parse_time_attribute(settings.build.time_attribute) if n]
     raw = read_model(source, progress=read_progress, generic_attributes=generic)
+    release_freed_memory()  # the parser's freed elements, before the scene's arrays
     timings["read_s"] = time.perf_counter() - t0
     if progress:
         progress("triangulate", 0, 1)
@@ -95,6 +80,111 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
     del raw
     release_freed_memory()
     timings["triangulate_s"] = time.perf_counter() - t1
+    scene.kdtree = _build_tree(scene, settings, progress, timings)
+    scene.report["timings"] = {k: round(v, 4) for k, v in timings.items()}
+    return scene
+
+
+#: File name endings a folder given to ``build`` is searched for (CityGML, CityJSON, CityJSONSeq).
+MODEL_SUFFIXES = (".gml", ".xml", ".citygml", ".json", ".jsonl", ".city.json", ".city.jsonl")
+
+
+def expand_sources(sources: Iterable[str | os.PathLike]) -> list[Path]:
+    """The model files a build reads: files as given, folders by their model files (sorted by
+    name), each file once, in the order given.
+
+    Raises
+    ------
+    InputError
+        A path that does not exist, or a folder without model files.
+    """
+    from cityshade.errors import InputError
+
+    out: list[Path] = []
+    seen: set[Path] = set()
+    for source in sources:
+        path = Path(source)
+        if path.is_dir():
+            found = sorted(p for p in path.iterdir() if p.is_file()
+                           and p.name.lower().endswith(MODEL_SUFFIXES))
+            if not found:
+                raise InputError(f"the folder holds no model file (*{', *'.join(MODEL_SUFFIXES)})",
+                                 path=str(path))
+        elif path.is_file():
+            found = [path]
+        else:
+            raise InputError("no such file", path=str(path))
+        for p in found:
+            key = p.resolve()
+            if key not in seen:
+                seen.add(key)
+                out.append(p)
+    return out
+
+
+def build_scene_from_files(sources: list[Path], settings: Settings | None = None,
+                           progress: Callable[[str, int, int], None] | None = None) -> Scene:
+    """One scene from several city model files (tiles): one origin and CRS, the objects of
+    every file, an object whose gml:id an earlier file had kept once (counted in
+    ``report["tiles"]``). Files are read one at a time, so memory holds one file's read model
+    plus the scene gathered so far.
+
+    With ``settings.build.crs`` every file is projected to that CRS (a file without a known
+    CRS is taken to be in it); without it all files must resolve to one CRS.
+
+    Parameters
+    ----------
+    progress : callable(stage, done, total), optional
+        ``("file NAME i/n", bytes read, bytes of the file)`` while reading, then the later
+        stages as :func:`build_scene_from_file`.
+
+    Raises
+    ------
+    CRSError
+        Files in different CRSs without ``--crs``, or a ``--crs`` that is not projected.
+    """
+    import dataclasses
+
+    from cityshade.citygml.crs import parse_srs_name
+    from cityshade.errors import UsageError
+    from cityshade.geometry.merge import SceneMerger
+    from cityshade.geometry.scene import build_scene
+
+    settings = settings or Settings()
+    target = None
+    if settings.build.crs is not None:
+        target = parse_srs_name(settings.build.crs)
+        if target.is_geographic or target.local:
+            raise UsageError(f"--crs {settings.build.crs}: with several files --crs names the "
+                             f"projected CRS to build in ({target.name} is not one)")
+    build_settings = dataclasses.replace(settings.build, crs=None)
+    generic = ()
+    if settings.build.time_attribute:
+        from cityshade.citygml.temporal import parse_time_attribute
+
+        generic = [n for n in parse_time_attribute(settings.build.time_attribute) if n]
+    timings = {"read_s": 0.0, "triangulate_s": 0.0}
+    merger = SceneMerger(crs_given=target is not None)
+    for i, source in enumerate(sources):
+        stage = f"file {source.name} {i + 1}/{len(sources)}"
+        read_progress = (lambda done, total, stage=stage: progress(stage, done, total)
+                         ) if progress else None
+        t0 = time.perf_counter()
+        raw = read_model(source, progress=read_progress, generic_attributes=generic)
+        t1 = time.perf_counter()
+        part = build_scene(raw, build_settings, target_crs=target, render_space=False)
+        del raw
+        merger.add(part, source)
+        del part
+        release_freed_memory()
+        timings["read_s"] += t1 - t0
+        timings["triangulate_s"] += time.perf_counter() - t1
+    if progress:
+        progress("merge", 0, 1)
+    t = time.perf_counter()
+    scene = merger.finish()
+    release_freed_memory()
+    timings["merge_s"] = time.perf_counter() - t
     scene.kdtree = _build_tree(scene, settings, progress, timings)
     scene.report["timings"] = {k: round(v, 4) for k, v in timings.items()}
     return scene
@@ -112,21 +202,48 @@ def _build_tree(scene: Scene, settings: Settings, progress, timings: dict):
     return tree
 
 
-def build_file(source: str | os.PathLike, output: str | os.PathLike | None = None,
+def _source_record(path: Path) -> dict:
+    stat = path.stat()
+    return {"path": str(path.resolve()), "size": stat.st_size, "mtime": stat.st_mtime,
+            "sha256": file_sha256(path)}
+
+
+def build_file(source: str | os.PathLike | list, output: str | os.PathLike | None = None,
                settings: Settings | None = None,
                progress: Callable[[str, int, int], None] | None = None) -> tuple[Path, Scene, int]:
-    """Build the ``.cityshade`` file of a CityGML/CityJSON file; returns (output path, scene, bytes)."""
+    """Build the ``.cityshade`` file of a CityGML/CityJSON file, or of several files and
+    folders (a list: :func:`build_scene_from_files`); returns (output path, scene, bytes)."""
     from cityshade.scenefile import save_scene
 
     settings = settings or Settings()
+    if isinstance(source, (list, tuple)):
+        sources = expand_sources(source)
+        if len(sources) == 1 and not Path(source[0]).is_dir():
+            source = sources[0]
+    else:
+        sources = None
+    if sources is not None and not isinstance(source, Path):
+        if output is None:
+            raise ContractError("several input files need an output path")
+        output = Path(output)
+        scene = build_scene_from_files(sources, settings, progress)
+        if progress:
+            progress("write", 0, 1)
+        files = [_source_record(p) for p in sources]
+        combined = hashlib.sha256("".join(f["sha256"] for f in files).encode()).hexdigest()
+        source_info = {"path": files[0]["path"] if len(files) == 1 else
+                       f"{len(files)} files in {os.path.commonpath([f['path'] for f in files])}",
+                       "size": sum(f["size"] for f in files),
+                       "mtime": max(f["mtime"] for f in files), "sha256": combined,
+                       "files": files}
+        size = save_scene(scene, output, source_info, asdict(settings.build))
+        return output, scene, size
     source = Path(source)
     output = Path(output) if output is not None else default_output(source)
     scene = build_scene_from_file(source, settings, progress)
     if progress:
         progress("write", 0, 1)
-    stat = source.stat()
-    source_info = {"path": str(source.resolve()), "size": stat.st_size,
-                   "mtime": stat.st_mtime, "sha256": file_sha256(source)}
+    source_info = _source_record(source)
     options = asdict(settings.build)
     size = save_scene(scene, output, source_info, options)
     return output, scene, size

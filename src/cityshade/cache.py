@@ -15,6 +15,18 @@ checksum; ``file_size`` is the whole file's size (a truncated file is detected b
 array is touched). Loading memory-maps the file read-only; arrays are views into the map.
 Files are written to a temporary name in the same folder and renamed, so an interrupted build
 never leaves a half file under the final name.
+
+Verification (docs/SCALE.md): every load checks magic, version, the header's checksum and the
+file size. The arrays' checksums (a pass over the whole file: seconds for gigabytes) are
+checked once per version of the file: after a full check — while the build writes the file,
+or on a load without a trusted stamp, or on ``cityshade info --verify`` — a *verified stamp*
+(the file's device, inode, size, mtime and ctime in nanoseconds and its header checksum) is
+kept in the user's cache folder. A load whose file still matches its stamp skips the pass;
+any write to the file changes its mtime/ctime, so the next load checks every array again
+before anything is computed from it. A stamp written within :data:`RACY_S` of the file's
+last change is not trusted (a write in the same clock tick would keep the mtime: git's
+"racy" rule), so such a file is checked once more on its next load; a large file's build
+waits out that window before stamping, so its first load is fast too.
 """
 from __future__ import annotations
 
@@ -22,7 +34,9 @@ import hashlib
 import json
 import os
 import struct
+import time
 from pathlib import Path
+from collections.abc import Sequence
 from typing import Any, Mapping
 
 import numpy as np
@@ -37,6 +51,62 @@ FORMAT_VERSION = 1
 _PREFIX = struct.Struct("<8sIIQ16s")
 _ALIGN = 64
 _REBUILD = "rebuild it with `cityshade build`"
+
+
+#: A stamp written sooner than this after the file's last change is not trusted: file times
+#: have a clock-tick granularity (Linux's coarse clock: 1-10 ms), and a later write in the
+#: same tick would leave them unchanged. Filesystems with coarser times (FAT: 2 s) need
+#: ``info --verify`` after a change made within that window.
+RACY_S = 0.05
+#: Files at least this large wait out :data:`RACY_S` after their rename, so the build's own
+#: stamp is trusted and the first load skips the checksum pass (seconds per gigabyte);
+#: smaller files are checked once more on their first load, which costs less than the wait.
+STAMP_WAIT_BYTES = 256 << 20
+
+
+def _stamp_dir() -> Path:
+    base = os.environ.get("XDG_CACHE_HOME") or os.path.join(os.path.expanduser("~"), ".cache")
+    return Path(base) / "cityshade" / "verified"
+
+
+def _stamp_path(path: Path) -> Path:
+    key = hashlib.blake2b(str(path.resolve()).encode("utf-8"), digest_size=16).hexdigest()
+    return _stamp_dir() / f"{key}.json"
+
+
+def _file_key(path: Path, header_digest: str) -> dict:
+    st = path.stat()
+    return {"path": str(path.resolve()), "dev": st.st_dev, "ino": st.st_ino,
+            "size": st.st_size, "mtime_ns": st.st_mtime_ns, "ctime_ns": st.st_ctime_ns,
+            "header": header_digest}
+
+
+def write_verified_stamp(path: str | os.PathLike, header_digest: str) -> None:
+    """Record that ``path``, as it is now, matches all its checksums (best effort: an
+    unwritable cache folder only means the next load checks again)."""
+    path = Path(path)
+    try:
+        key = _file_key(path, header_digest)
+        key["stamped_ns"] = time.time_ns()
+        stamp = _stamp_path(path)
+        stamp.parent.mkdir(parents=True, exist_ok=True)
+        tmp = stamp.with_name(f"{stamp.name}.{os.getpid()}.tmp")
+        tmp.write_text(json.dumps(key))
+        os.replace(tmp, stamp)
+    except OSError:
+        pass
+
+
+def _stamp_trusted(path: Path, header_digest: str) -> bool:
+    try:
+        stamp = json.loads(_stamp_path(path).read_text())
+        key = _file_key(path, header_digest)
+    except (OSError, ValueError):
+        return False
+    if not isinstance(stamp, dict) or any(stamp.get(k) != v for k, v in key.items()):
+        return False
+    stamped = stamp.get("stamped_ns")
+    return isinstance(stamped, int) and stamped - max(key["mtime_ns"], key["ctime_ns"]) > RACY_S * 1e9
 
 
 def _digest(data) -> str:
@@ -56,6 +126,46 @@ def pack_strings(values: list[str]) -> tuple[np.ndarray, np.ndarray]:
 def unpack_strings(blob: np.ndarray, offsets: np.ndarray) -> list[str]:
     data = bytes(blob)
     return [data[offsets[i]:offsets[i + 1]].decode("utf-8") for i in range(len(offsets) - 1)]
+
+
+class PackedStrings(Sequence):
+    """A read-only list of strings over a :func:`pack_strings` blob, decoded on access.
+
+    A loaded scene's gml:id tables (millions of polygons in a 10^7-triangle city) would take
+    most of a load's time to decode as a list, and most commands never read them.
+    """
+
+    def __init__(self, blob: np.ndarray, offsets: np.ndarray):
+        self._blob = blob
+        self._offsets = offsets
+
+    def __len__(self) -> int:
+        return len(self._offsets) - 1
+
+    def __getitem__(self, index):
+        if isinstance(index, slice):
+            return [self[i] for i in range(*index.indices(len(self)))]
+        n = len(self)
+        i = int(index)
+        if i < 0:
+            i += n
+        if not 0 <= i < n:
+            raise IndexError("string index out of range")
+        return bytes(self._blob[self._offsets[i]:self._offsets[i + 1]]).decode("utf-8")
+
+    def __iter__(self):
+        data = bytes(self._blob)
+        offsets = self._offsets.tolist()
+        for i in range(len(offsets) - 1):
+            yield data[offsets[i]:offsets[i + 1]].decode("utf-8")
+
+    def __eq__(self, other) -> bool:
+        if isinstance(other, (list, tuple, PackedStrings)):
+            return len(self) == len(other) and all(a == b for a, b in zip(self, other))
+        return NotImplemented
+
+    def __repr__(self) -> str:
+        return f"PackedStrings({len(self)} strings)"
 
 
 def write_cache(path: str | os.PathLike, header: Mapping[str, Any],
@@ -113,6 +223,11 @@ def write_cache(path: str | os.PathLike, header: Mapping[str, Any],
             pad = -a.nbytes % _ALIGN
             if pad:
                 fh.write(b"\0" * pad)
+    # The checksums were computed from the very arrays written (and fsynced). The rename set
+    # the file's ctime just now: wait out the racy window so the stamp can be trusted.
+    if data_start + offset >= STAMP_WAIT_BYTES:
+        time.sleep(RACY_S * 1.2)
+    write_verified_stamp(path, hashlib.blake2b(blob, digest_size=16).hexdigest())
     return data_start + offset
 
 
@@ -128,10 +243,14 @@ def is_cache_file(path: str | os.PathLike) -> bool:
 class CacheFile:
     """A loaded cache: :attr:`header` (dict) and :meth:`array` views into a read-only map."""
 
-    def __init__(self, path: Path, header: dict, mm: np.ndarray):
+    def __init__(self, path: Path, header: dict, mm: np.ndarray, header_digest: str = ""):
         self.path = path
         self.header = header
         self._mm = mm
+        self.header_digest = header_digest
+        #: How the arrays were checked on opening: "full", "stamp" (a trusted verified stamp)
+        #: or "none" (``verify=False``).
+        self.verified = "none"
 
     def names(self) -> list[str]:
         return list(self.header["arrays"])
@@ -146,15 +265,26 @@ class CacheFile:
         return raw.view(np.dtype(entry["dtype"])).reshape(entry["shape"])
 
     def verify(self) -> None:
-        """Check every array against its checksum (reads the whole file once)."""
+        """Check every array against its checksum (one streaming pass over the file), then
+        record the verified stamp."""
         for name, entry in self.header["arrays"].items():
             if _digest(memoryview(np.ascontiguousarray(self.array(name))).cast("B")) != entry["blake2b"]:
                 raise CacheCorruptError(f"array {name!r} does not match its checksum: the file "
                                         f"was modified or damaged; {_REBUILD}", path=str(self.path))
+        self.verified = "full"
+        if self.header_digest:
+            write_verified_stamp(self.path, self.header_digest)
 
 
-def open_cache(path: str | os.PathLike, verify: bool = True) -> CacheFile:
+def open_cache(path: str | os.PathLike, verify: bool | str = "auto") -> CacheFile:
     """Open a cache file read-only (memory-mapped).
+
+    Parameters
+    ----------
+    verify : "auto", True or False
+        "auto": check every array's checksum unless a trusted verified stamp says this very
+        file was checked (module docstring); True: check them always (``info --verify``);
+        False: only the header and the size.
 
     Raises
     ------
@@ -190,7 +320,9 @@ def open_cache(path: str | os.PathLike, verify: bool = True) -> CacheFile:
         raise CacheCorruptError(f"the cache is truncated or has extra bytes (size {size}, "
                                 f"expected {header.get('file_size')}); {_REBUILD}", path=str(path))
     mm = np.memmap(path, dtype=np.uint8, mode="r") if size else np.zeros(0, np.uint8)
-    cache = CacheFile(path, header, mm)
-    if verify:
+    cache = CacheFile(path, header, mm, header_digest.hex())
+    if verify == "auto" and _stamp_trusted(path, cache.header_digest):
+        cache.verified = "stamp"
+    elif verify:
         cache.verify()
     return cache

@@ -16,6 +16,7 @@ import numpy as np
 
 if TYPE_CHECKING:
     from cityshade.geometry.scene import Scene
+    from cityshade.shadows import TechniqueDiagnostics
     from cityshade.raster.gbuffer import Surfaces
     from cityshade.sun import SunPosition
 
@@ -38,7 +39,7 @@ class FrameDiagnostics:
     gbuffer : dict
         :attr:`cityshade.raster.gbuffer.GBuffer.stats` of the camera pass (culling counts,
         timings).
-    shadow : dict
+    shadow : TechniqueDiagnostics
         The shadow technique's own diagnostics (``technique``, ``map_px``, ``traced_px``...).
     ground : GroundInfo or None
     skipped : list of str
@@ -46,14 +47,15 @@ class FrameDiagnostics:
     """
 
     gbuffer: dict[str, Any] = field(default_factory=dict)
-    shadow: dict[str, Any] = field(default_factory=dict)
+    shadow: "TechniqueDiagnostics | None" = None
     ground: GroundInfo | None = None
     skipped: list[str] = field(default_factory=list)
 
     def lines(self) -> list[tuple[str, Any]]:
         """(label, value) rows for ``render -v``: the technique's items, then the camera
         pass, the ground plane and what was left out."""
-        rows = [(k, v) for k, v in self.shadow.items() if not isinstance(v, (bytes, bytearray))]
+        shadow = self.shadow.as_dict() if self.shadow is not None else {}
+        rows = [(k, v) for k, v in shadow.items() if not isinstance(v, (bytes, bytearray))]
         rows.append(("gbuffer", self.gbuffer))
         rows.append(("skipped", "\n         ".join(self.skipped) or "nothing"))
         if self.ground is not None:
@@ -85,8 +87,8 @@ def _depth_map_skips(stats: dict, where: str) -> list[str]:
 
 
 def skipped_work(scene: "Scene", gbuffer_stats: dict | None = None,
-                 shadow_diagnostics: dict | None = None, surfaces: "Surfaces | None" = None,
-                 sun: "SunPosition | None" = None) -> list[str]:
+                 shadow_diagnostics: "TechniqueDiagnostics | None" = None,
+                 surfaces: "Surfaces | None" = None, sun: "SunPosition | None" = None) -> list[str]:
     """What a frame left out because the scene or the request did not need it, with why and
     an estimate of the time it saved, one line per item.
 
@@ -96,7 +98,7 @@ def skipped_work(scene: "Scene", gbuffer_stats: dict | None = None,
         Its kd-tree statistics and textures.
     gbuffer_stats : dict, optional
         :attr:`cityshade.raster.gbuffer.GBuffer.stats` of the camera pass.
-    shadow_diagnostics : dict, optional
+    shadow_diagnostics : TechniqueDiagnostics, optional
         The shadow technique's diagnostics (nested ``base`` of ``hybrid`` are read too).
     surfaces : Surfaces, optional
         For the textured-pixel count.
@@ -139,7 +141,7 @@ def skipped_work(scene: "Scene", gbuffer_stats: dict | None = None,
                 out.append(f"camera pass: {n} triangle references {what} not drawn "
                            f"({_ms(n * per_tri)})")
     d = shadow_diagnostics or {}
-    inner = d.get("base") if isinstance(d.get("base"), dict) else None
+    inner = d.get("base")
     if "self_shadowed_px" in (inner or d):
         n = int((inner or d)["self_shadowed_px"])
         if n:

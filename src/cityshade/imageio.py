@@ -344,15 +344,15 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
         kind = values.dtype.kind
         if kind == "f":
             float_names.append(name)
-            float_planes.append(values.astype(np.float32))
+            float_planes.append(values)
         elif kind in "biu":
-            wide = values.astype(np.int64)
-            lo, hi = int(wide.min()), int(wide.max())
+            lo, hi = int(values.min()), int(values.max())
             if lo >= -_FLOAT32_EXACT_INT and hi <= _FLOAT32_EXACT_INT:
                 float_names.append(name)
-                float_planes.append(wide.astype(np.float32))
+                float_planes.append(values)
                 int_names.append(name)
             elif lo >= -1 and hi < _UINT32_NONE:
+                wide = values.astype(np.int64)
                 uint_names.append(name)
                 uint_planes.append(np.where(wide < 0, _UINT32_NONE, wide).astype(np.uint32))
             else:
@@ -371,7 +371,12 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
             continue
         if len(set(names)) != len(names):
             raise ImageIOError(f"channel names must be distinct: {names!r}", path=str(path))
-        pixels = np.ascontiguousarray(np.stack(planes, axis=-1))
+        # One interleaved (H, W, C) buffer, each plane converted straight into it (exact:
+        # integers here are at most 2**24 in magnitude).
+        pixels = np.empty(shape + (len(planes),), np.float32 if part_name == "data"
+                          else np.uint32)
+        for index, plane in enumerate(planes):
+            pixels[..., index] = plane
         part_attrs = dict(attrs)
         part_attrs["name"] = part_name
         if pixels.dtype == np.uint32:
@@ -726,3 +731,66 @@ def write_georeferenced(path: str | os.PathLike, array: np.ndarray,
         _write_text_atomically(prj, crs.to_wkt("WKT1_ESRI") + "\n")
         written.append(prj)
     return written
+
+
+def write_cog(path: str | os.PathLike, array: np.ndarray, geotransform: Sequence[float],
+              crs_wkt: str | None = None, *, epsg: int | None = None,
+              nodata: float | int | None = None,
+              attributes: Mapping[str, str | float | int] | None = None,
+              block_px: int = 512) -> list[Path]:
+    """Write a Cloud-Optimized GeoTIFF with GDAL (rasterio, the ``[cog]`` extra): internal
+    ``block_px`` tiles, overviews, DEFLATE with the floating-point predictor, GeoKeys of the
+    CRS (the same geotransform and CRS handling as :func:`write_georeferenced`) and the
+    attributes as GDAL metadata. Written to a temporary name and renamed.
+
+    Returns
+    -------
+    list of pathlib.Path
+        ``[path]``.
+
+    Raises
+    ------
+    ImageIOError
+        No rasterio, a bad array, geotransform or extension, or a write failure.
+    cityshade.errors.CRSError
+        A CRS pyproj does not know.
+    """
+    path = Path(path)
+    if path.suffix.lower() not in (".tif", ".tiff"):
+        raise ImageIOError("a Cloud-Optimized GeoTIFF must be a .tif/.tiff", path=str(path))
+    try:
+        import rasterio
+        from rasterio.transform import Affine
+    except ImportError:
+        raise ImageIOError("writing a Cloud-Optimized GeoTIFF needs rasterio: pip install "
+                           "'cityshade[cog]'", path=str(path)) from None
+    gt = tuple(float(v) for v in geotransform)
+    if len(gt) != 6 or not all(math.isfinite(v) for v in gt) or \
+            gt[1] * gt[5] - gt[2] * gt[4] == 0.0:
+        raise ImageIOError(f"geotransform must be 6 finite numbers, not singular: {gt!r}",
+                           path=str(path))
+    pixels = np.asarray(array)
+    if pixels.ndim != 2 or pixels.dtype not in (np.float32, np.uint8, np.uint16):
+        raise ImageIOError(f"a COG band must be (H, W) float32, uint8 or uint16, not "
+                           f"{pixels.shape} {pixels.dtype}", path=str(path))
+    crs = _crs_of(crs_wkt, epsg)
+    from cityshade.util import atomic_path
+
+    profile = {"driver": "COG", "width": pixels.shape[1], "height": pixels.shape[0],
+               "count": 1, "dtype": pixels.dtype.name, "transform": Affine.from_gdal(*gt),
+               "crs": None if crs is None else crs.to_wkt(), "nodata": nodata,
+               "blocksize": int(block_px), "compress": "DEFLATE",
+               "predictor": 3 if pixels.dtype == np.float32 else 2, "overviews": "AUTO",
+               "BIGTIFF": "IF_SAFER"}
+    with atomic_path(path, keep_suffix=True, error=ImageIOError, what="image") as tmp:
+        try:
+            with rasterio.Env(GDAL_NUM_THREADS="1"):
+                with rasterio.open(tmp, "w", **profile) as dst:
+                    dst.write(pixels, 1)
+                    if attributes:
+                        # GDAL reads "a:b=c" as key "a"; keys keep their text with ":" as "_".
+                        dst.update_tags(**{str(k).replace(":", "_"): str(v)
+                                           for k, v in attributes.items()})
+        except rasterio.errors.RasterioError as exc:
+            raise ImageIOError(f"cannot write the GeoTIFF: {exc}", path=str(path)) from None
+    return [path]

@@ -70,21 +70,56 @@ class CameraPass:
         """(H, W) bool: pixels showing a surface."""
         return np.asarray(self.surfaces.valid, bool)
 
-    def context(self, sun: "SunPosition", settings: ShadowSettings | None = None
-                ) -> "ShadowContext":
-        """The shadow context of one sun on this pass."""
+    def context(self, sun: "SunPosition", settings: ShadowSettings | None = None,
+                measure: bool = False) -> "ShadowContext":
+        """The shadow context of one sun on this pass (``measure``: the map techniques' texel
+        and aliasing measures too)."""
         from cityshade.shadows import ShadowContext
 
         return ShadowContext(scene=self.scene, surfaces=self.surfaces, camera=self.camera,
                              sun=sun, t_days=float(self.t_days),
-                             settings=settings or ShadowSettings(), oriented_normal=self.normal)
+                             settings=settings or ShadowSettings(), oriented_normal=self.normal,
+                             measure=bool(measure))
 
 
-#: Peak bytes per pixel of a frame (G-buffer, float64 surfaces, oriented normals, shadow rays,
-#: shading and outputs): the figure issue 13 measured on the sample city (about 300).
-FRAME_BYTES_PER_PX = 300
+#: Peak bytes per pixel of a frame, by technique family, measured with
+#: ``python benchmarks/memory.py`` (at 4663e5b, the sample city, 1 and 4 Mpx with every pixel
+#: showing a surface, the map view; the slope of the peak resident set over the pixels):
+#: raytrace 280.9, izb 280.8, shadowmap 274.3 (+ 65.7 MB for its 2048² map), hybrid:vsm 392.0
+#: (+ 98.3 MB); a batch (izb or raytrace, 4 sun positions, its EXR and PNG) 280.9 per receiver
+#: pixel. The overview camera, a third of it sky, measured 186-196. The exact paths peak in the
+#: camera pass (``raster.gbuffer.resolve``'s float64 temporaries), hybrid in its base map's
+#: lookup on top of the camera pass's 98 B/px. With resolve as one kernel (the kernels branch,
+#: 0e5b9d0) the same command measured raytrace 217.1, hybrid:vsm 407.5, batch 198.1. The
+#: larger of the two, rounded up; the map families add :data:`MAP_BYTES_PER_TEXEL` per texel
+#: of their maps.
+FRAME_BYTES_PER_PX = {"exact": 290, "map": 290, "hybrid": 410}
+#: A batch per receiver pixel (the figure above, rounded up).
+BATCH_BYTES_PER_PX = 290
+#: Shadow-map texels (depth, caster ids, moments, the hybrid's thin-caster map): 65.7 MB and
+#: 98.3 MB for the 4.19 M texels of a 2048² map, rounded up.
+MAP_BYTES_PER_TEXEL = 24
 
 
+def frame_bytes(camera: "Camera", technique: str | None = None,
+                settings: ShadowSettings | None = None, *, batch: bool = False
+                ) -> tuple[int, int]:
+    """(estimated peak bytes, bytes per pixel) of a frame of ``camera`` with ``technique``
+    (None: the camera pass alone), or of a batch (per receiver pixel) with ``batch``."""
+    from cityshade.shadows import exact_technique_names
+
+    pixels = int(camera.width_px) * int(camera.height_px)
+    name = technique or "raytrace"
+    core = name.removeprefix("hybrid:").split("+")[0]
+    family = ("hybrid" if name.startswith("hybrid:")
+              else "exact" if core in exact_technique_names() else "map")
+    per_px = BATCH_BYTES_PER_PX if batch else FRAME_BYTES_PER_PX[family]
+    texels = 0
+    if family != "exact" and not batch:
+        s = settings or ShadowSettings()
+        maps = s.cascades.count if core.startswith("csm") else 1
+        texels = maps * int(s.map.px) ** 2
+    return pixels * per_px + texels * MAP_BYTES_PER_TEXEL, per_px
 def available_memory_bytes() -> int | None:
     """The memory the system can give without swapping (``MemAvailable``), None if unknown."""
     try:
@@ -100,23 +135,30 @@ def available_memory_bytes() -> int | None:
         return None
 
 
-def check_frame_memory(camera: "Camera", available_bytes: int | None = None) -> int:
-    """The estimated peak bytes of a frame of ``camera``; refuse one that does not fit.
+def check_frame_memory(camera: "Camera", available_bytes: int | None = None, *,
+                       technique: str | None = None, settings: ShadowSettings | None = None,
+                       batch: bool = False) -> int:
+    """The estimated peak bytes of a frame (or a batch) of ``camera`` (:func:`frame_bytes`);
+    refuse one that does not fit in the available memory, before anything is allocated.
 
     Raises
     ------
     UsageError
-        The estimate exceeds the available memory (the message gives both and the way out).
+        The estimate exceeds the available memory (the message gives both and the way out:
+        larger pixels or a smaller picture; for a batch, tiles).
     """
-    pixels = int(camera.width_px) * int(camera.height_px)
-    need = pixels * FRAME_BYTES_PER_PX
+    need, per_px = frame_bytes(camera, technique, settings, batch=batch)
     have = available_memory_bytes() if available_bytes is None else int(available_bytes)
     if have is not None and need > have:
-        hint = ("a larger --pixel-size or a smaller map extent" if camera.kind == "map"
-                else "a smaller --size")
-        raise UsageError(f"the picture of {camera.width_px} × {camera.height_px} pixels needs "
-                         f"about {need / 1e9:.1f} GB ({FRAME_BYTES_PER_PX} bytes per pixel) "
-                         f"but {have / 1e9:.1f} GB are available: use {hint}")
+        hint = "a larger --pixel-size" if camera.kind == "map" else "a smaller --size"
+        if batch:
+            hint += " or --tile-px N (the map in tiles of N × N pixels)"
+        what = "sun-hour map" if batch else "picture"
+        per = f"{per_px} bytes per {'receiver pixel' if batch else 'pixel'}"
+        per += f" for {technique}" if technique and not batch else ""
+        raise UsageError(f"the {what} of {camera.width_px} × {camera.height_px} pixels needs "
+                         f"about {need / 1e9:.1f} GB ({per}) but {have / 1e9:.1f} GB are "
+                         f"available: use {hint}")
     return need
 
 
@@ -191,21 +233,22 @@ class ShadowPass:
     def diagnostics(self, cp: CameraPass) -> FrameDiagnostics:
         """The frame's typed diagnostics, with what it left out (:func:`skipped_work`)."""
         return FrameDiagnostics(
-            gbuffer=cp.gbuffer.stats, shadow=dict(self.result.diagnostics), ground=cp.ground,
+            gbuffer=cp.gbuffer.stats, shadow=self.result.diagnostics, ground=cp.ground,
             skipped=skipped_work(cp.scene, cp.gbuffer.stats, self.result.diagnostics,
                                  cp.surfaces, self.sun))
 
 
 def shadow_pass(cp: CameraPass, sun: "SunPosition", technique: "str | Technique",
-                settings: ShadowSettings | None = None) -> ShadowPass:
-    """Run one shadow technique (a registry name or an instance) for one sun on ``cp``."""
+                settings: ShadowSettings | None = None, measure: bool = False) -> ShadowPass:
+    """Run one shadow technique (a registry name or an instance) for one sun on ``cp``
+    (``measure``: with the map techniques' per-frame measures, :class:`ShadowContext`)."""
     from cityshade.shadows import get_technique
 
     if settings is not None and not isinstance(settings, ShadowSettings):
         raise ContractError(f"shadow settings must be a ShadowSettings, not "
                             f"{type(settings).__name__}")
     tech = get_technique(technique) if isinstance(technique, str) else technique
-    ctx = cp.context(sun, settings)
+    ctx = cp.context(sun, settings, measure)
     t = time.perf_counter()
     result = tech.run(ctx)
     seconds = time.perf_counter() - t

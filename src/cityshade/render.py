@@ -70,7 +70,7 @@ def _range_text(rng) -> str:
 
 def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosition",
                  technique: str = "raytrace", settings: ShadowSettings | None = None,
-                 sky: bool = True, ground: str | None = None) -> Frame:
+                 sky: bool = True, ground: str | None = None, measure: bool = False) -> Frame:
     """Render one frame: the pipeline's camera pass and shadow pass, then shading.
 
     Parameters
@@ -88,14 +88,18 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
     ground : str, optional
         "min", "auto" or a CRS height: add a ground plane where no surface was drawn
         (:mod:`cityshade.ground`).
+    measure : bool
+        Also the map techniques' per-frame measures (texel footprint, aliasing m), as
+        ``render -v`` reports them.
     """
-    from cityshade.pipeline import camera_pass, shadow_pass
+    from cityshade.pipeline import camera_pass, check_frame_memory, shadow_pass
     from cityshade.shading import shade
     from cityshade.shadows import get_technique
 
     if scene.kdtree is None:
         raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
     tech = get_technique(technique)
+    check_frame_memory(camera, technique=technique, settings=settings)  # before any allocation
     warnings: list[str] = []
     if not sun.above_horizon:
         warnings.append(f"the sun is at or below the horizon (elevation {sun.elevation_deg:g}°): "
@@ -109,7 +113,7 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
                         f"nothing stands then")
     cp = camera_pass(scene, camera, t_days, ground=ground)
     timings: dict[str, float] = dict(cp.timings_s)
-    sp = shadow_pass(cp, sun, tech, settings)
+    sp = shadow_pass(cp, sun, tech, settings, measure)
     timings["shadow_s"] = sp.seconds
     t = time.perf_counter()
     shade_report: dict = {}
@@ -165,10 +169,11 @@ FRAME_OUTPUTS = (("-o", "exr", (".exr",)), ("--png", "png", (".png",)),
                  ("--mask", "mask", (".png",)), ("--geotiff", "georef", (".tif", ".tiff")))
 
 
-def check_frame_outputs(camera_kind: str, **paths) -> None:
-    """Check every output of a frame before any work: extension, the map view for a
-    GeoTIFF, no two outputs on the same file, and
-    a writable folder (created when missing, as ``build`` does).
+def check_frame_outputs(camera_kind: str | None, **paths) -> None:
+    """Check every output of a frame before any work (:func:`cityshade.util.check_outputs`:
+    extension, no two outputs on the same file, a writable folder, created when missing as
+    ``build`` does) and that a GeoTIFF has the map view (unless ``camera_kind`` is None: not
+    known yet).
 
     Raises
     ------
@@ -177,47 +182,31 @@ def check_frame_outputs(camera_kind: str, **paths) -> None:
     OutputError
         A folder that cannot be created or written, or an output path that is a folder.
     """
-    import os
+    from cityshade.util import check_outputs
 
-    from cityshade.errors import OutputError
-    from cityshade.util import make_folder
-
-    taken: dict[Path, str] = {}
-    for option, key, suffixes in FRAME_OUTPUTS:
-        path = paths.get(key)
-        if path is None:
-            continue
-        path = Path(path)
-        if path.suffix.lower() not in suffixes:
-            raise UsageError(f"{option} {path}: the file name must end in "
-                             f"{' or '.join(suffixes)}, not {path.suffix or '(nothing)'!r}")
-        if key == "georef" and camera_kind != "map":
-            raise UsageError("--geotiff needs the map view (--camera map): a perspective "
-                             "picture has no place on a map")
-        resolved = path.resolve()
-        if resolved in taken:
-            raise UsageError(f"{option} and {taken[resolved]} would both write {path}")
-        taken[resolved] = option
-        if path.is_dir():
-            raise OutputError(f"{option} {path} is a folder, not a file name", path=str(path))
-        existing = next(a for a in path.parents if a.exists())
-        if not existing.is_dir():
-            raise OutputError(f"{option} {path}: {existing} is a file, not a folder",
-                              path=str(path))
-        folder = make_folder(path.parent)
-        if not os.access(folder, os.W_OK):
-            raise OutputError(f"{option} {path}: the folder {folder} is not writable",
-                              path=str(path))
+    check_outputs(*((option, paths.get(key), suffixes) for option, key, suffixes in FRAME_OUTPUTS))
+    if paths.get("georef") is not None and camera_kind not in (None, "map"):
+        raise UsageError("--geotiff needs the map view (--camera map): a perspective "
+                         "picture has no place on a map")
 
 
 def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
                 png: Path | None = None, mask: Path | None = None,
                 georef: Path | None = None) -> list[Path]:
-    """Write the requested outputs; returns the paths written."""
+    """Write the requested outputs, all of them renamed into place together at the end
+    (:func:`cityshade.util.output_group`: a failing or interrupted write leaves none);
+    returns the paths written."""
+    from cityshade.util import output_group
+
+    check_frame_outputs(frame.camera.kind, exr=exr, png=png, mask=mask, georef=georef)
+    with output_group():  # all the files appear together at the end, or none
+        return _write_frame(frame, scene, date_text, exr, png, mask, georef)
+
+
+def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef) -> list[Path]:
     from cityshade import imageio
     from cityshade.shading import to_srgb8
 
-    check_frame_outputs(frame.camera.kind, exr=exr, png=png, mask=mask, georef=georef)
     meta = frame_metadata(frame, scene, date_text)
     written = []
     s = frame.surfaces

@@ -12,7 +12,7 @@ from typing import Any
 import numpy as np
 
 from cityshade import __version__
-from cityshade.cache import FORMAT_VERSION, open_cache, pack_strings, unpack_strings, write_cache
+from cityshade.cache import FORMAT_VERSION, PackedStrings, open_cache, pack_strings, write_cache
 from cityshade.citygml.crs import CrsInfo
 from cityshade.errors import CacheError
 from cityshade.geometry.scene import Scene
@@ -58,8 +58,12 @@ def save_scene(scene: Scene, path: str | os.PathLike, source: dict[str, Any],
     return write_cache(path, header, arrays)
 
 
-def load_scene(path: str | os.PathLike, verify: bool = True, with_kdtree: bool = True) -> Scene:
+def load_scene(path: str | os.PathLike, verify: bool | str = "auto",
+               with_kdtree: bool = True) -> Scene:
     """Load a scene file written by :func:`save_scene` (memory-mapped, read-only arrays).
+
+    ``verify`` is :func:`cityshade.cache.open_cache`'s: by default the arrays' checksums are
+    checked unless a verified stamp vouches for this very file; True checks them always.
 
     Raises
     ------
@@ -76,9 +80,9 @@ def load_scene(path: str | os.PathLike, verify: bool = True, with_kdtree: bool =
     obj_types = [type_names[int(c)] for c in cache.array("obj_type")]
     scene = Scene(
         crs=CrsInfo.from_json(header["crs"]),
-        obj_ids=unpack_strings(cache.array("obj_id_blob"), cache.array("obj_id_offsets")),
+        obj_ids=PackedStrings(cache.array("obj_id_blob"), cache.array("obj_id_offsets")),
         obj_types=obj_types,
-        poly_ids=unpack_strings(cache.array("poly_id_blob"), cache.array("poly_id_offsets")),
+        poly_ids=PackedStrings(cache.array("poly_id_blob"), cache.array("poly_id_offsets")),
         materials=header["materials"], textures=header["textures"], report=header["report"],
         **fields)
     if with_kdtree and header.get("kdtree_stats") is not None:

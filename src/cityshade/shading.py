@@ -308,13 +308,17 @@ def _shade_kernel(valid, normal, position, albedo, lit, sun_dir, eye, view_dir, 
 
 
 @njit(cache=True, parallel=True)
-def _sky_kernel(valid, directions, zenith, horizon, below, out):
+def _sky_kernel(valid, xs, ys, right, up, fwd, zenith, horizon, below, out):
     height, width = valid.shape
     for r in prange(height):
         for c in range(width):
             if valid[r, c]:
                 continue
-            dz = directions[r * width + c, 2]
+            # The pixel's unit ray direction, as Camera.primary_rays computes it.
+            dx = xs[c] * right[0] + ys[r] * up[0] + fwd[0]
+            dy = xs[c] * right[1] + ys[r] * up[1] + fwd[1]
+            dz = xs[c] * right[2] + ys[r] * up[2] + fwd[2]
+            dz = dz / np.sqrt(dx * dx + dy * dy + dz * dz)
             for k in range(3):
                 if dz >= 0.0:
                     # Bright haze at the horizon fading quickly to the zenith blue.
@@ -341,7 +345,8 @@ def shade(scene, surfaces, camera, lit_fraction: np.ndarray, sun_dir_render, *,
         (H, W) int, ``uv`` (H, W, 2), surface class (H, W) uint8.
     camera : cityshade.raster.camera.Camera
         ``kind`` "perspective" or "map"; ``eye_m``, ``target_m``; perspective views use
-        ``primary_rays()`` for the sky background.
+        ``screen_coordinates()`` and ``frame()`` (the pixel rays of
+        ``primary_rays()``) for the sky background.
     lit_fraction : numpy.ndarray, shape (H, W), float
         0 = shadow, 1 = sunlit; values are clipped to 0..1; ignored where not ``valid``; NaN on
         a valid pixel is an error.
@@ -407,12 +412,11 @@ def shade(scene, surfaces, camera, lit_fraction: np.ndarray, sun_dir_render, *,
                   eye, view_dir, perspective, np.array(settings.sun_rgb),
                   np.array(settings.sky_ambient_rgb), np.array(settings.ground_ambient_rgb), out)
     if perspective and sky and not valid.all():
-        _, directions = camera.primary_rays()
-        directions = np.ascontiguousarray(directions, dtype=np.float64).reshape(-1, 3)
-        if len(directions) != height * width:
-            raise ShadingError(f"camera gives {len(directions)} rays for {height}×{width} "
-                               f"pixels")
-        _sky_kernel(valid, directions, np.array(settings.sky_zenith_rgb),
+        xs, ys = camera.screen_coordinates()
+        if xs.shape != (width,) or ys.shape != (height,):
+            raise ShadingError(f"camera gives {len(xs)}×{len(ys)} pixels for {height}×{width}")
+        right, up, fwd = camera.frame()
+        _sky_kernel(valid, xs, ys, right, up, fwd, np.array(settings.sky_zenith_rgb),
                     np.array(settings.sky_horizon_rgb), np.array(settings.sky_below_rgb), out)
     return out
 

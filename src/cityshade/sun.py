@@ -83,7 +83,7 @@ def direction_from_angles(azimuth_deg: float, elevation_deg: float) -> np.ndarra
 
 
 def sun_from_angles(azimuth_true_deg: float, elevation_deg: float, crs=None,
-                    origin_m=None) -> SunPosition:
+                    origin_m=None, *, convergence_deg: float | None = None) -> SunPosition:
     """Sun position from explicit angles, converted to grid north of the model's CRS.
 
     Parameters
@@ -96,6 +96,9 @@ def sun_from_angles(azimuth_true_deg: float, elevation_deg: float, crs=None,
         The model CRS; a local or missing CRS means grid north is taken as true north.
     origin_m : (3,) array, optional
         Model origin in CRS coordinates (where the convergence is evaluated).
+    convergence_deg : float, optional
+        The grid convergence at ``origin_m`` when the caller has it already (it depends on the
+        place only: a year of suns evaluates it once).
 
     Raises
     ------
@@ -111,6 +114,8 @@ def sun_from_angles(azimuth_true_deg: float, elevation_deg: float, crs=None,
     note = None
     if crs is None or crs.local or crs.horizontal_epsg is None:
         note = "the model has no CRS: azimuth measured from the model's +y axis"
+    elif convergence_deg is not None:
+        convergence = float(convergence_deg)
     elif origin_m is not None and not crs.is_geographic:
         from cityshade.citygml.crs import grid_convergence_deg
 
@@ -344,8 +349,10 @@ def suns_from_instants(instants, crs, origin_m, settings: SpaSettings | None = N
                         atmos_refract_deg=settings.atmos_refract_deg)
     suns = []
     source = f"spa (pvlib {pvlib.__version__})"
+    convergence = None
     for t, a, e, d in zip(utc, az, el, dts):
-        sun = sun_from_angles(float(a), float(e), crs, origin_m)
+        sun = sun_from_angles(float(a), float(e), crs, origin_m, convergence_deg=convergence)
+        convergence = sun.convergence_deg
         iso = t.isoformat().replace("+00:00", "Z")
         suns.append(replace(sun, source=source, instant_utc=iso, delta_t_s=float(d),
                             refraction=settings.refraction, latitude_deg=lat,

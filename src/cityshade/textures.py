@@ -535,8 +535,10 @@ def sample_trilinear(texture_set: TextureSet, tex_id: np.ndarray, uv: np.ndarray
 def _same_patch(group, tex, normal, r0, c0, r1, c1):
     if group[r1, c1] != group[r0, c0] or tex[r1, c1] != tex[r0, c0]:
         return False
-    dot = (normal[r0, c0, 0] * normal[r1, c1, 0] + normal[r0, c0, 1] * normal[r1, c1, 1]
-           + normal[r0, c0, 2] * normal[r1, c1, 2])
+    # float64 products of the values as given (float32 normals need no float64 copy).
+    dot = (np.float64(normal[r0, c0, 0]) * np.float64(normal[r1, c1, 0])
+           + np.float64(normal[r0, c0, 1]) * np.float64(normal[r1, c1, 1])
+           + np.float64(normal[r0, c0, 2]) * np.float64(normal[r1, c1, 2]))
     return dot > _SAME_PATCH_COS
 
 
@@ -546,8 +548,8 @@ def _shorter_uv_step(uv, group, tex, normal, r, c, rr, cc, tw, th, best):
     the uv step from pixel (r, c) to its neighbour (rr, cc) on the same patch."""
     if not _same_patch(group, tex, normal, r, c, rr, cc):
         return best
-    du = (uv[rr, cc, 0] - uv[r, c, 0]) * tw
-    dv = (uv[rr, cc, 1] - uv[r, c, 1]) * th
+    du = (np.float64(uv[rr, cc, 0]) - np.float64(uv[r, c, 0])) * tw
+    dv = (np.float64(uv[rr, cc, 1]) - np.float64(uv[r, c, 1])) * th
     d = math.sqrt(du * du + dv * dv)
     return d if best < 0.0 or d < best else best
 
@@ -588,6 +590,13 @@ def _lod_kernel(uv, tex, group, normal, base_w, base_h, n_levels, bias, out):
             out[r, c] = min(max(lod, 0.0), n_levels[k] - 1.0)
 
 
+def _native(a, kinds: str, fallback) -> np.ndarray:
+    """``a`` as a C-contiguous array of its own dtype when that is of ``kinds``, else of
+    ``fallback``."""
+    a = np.asarray(a)
+    return np.ascontiguousarray(a, dtype=a.dtype if a.dtype.kind in kinds else fallback)
+
+
 def lod_from_uv_neighbours(uv: np.ndarray, texture: np.ndarray, group: np.ndarray,
                            normal: np.ndarray, texture_set: TextureSet, *,
                            bias: float = 0.0) -> np.ndarray:
@@ -614,11 +623,13 @@ def lod_from_uv_neighbours(uv: np.ndarray, texture: np.ndarray, group: np.ndarra
     -------
     numpy.ndarray, shape (H, W), float32
     """
-    texture = np.ascontiguousarray(texture, dtype=np.int64)
+    # The kernel reads the arrays as they are (float32 or float64, any integer type) and
+    # computes in float64: copies to float64 cost more than the kernel on a 1080p frame.
+    texture = _native(texture, "iu", np.int64)
     height, width = texture.shape
-    uv = np.ascontiguousarray(uv, dtype=np.float64)
-    group = np.ascontiguousarray(group, dtype=np.int64)
-    normal = np.ascontiguousarray(normal, dtype=np.float64)
+    uv = _native(uv, "f", np.float64)
+    group = _native(group, "iu", np.int64)
+    normal = _native(normal, "f", np.float64)
     if uv.shape != (height, width, 2) or group.shape != (height, width) \
             or normal.shape != (height, width, 3):
         raise ValueError("uv (H, W, 2), texture (H, W), group (H, W) and normal (H, W, 3) "

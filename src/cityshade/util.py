@@ -7,6 +7,7 @@ from __future__ import annotations
 import contextlib
 import math
 import os
+import sys
 import tomllib
 import uuid
 from pathlib import Path
@@ -18,6 +19,10 @@ from cityshade.errors import CityshadeError, ConfigError, OutputError, UsageErro
 NO_MATPLOTLIB = "plot skipped: matplotlib is not installed (pip install 'cityshade[plot]')"
 
 
+#: The open output groups (:func:`output_group`), innermost last: destination → temporary file.
+_GROUPS: list[dict[Path, Path]] = []
+
+
 @contextlib.contextmanager
 def atomic_path(path: str | os.PathLike, *, keep_suffix: bool = False,
                 error: type[CityshadeError] = OutputError, what: str = "file") -> Iterator[Path]:
@@ -27,6 +32,7 @@ def atomic_path(path: str | os.PathLike, *, keep_suffix: bool = False,
     atomic) under a unique name (so concurrent writers never share one; not ``mkstemp``, so
     the file gets the usual umask permissions). Any exception in the block, Ctrl-C included,
     removes it and leaves ``path`` as it was: an interrupted run never leaves a half file.
+    Inside an :func:`output_group` the rename waits for the end of the group.
 
     Parameters
     ----------
@@ -47,13 +53,133 @@ def atomic_path(path: str | os.PathLike, *, keep_suffix: bool = False,
     tmp = path.parent / f".{path.name}.{os.getpid()}.{uuid.uuid4().hex}.tmp{tail}"
     try:
         yield tmp
-        try:
-            os.replace(tmp, path)
-        except OSError as exc:
-            raise error(f"cannot write {what}: {exc.strerror or exc}", path=str(path)) from None
+        if _GROUPS:
+            older = _GROUPS[-1].pop(path, None)
+            _GROUPS[-1][path] = tmp
+            _discard([older])
+            tmp = None  # the group owns it now
+        else:
+            _replace(tmp, path, error, what)
     finally:
-        with contextlib.suppress(OSError):
-            tmp.unlink()
+        _discard([tmp])
+
+
+def _replace(tmp: Path, path: Path, error: type[CityshadeError], what: str) -> None:
+    try:
+        os.replace(tmp, path)
+    except OSError as exc:
+        raise error(f"cannot write {what}: {exc.strerror or exc}", path=str(path)) from None
+
+
+def _discard(paths) -> None:
+    for p in paths:
+        if p is not None:
+            with contextlib.suppress(OSError):
+                p.unlink()
+
+
+@contextlib.contextmanager
+def output_group(error: type[CityshadeError] = OutputError) -> Iterator[None]:
+    """All of a command's outputs at once, or none of them.
+
+    Every file written through :func:`atomic_path` inside the block (so every writer of
+    cityshade: images, EXR, GeoTIFF and its side files, CSV, Markdown) stays under its
+    temporary name until the block ends; then they are renamed together, with Ctrl-C held off
+    until the last rename. An exception in the block (a failing writer, Ctrl-C) removes every
+    temporary file: no output of the command appears. A group inside a group joins the outer.
+    """
+    pending: dict[Path, Path] = {}
+    _GROUPS.append(pending)
+    try:
+        yield
+    except BaseException:
+        _GROUPS.pop()
+        _discard(pending.values())
+        raise
+    _GROUPS.pop()
+    if _GROUPS:
+        _GROUPS[-1].update(pending)
+        return
+    placed: list[Path] = []
+    try:
+        with interrupts_held():
+            for path, tmp in list(pending.items()):
+                _replace(tmp, path, error, "the outputs")
+                placed.append(path)
+                del pending[path]
+    except BaseException:
+        # A rename failed (or was refused): take back the ones already made, so that the
+        # outputs of this command never appear in part.
+        _discard(placed)
+        _discard(pending.values())
+        raise
+
+
+@contextlib.contextmanager
+def interrupts_held() -> Iterator[None]:
+    """Hold a Ctrl-C (SIGINT) that arrives inside the block and deliver it to the handler
+    that was installed before, once the block has ended. Only in the main thread (the only
+    one that runs Python signal handlers); elsewhere the block runs as it is."""
+    import signal
+    import threading
+
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+    held: list[int] = []
+    before = signal.signal(signal.SIGINT, lambda signum, frame: held.append(signum))
+    try:
+        yield
+    finally:
+        signal.signal(signal.SIGINT, before)
+        if held and callable(before):
+            before(signal.SIGINT, None)
+        elif held and before == signal.SIG_DFL:
+            raise KeyboardInterrupt
+
+
+def check_outputs(*outputs: tuple[str, str | os.PathLike | None, tuple[str, ...] | None]
+                  ) -> list[Path]:
+    """Check the outputs of a command before any work; returns their paths.
+
+    Each output is ``(option, path, suffixes)``: a file that must end in one of ``suffixes``,
+    or, with ``suffixes`` None, an output folder; a path of None was not asked for. A file
+    must not be a folder, a folder not a file; no two outputs may be the same path; every
+    folder is created when missing (as ``build`` does) and must be writable. The messages name
+    the option and the path.
+
+    Raises
+    ------
+    UsageError
+        A wrong extension, or two outputs on one path.
+    OutputError
+        A folder that cannot be created or written, or a path of the wrong kind.
+    """
+    taken: dict[Path, str] = {}
+    checked: list[Path] = []
+    for option, path, suffixes in outputs:
+        if path is None:
+            continue
+        path = Path(path)
+        if suffixes is not None and path.suffix.lower() not in suffixes:
+            raise UsageError(f"{option} {path}: the file name must end in "
+                             f"{' or '.join(suffixes)}, not {path.suffix or '(nothing)'!r}")
+        resolved = path.resolve()
+        if resolved in taken:
+            raise UsageError(f"{option} and {taken[resolved]} would both write {path}")
+        taken[resolved] = option
+        if suffixes is not None and path.is_dir():
+            raise OutputError(f"{option} {path} is a folder, not a file name")
+        existing = next(a for a in (path, *path.parents) if a.exists())
+        if not existing.is_dir() and existing != path:
+            raise OutputError(f"{option} {path}: {existing} is a file, not a folder")
+        if suffixes is None and path.exists() and not path.is_dir():
+            raise OutputError(f"{option} {path} is a file, not a folder")
+        folder = make_folder(path if suffixes is None else path.parent)
+        if not os.access(folder, os.W_OK | os.X_OK):
+            raise OutputError(f"{option} {path}: the folder {folder} is not writable")
+        checked.append(path)
+    return checked
 
 
 @contextlib.contextmanager
@@ -148,3 +274,22 @@ def canvas_pixels(canvas) -> Any:
 
     canvas.draw()
     return np.array(canvas.buffer_rgba())[..., :3].copy()
+
+
+def release_freed_memory() -> None:
+    """Hand the free pages of the C heap back to the operating system (glibc; elsewhere a no-op).
+
+    The reader's records (hundreds of thousands of small strings and tuples), the scene's
+    temporaries and the kd-tree kernel's per-node arrays leave the heap fragmented once freed,
+    so without this each build stage would start from the last one's high-water mark
+    (measured on the 1M-triangle city: 190 MB of resident memory returned after reading, in
+    about 20 ms).
+    """
+    if not sys.platform.startswith("linux"):
+        return
+    try:
+        import ctypes
+
+        ctypes.CDLL("libc.so.6").malloc_trim(0)
+    except (OSError, AttributeError):  # not glibc (musl has no malloc_trim)
+        pass

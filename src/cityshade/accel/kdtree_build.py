@@ -37,6 +37,7 @@ from numba.typed import List
 from cityshade.accel.kdtree_layout import (LEAF_CODE, TIME_AXIS, KdTree, pack_nodes,
                                            triangle_records)
 from cityshade.errors import ConfigError, UsageError
+from cityshade.util import release_freed_memory
 
 #: Axis code of a placeholder node whose subtree is built separately (never stored).
 DEFERRED = -1
@@ -580,11 +581,11 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         bhi_r = bhi.copy()
         blo_r[axis] = p
         ids_l = np.empty(n_l, ids.dtype)
-        lo_l = np.empty((n_l, 4))
-        hi_l = np.empty((n_l, 4))
+        lo_l = np.empty((n_l, 4), lo.dtype)
+        hi_l = np.empty((n_l, 4), hi.dtype)
         ids_r = np.empty(n_r, ids.dtype)
-        lo_r = np.empty((n_r, 4))
-        hi_r = np.empty((n_r, 4))
+        lo_r = np.empty((n_r, 4), lo.dtype)
+        hi_r = np.empty((n_r, 4), hi.dtype)
         il = 0
         ir = 0
         for r in range(n):
@@ -632,8 +633,11 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
 
     stats = np.array([float(n_leaves), float(n_empty), float(depth_max), float(depth_sum),
                       float(time_splits), sah])
-    return (node_axis[:n_nodes], node_child[:n_nodes], node_first[:n_nodes],
-            node_split[:n_nodes], prims[:n_prims], stats,
+    # Copies, so the over-allocated buffers (4/3 nodes and 2 references per input reference)
+    # are freed now and not kept alive by views until the subtrees are stitched.
+    return (node_axis[:n_nodes].copy(), node_child[:n_nodes].copy(),
+            node_first[:n_nodes].copy(), node_split[:n_nodes].copy(), prims[:n_prims].copy(),
+            stats,
             (task_ids, task_lo, task_hi, task_blo, task_bhi, task_depth[:n_tasks]))
 
 
@@ -706,34 +710,49 @@ def _stitch(top: list, subtrees: list[tuple]) -> tuple:
     size = np.ones(t_axis.size, np.int64)
     size[deferred] = [subtrees[k][0].size for k in t_first[deferred]]
     new_index = np.cumsum(size) - size
-    parts: list[list[np.ndarray]] = [[], [], [], [], []]  # axis, child, first, split, prims
+    n_nodes = int(size.sum())
+    leaf = t_axis == LEAF_CODE
+    n_prims = int(t_child[leaf].sum()) + sum(subtrees[k][4].size for k in t_first[deferred])
+    # Filled in place and each subtree dropped once copied: the stitched tree never exists
+    # twice (half a gigabyte of nodes and references for a 10^7-triangle city).
+    axis_out = np.empty(n_nodes, np.int64)
+    child_out = np.empty(n_nodes, np.int64)
+    first_out = np.empty(n_nodes, np.int64)
+    split_out = np.empty(n_nodes, t_split.dtype)
+    prims_out = np.empty(n_prims, t_prims.dtype)
+    stats = t_stats.copy()
     prim_pos = 0
     for i in range(t_axis.size):
+        at = int(new_index[i])
         if deferred[i]:
-            s_axis, s_child, s_first, s_split, s_prims = subtrees[t_first[i]][:5]
-            leaf = s_axis == LEAF_CODE
-            pieces = (s_axis, np.where(leaf, s_child, s_child + new_index[i]),
-                      np.where(leaf, s_first + prim_pos, 0), s_split, s_prims)
-        elif t_axis[i] == LEAF_CODE:
+            k = int(t_first[i])
+            s_axis, s_child, s_first, s_split, s_prims, s_stats = subtrees[k]
+            subtrees[k] = None
+            m = s_axis.size
+            s_leaf = s_axis == LEAF_CODE
+            axis_out[at:at + m] = s_axis
+            child_out[at:at + m] = np.where(s_leaf, s_child, s_child + at)
+            first_out[at:at + m] = np.where(s_leaf, s_first + prim_pos, 0)
+            split_out[at:at + m] = s_split
+            prims_out[prim_pos:prim_pos + s_prims.size] = s_prims
+            prim_pos += s_prims.size
+            stats[0] += s_stats[0]  # leaves
+            stats[1] += s_stats[1]  # empty leaves
+            stats[2] = max(stats[2], s_stats[2])  # deepest leaf
+            stats[3] += s_stats[3]  # depth sum
+            stats[4] += s_stats[4]  # time splits
+            stats[5] += s_stats[5]  # SAH cost
+            del s_axis, s_child, s_first, s_split, s_prims
+        elif leaf[i]:
             count, first = int(t_child[i]), int(t_first[i])
-            pieces = (t_axis[i:i + 1], t_child[i:i + 1], np.array([prim_pos], np.int64),
-                      t_split[i:i + 1], t_prims[first:first + count])
+            axis_out[at], child_out[at], first_out[at], split_out[at] = (
+                t_axis[i], count, prim_pos, t_split[i])
+            prims_out[prim_pos:prim_pos + count] = t_prims[first:first + count]
+            prim_pos += count
         else:
-            pieces = (t_axis[i:i + 1], new_index[t_child[i]:t_child[i] + 1],
-                      np.zeros(1, np.int64), t_split[i:i + 1], t_prims[:0])
-        for part, piece in zip(parts, pieces):
-            part.append(piece)
-        prim_pos += pieces[4].size
-    stats = t_stats.copy()
-    for sub in subtrees:
-        s = sub[5]
-        stats[0] += s[0]  # leaves
-        stats[1] += s[1]  # empty leaves
-        stats[2] = max(stats[2], s[2])  # deepest leaf
-        stats[3] += s[3]  # depth sum
-        stats[4] += s[4]  # time splits
-        stats[5] += s[5]  # SAH cost
-    return (*(np.concatenate(part) for part in parts), stats)
+            axis_out[at], child_out[at], first_out[at], split_out[at] = (
+                t_axis[i], new_index[t_child[i]], 0, t_split[i])
+    return axis_out, child_out, first_out, split_out, prims_out, stats
 
 
 def model_time_range(t_begin_days: np.ndarray, t_end_days: np.ndarray) -> tuple[float, float] | None:
@@ -808,16 +827,20 @@ def build_kdtree(vertices, triangles, t_begin_days, t_end_days, material,
     if np.isnan(t_begin).any() or np.isnan(t_end).any():
         raise KdTreeInputError("validity times contain NaN (use -inf/+inf for open ends)")
 
-    triangles = np.ascontiguousarray(triangles, dtype=np.int64)
+    triangles = np.ascontiguousarray(triangles)
     valid = t_begin < t_end
     ids0 = np.flatnonzero(valid).astype(np.int32)
-    tri_v = vertices32[triangles].astype(np.float64)          # (T, 3, 3)
+    # (T, 3, 3) corners kept in float32 (the kernel widens them exactly): half the memory.
+    tri_v = vertices32[triangles]
     time_range = model_time_range(t_begin[valid], t_end[valid])
     has_time = time_range is not None
     t0, t1 = time_range if has_time else (0.0, 0.0)
 
-    lo0 = np.empty((ids0.size, 4))
-    hi0 = np.empty((ids0.size, 4))
+    # Reference boxes in float32: every bound is a float32 value (corners, outward-rounded
+    # times and clipped extents, float32 split planes), so the narrow type is exact and halves
+    # the build's largest arrays.
+    lo0 = np.empty((ids0.size, 4), np.float32)
+    hi0 = np.empty((ids0.size, 4), np.float32)
     if ids0.size:
         # Usually every triangle is valid: then no (T, 3, 3) copy is made for the boxes.
         valid_v = tri_v if ids0.size == n_tri else tri_v[ids0]
@@ -846,8 +869,10 @@ def build_kdtree(vertices, triangles, t_begin_days, t_end_days, material,
     del lo0, hi0
     subtrees = _build_subtrees(tri_v, material, tasks, constants, root_surface)
     del tasks, tri_v
+    release_freed_memory()  # the kernel's per-node arrays, freed, fragment the heap
     node_axis, node_child, node_first, node_split, prims, raw = _stitch(top, subtrees)
     del top, subtrees
+    release_freed_memory()
     nodes = pack_nodes(node_axis, node_child, node_first, node_split)
     prim_indices = prims.astype(np.int32)
     records = triangle_records(vertices32, triangles, t_begin, t_end, material, prim_indices)

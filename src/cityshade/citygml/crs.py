@@ -38,7 +38,8 @@ from cityshade.errors import CRSError
 
 __all__ = [
     "AXIS_ORDERS", "CrsInfo", "CrsResolution", "GeographicProjector", "MAX_CONVERGENCE_DEG",
-    "area_of_use_warning", "grid_convergence_deg", "parse_srs_name", "resolve_model_crs",
+    "area_of_use_warning", "grid_convergence_deg", "parse_srs_name", "reproject_horizontal",
+    "resolve_model_crs",
     "resolve_model_crs_detailed", "right_angle_share", "srs_name_notes", "to_wgs84",
     "unknown_crs",
 ]
@@ -599,6 +600,8 @@ class GeographicProjector:
         Forced order; an order under which the values are no degrees is an error.
     ring_offsets : (R + 1,) int array, optional
         The rings of ``sample_xyz`` for the geometric test (without it, no geometric test).
+    target : CrsInfo, optional
+        A projected CRS to project to (a multi-file build's ``--crs``); default the UTM zone.
 
     Attributes
     ----------
@@ -622,7 +625,7 @@ class GeographicProjector:
     """
 
     def __init__(self, crs: CrsInfo, sample_xyz: np.ndarray, axis_order: str | None = None,
-                 ring_offsets: np.ndarray | None = None):
+                 ring_offsets: np.ndarray | None = None, target: CrsInfo | None = None):
         _require_projectable(crs, "the place on Earth")
         if not crs.is_geographic:
             raise CRSError(f"{crs.name} is not a geographic CRS; nothing to project")
@@ -691,7 +694,7 @@ class GeographicProjector:
         # Centre of the bounding box (not the mean: a few far-off objects must not drag it).
         centre_lon = 0.5 * (lon.min() + lon.max())
         centre_lat = 0.5 * (lat.min() + lat.max())
-        self.target = parse_srs_name(f"EPSG:{_utm_epsg(centre_lon, centre_lat)}")
+        self.target = target or parse_srs_name(f"EPSG:{_utm_epsg(centre_lon, centre_lat)}")
 
     def _lon_lat(self, xyz: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         if self.axis_lat_first:
@@ -733,6 +736,33 @@ class GeographicProjector:
             raise CRSError(f"{int(bad.sum())} point(s) cannot be projected to "
                            f"{self.target.name}, first ({lon[i]:.9g}, {lat[i]:.9g}) lon/lat")
         return out
+
+
+def reproject_horizontal(xyz: np.ndarray, source: CrsInfo, target: CrsInfo) -> np.ndarray:
+    """Coordinates of projected CRS ``source`` → projected CRS ``target`` (easting, northing;
+    heights kept as written: the tiles of one city share their height system).
+
+    Raises
+    ------
+    CRSError
+        Either CRS is not a projected one with an EPSG code, or a point has no projection.
+    """
+    for crs in (source, target):
+        _require_projectable(crs, "the projection between tiles")
+        if crs.is_geographic:
+            raise CRSError(f"{crs.name} is geographic; expected a projected CRS")
+    src = _as_xyz(xyz, "xyz")
+    out = src.copy()
+    if source.horizontal_epsg == target.horizontal_epsg:
+        return out
+    transformer = _transformer(source.horizontal_epsg, target.horizontal_epsg)
+    out[:, 0], out[:, 1] = transformer.transform(np.ascontiguousarray(src[:, 0]),
+                                                 np.ascontiguousarray(src[:, 1]))
+    bad = np.isfinite(src[:, :2]).all(axis=1) & ~np.isfinite(out[:, :2]).all(axis=1)
+    if bad.any():
+        raise CRSError(f"{int(bad.sum())} point(s) of {source.name} cannot be projected to "
+                       f"{target.name}")
+    return out
 
 
 def to_wgs84(crs: CrsInfo, x: float, y: float, z: float = 0.0) -> tuple[float, float, float]:

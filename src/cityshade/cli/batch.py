@@ -23,13 +23,23 @@ from cityshade.cli.options import (camera_options, ground_option, make_camera, p
               "every polygon (roofs, walls...), from sample points on the surfaces.")
 @click.option("--samples-per-m2", type=float, help="Density of the surface sample points (at "
               "least one per triangle; default 1, or [batch] samples_per_m2).")
+@click.option("--tile-px", type=int, help="Split the map pixels (and the surface samples) "
+              "into tiles of N × N pixels, each a separate task; the numbers are identical. "
+              "Writes sun_hours.tif as a Cloud-Optimized GeoTIFF.")
+@click.option("--scheduler", help="Run the tasks (tile × block of sun positions) on Dask: "
+              "local or local:N (N worker processes here) or tcp://HOST:8786 (a running "
+              "cluster; workers must see FILE and the output folder under the same paths). "
+              "Needs the [dask] extra.")
+@click.option("--monthly", is_flag=True, help="Also write the sun-hours of each month "
+              "(local time in --tz) to OUTDIR/monthly/.")
 @click.option("-o", "--output", "outdir", type=click.Path(file_okay=False, path_type=Path),
               required=True, help="Output folder (created; holds manifest.json and the state).")
 @click.option("--overwrite", is_flag=True, help="Discard a run of other parameters in OUTDIR.")
 @click.option("-v", "--verbose", is_flag=True, help="Timings, counts and the sun of each end.")
 def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_text, every_day,
           city_date, camera, eye, target, fov, size, pixel_size, cameras_file, settings, ground,
-          no_refraction, frames, surfaces, samples_per_m2, outdir, overwrite, verbose):
+          no_refraction, frames, surfaces, samples_per_m2, tile_px, scheduler, monthly, outdir,
+          overwrite, verbose):
     """Sun-hours of FILE (a .cityshade scene) from --date, each day from --from to --to every
     --every (local time in --tz): sun_hours.exr/.png (+ .tif for the map view), optional
     frames and surfaces.csv in OUTDIR. Re-running the same command after an interruption
@@ -44,8 +54,10 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     from cityshade.scenefile import load_scene
     from cityshade.shadows import get_technique
     from cityshade.surfaces import SampleSettings
+    from cityshade.util import check_outputs
 
     t_start = time.perf_counter()
+    check_outputs(("-o", outdir, None))  # before any work
     technique = settings.shadows.technique
     get_technique(technique)  # unknown names fail before any work
     if samples_per_m2 is not None:
@@ -64,9 +76,28 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     every_s = B.parse_duration_s(every_text)
     from cityshade.cli.options import solar_zone_of_file
 
+    if tile_px is not None and tile_px < 1:
+        raise UsageError(f"--tile-px must be >= 1, not {tile_px}")
+    if scheduler is not None:
+        from cityshade.distributed import parse_scheduler
+
+        parse_scheduler(scheduler)
+    if (tile_px is not None or scheduler is not None or monthly) and frames:
+        raise UsageError("--frames cannot be combined with --tile-px, --scheduler or "
+                         "--monthly; run the frames without them")
+    if (tile_px is not None or scheduler is not None or monthly) and \
+            technique not in ("izb", "raytrace"):
+        raise UsageError(f"--tile-px, --scheduler and --monthly need an exact technique "
+                         f"(izb, raytrace), not {technique!r}")
+    zone = solar_zone_of_file(tz, file)
     steps = B.plan_steps(first_day, B.parse_clock_s(from_text), B.parse_clock_s(to_text),
-                         every_s, solar_zone_of_file(tz, file), days=days, to_date=to_date,
-                         every_day=every_day)
+                         every_s, zone, days=days, to_date=to_date, every_day=every_day)
+    step_month = None
+    if monthly:
+        from cityshade.citygml.temporal import zone_info
+
+        local = zone_info(zone)
+        step_month = [s.start_utc.astimezone(local).strftime("%Y-%m") for s in steps]
     from cityshade.cli.options import warn_lmt
 
     warn_lmt([step.start_utc for step in steps[:1]], tz)
@@ -82,17 +113,19 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     }
     bar = None
     lines = None
+    label = ("tasks (tile × sun positions)" if tile_px is not None or scheduler is not None
+             or monthly else "sun positions")
 
     def on_plan(todo):
         nonlocal bar, lines
         if todo > 0 and sys.stderr.isatty():
-            bar = click.progressbar(length=todo, label="sun positions", show_eta=True,
+            bar = click.progressbar(length=todo, label=label, show_eta=True,
                                     file=sys.stderr)
             bar.__enter__()
         elif todo > 0:
             from cityshade.cli.options import ProgressLines
 
-            lines = ProgressLines("sun positions")
+            lines = ProgressLines(label)
 
     def on_step(done, total, unit):
         if bar is not None:
@@ -104,7 +137,8 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
         run = B.run_batch(outdir, scene, cam, steps, city.city_days, request=request,
                           technique=technique, settings=settings, ground=ground, frames=frames,
                           surfaces_csv=surfaces, overwrite=overwrite, on_plan=on_plan,
-                          on_step=on_step)
+                          on_step=on_step, tile_px=tile_px, scheduler=scheduler,
+                          scene_path=file, step_month=step_month)
     finally:
         if bar is not None:
             bar.__exit__(None, None, None)
@@ -120,6 +154,14 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
                    f"{result.steps_duplicate} sharing a sun position), {result.units} sun "
                    f"positions computed, {result.units_resumed} taken from the saved state",
                    err=True)
+        tiles = result.diagnostics.get("tiles")
+        if tiles:
+            click.echo(f"tiles    {tiles['tiles']} of {tiles['tile_px'] or 'all'} px, "
+                       f"{tiles['tasks']} tasks of {tiles['sun_positions_per_task']} sun "
+                       f"positions, {tiles['receivers']:,} receivers, shadow reach "
+                       f"{tiles['halo_m']:.0f} m"
+                       + (f", {tiles['workers']} Dask workers ({tiles['scheduler']})"
+                          if tiles.get("scheduler") else ""), err=True)
         up = [s for s in run.suns if s.above_horizon] or run.suns
         for label, s in (("first", up[0]), ("last", up[-1])):
             click.echo(f"{label:<8} {s.instant_utc} UTC: azimuth {s.azimuth_true_deg:.3f}° "

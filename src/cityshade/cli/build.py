@@ -23,14 +23,17 @@ def _lod_option(ctx, param, value: str | None) -> int | float | None:
 
 
 @click.command("build")
-@click.argument("city", type=click.Path(dir_okay=False, path_type=Path))
+@click.argument("city", nargs=-1, required=True, type=click.Path(path_type=Path))
 @click.option("-o", "--output", type=click.Path(dir_okay=False, path_type=Path),
-              help="Output file (default: CITY with suffix .cityshade).")
+              help="Output file (default for one CITY file: CITY with suffix .cityshade; "
+                   "needed for several files or a folder).")
 @click.option("--lod", callback=_lod_option, metavar="LOD",
               help="LoD to take from every object: 0-4, or a CityJSON LoD such as 2.2 "
                    "(default: the highest each object has).")
 @click.option("--theme", help="Appearance theme (default: the one with the most surfaces).")
-@click.option("--crs", help=CRS_HELP)
+@click.option("--crs", help=CRS_HELP + " With several files: the projected CRS every file is "
+                                      "projected to (a file without a known CRS is taken to be "
+                                      "in it); without it the files must share one CRS.")
 @click.option("--axis-order", type=click.Choice(AXIS_ORDERS), help=AXIS_ORDER_HELP)
 @click.option("--time-source", type=click.Choice(TIME_SOURCES), default="auto", show_default=True,
               help="Where object validity intervals come from: auto = validFrom/validTo, else "
@@ -40,12 +43,16 @@ def _lod_option(ctx, param, value: str | None) -> int | float | None:
 @click.option("--config", "config_path", type=click.Path(dir_okay=False, path_type=Path),
               help="TOML settings file ([build], [kdtree] tables).")
 @click.option("-q", "--quiet", is_flag=True, help="No progress display and no summary.")
-def build(city: Path, output: Path | None, lod: int | float | None, theme: str | None,
+def build(city: tuple[Path, ...], output: Path | None, lod: int | float | None, theme: str | None,
           crs: str | None, axis_order: str | None, time_source: str, time_attribute: str | None,
           config_path: Path | None, quiet: bool) -> None:
     """Read CITY (CityGML 1.0/2.0/3.0, CityJSON 1.0/1.1/2.0 or CityJSONSeq, told apart by
     the content), triangulate it, build its kd-tree, and write one versioned,
-    memory-mappable .cityshade file."""
+    memory-mappable .cityshade file.
+
+    Several files or folders (tiles, CityGML and CityJSON mixed) become one city: one origin
+    and CRS, an object whose gml:id an earlier file had is kept once and counted, and the
+    files are read one at a time."""
     import dataclasses
 
     from cityshade.build import build_file, default_output
@@ -60,12 +67,20 @@ def build(city: Path, output: Path | None, lod: int | float | None, theme: str |
     if time_source != "auto":
         overrides["time_source"] = time_source
     settings = dataclasses.replace(settings, build=dataclasses.replace(settings.build, **overrides))
-    output = output or default_output(city)
-    if output.resolve() == city.resolve():
+    from cityshade.build import expand_sources
+
+    sources = expand_sources(city)
+    several = len(sources) > 1 or any(c.is_dir() for c in city)
+    if output is None:
+        if several:
+            raise UsageError("several input files (or a folder) need -o OUT.cityshade")
+        output = default_output(sources[0])
+    if any(output.resolve() == s.resolve() for s in sources):
         raise UsageError("the output would overwrite the input file; choose another -o")
-    progress = Progress(enabled=None if not quiet else False)
+    progress = Progress(enabled=None if not quiet else False, files=several and not quiet)
     try:
-        out, scene, size = build_file(city, output, settings, progress)
+        out, scene, size = build_file(list(city) if several else sources[0], output, settings,
+                                      progress)
     finally:
         progress.close()
     for warning in scene.report.get("warnings", []):
@@ -77,3 +92,7 @@ def build(city: Path, output: Path | None, lod: int | float | None, theme: str |
                    f"polygons of {len(scene.obj_ids):,} objects"
                    f"{f', {skipped:,} polygons skipped' if skipped else ''}; "
                    f"{size / 1e6:.1f} MB in {sum(rep.get('timings', {}).values()):.2f} s")
+        tiles = rep.get("tiles")
+        if tiles:
+            click.echo(f"{tiles['files']} files; {tiles['duplicate_objects']:,} objects met "
+                       f"again in a later file (the same gml:id) kept once")

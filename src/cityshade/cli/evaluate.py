@@ -90,6 +90,9 @@ def evaluate(file, views, sun_text, date_text, times, tz, settings, sizes, size,
 
     if quick and not stress:
         raise UsageError("--quick only applies to --stress")
+    from cityshade.util import check_outputs
+
+    check_outputs(("-o", output, None))  # before any work
     bar = _Bar()
     if stress:
         from cityshade.config import StressSettings

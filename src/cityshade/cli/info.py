@@ -59,6 +59,7 @@ def describe(scene) -> dict:
         "warnings": rep.get("warnings", []),
         "timings": rep.get("timings", {}),
         "kdtree": scene.kdtree.stats if scene.kdtree is not None else None,
+        "tiles": rep.get("tiles"),
     }
     return out
 
@@ -68,6 +69,10 @@ def _text(d: dict) -> str:
     add = lines.append
     if d["file"]:
         add(f"source        {d['file']}")
+    tiles = d.get("tiles")
+    if tiles:
+        add(f"tiles         {tiles['files']} files; {tiles['duplicate_objects']:,} objects met "
+            f"again in a later file (same gml:id) kept once")
     # Versions of the input format (the key keeps its old name: CityJSON's are listed too).
     add(f"{d['input_format']:<14}{', '.join(d['citygml_versions']) or '?'}")
     objs = ", ".join(f"{n} {t}" for t, n in d["objects"]["by_type"].items())
@@ -114,6 +119,10 @@ def _text(d: dict) -> str:
             f"{kd.get('mean_leaf_triangles', 0):.2f} triangles/leaf, duplication "
             f"{kd.get('duplication', 0):.2f}, {kd.get('time_splits', 0)} time splits, "
             f"SAH {kd.get('sah_cost', 0):.1f}, built in {kd.get('build_s', 0):.2f} s")
+    if d.get("verified"):
+        v = d["verified"]
+        add(f"verified      all {v['arrays']} arrays match their checksums "
+            f"({v['bytes'] / 1e6:,.1f} MB in {v['seconds']:.2f} s)")
     for w in d["warnings"]:
         add(f"warning       {w}")
     return "\n".join(lines)
@@ -122,8 +131,11 @@ def _text(d: dict) -> str:
 @click.command("info")
 @click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
+@click.option("--verify", is_flag=True,
+              help="Check every array of a .cityshade file against its checksum (one pass over "
+                   "the file); loads otherwise trust a verified stamp (docs/SCALE.md).")
 @crs_option
-def info(file: Path, as_json: bool, crs: str | None) -> None:
+def info(file: Path, as_json: bool, crs: str | None, verify: bool) -> None:
     """Describe FILE: objects by type, triangles, skipped polygons by reason, LoDs, time range
     and its source, CRS, origin, bounding box, materials, textures and the kd-tree.
 
@@ -137,15 +149,29 @@ def info(file: Path, as_json: bool, crs: str | None) -> None:
     if not file.is_file():
         raise InputError("no such file", path=str(file))
     settings = settings_for_source(file, crs)
+    checked = None
     if is_cache_file(file):
+        import time
+
         from cityshade.scenefile import load_scene
 
-        scene = load_scene(file)
+        t0 = time.perf_counter()
+        scene = load_scene(file, verify=True if verify else "auto")
+        if verify:
+            arrays = scene.header.get("arrays", {})
+            checked = {"arrays": len(arrays), "bytes": sum(a["nbytes"] for a in arrays.values()),
+                       "seconds": round(time.perf_counter() - t0, 3)}
     else:
+        if verify:
+            from cityshade.errors import UsageError
+
+            raise UsageError(f"--verify checks a .cityshade file; {file} is a city model")
         from cityshade.build import build_scene_from_file
 
         scene = build_scene_from_file(file, settings)
     d = describe(scene)
+    if checked:
+        d["verified"] = checked
     if as_json:
         click.echo(json.dumps(d, indent=2, sort_keys=False))
     else:

@@ -33,15 +33,55 @@ class Interrupted(LibraryFailure):
 
 
 #: Set by :func:`on_sigint`: every failure after a Ctrl-C is the interrupt's consequence.
-_interrupt = {"seen": False}
+#: ``held``: a Ctrl-C that came while Numba compiled, raised when the compile is over.
+_interrupt = {"seen": False, "held": False, "listening": False}
 
 
 def on_sigint(signum, frame) -> None:
     """SIGINT handler of the command: raise KeyboardInterrupt once, ignore further Ctrl-Cs so
-    the clean-up (temporary files removed, nothing half-written) runs to its end."""
+    the clean-up (temporary files removed, nothing half-written) runs to its end.
+
+    While Numba compiles (a first call after an install, about a minute) the exception would
+    be raised inside llvmlite, whose clean-up then prints its own traceback (a half-made
+    ``PassBuilder``): it is held until the compiler's current pass ends
+    (:func:`_raise_after_compile`)."""
     _interrupt["seen"] = True
     signal.signal(signal.SIGINT, signal.SIG_IGN)
+    if _numba_compiling():
+        _raise_after_compile()
+        return
     raise KeyboardInterrupt
+
+
+def _numba_compiling() -> bool:
+    """Whether this thread holds Numba's compiler lock (not importing Numba to find out)."""
+    lock = sys.modules.get("numba.core.compiler_lock")
+    return lock is not None and lock.global_compiler_lock.is_locked()
+
+
+def _raise_after_compile() -> None:
+    """Raise KeyboardInterrupt in the main thread at the end of Numba's current compiler pass
+    (its ``numba:run_pass`` event) or when its compiler lock is released: between passes the
+    compiler is plain Python and no llvmlite object is half made."""
+    import threading
+
+    from numba.core import event
+
+    class AfterPass(event.Listener):
+        def on_start(self, ev) -> None:
+            pass
+
+        def on_end(self, ev) -> None:
+            if _interrupt["held"] and threading.current_thread() is threading.main_thread():
+                _interrupt["held"] = False
+                raise KeyboardInterrupt
+
+    _interrupt["held"] = True
+    if not _interrupt["listening"]:
+        listener = AfterPass()
+        event.register("numba:run_pass", listener)
+        event.register("numba:compiler_lock", listener)
+        _interrupt["listening"] = True
 
 
 def interrupt_seen() -> bool:
@@ -50,11 +90,20 @@ def interrupt_seen() -> bool:
 
 
 def install_sigint_handler() -> None:
-    """Route Ctrl-C through :func:`on_sigint` (only in the main thread, e.g. not in tests)."""
+    """Route Ctrl-C through :func:`on_sigint` (only in the main thread, e.g. not in tests), and
+    keep an interrupt that lands in a destructor (``Exception ignored in ...``) quiet: the
+    command ends with its one line anyway."""
     import threading
 
     if threading.current_thread() is threading.main_thread():
         signal.signal(signal.SIGINT, on_sigint)
+        previous = sys.unraisablehook
+
+        def unraisable(info) -> None:
+            if not (_interrupt["seen"] and isinstance(info.exc_value, KeyboardInterrupt)):
+                previous(info)
+
+        sys.unraisablehook = unraisable
 
 
 def _caused_by_interrupt(exc: BaseException) -> bool:
@@ -104,13 +153,21 @@ def translate_errors(verbose: bool = False):
 class Progress:
     """A one-line progress display on a terminal's stderr (silent otherwise or with --quiet)."""
 
-    def __init__(self, enabled: bool | None = None):
+    def __init__(self, enabled: bool | None = None, files: bool = False):
         self.enabled = sys.stderr.isatty() if enabled is None else enabled
+        # A build of several files says which file it reads: a line per file when stderr is
+        # not a terminal (logs), in the bar otherwise.
+        self.file_lines = files and not self.enabled
         self.t0 = time.perf_counter()
         self.last = 0.0
         self.stage = None
 
     def __call__(self, stage: str, done: int, total: int) -> None:
+        if self.file_lines and stage.startswith("file ") and stage != self.stage:
+            self.stage = stage
+            name, _, count = stage[5:].rpartition(" ")
+            sys.stderr.write(f"cityshade: reading {count} {name}\n")
+            sys.stderr.flush()
         if not self.enabled:
             return
         now = time.perf_counter()
@@ -120,6 +177,12 @@ class Progress:
         if stage == "read" and total:
             rate = done / max(now - self.t0, 1e-9) / 1e6
             text = f"reading {100 * done / total:5.1f}%  {rate:6.1f} MB/s"
+        elif stage.startswith("file ") and total:
+            name, _, count = stage[5:].rpartition(" ")
+            i, n = (int(v) for v in count.split("/"))
+            share = (i - 1 + done / total) / n
+            bar = "#" * int(30 * share)
+            text = f"[{bar:<30}] file {count} {name} {100 * done / total:5.1f}%"
         else:
             text = f"{stage}..."
         sys.stderr.write("\r\033[K" + text)
@@ -267,8 +330,10 @@ def shadow_options(default_technique: str, *, technique_help: str | None = None,
             settings = load_config(kwargs.pop("config_path"))
             technique = kwargs.pop("technique") or settings.shadows.technique \
                 or default_technique
-            if kwargs.pop("smooth") and not technique.endswith("+smooth"):
-                technique += "+smooth"
+            if kwargs.pop("smooth"):
+                # Every name of a list (evaluate's "shadowmap,pcf", "all") gets the filter.
+                technique = ",".join(n if n.strip().endswith("+smooth") else f"{n.strip()}+smooth"
+                                     for n in technique.split(",") if n.strip())
             flags = {k: kwargs.pop(k, None) for k in _SHADOW_FLAGS}
             for flag in inapplicable_flags(technique, flags):
                 click.echo(f"cityshade: warning: --{flag.replace('_', '-')} does not apply to "
@@ -335,16 +400,25 @@ class ProgressLines:
         self.label = label
         self.every_s = float(every_s)
         self.clock = clock or time.monotonic
-        self.last_t = self.clock()
+        self.last_t = self.start_t = self.clock()
         self.last_tenth = 0
+        self.first_done: int | None = None
 
     def __call__(self, done: int, total: int, what: str = "") -> None:
         now = self.clock()
+        if self.first_done is None:
+            # Work taken from a saved state does not count for the rate.
+            self.first_done, self.start_t = done, now
         tenth = 10 * done // max(total, 1)
         if tenth > self.last_tenth or now - self.last_t >= self.every_s:
             self.last_t, self.last_tenth = now, tenth
-            click.echo(f"cityshade: {self.label} {done}/{total} ({100 * done // max(total, 1)} %)"
-                       + (f" {what}" if what else ""), err=True)
+            eta = ""
+            if done > self.first_done and done < total:
+                left_s = (now - self.start_t) / (done - self.first_done) * (total - done)
+                eta = f", ETA {int(left_s) // 3600}:{int(left_s) % 3600 // 60:02d}:" \
+                      f"{int(left_s) % 60:02d}"
+            click.echo(f"cityshade: {self.label} {done}/{total} ({100 * done // max(total, 1)} %"
+                       f"{eta})" + (f" {what}" if what else ""), err=True)
 
 
 # --- the time plan of batch and compare -------------------------------------------------------

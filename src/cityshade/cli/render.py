@@ -47,7 +47,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     from cityshade.citygml.temporal import parse_user_date
     from cityshade.cli.options import reparse_solar_date, solar_placeholder
     from cityshade.errors import UsageError
-    from cityshade.render import render_frame, write_frame
+    from cityshade.render import check_frame_outputs, render_frame, write_frame
     from cityshade.scenefile import load_scene
     from cityshade.shadows import get_technique
     from cityshade.sun import sun_from_angles
@@ -68,6 +68,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
         raise UsageError("no sun position: give --sun-azimuth and --sun-elevation (degrees), "
                          "or a --date with a time of day (e.g. 2024-06-21T15:00+02:00, or "
                          "--time 15:00 --tz Europe/Berlin)")
+    check_frame_outputs(None, exr=output, png=png, mask=mask, georef=geotiff)  # before any work
     t0 = time.perf_counter()
     scene = load_scene(file)
     load_s = time.perf_counter() - t0
@@ -75,9 +76,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     for warning in user_date.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
     cam = make_camera(scene, camera, eye, target, fov, size, pixel_size, cameras_file)
-    from cityshade.render import check_frame_outputs
-
-    check_frame_outputs(cam.kind, exr=output, png=png, mask=mask, georef=geotiff)  # before work
+    check_frame_outputs(cam.kind, exr=output, png=png, mask=mask, georef=geotiff)  # the view
     if sun_azimuth is not None:
         sun = sun_from_angles(sun_azimuth, sun_elevation, scene.crs, scene.origin_m)
     else:
@@ -89,7 +88,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
             spa = dataclasses.replace(spa, refraction=False)
         sun = sun_from_instant(user_date.instant_utc, scene.crs, scene.origin_m, spa)
     frame = render_frame(scene, cam, user_date.city_days, sun, technique, settings.shadows,
-                         sky=not no_sky, ground=ground)
+                         sky=not no_sky, ground=ground, measure=verbose)
     for warning in frame.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
     t1 = time.perf_counter()

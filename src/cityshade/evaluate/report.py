@@ -168,11 +168,19 @@ def _safe(text: str) -> str:
 def write_report(evaluation: Evaluation, outdir, title: str | None = None) -> list[Path]:
     """Write ``results.csv``, ``report.md``, ``error_vs_time_<view>.png`` (with matplotlib, the
     ``[plot]`` extra; without it the report says the plot was skipped) and the worst cases'
-    ``diff_<view>_<technique>_<size>.png`` into ``outdir`` (created). Returns the paths."""
-    from cityshade import imageio
-    from cityshade.util import make_folder, write_text_atomic
+    ``diff_<view>_<technique>_<size>.png`` into ``outdir`` (created), all renamed into place
+    together at the end (a failing or interrupted write leaves none). Returns the paths."""
+    from cityshade.util import make_folder, output_group
 
     outdir = make_folder(outdir, "report folder")
+    with output_group():
+        return _write_report(evaluation, outdir, title)
+
+
+def _write_report(evaluation: Evaluation, outdir: Path, title: str | None) -> list[Path]:
+    from cityshade import imageio
+    from cityshade.util import write_text_atomic
+
     written = []
     write_csv(outdir / "results.csv", evaluation.rows)
     written.append(outdir / "results.csv")

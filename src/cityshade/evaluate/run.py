@@ -20,6 +20,7 @@ import numpy as np
 from cityshade.config import EvaluateSettings, ShadowSettings
 from cityshade.errors import UsageError
 from cityshade.evaluate.metrics import compare, finite_check, make_reference, median_s
+from cityshade.shadows.shadowmap import DepthMapReuse
 
 if TYPE_CHECKING:
     from cityshade.geometry.scene import Scene
@@ -37,7 +38,8 @@ def expand_techniques(spec: str | Sequence[str]) -> list[str]:
     ``all`` is every exact technique but the reference
     (:func:`cityshade.shadows.exact_technique_names`: ``izb``), every map technique of the
     registry (:func:`cityshade.shadows.map_technique_names`), each ``+smooth``, and
-    ``hybrid:NAME`` for each map technique. ``raytrace`` is always the reference and is not
+    ``hybrid:NAME`` for each map technique; ``all+smooth`` (``--shadows all --smooth``) is
+    each of those with the smoothing filter. ``raytrace`` is always the reference and is not
     listed.
     Unknown names raise the registry's :class:`~cityshade.errors.UsageError`.
     """
@@ -50,8 +52,14 @@ def expand_techniques(spec: str | Sequence[str]) -> list[str]:
     out: list[str] = []
     for name in names:
         maps = [n for n in map_technique_names() if not n.startswith("csm:")]
-        group = ([*exact_technique_names(), *maps, *(f"{n}+smooth" for n in maps),
-                  *(f"hybrid:{n}" for n in maps)] if name == "all" else [name])
+        every = [*exact_technique_names(), *maps, *(f"{n}+smooth" for n in maps),
+                 *(f"hybrid:{n}" for n in maps)]
+        if name == "all":
+            group = every
+        elif name == "all+smooth":
+            group = [n if n.endswith("+smooth") else f"{n}+smooth" for n in every]
+        else:
+            group = [name]
         for n in group:
             if n == "raytrace":
                 continue
@@ -59,6 +67,12 @@ def expand_techniques(spec: str | Sequence[str]) -> list[str]:
             if n not in out:
                 out.append(n)
     return out
+
+
+def map_family(technique: str) -> str:
+    """The map technique whose depth maps ``technique`` draws (``hybrid:pcf+smooth`` → ``pcf``;
+    an exact technique is its own family)."""
+    return technique.partition("+")[0].removeprefix("hybrid:") or technique
 
 
 def uses_map(technique: str) -> bool:
@@ -149,14 +163,21 @@ def evaluate_frame(scene: "Scene", camera: "Camera", view: str, sun: "SunPositio
               "sun_el_deg": round(float(sun.elevation_deg), 6),
               "gbuffer_s": gbuffer_s, "resolve_s": resolve_s}
 
+    reuse = DepthMapReuse()
+
     def timed(tech, technique_settings):
-        """(seconds per run, diagnostics per run, last result) of ``runs`` shadow passes."""
+        """(seconds per run, diagnostics per run, the warm-up run's result) of ``runs`` shadow
+        passes. The warm-up run also takes the map techniques' per-frame measures (aliasing
+        m, texel size) for the row; the timed runs do what a frame does, no more. Depth maps
+        come from ``reuse`` when an earlier run drew the same one; each run is charged the
+        depth-pass time of the maps it reused, so its time is that of a frame of its own."""
         seconds, diags, result = [], [], None
-        for _ in range(runs):
-            sp = shadow_pass(cp, sun, tech, technique_settings)
-            seconds.append(sp.seconds)
+        for k in range(runs):
+            with reuse:
+                sp = shadow_pass(cp, sun, tech, technique_settings, measure=(k == 0))
+                seconds.append(sp.seconds + reuse.take_reused_s())
             diags.append(sp.result.diagnostics)
-            result = sp.result
+            result = sp.result if k == 0 else result
         return seconds, diags, result
 
     if progress:
@@ -180,45 +201,56 @@ def evaluate_frame(scene: "Scene", camera: "Camera", view: str, sun: "SunPositio
         skipped += skipped_work(scene, gbuf.stats, ref_result.diagnostics, surfaces, sun)
     _keep_picture(scene, camera, gbuf, surfaces, ref.lit, sun, view, label, evaluation)
     results: dict[tuple[str, int | None], Any] = {("raytrace", None): ref_result}
-    for name in techniques:
+    jobs = [(name, size) for name in techniques for size in (sizes if uses_map(name) else [None])]
+    # The techniques that share depth maps (X, X+smooth, hybrid:X at one size) run one after
+    # the other on the maps drawn once; the maps are dropped between groups (their memory).
+    # The rows keep the order of the techniques and sizes.
+    order = sorted(range(len(jobs)), key=lambda k: (map_family(jobs[k][0]), jobs[k][1] or 0, k))
+    rows: dict[int, dict[str, Any]] = {}
+    group = None
+    for j in order:
+        name, size = jobs[j]
+        if (map_family(name), size) != group:
+            group = (map_family(name), size)
+            reuse.clear()
         tech = get_technique(name)
-        for size in (sizes if uses_map(name) else [None]):
-            if progress:
-                progress(f"{view} {label} {name} {size or ''}".rstrip())
-            sized = shadows.override(map_px=int(size)) if size is not None else shadows
-            row = {**common, "technique": name, "map_px": size or "", "runs": settings.repeat}
-            try:
-                secs, diags, result = timed(tech, sized)
-            except Exception as exc:  # a crash is a result of the evaluation, not its end
-                row.update(error=f"{type(exc).__name__}: {exc}", warmup_s="", shadow_s="",
-                           frame_s="")
-                evaluation.rows.append(row)
-                results[(name, size)] = exc
-                continue
-            results[(name, size)] = result
-            err = compare(result.lit, ref, settings.edge_percentile)
-            d = result.diagnostics
-            alias = d.get("aliasing_m") or {}
-            if not (alias.get("max") or alias.get("mean")):
-                alias = {}   # not measured (e.g. hybrid's base, whose maps are only prepared)
-            row.update({
-                "warmup_s": secs[0], "shadow_s": median_s(secs[1:]),
-                "valid_px": err["valid_px"], "wrong_px": err["wrong_px"],
-                **{k: err[k] for k in ("misclassified_pct", "false_lit_pct", "false_shadow_pct",
-                                       "lit_mae", "edge_mean_m", "edge_p95_m", "edge_max_m")},
-                "aliasing_max_m": alias.get("max", ""), "aliasing_mean_m": alias.get("mean", ""),
-                "traced_share": d.get("traced_share", ""),
-                "stages": _fmt_stages(_stage_medians(diags[1:])),
-                "error": finite_check(result) or "",
-            })
-            row["frame_s"] = gbuffer_s + resolve_s + row["shadow_s"]
-            evaluation.rows.append(row)
-            if len(skipped) and not any(s.startswith(("shadow map", "hybrid")) for s in skipped):
-                skipped += [s for s in skipped_work(scene, None, d) if
-                            s.startswith(("shadow map", "base shadow map", "hybrid"))]
-            _keep_worst(evaluation, settings.worst_cases, Case(
-                view, label, name, size, err["misclassified_pct"], err["false_lit"],
-                err["false_shadow"]))
+        if progress:
+            progress(f"{view} {label} {name} {size or ''}".rstrip())
+        sized = shadows.override(map_px=int(size)) if size is not None else shadows
+        row = {**common, "technique": name, "map_px": size or "", "runs": settings.repeat}
+        rows[j] = row
+        try:
+            secs, diags, result = timed(tech, sized)
+        except Exception as exc:  # a crash is a result of the evaluation, not its end
+            row.update(error=f"{type(exc).__name__}: {exc}", warmup_s="", shadow_s="",
+                       frame_s="")
+            results[(name, size)] = exc
+            continue
+        results[(name, size)] = result
+        err = compare(result.lit, ref, settings.edge_percentile)
+        d = result.diagnostics
+        alias = d.get("aliasing_m") or {}
+        if not (alias.get("max") or alias.get("mean")):
+            alias = {}   # not measured (e.g. hybrid's base, whose maps are only prepared)
+        row.update({
+            "warmup_s": secs[0], "shadow_s": median_s(secs[1:]),
+            "valid_px": err["valid_px"], "wrong_px": err["wrong_px"],
+            **{k: err[k] for k in ("misclassified_pct", "false_lit_pct", "false_shadow_pct",
+                                   "lit_mae", "edge_mean_m", "edge_p95_m", "edge_max_m")},
+            "aliasing_max_m": alias.get("max", ""), "aliasing_mean_m": alias.get("mean", ""),
+            "traced_share": d.get("traced_share", ""),
+            "stages": _fmt_stages(_stage_medians(diags[1:])),
+            "error": finite_check(result) or "",
+        })
+        row["frame_s"] = gbuffer_s + resolve_s + row["shadow_s"]
+        if len(skipped) and not any(s.startswith(("shadow map", "hybrid")) for s in skipped):
+            skipped += [s for s in skipped_work(scene, None, d) if
+                        s.startswith(("shadow map", "base shadow map", "hybrid"))]
+        _keep_worst(evaluation, settings.worst_cases, Case(
+            view, label, name, size, err["misclassified_pct"], err["false_lit"],
+            err["false_shadow"]))
+    reuse.clear()
+    evaluation.rows.extend(rows[j] for j in range(len(jobs)))
     return {"gbuffer": gbuf, "surfaces": surfaces, "reference": ref, "results": results}
 
 

@@ -22,7 +22,7 @@ import numpy as np
 from cityshade.citygml.appearance import (georeferenced_uv, read_world_file,
                                           resolve_image_path)
 from cityshade.citygml.crs import (CrsInfo, GeographicProjector, area_of_use_warning,
-                                   resolve_model_crs_detailed)
+                                   reproject_horizontal, resolve_model_crs_detailed)
 from cityshade.citygml.reader import RawModel
 from cityshade.citygml.temporal import (choose_interval, days_to_iso, has_creation_dates,
                                         parse_time_attribute)
@@ -300,8 +300,26 @@ def lod_request_range(request: int | float | str | None, lod_scale: int
     return int(whole) * lod_scale, int(whole) * lod_scale + lod_scale - 1
 
 
-def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
+def render_origin(lo_m: np.ndarray, hi_m: np.ndarray) -> np.ndarray:
+    """The render-space origin of a model with this bounding box: its centre rounded to 1 m."""
+    return np.round(0.5 * (np.asarray(lo_m) + np.asarray(hi_m)))
+
+
+def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
+                target_crs: CrsInfo | None = None, render_space: bool = True) -> Scene:
     """Select, triangulate and assemble the scene of a read CityGML file.
+
+    Parameters
+    ----------
+    target_crs : CrsInfo, optional
+        The CRS of a multi-file build (its ``--crs``): the file's coordinates are projected to
+        it from the file's own CRS (taken to be in it when the file has none or an unknown
+        one). Without it the file's CRS (or ``settings.crs``, which overrides the srsName) is
+        the scene's.
+    render_space : bool
+        False keeps the vertices as float64 model-CRS coordinates with a zero origin, for
+        :func:`cityshade.geometry.merge.merge_scenes` to choose the origin of all tiles and
+        cast once (so a tiled build equals the one-file build bit for bit).
 
     Raises
     ------
@@ -420,18 +438,28 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
     poly_ring_offsets = np.concatenate([[0], np.cumsum(p_nrings)]).astype(np.int64)
 
     # 6. CRS; geographic coordinates are projected to metres first.
-    resolution = resolve_model_crs_detailed(raw.srs_names.elements(), settings.crs)
+    resolution = resolve_model_crs_detailed(raw.srs_names.elements(),
+                                            settings.crs if target_crs is None else None)
     crs = resolution.crs
-    warnings += list(resolution.warnings)
+    if target_crs is not None and crs.local:
+        # A tile without a (known) CRS is taken to be in the one named for all tiles.
+        crs = target_crs
+    else:
+        warnings += list(resolution.warnings)
     source_crs = crs
     axis_order = None
     if crs.is_geographic:
         projector = GeographicProjector(crs, coords, axis_order=settings.axis_order,
-                                        ring_offsets=ring_offsets)
+                                        ring_offsets=ring_offsets, target=(
+                                            None if target_crs is None or target_crs.is_geographic
+                                            else target_crs))
         warnings.append(projector.warning)
         axis_order = "latlon" if projector.axis_lat_first else "lonlat"
         coords = projector.project(coords)
         crs = projector.target
+    elif target_crs is not None and crs.horizontal_epsg != target_crs.horizontal_epsg:
+        coords = reproject_horizontal(coords, crs, target_crs)
+        crs = target_crs
     elif settings.axis_order is not None:
         warnings.append(f"--axis-order {settings.axis_order} ignored: {crs.name} is not a "
                         f"geographic CRS (its coordinates are read easting first)")
@@ -484,9 +512,12 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
     new_index = np.cumsum(used) - 1
     triangles = new_index[triangles]
     world = coords[used_points]
-    lo, hi = world.min(axis=0), world.max(axis=0)
-    origin = np.round(0.5 * (lo + hi))
-    vertices = (world - origin).astype(np.float32)
+    if render_space:
+        origin = render_origin(world.min(axis=0), world.max(axis=0))
+        vertices = (world - origin).astype(np.float32)
+        del world
+    else:
+        origin, vertices = np.zeros(3), world
 
     # 9. Appearance of the chosen theme.
     theme = raw.appearance.choose_theme(settings.theme)
@@ -496,14 +527,17 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None) -> Scene:
     orig_poly = polys[drawn]
     poly_material = np.full(len(drawn), -1, np.int32)
     poly_texture = np.full(len(drawn), -1, np.int32)
-    point_uv = np.zeros((len(coords), 2), np.float64)
+    # float32: each texture coordinate is rounded once either way (the cache stores float32).
+    point_uv = np.zeros((len(coords) if theme is not None else 0, 2), np.float32)
     materials: list[dict] = []
     textures: list[dict] = []
     if theme is not None:
         _apply_appearance(raw, theme, drawn, polys, rings, ring_offsets,
                           poly_ring_offsets, coords, poly_material, poly_texture, point_uv,
                           materials, textures, warnings, counters)
-    uv = point_uv[used_points].astype(np.float32)
+    uv = point_uv[used_points] if theme is not None else np.zeros((len(used_points), 2),
+                                                                   np.float32)
+    del point_uv
 
     # 10. Tables.
     p_obj_drawn = p_obj[drawn]

@@ -164,6 +164,12 @@ def _orient2(ax, ay, bx, by, cx, cy):
 
 
 @njit(cache=True)
+def _xy3(x2, y2, a, b, c):
+    """The 2-D coordinates of points a, b and c: ``(ax, ay, bx, by, cx, cy)``."""
+    return x2[a], y2[a], x2[b], y2[b], x2[c], y2[c]
+
+
+@njit(cache=True)
 def _dist2_to_slot(loc, k, px, py, pz):
     """Squared distance from point p to scratch point ``loc[k]``."""
     dx = loc[k, 0] - px
@@ -399,12 +405,7 @@ def _vertex_contact(x2, y2, v, v_prev, v_next, c, d, c_prev, eps):
     two corners (v_prev, v, v_next) and (c_prev, c, d) cross when c's neighbours lie on
     different sides of v's wedge.
     """
-    vx = x2[v]
-    vy = y2[v]
-    cx = x2[c]
-    cy = y2[c]
-    dx = x2[d]
-    dy = y2[d]
+    vx, vy, cx, cy, dx, dy = _xy3(x2, y2, v, c, d)
     if vx == cx and vy == cy:
         side_prev = _wedge_holds(x2[v_prev], y2[v_prev], vx, vy, x2[v_next], y2[v_next],
                                  x2[c_prev], y2[c_prev], eps)
@@ -621,12 +622,7 @@ def _is_ear(x2, y2, nslot, prv, nxt, a, b, c):
     sa = nslot[a]
     sb = nslot[b]
     sc = nslot[c]
-    ax = x2[sa]
-    ay = y2[sa]
-    bx = x2[sb]
-    by = y2[sb]
-    cx = x2[sc]
-    cy = y2[sc]
+    ax, ay, bx, by, cx, cy = _xy3(x2, y2, sa, sb, sc)
     if _orient2(ax, ay, bx, by, cx, cy) <= 0.0:
         return False
     lo_x = min(ax, min(bx, cx))

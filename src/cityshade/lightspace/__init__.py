@@ -17,6 +17,7 @@ days since 1970-01-01 UTC, a triangle present when ``begin <= t_days < end``, sh
 from __future__ import annotations
 
 import math
+import threading
 import time
 import weakref
 
@@ -25,10 +26,10 @@ import numpy as np
 
 from cityshade.accel.kdtree_layout import REC_ID, KdTree
 from cityshade.lightspace import kernels as K
-from cityshade.trace import (UNIT_LENGTH_TOL, TraceInputError, tree_of,
+from cityshade.trace import (UNIT_LENGTH_TOL, TraceInputError, tree_of, shadow_offset_m,
                              shadow_rays_from_surface)
 
-__all__ = ["occluded", "sunlit", "Casters", "casters_of", "MARGIN_REL"]
+__all__ = ["occluded", "sunlit", "Casters", "casters_of", "SurfaceReceivers", "MARGIN_REL"]
 
 #: Widening of every caster's light-plane box per metre of coordinate magnitude. The binning
 #: projection and the kernel's per-ray differences round differently by a few float64 ulps
@@ -73,6 +74,7 @@ class Casters:
         self.records = np.ascontiguousarray(recs[np.sort(first)])
         self._axis = None
         self._sorted = None
+        self.scratch = _Scratch()
 
     def sorted_for(self, kz: int, sgn: float):
         """(records, keys) sorted by depth key descending for shear axis ``kz`` and sign."""
@@ -84,6 +86,35 @@ class Casters:
                             np.ascontiguousarray(keys[order]))
             self._axis = (kz, sgn)
         return self._sorted
+
+
+class _Scratch:
+    """Grow-only work arrays of the engine, kept between calls on one tree: a batch calls it
+    per sun step with the same sizes, and fresh arrays (~300 MB on the 1M-triangle map) would
+    be page-faulted in anew every step (tens of ms of kernel time). One caller at a time holds
+    them (:meth:`take`); a concurrent call on the same tree gets fresh arrays."""
+
+    def __init__(self):
+        self._arrays: dict = {}
+        self._lock = threading.Lock()
+
+    def take(self):
+        """``self`` when free (release with :meth:`give_back`), else a fresh private one."""
+        return self if self._lock.acquire(blocking=False) else _Scratch()
+
+    def give_back(self):
+        if self._lock.locked():
+            self._lock.release()
+
+    def get(self, name: str, shape, dtype=np.float64) -> np.ndarray:
+        """An uninitialised C-contiguous array of ``shape`` (the first ``prod(shape)`` items of
+        a kept buffer that only grows)."""
+        shape = tuple(int(x) for x in (shape if isinstance(shape, tuple) else (shape,)))
+        size = math.prod(shape)
+        buf = self._arrays.get(name)
+        if buf is None or buf.dtype != np.dtype(dtype) or buf.size < size:
+            buf = self._arrays[name] = np.empty(max(size, 1), dtype)
+        return buf[:size].reshape(shape)
 
 
 _CASTERS: "weakref.WeakKeyDictionary[KdTree, Casters]" = weakref.WeakKeyDictionary()
@@ -116,6 +147,16 @@ def _choose_cell_m(boxes, n_receivers, ext_x, ext_y, n_max_cells):
     if best is None:
         return float(max(ext_x, ext_y) / math.sqrt(n_max_cells)) * 1.01
     return best[1]
+
+
+def _unit_sun(sun_direction) -> np.ndarray:
+    """The sun direction as a checked float64 (3,) unit vector."""
+    sun = np.ascontiguousarray(sun_direction, dtype=np.float64)
+    if sun.shape != (3,) or not np.isfinite(sun).all():
+        raise TraceInputError(f"sun_direction must be a finite (3,) vector, not {sun!r}")
+    if abs(float(np.sqrt(sun @ sun)) - 1.0) > UNIT_LENGTH_TOL:
+        raise TraceInputError("sun_direction must be unit length")
+    return sun
 
 
 def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict | None = None,
@@ -153,11 +194,7 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
     origins = np.ascontiguousarray(origins, dtype=np.float64)
     if origins.ndim != 2 or origins.shape[1] != 3:
         raise TraceInputError(f"origins must have shape (N, 3), not {origins.shape}")
-    sun = np.ascontiguousarray(sun_direction, dtype=np.float64)
-    if sun.shape != (3,) or not np.isfinite(sun).all():
-        raise TraceInputError(f"sun_direction must be a finite (3,) vector, not {sun!r}")
-    if abs(float(np.sqrt(sun @ sun)) - 1.0) > UNIT_LENGTH_TOL:
-        raise TraceInputError("sun_direction must be unit length")
+    sun = _unit_sun(sun_direction)
     t = float(t_days)
     if math.isnan(t):
         raise TraceInputError("t_days must be a number of days since 1970-01-01, not NaN")
@@ -165,22 +202,24 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
     out = np.zeros(n, np.bool_)
     if n == 0 or kd.tri_records.shape[0] == 0:
         return out
+    casters = casters_of(kd)
+    ws = casters.scratch.take()
     threads = numba.get_num_threads()
-    if threads > 1 and n + kd.tri_records.shape[0] < SINGLE_THREAD_WORK:
-        numba.set_num_threads(1)
-        try:
-            return _occluded(kd, origins, sun, t, out, stats, cell_m)
-        finally:
-            numba.set_num_threads(threads)
-    return _occluded(kd, origins, sun, t, out, stats, cell_m)
+    try:
+        if threads > 1 and n + kd.tri_records.shape[0] < SINGLE_THREAD_WORK:
+            numba.set_num_threads(1)
+        return _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m)
+    finally:
+        numba.set_num_threads(threads)
+        ws.give_back()
 
 
-def _occluded(kd, origins, sun, t, out, stats, cell_m):
-    """The engine behind :func:`occluded` on validated inputs; fills and returns ``out``."""
+def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
+    """The engine behind :func:`occluded` on validated inputs, work arrays from ``ws``; fills and
+    returns ``out``."""
     n = origins.shape[0]
     timing = {}
     t0 = time.perf_counter()
-    casters = casters_of(kd)
     kx, ky, kz, sx, sy, sz = K.shear_of(sun)
     sgn = 1.0 if sz > 0.0 else -1.0
     recs, keys = casters.sorted_for(kz, sgn)
@@ -189,9 +228,9 @@ def _occluded(kd, origins, sun, t, out, stats, cell_m):
     # Project the receivers; their light-plane box and lowest key bound the casters.
     t0 = time.perf_counter()
     n_chunks = max(1, numba.get_num_threads())
-    xs = np.empty(n)
-    ys = np.empty(n)
-    rkeys = np.empty(n)
+    xs = ws.get("xs", n)
+    ys = ws.get("ys", n)
+    rkeys = ws.get("rkeys", n)
     part = np.empty((n_chunks, K.N_STATS))
     K.project_receivers(origins, kx, ky, kz, sx, sy, sgn, n_chunks, xs, ys, rkeys, part)
     if part[:, 5].sum() > 0:
@@ -200,12 +239,12 @@ def _occluded(kd, origins, sun, t, out, stats, cell_m):
     min_key = float(part[:, 4].min())
     scale = max(float(np.abs(kd.bounds[:, :3]).max()), float(np.abs(box).max()), 1.0)
     margin_m = MARGIN_REL * scale
-    boxes = np.empty((recs.shape[0], 4))
+    boxes = ws.get("boxes", (recs.shape[0], 4))
     K.cull_casters(recs, recs.view(np.float64), keys, t, kx, ky, kz, sx, sy, margin_m, box,
                    min_key, boxes)
     kept = np.flatnonzero(~np.isnan(boxes[:, 0]))
-    packed = np.empty((kept.size, K.PACK_WORDS), np.float32)
-    kept_boxes = np.empty((kept.size, 4))
+    packed = ws.get("packed", (kept.size, K.PACK_WORDS), np.float32)
+    kept_boxes = ws.get("kept_boxes", (kept.size, 4))
     K.pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, packed, kept_boxes)
     boxes = kept_boxes
     timing["project_s"] = time.perf_counter() - t0
@@ -221,22 +260,22 @@ def _occluded(kd, origins, sun, t, out, stats, cell_m):
     ny = max(1, math.ceil(ext_y / size))
     inv = 1.0 / size
     n_cells = nx * ny
-    cells = np.empty(n, np.int64)
+    cells = ws.get("cells", n, np.int64)
     K.receiver_cells(xs, ys, box[0], box[2], inv, inv, nx, ny, cells)
-    counts = K.count_receivers(cells, n_cells, n_chunks)
-    rec_start = np.empty(n_cells + 1, np.int64)
+    counts = ws.get("counts", (n_chunks, n_cells), np.int32)
+    K.count_receivers(cells, counts)
+    rec_start = ws.get("rec_start", n_cells + 1, np.int64)
     K.prefix_sum(counts, rec_start)
-    rec_order = np.empty(n, np.int32)
-    rec_origins = np.empty((n, 3))
+    rec_order = ws.get("rec_order", n, np.int32)
+    rec_origins = ws.get("rec_origins", (n, 3))
     K.fill_receivers(cells, counts, origins, rec_order, rec_origins)
-    ranges = np.empty((kept.size, 4), np.int64)
+    ranges = ws.get("ranges", (kept.size, 4), np.int64)
     K.caster_ranges(boxes, box[0], box[2], inv, inv, nx, ny, ranges)
-    counts = np.zeros((n_chunks, n_cells), np.int32)
     refs = np.empty(0, np.int32)
     K.scatter_casters(ranges, rec_start, nx, counts, refs, False)
-    ref_start = np.empty(n_cells + 1, np.int64)
+    ref_start = ws.get("ref_start", n_cells + 1, np.int64)
     n_refs = K.prefix_sum(counts, ref_start)
-    refs = np.empty(n_refs, np.int32)
+    refs = ws.get("refs", n_refs, np.int32)
     K.scatter_casters(ranges, rec_start, nx, counts, refs, True)
     timing["bin_s"] = time.perf_counter() - t0
 
@@ -244,7 +283,7 @@ def _occluded(kd, origins, sun, t, out, stats, cell_m):
     t0 = time.perf_counter()
     n_blocks = (n_cells + K.QUERY_BLOCK_CELLS - 1) // K.QUERY_BLOCK_CELLS
     tests = np.zeros(n_blocks, np.int64)
-    hit_sorted = np.zeros(n, np.bool_)
+    hit_sorted = ws.get("hit_sorted", n, np.bool_)
     K.query(packed, ref_start, refs, rec_start, rec_origins, kx, ky, kz, sx, sy, sz, sgn,
             DEPTH_MARGIN_M + DEPTH_MARGIN_REL * scale, 0.0, np.inf, hit_sorted, tests)
     K.scatter_back(rec_order, hit_sorted, out)
@@ -280,3 +319,53 @@ def sunlit(tree, points, normals, sun_direction, t_days: float = 0.0, *,
     """
     origins = shadow_rays_from_surface(points, normals, sun_direction)
     return ~occluded(tree, origins, sun_direction, t_days, stats=stats)
+
+
+class SurfaceReceivers:
+    """Surface points whose shadow rays are traced for many suns (a batch: the points and
+    normals never change, only which of them face the sun and the origins' step toward it).
+
+    Checks the points and normals once and keeps them with their offsets
+    (:func:`cityshade.trace.shadow_offset_m`); :meth:`origins` then gives, per sun, exactly
+    ``shadow_rays_from_surface(points[select], normals[select], sun)`` from one parallel pass
+    instead of numpy's gathers and temporaries.
+
+    Parameters
+    ----------
+    points, normals : (N, 3) float arrays
+        Surface points (render space, metres) and their unit normals on the side the ray
+        leaves from.
+
+    Raises
+    ------
+    TraceInputError
+        Wrong shapes, non-finite values, non-unit normals.
+    """
+
+    def __init__(self, points, normals):
+        points = np.ascontiguousarray(points, dtype=np.float64)
+        normals = np.ascontiguousarray(normals, dtype=np.float64)
+        shadow_rays_from_surface(points, normals, (0.0, 0.0, 1.0))  # its checks, once
+        self.points = points
+        self.normals = normals
+        self.offsets_m = np.ascontiguousarray(shadow_offset_m(points))
+        self._out = np.empty((0, 3))
+
+    def __len__(self) -> int:
+        return self.points.shape[0]
+
+    def origins(self, sun_direction, select=None) -> np.ndarray:
+        """(M, 3) shadow-ray origins of the selected points (a bool mask (N,) or indices; all
+        when None) toward ``sun_direction`` (unit (3,)). The array is reused by the next call."""
+        sun = _unit_sun(sun_direction)
+        n = len(self)
+        if select is None:
+            index = np.arange(n, dtype=np.int64)
+        else:
+            select = np.asarray(select)
+            index = np.flatnonzero(select) if select.dtype == np.bool_ else select.astype(np.int64)
+        if self._out.shape[0] < index.size:
+            self._out = np.empty((index.size, 3))
+        out = self._out[:index.size]
+        K.surface_origins(self.points, self.normals, self.offsets_m, index, sun, out)
+        return out

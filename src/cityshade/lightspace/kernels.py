@@ -90,6 +90,18 @@ def project_receivers(origins, kx, ky, kz, sx, sy, sgn, n_chunks, out_x, out_y, 
 
 
 @njit(cache=True, parallel=True)
+def surface_origins(points, normals, offsets_m, index, sun, out):
+    """``out[q] = points[i] + (normals[i] + sun) * offsets_m[i]`` for ``i = index[q]``: the
+    shadow-ray origins of :func:`cityshade.trace.shadow_rays_from_surface`, the same float64
+    operations in the same order (bit for bit), for the selected points only."""
+    for q in prange(index.shape[0]):
+        i = index[q]
+        off = offsets_m[i]
+        for a in range(3):
+            out[q, a] = points[i, a] + (normals[i, a] + sun[a]) * off
+
+
+@njit(cache=True, parallel=True)
 def caster_keys(recs, kz, sgn, out_key):
     """Depth key ``max_v sgn * v[kz]`` of every record (float32 vertices, exact in float64)."""
     for j in prange(recs.shape[0]):
@@ -255,21 +267,22 @@ def caster_ranges(boxes, x0, y0, inv_x, inv_y, nx, ny, out_range):
 
 
 @njit(cache=True, parallel=True)
-def count_receivers(cells, n_cells, n_chunks):
-    """(n_chunks, n_cells) int32 receivers per cell in each fixed chunk of receivers."""
+def count_receivers(cells, out_counts):
+    """``out_counts`` (n_chunks, n_cells) int32 (any content; each chunk clears its own row):
+    receivers per cell in each fixed chunk of receivers."""
     n = cells.shape[0]
+    n_chunks = out_counts.shape[0]
     per = (n + n_chunks - 1) // n_chunks
-    counts = np.zeros((n_chunks, n_cells), np.int32)
     for c in prange(n_chunks):
+        out_counts[c, :] = 0
         for i in range(c * per, min(n, (c + 1) * per)):
-            counts[c, cells[i]] += 1
-    return counts
+            out_counts[c, cells[i]] += 1
 
 
 @njit(cache=True, parallel=True)
 def scatter_casters(ranges, rec_start, nx, cursor, out_refs, fill):
-    """Count pass (``fill`` False: ``cursor`` (n_chunks, n_cells) int32 zeros gets the references
-    per cell of each fixed chunk of casters) or fill pass (``fill`` True: ``cursor`` holds the
+    """Count pass (``fill`` False: ``cursor`` (n_chunks, n_cells) int32, any content, gets the
+    references per cell of each fixed chunk of casters; each chunk clears its own row first) or fill pass (``fill`` True: ``cursor`` holds the
     write positions of :func:`prefix_sum` and ``out_refs`` gets the caster indices, in caster =
     key order inside a cell). Only cells holding a receiver (``rec_start`` (n_cells + 1,), the
     receivers' list starts) get references.
@@ -278,6 +291,8 @@ def scatter_casters(ranges, rec_start, nx, cursor, out_refs, fill):
     n_chunks = cursor.shape[0]
     per = (n + n_chunks - 1) // n_chunks
     for c in prange(n_chunks):
+        if not fill:
+            cursor[c, :] = 0
         for j in range(c * per, min(n, (c + 1) * per)):
             if ranges[j, 0] < 0:
                 continue
@@ -332,6 +347,22 @@ def scatter_back(order, sorted_values, out):
         out[order[q]] = sorted_values[q]
 
 
+@njit(cache=True, inline="always")
+def _may_hit(packed, j, rx, ry, rkey, depth_margin_m):
+    """False only when caster ``j`` cannot hit the receiver at light-plane ``(rx, ry)`` with key
+    ``rkey``: outside its widened box (the binning argument), behind its own key, or behind
+    its depth plane by more than ``depth_margin_m`` (see :func:`pack_casters`): t < 0."""
+    if np.float64(packed[j, PACK_KEY]) < rkey:
+        return False
+    if (rx < packed[j, PACK_BOX] or rx > packed[j, PACK_BOX + 1]
+            or ry < packed[j, PACK_BOX + 2] or ry > packed[j, PACK_BOX + 3]):
+        return False
+    zp = (np.float64(packed[j, PACK_KEY]) + np.float64(packed[j, PACK_PLANE + 2])
+          + np.float64(packed[j, PACK_PLANE]) * (rx - packed[j, PACK_BOX])
+          + np.float64(packed[j, PACK_PLANE + 1]) * (ry - packed[j, PACK_BOX + 2]))
+    return zp >= rkey - depth_margin_m
+
+
 #: Cells per parallel work item of the query: neighbouring cells share casters, so a block
 #: keeps its last-occluder cache warm; small enough for the two cores to balance.
 QUERY_BLOCK_CELLS = 64
@@ -345,8 +376,8 @@ QUERY_STRIPES = 8
 @njit(cache=True, parallel=True)
 def query(packed, ref_start, refs, rec_start, origins, kx, ky, kz, sx, sy, sz, sgn,
           depth_margin_m, tmin, tmax, out, out_tests):
-    """``out[q] = True`` when the shadow ray of receiver q (in cell order) hits a caster of its
-    cell.
+    """``out[q]`` (every entry written) True when the shadow ray of receiver q (in cell order)
+    hits a caster of its cell.
 
     ``packed`` (M, 16) float32 caster records of :func:`pack_casters` sorted by key
     (descending), ``refs`` the cells' caster lists (``ref_start`` (n_cells + 1,)),
@@ -371,7 +402,9 @@ def query(packed, ref_start, refs, rec_start, origins, kx, ky, kz, sx, sy, sz, s
             r1 = rec_start[cell + 1]
             p0 = ref_start[cell]
             p1 = ref_start[cell + 1]
-            if r0 == r1 or p0 == p1:
+            if p0 == p1:
+                for i in range(r0, r1):
+                    out[i] = False
                 continue
             for i in range(r0, r1):
                 okx = origins[i, kx]
@@ -380,8 +413,10 @@ def query(packed, ref_start, refs, rec_start, origins, kx, ky, kz, sx, sy, sz, s
                 rkey = sgn * okz
                 rx = okx - sx * okz
                 ry = oky - sy * okz
-                # Test the block's last occluder first (coherent receivers share it).
-                if cache_k >= 0 and np.float64(packed[cache_k, PACK_KEY]) >= rkey:
+                out[i] = False
+                # Test the block's last occluder first (coherent receivers share it), after the
+                # same exact skips as a list entry: most receivers have left its box.
+                if cache_k >= 0 and _may_hit(packed, cache_k, rx, ry, rkey, depth_margin_m):
                     tests += 1
                     hit, t, u, v = hit_record(packed, cache_k, okx, oky, okz, kx, ky, kz,
                                               sx, sy, sz)
@@ -393,15 +428,7 @@ def query(packed, ref_start, refs, rec_start, origins, kx, ky, kz, sx, sy, sz, s
                     # Sorted by key: this caster and all after it lie behind the origin.
                     if np.float64(packed[j, PACK_KEY]) < rkey:
                         break
-                    if (j == cache_k or rx < packed[j, PACK_BOX] or rx > packed[j, PACK_BOX + 1]
-                            or ry < packed[j, PACK_BOX + 2] or ry > packed[j, PACK_BOX + 3]):
-                        continue
-                    # Depth plane behind the receiver (the caster's float32 plane, see
-                    # pack_casters): no hit at t >= 0.
-                    zp = (np.float64(packed[j, PACK_KEY]) + np.float64(packed[j, PACK_PLANE + 2])
-                          + np.float64(packed[j, PACK_PLANE]) * (rx - packed[j, PACK_BOX])
-                          + np.float64(packed[j, PACK_PLANE + 1]) * (ry - packed[j, PACK_BOX + 2]))
-                    if zp < rkey - depth_margin_m:
+                    if j == cache_k or not _may_hit(packed, j, rx, ry, rkey, depth_margin_m):
                         continue
                     tests += 1
                     hit, t, u, v = hit_record(packed, j, okx, oky, okz, kx, ky, kz, sx, sy, sz)

@@ -11,6 +11,7 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
+from numba import njit, prange
 
 from cityshade.errors import UsageError
 
@@ -63,51 +64,124 @@ class Surfaces:
         return self.cls
 
 
+@njit(cache=True, parallel=True)
+def _resolve_kernel(prim, bary, verts, tris, uvs, tri_object, tri_material, tri_texture,
+                    tri_class, position, normal, uv, obj_id, material, texture, cls):
+    """Fill the per-pixel attributes of the valid pixels (the outputs come pre-filled with the
+    no-surface values). Every value is the same float64 expression, in the same order, as the
+    numpy twin ``tests/reference.py: reference_resolve``, so the results are bit-identical."""
+    height, width = prim.shape
+    has_uv = uvs.shape[0] > 0
+    for r in prange(height):
+        for c in range(width):
+            tri = prim[r, c]
+            if tri < 0:
+                continue
+            bu = np.float64(bary[r, c, 0])
+            bv = np.float64(bary[r, c, 1])
+            bw = 1.0 - bu - bv
+            i0, i1, i2 = tris[tri, 0], tris[tri, 1], tris[tri, 2]
+            a0, a1, a2 = (np.float64(verts[i0, 0]), np.float64(verts[i0, 1]),
+                          np.float64(verts[i0, 2]))
+            b0, b1, b2 = (np.float64(verts[i1, 0]), np.float64(verts[i1, 1]),
+                          np.float64(verts[i1, 2]))
+            c0, c1, c2 = (np.float64(verts[i2, 0]), np.float64(verts[i2, 1]),
+                          np.float64(verts[i2, 2]))
+            position[r, c, 0] = bw * a0 + bu * b0 + bv * c0
+            position[r, c, 1] = bw * a1 + bu * b1 + bv * c1
+            position[r, c, 2] = bw * a2 + bu * b2 + bv * c2
+            # Face normal: (v1 - v0) x (v2 - v0), unit, 0 for a degenerate triangle.
+            e0, e1, e2 = b0 - a0, b1 - a1, b2 - a2
+            f0, f1, f2 = c0 - a0, c1 - a1, c2 - a2
+            n0 = e1 * f2 - e2 * f1
+            n1 = e2 * f0 - e0 * f2
+            n2 = e0 * f1 - e1 * f0
+            length = np.sqrt(n0 * n0 + n1 * n1 + n2 * n2)
+            if length > 0.0:
+                normal[r, c, 0] = np.float32(n0 / length)
+                normal[r, c, 1] = np.float32(n1 / length)
+                normal[r, c, 2] = np.float32(n2 / length)
+            if has_uv:
+                for k in range(2):
+                    uv[r, c, k] = np.float32(bw * np.float64(uvs[i0, k])
+                                             + bu * np.float64(uvs[i1, k])
+                                             + bv * np.float64(uvs[i2, k]))
+            obj_id[r, c] = tri_object[tri]
+            material[r, c] = tri_material[tri]
+            texture[r, c] = tri_texture[tri]
+            cls[r, c] = tri_class[tri]
+
+
 def resolve(scene, gbuf: GBuffer) -> Surfaces:
     """Derive per-pixel surface attributes from ``prim_id`` and ``bary``.
 
     ``position_m`` is the float64 point ``(1-u-v) v0 + u v1 + v v2`` of the triangle's float32
     vertices; ``normal`` the unit cross product ``(v1 - v0) x (v2 - v0)`` (computed in float64;
-    zero for a degenerate triangle); ``uv`` interpolates the vertex texture coordinates.
+    zero for a degenerate triangle); ``uv`` interpolates the vertex texture coordinates. One
+    parallel pass over the pixels (the numpy twin is ``tests/reference.py``'s
+    ``reference_resolve``).
     """
     prim = np.asarray(gbuf.prim_id)
     if prim.ndim != 2 or gbuf.bary.shape != prim.shape + (2,):
         raise UsageError("G-buffer prim_id must be (H, W) and bary (H, W, 2)")
-    valid = prim >= 0
     h, w = prim.shape
-    ids = prim[valid]
-    bu = gbuf.bary[valid, 0].astype(np.float64)[:, None]
-    bv = gbuf.bary[valid, 1].astype(np.float64)[:, None]
-    bw = 1.0 - bu - bv
-    corners = np.asarray(scene.triangles)[ids]
-    verts = np.asarray(scene.vertices)
-    v0 = verts[corners[:, 0]].astype(np.float64)
-    v1 = verts[corners[:, 1]].astype(np.float64)
-    v2 = verts[corners[:, 2]].astype(np.float64)
     position = np.full((h, w, 3), np.nan)
-    position[valid] = bw * v0 + bu * v1 + bv * v2
-    n = np.cross(v1 - v0, v2 - v0)
-    length = np.linalg.norm(n, axis=1, keepdims=True)
-    n = np.divide(n, length, out=np.zeros_like(n), where=length > 0.0)
     normal = np.zeros((h, w, 3), np.float32)
-    normal[valid] = n
-    uvs = np.asarray(scene.uv)
     uv = np.zeros((h, w, 2), np.float32)
-    if uvs.size:
-        uv[valid] = (bw * uvs[corners[:, 0]] + bu * uvs[corners[:, 1]]
-                     + bv * uvs[corners[:, 2]]).astype(np.float32)
+    obj_id = np.full((h, w), -1, np.int32)
+    material = np.full((h, w), -1, np.int32)
+    texture = np.full((h, w), -1, np.int32)
+    cls = np.zeros((h, w), np.uint8)
+    _resolve_kernel(prim, np.asarray(gbuf.bary), np.asarray(scene.vertices),
+                    np.asarray(scene.triangles), np.asarray(scene.uv).reshape(-1, 2),
+                    np.asarray(scene.tri_object), np.asarray(scene.tri_material),
+                    np.asarray(scene.tri_texture), np.asarray(scene.tri_class), position, normal,
+                    uv, obj_id, material, texture, cls)
+    return Surfaces(position_m=position, normal=normal, obj_id=obj_id, material=material,
+                    texture=texture, uv=uv, cls=cls, valid=prim >= 0, prim_id=prim,
+                    depth=np.asarray(gbuf.depth))
 
-    def per_pixel(values, fill, dtype):
-        out = np.full((h, w), fill, dtype)
-        out[valid] = np.asarray(values)[ids]
-        return out
 
-    return Surfaces(position_m=position, normal=normal,
-                    obj_id=per_pixel(scene.tri_object, -1, np.int32),
-                    material=per_pixel(scene.tri_material, -1, np.int32),
-                    texture=per_pixel(scene.tri_texture, -1, np.int32), uv=uv,
-                    cls=per_pixel(scene.tri_class, 0, np.uint8), valid=valid,
-                    prim_id=prim, depth=np.asarray(gbuf.depth))
+@njit(cache=True, parallel=True)
+def _seen_side_kernel(normal, position, eye, to_viewer, perspective, out):
+    height, width = normal.shape[:2]
+    for r in prange(height):
+        for c in range(width):
+            n0 = np.float64(normal[r, c, 0])
+            n1 = np.float64(normal[r, c, 1])
+            n2 = np.float64(normal[r, c, 2])
+            if perspective:
+                t0 = eye[0] - position[r, c, 0]
+                t1 = eye[1] - position[r, c, 1]
+                t2 = eye[2] - position[r, c, 2]
+            else:
+                t0, t1, t2 = to_viewer[0], to_viewer[1], to_viewer[2]
+            if n0 * t0 + n1 * t1 + n2 * t2 < 0.0:
+                n0, n1, n2 = -n0, -n1, -n2
+            out[r, c, 0] = n0
+            out[r, c, 1] = n1
+            out[r, c, 2] = n2
+
+
+def seen_side_normals(surfaces: Surfaces, camera) -> np.ndarray:
+    """Unit normals (H, W, 3) float64 turned to the side the camera sees: flipped where the
+    normal points away from the viewer (``n . (eye - p) < 0``; maps: ``n . (eye - target)``).
+
+    One parallel pass (:func:`cityshade.shadows.oriented_normals` calls it; the numpy twin is
+    ``tests/reference.py``'s ``reference_oriented_normals``).
+    """
+    normal = np.asarray(surfaces.normal)
+    h, w = normal.shape[:2]
+    eye = np.asarray(camera.eye_m, np.float64).reshape(3)
+    perspective = camera.kind != "map"
+    if perspective:
+        position = np.asarray(surfaces.position_m, np.float64)
+    else:
+        position = np.zeros((1, 1, 3))
+    to_viewer = eye - np.asarray(camera.target_m, np.float64).reshape(3)
+    out = np.empty((h, w, 3))
+    _seen_side_kernel(normal, position, eye, to_viewer, perspective, out)
+    return out
 
 
 def gbuffer_by_raycasting(scene, camera, t_days: float) -> GBuffer:

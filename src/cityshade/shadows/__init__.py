@@ -25,6 +25,7 @@ computed once per frame and sun (:attr:`ShadowContext.faces`).
 """
 from __future__ import annotations
 
+import dataclasses
 import functools
 import importlib
 from dataclasses import dataclass, field
@@ -33,7 +34,7 @@ from typing import TYPE_CHECKING, Any, Protocol
 import numpy as np
 
 from cityshade.config import ShadowSettings
-from cityshade.errors import UsageError
+from cityshade.errors import ContractError, UsageError
 
 if TYPE_CHECKING:
     from cityshade.geometry.scene import Scene
@@ -61,7 +62,9 @@ class ShadowContext:
 
     ``normal`` (oriented to the viewer) comes from the camera pass when the pipeline built the
     context, and ``faces`` is computed at most once, however many techniques (a base, a
-    smoothing, a hybrid) read it.
+    smoothing, a hybrid) read it. ``measure`` asks map techniques for their per-frame measures
+    (texel footprint, aliasing m: ``render -v``, ``evaluate``); they cost as much as a lookup,
+    so a plain frame leaves them out.
     """
 
     scene: "Scene"
@@ -71,6 +74,7 @@ class ShadowContext:
     t_days: float
     settings: ShadowSettings = field(default_factory=ShadowSettings)
     oriented_normal: np.ndarray | None = None
+    measure: bool = False
 
     @functools.cached_property
     def normal(self) -> np.ndarray:
@@ -84,6 +88,24 @@ class ShadowContext:
         """(H, W) bool: surface pixels facing the sun (the shared rule)."""
         return facing_mask(self.normal, self.surfaces.valid, self.sun.direction)
 
+    @functools.cached_property
+    def facing_points(self) -> np.ndarray:
+        """(N, 3) float64 surface points of the :attr:`faces` pixels (row-major order),
+        gathered once for the planner, the lookup and the rays."""
+        return np.ascontiguousarray(self.surfaces.position_m[self.faces], np.float64)
+
+    @functools.cached_property
+    def facing_normals(self) -> np.ndarray:
+        """(N, 3) float64 oriented normals of the :attr:`faces` pixels."""
+        return np.ascontiguousarray(self.normal[self.faces], np.float64)
+
+    def receivers(self, pixels: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """(points, oriented normals) of the pixels of mask ``pixels`` (the gathered facing
+        ones when ``pixels`` is :attr:`faces` itself)."""
+        if pixels is self.faces:
+            return self.facing_points, self.facing_normals
+        return self.surfaces.position_m[pixels], self.normal[pixels]
+
 
 @dataclass
 class MapUse:
@@ -94,12 +116,94 @@ class MapUse:
     filter_radius_px: int       # texels around the lookup the technique's filter reads
 
 
+class _Reported:
+    """The behaviour of :class:`TechniqueDiagnostics` (its fields are declared below)."""
+
+    def update(self, other: "TechniqueDiagnostics | dict[str, Any] | None" = None,
+               **fields: Any) -> "TechniqueDiagnostics":
+        """Set the reported fields of ``other`` and the keywords; returns self. A name that is
+        not a field, or a value of the wrong type, is a :class:`ContractError`."""
+        items = dict(other.items() if isinstance(other, _Reported) else other or {})
+        items.update(fields)
+        for name, value in items.items():
+            kind = _DIAGNOSTIC_TYPES.get(name)
+            if kind is None:
+                raise ContractError(f"technique diagnostics have no field {name!r}")
+            if value is not None and not isinstance(value, kind):
+                raise ContractError(f"technique diagnostics: {name} must be {kind}, "
+                                    f"not {type(value).__name__}")
+            setattr(self, name, value)
+        return self
+
+    def as_dict(self) -> dict[str, Any]:
+        """The reported fields as a plain dict (``base`` nested likewise)."""
+        return {k: (v.as_dict() if isinstance(v, _Reported) else v) for k, v in self.items()}
+
+    def items(self) -> list[tuple[str, Any]]:
+        return [(k, v) for k in _DIAGNOSTIC_TYPES if (v := getattr(self, k)) is not None]
+
+    def keys(self) -> list[str]:
+        return [k for k, _ in self.items()]
+
+    def get(self, key: str, default: Any = None) -> Any:
+        value = getattr(self, key) if key in _DIAGNOSTIC_TYPES else None
+        return default if value is None else value
+
+    def __getitem__(self, key: str) -> Any:
+        value = self.get(key)
+        if value is None:
+            raise KeyError(key)
+        return value
+
+    def __contains__(self, key: object) -> bool:
+        return isinstance(key, str) and self.get(key) is not None
+
+
+_NUMBER = (int, float)
+#: The fields of :class:`TechniqueDiagnostics` by family, name → type; the names are those
+#: ``render -v`` and ``evaluate`` print. Every field defaults to None: "not reported".
+_DIAGNOSTIC_FAMILIES: dict[str, dict[str, Any]] = {
+    # every technique; timings_s holds the stage times (fit_s, depth_s, lookup_s, rays_s...)
+    "common": dict(technique=str, note=str, self_shadowed_px=int, shadow_s=_NUMBER,
+                   timings_s=dict),
+    # exact techniques: rays (or light-space queries) decided; izb's engine statistics
+    "exact": dict(rays=int, engine=dict),
+    # map techniques: lookup mode, (W, H) of each map, the warp's name (cascades) or what
+    # warps.warp_matrix chose, a single map's DepthMap.stats, texel footprint on the receivers
+    # and light-space texel size (metres), perspective aliasing {max, mean[, pixels]} (metres)
+    "map": dict(lookup=str, map_px=list, warp=(str, dict), depth_map=dict, texel_m=_NUMBER,
+                texel_light_m=_NUMBER, aliasing_m=dict),
+    "cascades": dict(cascades=int, cascades_rendered=int, cascades_skipped=list,
+                     splits_m=list, per_cascade=list),
+    # hybrid: its base technique's diagnostics and what the rays refined
+    # (refined_with: the exact engine(s) that traced, "raytrace" and/or "izb")
+    "hybrid": dict(base=_Reported, classifier=str, uncertain_px=int, boundary_px=int,
+                   boundary_passes=int, traced_px=int, traced_share=_NUMBER, facing_px=int,
+                   refined_with=str),
+    # +smooth: its settings and time
+    "smooth": dict(smooth=dict),
+}
+_DIAGNOSTIC_TYPES: dict[str, Any] = {name: kind for family in _DIAGNOSTIC_FAMILIES.values()
+                                     for name, kind in family.items()}
+
+TechniqueDiagnostics = dataclasses.make_dataclass(
+    "TechniqueDiagnostics",
+    [(name, Any, field(default=None)) for name in _DIAGNOSTIC_TYPES],
+    bases=(_Reported,), namespace={"__module__": __name__, "__doc__": """What one technique run did.
+
+    A dataclass whose fields are :data:`_DIAGNOSTIC_FAMILIES`, each None until the technique
+    reports it; :meth:`as_dict` leaves the unreported ones out. Written through the fields or
+    :meth:`update` (which checks names and types); read like a mapping too
+    (``d["traced_px"]``, ``d.get("note")``, ``"rays" in d``).
+    """})
+
+
 @dataclass
 class ShadowResult:
     """Per-pixel lit fraction and diagnostics of one technique run."""
 
     lit: np.ndarray                       # (H, W) float32 in [0, 1]; 0 where no surface
-    diagnostics: dict[str, Any] = field(default_factory=dict)
+    diagnostics: TechniqueDiagnostics = field(default_factory=TechniqueDiagnostics)
     extra_channels: dict[str, np.ndarray] = field(default_factory=dict)
     #: Map techniques list the depth maps they used (empty for ``raytrace``).
     maps: list[MapUse] = field(default_factory=list)
@@ -186,14 +290,9 @@ def oriented_normals(surfaces: "Surfaces", camera: "Camera") -> np.ndarray:
     A pixel may show the back of a triangle (an open model, a wall seen from inside); its
     surface for shading and shadows is the side that is seen.
     """
-    normal = np.asarray(surfaces.normal, dtype=np.float64)
-    if camera.kind == "map":
-        to_viewer = np.asarray(camera.eye_m, np.float64) - np.asarray(camera.target_m, np.float64)
-        to_viewer = np.broadcast_to(to_viewer, normal.shape)
-    else:
-        to_viewer = np.asarray(camera.eye_m, np.float64) - surfaces.position_m
-    seen_from_back = np.einsum("ijk,ijk->ij", normal, to_viewer) < 0
-    return np.where(seen_from_back[..., None], -normal, normal)
+    from cityshade.raster.gbuffer import seen_side_normals
+
+    return seen_side_normals(surfaces, camera)
 
 
 def facing_mask(normal, valid, sun_direction) -> np.ndarray:

@@ -155,14 +155,42 @@ def vsm_moments(depth, metres_per_ndc: float, filter_weights=None) -> np.ndarray
     ``E[d²] - E[d]²`` cancels: in float32 a 1 km depth range would leave a variance noise of
     0.1 m².
     """
-    z = np.asarray(depth, dtype=np.float64)
+    z = np.asarray(depth)
     if z.ndim != 2:
         raise UsageError(f"depth map must be (H, W), not {z.shape}")
-    d = (np.minimum(z, 1.0) + 1.0) * float(metres_per_ndc)
-    moments = np.stack([d, d * d], axis=-1)
-    if filter_weights is not None and np.asarray(filter_weights).shape[0] > 1:
-        moments = separable_filter(moments, filter_weights)
-    return moments
+    wts = np.ones(1) if filter_weights is None else np.ascontiguousarray(filter_weights,
+                                                                         np.float64)
+    if wts.ndim != 1 or wts.shape[0] % 2 == 0:
+        raise UsageError("filter weights must be 1-D with an odd length")
+    if wts.shape[0] == 1:
+        wts = np.ones(1)        # a one-tap kernel leaves the moments unfiltered
+    # The row pass reads the depth map itself (no (H, W, 2) moments image before filtering);
+    # the arithmetic is separable_filter's on np.stack([d, d * d]), so the values are the same.
+    rows = np.empty(z.shape + (2,))
+    _moment_rows(np.ascontiguousarray(z), float(metres_per_ndc), wts, rows)
+    if wts.shape[0] == 1:
+        return rows
+    out = np.empty_like(rows)
+    _filter_axis(rows, wts, False, out)
+    return out
+
+
+@njit(cache=True, parallel=True)
+def _moment_rows(depth, scale, weights, out):
+    """Depth (metres from the near plane; no caster = the far plane) and its square, filtered
+    along every row (clamp-to-edge) into ``out`` (H, W, 2)."""
+    h, w = depth.shape
+    r = weights.shape[0] // 2
+    for y in prange(h):
+        for x in range(w):
+            m1 = 0.0
+            m2 = 0.0
+            for k in range(-r, r + 1):
+                d = (min(np.float64(depth[y, min(max(x + k, 0), w - 1)]), 1.0) + 1.0) * scale
+                m1 += weights[k + r] * d
+                m2 += weights[k + r] * (d * d)
+            out[y, x, 0] = m1
+            out[y, x, 1] = m2
 
 
 @njit(cache=True, inline="always")
@@ -354,11 +382,11 @@ class Smoothed:
                          settings.depth_threshold_rel, mask=faces, max_gain=settings.max_gain)
         lit[~faces] = 0.0
         smooth_s = time.perf_counter() - t0
-        diagnostics = dict(result.diagnostics)
-        diagnostics["technique"] = self.name
-        diagnostics["smooth"] = {"sigma_px": settings.sigma_px,
-                                 "depth_threshold_rel": settings.depth_threshold_rel,
-                                 "max_gain": settings.max_gain, "smooth_s": smooth_s}
-        diagnostics["shadow_s"] = float(diagnostics.get("shadow_s", 0.0)) + smooth_s
+        diagnostics = dataclasses.replace(result.diagnostics)
+        diagnostics.technique = self.name
+        diagnostics.smooth = {"sigma_px": settings.sigma_px,
+                              "depth_threshold_rel": settings.depth_threshold_rel,
+                              "max_gain": settings.max_gain, "smooth_s": smooth_s}
+        diagnostics.shadow_s = float(diagnostics.get("shadow_s", 0.0)) + smooth_s
         # Keep every other field of the inner result (extra channels, maps used, ...).
         return dataclasses.replace(result, lit=lit, diagnostics=diagnostics)

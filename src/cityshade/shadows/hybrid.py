@@ -12,12 +12,15 @@ Classifiers (``[shadows.hybrid] classifier``):
     point. Surely lit: no texel there holds a caster in front of the point (casters of its own
     polygon aside), also in a second map of the triangles thinner than two texels in light
     space (walls edge-on to a low sun fall between texel centres of a point-sampled map).
-    Surely in shadow: every texel holds a caster in front and all belong to one city object
-    (one caster covering the whole neighbourhood, so no gap between casters lets light
-    through). Everything else — casters in front and clear texels (a shadow edge), or
-    different casters (a possible gap) — is uncertain. This is the slides' "better
-    shadow edge detection": it looks at the map's depth discontinuities, not at the filtered
-    answer.
+    Surely in shadow: every texel holds a caster in front and all come from one polygon. A
+    planar polygon whose depth lies in front of the receiver's plane at the texel centres
+    around the receiver covers the receiver's light-space point (it lies within the centres'
+    hull) in front of it, so no light passes there; two polygons side by side, even of one
+    building, may leave a gap narrower than a texel between them, which no texel centre
+    sees (a lit channel between two building parts). Everything else — casters in front and
+    clear texels (a shadow edge), or several casters (a possible gap) — is uncertain. This is
+    the slides' "better shadow edge detection": it looks at the map's depth discontinuities
+    and caster changes, not at the filtered answer.
 ``vsm``
     The slides' original: uncertain where the base's filtered lit fraction lies strictly
     between ``low`` and ``high``. Kept to measure how many edge pixels it misses.
@@ -37,10 +40,10 @@ import math
 import time
 
 import numpy as np
-from numba import njit
+from numba import njit, prange
 
 from cityshade.errors import UsageError
-from cityshade.shadows import TECHNIQUES, ShadowContext, ShadowResult
+from cityshade.shadows import TECHNIQUES, ShadowContext, ShadowResult, TechniqueDiagnostics
 
 #: Receiver states of the classifiers.
 SURE_LIT, SURE_SHADOW, UNCERTAIN = 0, 1, 2
@@ -52,50 +55,70 @@ SURE_LIT, SURE_SHADOW, UNCERTAIN = 0, 1, 2
 THIN_TEXELS = 2.0
 
 
-@njit(cache=True)
-def _thin_kernel(vertices, triangles, present, poly, m, width, height, thin_depth, thin_poly):
-    """Project every present triangle into the light view; splat the thin ones' nearest depth
-    over their texel bounding box grown by one texel (serial: the splats overlap)."""
-    for i in range(triangles.shape[0]):
+@njit(cache=True, parallel=True)
+def _thin_boxes(vertices, triangles, present, m, width, height, box, zmin):
+    """Project every present triangle into the light view; for the thin ones, their texel
+    bounding box grown by one texel (``box`` col0, col1, row0, row1; col0 > col1 for the
+    others) and their nearest depth."""
+    for i in prange(triangles.shape[0]):
+        box[i, 0] = 1
+        box[i, 1] = 0
         if not present[i]:
             continue
-        us = np.empty(3)
-        vs = np.empty(3)
-        zs = np.empty(3)
-        ok = True
-        for k in range(3):
-            q = triangles[i, k]
-            x = np.float64(vertices[q, 0])
-            y = np.float64(vertices[q, 1])
-            z = np.float64(vertices[q, 2])
-            cw = m[12] * x + m[13] * y + m[14] * z + m[15]
-            if not cw > 0.0:
-                ok = False
-                break
-            us[k] = ((m[0] * x + m[1] * y + m[2] * z + m[3]) / cw + 1.0) * 0.5 * width
-            vs[k] = (1.0 - (m[4] * x + m[5] * y + m[6] * z + m[7]) / cw) * 0.5 * height
-            zs[k] = (m[8] * x + m[9] * y + m[10] * z + m[11]) / cw
-        if not ok:
+        q0, q1, q2 = triangles[i, 0], triangles[i, 1], triangles[i, 2]
+        cw0 = _clip_w(vertices, q0, m)
+        cw1 = _clip_w(vertices, q1, m)
+        cw2 = _clip_w(vertices, q2, m)
+        if not (cw0 > 0.0 and cw1 > 0.0 and cw2 > 0.0):
             continue
+        u0, v0, z0 = _light_texel(vertices, q0, m, cw0, width, height)
+        u1, v1, z1 = _light_texel(vertices, q1, m, cw1, width, height)
+        u2, v2, z2 = _light_texel(vertices, q2, m, cw2, width, height)
         # Light-space height in texels: 2·area / longest edge.
-        e1u, e1v = us[1] - us[0], vs[1] - vs[0]
-        e2u, e2v = us[2] - us[0], vs[2] - vs[0]
-        e3u, e3v = us[2] - us[1], vs[2] - vs[1]
+        e1u, e1v = u1 - u0, v1 - v0
+        e2u, e2v = u2 - u0, v2 - v0
+        e3u, e3v = u2 - u1, v2 - v1
         area2 = abs(e1u * e2v - e2u * e1v)
         longest = math.sqrt(max(e1u * e1u + e1v * e1v, e2u * e2u + e2v * e2v,
                                 e3u * e3u + e3v * e3v))
         if longest > 0.0 and area2 / longest >= THIN_TEXELS:
             continue
-        zmin = min(zs[0], zs[1], zs[2])
-        if not zmin <= 1.0:
+        z = min(z0, z1, z2)
+        if not z <= 1.0:
             continue
-        c0 = max(int(math.floor(min(us[0], us[1], us[2]))) - 1, 0)
-        c1 = min(int(math.floor(max(us[0], us[1], us[2]))) + 1, width - 1)
-        r0 = max(int(math.floor(min(vs[0], vs[1], vs[2]))) - 1, 0)
-        r1 = min(int(math.floor(max(vs[0], vs[1], vs[2]))) + 1, height - 1)
-        z32 = np.float32(zmin)
-        for r in range(r0, r1 + 1):
-            for c in range(c0, c1 + 1):
+        c0 = max(int(math.floor(min(u0, u1, u2))) - 1, 0)
+        c1 = min(int(math.floor(max(u0, u1, u2))) + 1, width - 1)
+        r0 = max(int(math.floor(min(v0, v1, v2))) - 1, 0)
+        r1 = min(int(math.floor(max(v0, v1, v2))) + 1, height - 1)
+        box[i, 0], box[i, 1], box[i, 2], box[i, 3] = c0, c1, r0, r1
+        zmin[i] = z
+
+
+@njit(cache=True, inline="always")
+def _clip_w(vertices, q, m):
+    x, y, z = np.float64(vertices[q, 0]), np.float64(vertices[q, 1]), np.float64(vertices[q, 2])
+    return m[12] * x + m[13] * y + m[14] * z + m[15]
+
+
+@njit(cache=True, inline="always")
+def _light_texel(vertices, q, m, cw, width, height):
+    """(column, row, NDC depth) of vertex ``q`` in the light view (``cw`` its clip W)."""
+    x, y, z = np.float64(vertices[q, 0]), np.float64(vertices[q, 1]), np.float64(vertices[q, 2])
+    return (((m[0] * x + m[1] * y + m[2] * z + m[3]) / cw + 1.0) * 0.5 * width,
+            (1.0 - (m[4] * x + m[5] * y + m[6] * z + m[7]) / cw) * 0.5 * height,
+            (m[8] * x + m[9] * y + m[10] * z + m[11]) / cw)
+
+
+@njit(cache=True)
+def _thin_splat(box, zmin, poly, thin_depth, thin_poly):
+    """Splat the thin triangles' nearest depth over their boxes, in id order (serial: the
+    splats overlap; the lowest id wins ties)."""
+    for i in range(box.shape[0]):
+        if box[i, 0] > box[i, 1]:
+            continue
+        z32 = np.float32(zmin[i])
+        for r in range(box[i, 2], box[i, 3] + 1):
+            for c in range(box[i, 0], box[i, 1] + 1):
                 if z32 < thin_depth[r, c]:
                     thin_depth[r, c] = z32
                     thin_poly[r, c] = poly[i]
@@ -110,16 +133,18 @@ def thin_caster_map(scene, view, t_days: float) -> tuple[np.ndarray, np.ndarray]
     thin_poly = np.full((h, w), -1, np.int32)
     present = ((np.asarray(scene.tri_t_begin_days) <= t_days)
                & (t_days < np.asarray(scene.tri_t_end_days)))
-    _thin_kernel(scene.vertices, scene.triangles, present,
-                 np.asarray(scene.tri_polygon, np.int32),
-                 np.ascontiguousarray(view.clip_from_world.reshape(16)), w, h,
-                 thin_depth, thin_poly)
+    n = scene.triangles.shape[0]
+    box = np.empty((n, 4), np.int64)
+    zmin = np.empty(n)
+    _thin_boxes(scene.vertices, scene.triangles, present,
+                np.ascontiguousarray(view.clip_from_world.reshape(16)), w, h, box, zmin)
+    _thin_splat(box, zmin, np.asarray(scene.tri_polygon, np.int32), thin_depth, thin_poly)
     return thin_depth, thin_poly
 
 
-@njit(cache=True)
-def _bracket_kernel(depth, texel_obj, texel_poly, thin_depth, thin_poly, u_s, v_s, z_surface,
-                    dz_du, dz_dv, tol, own_poly, radius, state):
+@njit(cache=True, parallel=True)
+def _bracket_kernel(depth, texel_poly, thin_depth, thin_poly, u_s, v_s, z_surface, dz_du,
+                    dz_dv, tol, own_poly, radius, state):
     """Classify receivers from the depth-map texels around their true surface points.
 
     A texel occludes a receiver when its caster lies in front of the receiver's tangent plane
@@ -127,12 +152,12 @@ def _bracket_kernel(depth, texel_obj, texel_poly, thin_depth, thin_poly, u_s, v_
     Surfaces in the receiver's own plane (its polygon, coplanar neighbours on a roof slope)
     therefore never count, while anything rising above the plane does. Surely lit: no texel
     within ``radius`` occludes, in the depth map nor in the thin-caster map. Surely in shadow:
-    every texel within ``radius`` occludes and all belong to one object (so no gap between
-    casters lets light through). Else uncertain. No bias is involved: the decision is about the
-    exact surface point, within the map's one-texel position accuracy.
+    every texel within ``radius`` occludes and all come from one polygon (no gap between
+    casters, however narrow, can let light through). Else uncertain. No bias is involved: the
+    decision is about the exact surface point, within the map's one-texel position accuracy.
     """
     h, w = depth.shape
-    for i in range(u_s.shape[0]):
+    for i in prange(u_s.shape[0]):
         # A non-finite lookup cannot be decided from the map.
         if not (np.isfinite(u_s[i]) and np.isfinite(v_s[i]) and np.isfinite(z_surface[i])):
             state[i] = UNCERTAIN
@@ -142,7 +167,7 @@ def _bracket_kernel(depth, texel_obj, texel_poly, thin_depth, thin_poly, u_s, v_
         occluding = 0
         clear = 0
         thin_occluding = 0
-        first_obj = -2
+        first_poly = -2
         mixed = False
         for dv in range(-radius, radius + 1):
             row = cv + dv
@@ -159,10 +184,9 @@ def _bracket_kernel(depth, texel_obj, texel_poly, thin_depth, thin_poly, u_s, v_
                     thin_occluding += 1
                 if depth[row, col] < plane and texel_poly[row, col] != own_poly[i]:
                     occluding += 1
-                    obj = texel_obj[row, col]
-                    if first_obj == -2:
-                        first_obj = obj
-                    elif obj != first_obj:
+                    if first_poly == -2:
+                        first_poly = texel_poly[row, col]
+                    elif texel_poly[row, col] != first_poly:
                         mixed = True
                 else:
                     clear += 1
@@ -199,14 +223,34 @@ def bracket_states(depth_map, scene, points_m, normals, own_poly, sun_direction,
     tol = _PLANE_TOL_NDC + _PLANE_TOL_SLOPE * (np.abs(gu) + np.abs(gv))
     prim = np.asarray(depth_map.prim_id)
     safe = np.maximum(prim, 0)
-    texel_obj = np.where(prim >= 0, np.asarray(scene.tri_object)[safe], -1).astype(np.int32)
     texel_poly = np.where(prim >= 0, np.asarray(scene.tri_polygon)[safe], -1).astype(np.int32)
     state = np.empty(len(u_s), np.uint8)
     f64 = lambda a: np.ascontiguousarray(a, np.float64)  # noqa: E731
-    _bracket_kernel(np.asarray(depth_map.depth), texel_obj, texel_poly, thin_map[0], thin_map[1],
+    _bracket_kernel(np.asarray(depth_map.depth), texel_poly, thin_map[0], thin_map[1],
                     f64(u_s), f64(v_s), f64(z_surface), f64(gu), f64(gv), f64(tol),
                     np.ascontiguousarray(own_poly, np.int32), int(radius_texels), state)
     return state
+
+
+#: Uncertain pixels from which the light-space engine (``izb``) refines them instead of the
+#: kd-tree's shadow rays: both give the same answer, bit for bit, but izb pays a per-call setup
+#: (projecting and binning every caster over the receivers' light-plane box, which for pixels
+#: scattered over a whole view is the whole city) that only many receivers repay. Measured on
+#: the 1M-triangle city (CPU time, one thread): see the closing note of issue 12.
+IZB_REFINE_MIN_RAYS = 400_000
+
+
+def refine_engine(n_rays: int):
+    """(name, sunlit function) of the exact engine that refines ``n_rays`` uncertain pixels:
+    :func:`cityshade.lightspace.sunlit` from :data:`IZB_REFINE_MIN_RAYS` on, else
+    :func:`cityshade.trace.sunlit` (the same answer either way)."""
+    if n_rays >= IZB_REFINE_MIN_RAYS:
+        from cityshade.lightspace import sunlit
+
+        return "izb", sunlit
+    from cityshade.trace import sunlit
+
+    return "raytrace", sunlit
 
 
 def _boundary(binary: np.ndarray, candidates: np.ndarray) -> np.ndarray:
@@ -241,14 +285,13 @@ class Hybrid:
         self.name = f"hybrid:{base}"
 
     def run(self, ctx: ShadowContext) -> ShadowResult:
-        from cityshade.trace import sunlit
-
         settings = ctx.settings.hybrid
         t0 = time.perf_counter()
         # The bracket classifier needs the base's map(s) only, not its filtered answer.
         if settings.classifier == "bracket":
             prepared = self.base.prepare(ctx)
-            base_diagnostics = {"technique": self.base.name, **prepared.diagnostics}
+            base_diagnostics = TechniqueDiagnostics(technique=self.base.name).update(
+                prepared.diagnostics)
             maps = prepared.maps
             base_lit = None
         else:
@@ -259,8 +302,8 @@ class Hybrid:
         shape = surfaces.valid.shape
         lit = np.zeros(shape, np.float32)
         refined = np.zeros(shape, bool)
-        diagnostics = {"technique": self.name, "base": base_diagnostics,
-                       "classifier": settings.classifier}
+        diagnostics = TechniqueDiagnostics(technique=self.name, base=base_diagnostics,
+                                           classifier=settings.classifier)
         if not ctx.sun.above_horizon:
             diagnostics.update(traced_px=0, traced_share=0.0, note="sun below the horizon")
             return ShadowResult(lit=lit, diagnostics=diagnostics,
@@ -285,14 +328,18 @@ class Hybrid:
             state[faces] = np.where(b[faces] >= settings.high, SURE_LIT,
                                     np.where(b[faces] <= settings.low, SURE_SHADOW, UNCERTAIN))
             classifier_used = "vsm" if settings.classifier == "vsm" else "vsm (base exposes no map)"
-        diagnostics["classifier"] = classifier_used
+        diagnostics.classifier = classifier_used
         lit[faces & (state == SURE_LIT)] = 1.0
         t2 = time.perf_counter()
+
+        engines: list[str] = []
 
         def trace(mask: np.ndarray) -> int:
             points = surfaces.position_m[mask]
             if not len(points):
                 return 0
+            engine, sunlit = refine_engine(len(points))
+            engines.append(engine)
             lit[mask] = sunlit(ctx.scene, points, normal[mask], ctx.sun.direction,
                                ctx.t_days).astype(np.float32)
             refined[mask] = True
@@ -314,17 +361,18 @@ class Hybrid:
             passes += 1
         t3 = time.perf_counter()
         n_facing = int(faces.sum())
-        diagnostics.update({
-            "uncertain_px": int(classified_uncertain.sum()),
-            "boundary_px": boundary_rays, "boundary_passes": passes,
-            "traced_px": rays + boundary_rays,
-            "traced_share": (rays + boundary_rays) / max(int(valid.sum()), 1),
-            "facing_px": n_facing,
-            "map_px": base_diagnostics.get("map_px"),
-            "texel_m": base_diagnostics.get("texel_m"),
-            "aliasing_m": base_diagnostics.get("aliasing_m"),
-            "shadow_s": t3 - t0,
-            "timings_s": {"base_s": t1 - t0, "classify_s": t2 - t1, "rays_s": t3 - t2},
-        })
+        diagnostics.update(
+            uncertain_px=int(classified_uncertain.sum()),
+            boundary_px=boundary_rays, boundary_passes=passes,
+            traced_px=rays + boundary_rays,
+            traced_share=(rays + boundary_rays) / max(int(valid.sum()), 1),
+            facing_px=n_facing,
+            refined_with="+".join(dict.fromkeys(engines)) or None,
+            map_px=base_diagnostics.map_px,
+            texel_m=base_diagnostics.texel_m,
+            aliasing_m=base_diagnostics.aliasing_m,
+            shadow_s=t3 - t0,
+            timings_s={"base_s": t1 - t0, "classify_s": t2 - t1, "rays_s": t3 - t2},
+        )
         return ShadowResult(lit=lit, diagnostics=diagnostics,
                             extra_channels={"refined": refined.astype(np.float32)})

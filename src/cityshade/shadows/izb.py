@@ -19,5 +19,5 @@ class LightSpace(RayTraced):
 
         engine: dict = {}
         lit = sunlit(scene, points, normals, sun_direction, t_days, stats=engine)
-        diagnostics["engine"] = engine
+        diagnostics.engine = engine
         return lit

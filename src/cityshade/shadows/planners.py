@@ -28,7 +28,7 @@ from typing import Any
 
 import numpy as np
 
-from cityshade.shadows import MapUse, ShadowContext, ShadowResult
+from cityshade.shadows import MapUse, ShadowContext, ShadowResult, TechniqueDiagnostics
 from cityshade.shadows.lookups import Lookup
 
 
@@ -46,7 +46,7 @@ class PreparedMaps:
         The cascades' depth maps as one texture array (+inf where no map was drawn).
     sun_direction : (3,) float64
         The sun vector the lookups use (the warps look up with the normalised vector).
-    diagnostics : dict
+    diagnostics : TechniqueDiagnostics
         What the planner did (views, warps, cascades, depth-pass statistics, timings).
     """
 
@@ -54,7 +54,7 @@ class PreparedMaps:
     views: list[Any] = field(default_factory=list)
     layers: np.ndarray | None = None
     sun_direction: Any = None
-    diagnostics: dict[str, Any] = field(default_factory=dict)
+    diagnostics: TechniqueDiagnostics = field(default_factory=TechniqueDiagnostics)
 
 
 def _unit(v) -> np.ndarray:
@@ -72,11 +72,11 @@ class Uniform:
 
         settings = ctx.settings
         faces = ctx.faces
-        points = ctx.surfaces.position_m[faces]
+        points = ctx.facing_points
         out = PreparedMaps(sun_direction=ctx.sun.direction)
         if points.shape[0] == 0:
             # No visible surface faces the sun: nothing to look up, no map to draw.
-            out.diagnostics["note"] = "no visible surface faces the sun: no map drawn"
+            out.diagnostics.note = "no visible surface faces the sun: no map drawn"
             return out
         t0 = time.perf_counter()
         px = settings.map.px
@@ -87,9 +87,9 @@ class Uniform:
         t2 = time.perf_counter()
         out.maps.append(MapUse(depth_map, faces, radius_px))
         out.views.append(view)
-        out.diagnostics.update({"map_px": [(view.width_px, view.height_px)],
-                                "depth_map": depth_map.stats,
-                                "timings_s": {"fit_s": t1 - t0, "depth_s": t2 - t1}})
+        out.diagnostics.update(map_px=[(view.width_px, view.height_px)],
+                               depth_map=depth_map.stats,
+                               timings_s={"fit_s": t1 - t0, "depth_s": t2 - t1})
         return out
 
     def measure(self, ctx: ShadowContext, prepared: PreparedMaps) -> dict[str, Any]:
@@ -97,8 +97,8 @@ class Uniform:
         from cityshade.shadows.shadowmap import map_diagnostics
 
         faces = ctx.faces
-        return map_diagnostics(prepared.views, ctx, ctx.surfaces.position_m[faces],
-                               ctx.normal[faces], faces)
+        return map_diagnostics(prepared.views, ctx, ctx.facing_points, ctx.facing_normals,
+                               faces)
 
 
 class Warped:
@@ -115,7 +115,7 @@ class Warped:
         out = PreparedMaps(sun_direction=_unit(ctx.sun.direction))
         faces, receivers, _, casters = focus(ctx)
         if receivers.shape[0] == 0:
-            out.diagnostics["note"] = "no visible surface faces the sun"
+            out.diagnostics.note = "no visible surface faces the sun"
             return out
         size = int(ctx.settings.map.px)
         m, info = warp_matrix(self.warp, ctx.camera, ctx.sun.direction, receivers, casters,
@@ -124,8 +124,7 @@ class Warped:
         dmap = sm.render_depth_map(ctx.scene, view, ctx.t_days)
         out.maps.append(MapUse(dmap, faces, radius_px))
         out.views.append(view)
-        out.diagnostics.update({"map_px": [(size, size)], "warp": info,
-                                "depth_map": dmap.stats})
+        out.diagnostics.update(map_px=[(size, size)], warp=info, depth_map=dmap.stats)
         return out
 
     def measure(self, ctx: ShadowContext, prepared: PreparedMaps) -> dict[str, Any]:
@@ -156,14 +155,14 @@ class Cascaded:
         settings = ctx.settings
         surfaces = ctx.surfaces
         sun = np.asarray(ctx.sun.direction, np.float64)
-        diagnostics: dict[str, Any] = {"warp": self.warp, "map_px": [], "cascades": 0,
-                                       "cascades_rendered": 0, "cascades_skipped": [],
-                                       "per_cascade": []}
+        diagnostics = TechniqueDiagnostics(warp=self.warp, map_px=[], cascades=0,
+                                           cascades_rendered=0, cascades_skipped=[],
+                                           per_cascade=[])
         out = PreparedMaps(sun_direction=_unit(sun), diagnostics=diagnostics)
         faces = ctx.faces
         receivers = np.asarray(surfaces.position_m[faces], np.float64)
         if receivers.shape[0] == 0:
-            diagnostics["note"] = "no visible surface faces the sun"
+            diagnostics.note = "no visible surface faces the sun"
             return out
         size = int(settings.map.px)
         box = sm.scene_bounds(ctx.scene)
@@ -178,9 +177,9 @@ class Cascaded:
             count = 1
             splits = np.array([0.0, math.inf])
             slice_of = np.zeros(receivers.shape[0], np.int64)
-            diagnostics["note"] = "orthographic camera: no perspective aliasing, one cascade"
-        diagnostics["cascades"] = count
-        diagnostics["splits_m"] = [float(v) for v in splits]
+            diagnostics.note = "orthographic camera: no perspective aliasing, one cascade"
+        diagnostics.cascades = count
+        diagnostics.splits_m = [float(v) for v in splits]
         # The texture array: one layer per cascade, +inf (no caster) where none was drawn.
         out.layers = np.full((count, size, size), np.inf, np.float32)
         face_rows, face_cols = np.nonzero(faces)
@@ -188,9 +187,9 @@ class Cascaded:
             sel = slice_of == k
             entry: dict[str, Any] = {"cascade": k, "near_m": float(splits[k]),
                                      "far_m": float(splits[k + 1]), "pixels": int(sel.sum())}
-            diagnostics["per_cascade"].append(entry)
+            diagnostics.per_cascade.append(entry)
             if not sel.any():
-                diagnostics["cascades_skipped"].append(k)
+                diagnostics.cascades_skipped.append(k)
                 entry["skipped"] = "covers no visible pixel facing the sun"
                 out.views.append(None)
                 continue
@@ -207,8 +206,8 @@ class Cascaded:
             entry.update({"map_px": (size, size), "warp": info,
                           "casters_drawn": dmap.stats.get("casters_drawn", 0),
                           "depth_s": dmap.stats.get("timings_s", {}).get("total_s", 0.0)})
-            diagnostics["map_px"].append((size, size))
-            diagnostics["cascades_rendered"] += 1
+            diagnostics.map_px.append((size, size))
+            diagnostics.cascades_rendered += 1
         return out
 
     def measure(self, ctx: ShadowContext, prepared: PreparedMaps) -> dict[str, Any]:
@@ -216,7 +215,7 @@ class Cascaded:
         pixel-weighted mean (and the max) of the cascades' aliasing."""
         from cityshade.shadows import shadowmap as sm
 
-        per_cascade = prepared.diagnostics["per_cascade"]
+        per_cascade = prepared.diagnostics.per_cascade
         rendered = [e for e in per_cascade if "skipped" not in e]
         texel_all = []
         for entry, use in zip(rendered, prepared.maps):
@@ -257,36 +256,35 @@ class MapTechnique:
     def prepare(self, ctx: ShadowContext) -> PreparedMaps:
         """The maps of this frame and sun (none when the sun is down or no pixel faces it)."""
         if not ctx.sun.above_horizon:
-            return PreparedMaps(diagnostics={"note": "sun at or below the horizon: "
-                                                     "everything in shadow"})
+            return PreparedMaps(diagnostics=TechniqueDiagnostics(
+                note="sun at or below the horizon: everything in shadow"))
         prepared = self.planner.prepare(ctx, self.lookup.radius_px(ctx.settings))
-        prepared.diagnostics["self_shadowed_px"] = int((ctx.surfaces.valid & ~ctx.faces).sum())
+        prepared.diagnostics.self_shadowed_px = int((ctx.surfaces.valid & ~ctx.faces).sum())
         return prepared
 
     def look_up(self, ctx: ShadowContext, prepared: PreparedMaps) -> np.ndarray:
         """(H, W) float32 lit fraction: each map read for the pixels it serves, 0 elsewhere."""
         lit = np.zeros(ctx.surfaces.valid.shape, np.float32)
         for use in prepared.maps:
-            lit[use.pixels] = self.lookup(use.depth_map, ctx.surfaces.position_m[use.pixels],
-                                          ctx.normal[use.pixels], prepared.sun_direction,
+            points, normals = ctx.receivers(use.pixels)
+            lit[use.pixels] = self.lookup(use.depth_map, points, normals, prepared.sun_direction,
                                           ctx.settings)
         return lit
 
     def run(self, ctx: ShadowContext) -> ShadowResult:
         t0 = time.perf_counter()
         prepared = self.prepare(ctx)
-        diagnostics: dict[str, Any] = {"technique": self.name, "map_px": [], "texel_m": 0.0,
-                                       "aliasing_m": {"max": 0.0, "mean": 0.0},
-                                       "lookup": self.lookup.mode}
-        diagnostics.update(prepared.diagnostics)
+        diagnostics = TechniqueDiagnostics(technique=self.name, map_px=[], texel_m=0.0,
+                                           aliasing_m={"max": 0.0, "mean": 0.0},
+                                           lookup=self.lookup.mode).update(prepared.diagnostics)
         t1 = time.perf_counter()
         lit = self.look_up(ctx, prepared)
         t2 = time.perf_counter()
-        if prepared.maps:
+        if prepared.maps and ctx.measure:
             diagnostics.update(self.planner.measure(ctx, prepared))
         t3 = time.perf_counter()
-        diagnostics["shadow_s"] = t2 - t0
-        diagnostics["timings_s"] = {**diagnostics.get("timings_s", {}), "lookup_s": t2 - t1,
-                                    "diagnostics_s": t3 - t2}
+        diagnostics.shadow_s = t2 - t0
+        diagnostics.timings_s = {**diagnostics.get("timings_s", {}), "lookup_s": t2 - t1,
+                                 "diagnostics_s": t3 - t2}
         return ShadowResult(lit=lit, diagnostics=diagnostics, maps=prepared.maps,
                             prepared=prepared)

@@ -5,7 +5,7 @@ import time
 
 import numpy as np
 
-from cityshade.shadows import ShadowContext, ShadowResult
+from cityshade.shadows import ShadowContext, ShadowResult, TechniqueDiagnostics
 
 
 class RayTraced:
@@ -17,22 +17,23 @@ class RayTraced:
         surfaces = ctx.surfaces
         shape = surfaces.valid.shape
         lit = np.zeros(shape, np.float32)
-        diagnostics = {"technique": self.name, "rays": 0, "self_shadowed_px": 0}
+        diagnostics = TechniqueDiagnostics(technique=self.name, rays=0, self_shadowed_px=0)
         if not ctx.sun.above_horizon:
-            diagnostics["note"] = "sun at or below the horizon: everything in shadow"
+            diagnostics.note = "sun at or below the horizon: everything in shadow"
             return ShadowResult(lit=lit, diagnostics=diagnostics)
         t0 = time.perf_counter()
         normal, faces = ctx.normal, ctx.faces
-        diagnostics["self_shadowed_px"] = int((surfaces.valid & ~faces).sum())
+        diagnostics.self_shadowed_px = int((surfaces.valid & ~faces).sum())
         points = surfaces.position_m[faces]
         if len(points):
             lit[faces] = self.sunlit(ctx.scene, points, normal[faces], ctx.sun.direction,
                                      ctx.t_days, diagnostics).astype(np.float32)
-        diagnostics["rays"] = int(len(points))
-        diagnostics["shadow_s"] = time.perf_counter() - t0
+        diagnostics.rays = int(len(points))
+        diagnostics.shadow_s = time.perf_counter() - t0
         return ShadowResult(lit=lit, diagnostics=diagnostics)
 
-    def sunlit(self, scene, points, normals, sun_direction, t_days, diagnostics) -> np.ndarray:
+    def sunlit(self, scene, points, normals, sun_direction, t_days,
+               diagnostics: TechniqueDiagnostics) -> np.ndarray:
         """(N,) bool: the exact per-point decision (here one kd-tree shadow ray per point)."""
         from cityshade.trace import sunlit
 

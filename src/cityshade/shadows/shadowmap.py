@@ -242,8 +242,7 @@ def fit_uniform(scene, ctx: ShadowContext, size_px, *, pad_px: int | None = None
     if points.shape[0] == 0:
         points = corners
     basis = np.stack([right, up, fwd], axis=1)
-    light = points @ basis
-    lo, hi = light.min(axis=0), light.max(axis=0)
+    lo, hi = light_box(points, basis)
     near = min(float((corners @ fwd).min()), float(lo[2]))
     far = float(hi[2])
     margin = DEPTH_MARGIN_REL * (far - near) + MIN_EXTENT_M
@@ -256,6 +255,25 @@ def fit_uniform(scene, ctx: ShadowContext, size_px, *, pad_px: int | None = None
         half = 0.5 * n_px * texel
         ranges.append((centre - half, centre + half))
     return ortho_view(ctx.sun.direction, ranges[0], ranges[1], (near, far), w, h, "uniform")
+
+
+@njit(cache=True)
+def _light_box_kernel(points, basis, lo, hi):
+    for i in range(points.shape[0]):
+        for j in range(3):
+            d = (points[i, 0] * basis[0, j] + points[i, 1] * basis[1, j]
+                 + points[i, 2] * basis[2, j])
+            lo[j] = min(lo[j], d)
+            hi[j] = max(hi[j], d)
+
+
+def light_box(points_m, basis) -> tuple[np.ndarray, np.ndarray]:
+    """(lo, hi) (3,) of ``points_m @ basis`` over the points (one pass, no (N, 3) product)."""
+    lo = np.full(3, np.inf)
+    hi = np.full(3, -np.inf)
+    _light_box_kernel(np.ascontiguousarray(points_m, np.float64),
+                      np.ascontiguousarray(basis, np.float64), lo, hi)
+    return lo, hi
 
 
 def metres_per_ndc(view: LightView) -> float:
@@ -498,10 +516,58 @@ def render_depth_map(scene, view: LightView, t_days: float, *, casters_box=None,
     """
     if not isinstance(view, LightView):
         raise UsageError(f"expected a LightView, not {type(view).__name__}")
+    reuse = _REUSE[-1] if _REUSE else None
+    key = None
+    if reuse is not None:
+        key = (id(scene), float(t_days), view.clip_from_world.tobytes(), view.width_px,
+               view.height_px, None if casters_box is None else
+               np.asarray(casters_box, np.float64).tobytes(), bool(culling), int(tile_px))
+        hit = reuse.maps.get(key)
+        if hit is not None:
+            reuse.reused_s += float(hit.stats["timings_s"]["total_s"])
+            reuse.reused += 1
+            return hit
     depth, prim, stats = render_depth(scene, view.clip_from_world, view.width_px,
                                       view.height_px, t_days, casters_box=casters_box,
                                       culling=culling, tile_px=tile_px)
-    return DepthMap(view=view, depth=depth, prim_id=prim, stats=stats)
+    dmap = DepthMap(view=view, depth=depth, prim_id=prim, stats=stats)
+    if reuse is not None:
+        reuse.maps[key] = dmap      # shared: its users only read it
+    return dmap
+
+
+_REUSE: list["DepthMapReuse"] = []
+
+
+class DepthMapReuse:
+    """Inside ``with DepthMapReuse() as reuse:``, :func:`render_depth_map` draws each distinct
+    request (scene, city time, view, options) once and hands the same :class:`DepthMap` (its
+    users only read it) to every later request: what ``evaluate`` uses to run the techniques
+    that share a map (``X``, ``X+smooth``, ``hybrid:X``, and every timed run of them) on one
+    depth pass. ``reused_s`` adds up the depth-pass time of the maps handed out again, so a
+    caller can still charge each run its full cost (:meth:`take_reused_s`). The maps stay
+    until :meth:`clear`."""
+
+    def __init__(self) -> None:
+        self.maps: dict[tuple, DepthMap] = {}
+        self.reused_s = 0.0
+        self.reused = 0
+
+    def __enter__(self) -> "DepthMapReuse":
+        _REUSE.append(self)
+        return self
+
+    def __exit__(self, *exc) -> None:
+        _REUSE.remove(self)
+
+    def clear(self) -> None:
+        """Drop the maps kept so far (their memory)."""
+        self.maps.clear()
+
+    def take_reused_s(self) -> float:
+        """The depth-pass seconds of the maps reused since the last call (then reset)."""
+        value, self.reused_s = self.reused_s, 0.0
+        return value
 
 
 # --- lookups ----------------------------------------------------------------------------------
@@ -537,6 +603,87 @@ def offset_receivers(view: LightView, points_m, normals, sun_direction,
     return p + bias.constant_m * s + offset[:, None] * n
 
 
+@njit(cache=True, inline="always")
+def _clip_point(m, x, y, z, width, height):
+    """(u_px, v_px, NDC depth) of a point in the view of clip matrix ``m`` (16,); NaN where
+    ``w <= 0`` (:func:`project`'s arithmetic)."""
+    cx = x * m[0] + y * m[1] + z * m[2] + m[3]
+    cy = x * m[4] + y * m[5] + z * m[6] + m[7]
+    cz = x * m[8] + y * m[9] + z * m[10] + m[11]
+    cw = x * m[12] + y * m[13] + z * m[14] + m[15]
+    inv = 1.0 / cw if cw > 0.0 else np.nan
+    return (cx * inv + 1.0) * (0.5 * width), (1.0 - cy * inv) * (0.5 * height), cz * inv
+
+
+@njit(cache=True, parallel=True)
+def _lookup_receivers(m, width, height, projective, points, normals, sun, constant_m, slope,
+                      max_m, radius, u_out, v_out, z_out):
+    """The receivers of a lookup in one pass: the bias of :func:`offset_receivers`, the
+    projection of :func:`project` and, in a projective view, the receiver-plane depth bias of
+    :func:`receiver_plane_gradient` (the same arithmetic per point, without the (N, 3)
+    temporaries)."""
+    sx, sy, sz = sun[0], sun[1], sun[2]
+    # The light-space texel is measured on the plane across the rays (normal = sun).
+    t1x, t1y, t1z, t2x, t2y, t2z = _tangent_frame(sx, sy, sz)
+    for i in prange(points.shape[0]):
+        px, py, pz = points[i, 0], points[i, 1], points[i, 2]
+        nx, ny, nz = normals[i, 0], normals[i, 1], normals[i, 2]
+        a, b, c, d = _image_jacobian(m, width, height, px, py, pz, t1x, t1y, t1z, t2x, t2y, t2z)
+        det = a * d - b * c
+        texel = np.inf
+        if det > 0.0 or det < 0.0:
+            texel = max(math.sqrt(d * d + c * c) / abs(det), math.sqrt(b * b + a * a) / abs(det))
+            if texel != texel:
+                texel = np.inf
+        cos = min(max(nx * sx + ny * sy + nz * sz, -1.0), 1.0)
+        sin = math.sqrt(1.0 - cos * cos)
+        offset = min(slope * texel * sin * (1.0 + radius), max_m)
+        if not np.isfinite(offset):
+            offset = max_m
+        qx = px + constant_m * sx + offset * nx
+        qy = py + constant_m * sy + offset * ny
+        qz = pz + constant_m * sz + offset * nz
+        u, v, z = _clip_point(m, qx, qy, qz, width, height)
+        if projective:
+            # Two tangents of the receiver's plane, 1 cm long (receiver_plane_gradient).
+            ax, ay, az, bx, by, bz = _tangent_frame(nx, ny, nz)
+            u1, v1, z1 = _clip_point(m, qx + 0.01 * ax, qy + 0.01 * ay, qz + 0.01 * az, width,
+                                     height)
+            u2, v2, z2 = _clip_point(m, qx + 0.01 * bx, qy + 0.01 * by, qz + 0.01 * bz, width,
+                                     height)
+            ja, jb, jc, jd = u1 - u, u2 - u, v1 - v, v2 - v
+            jdet = ja * jd - jb * jc
+            gu = ((z1 - z) * jd - (z2 - z) * jc) / jdet
+            gv = ((z2 - z) * ja - (z1 - z) * jb) / jdet
+            if not (np.isfinite(gu) and np.isfinite(gv)):
+                gu = 0.0
+                gv = 0.0
+            z = z - (abs(gu) + abs(gv)) * (0.5 + radius)
+        u_out[i] = u
+        v_out[i] = v
+        z_out[i] = z
+
+
+def lookup_receivers(view: LightView, points_m, normals, sun_direction,
+                     settings: ShadowSettings, filter_radius_px: int = 0
+                     ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """(u_px, v_px, NDC depth) (N,) float64 of receivers offset by the bias and projected into
+    the view, with the receiver-plane depth bias of projective views: what
+    :func:`shadow_lookup` compares with the map. One kernel pass; :func:`offset_receivers`,
+    :func:`project` and :func:`receiver_plane_gradient` are its step-by-step twins."""
+    p = np.ascontiguousarray(np.asarray(points_m, dtype=np.float64).reshape(-1, 3))
+    n = np.ascontiguousarray(np.asarray(normals, dtype=np.float64).reshape(-1, 3))
+    s = _unit_sun(sun_direction)
+    out = tuple(np.empty(p.shape[0]) for _ in range(3))
+    if p.shape[0]:
+        bias = settings.bias
+        _lookup_receivers(np.ascontiguousarray(view.clip_from_world.reshape(16)),
+                          float(view.width_px), float(view.height_px), view.is_projective, p, n,
+                          s, float(bias.constant_m), float(bias.slope), float(bias.max_m),
+                          float(filter_radius_px), *out)
+    return out
+
+
 def shadow_lookup(depth_map: DepthMap, points_m, normals, sun_direction,
                   settings: ShadowSettings, mode: str = "hard") -> np.ndarray:
     """Lit fraction (N,) float32 of receivers from one depth map.
@@ -557,16 +704,11 @@ def shadow_lookup(depth_map: DepthMap, points_m, normals, sun_direction,
         radius = settings.vsm.blur_px
     else:
         raise UsageError(f"shadow lookup mode must be hard, pcf or vsm, not {mode!r}")
-    q = offset_receivers(view, points_m, normals, sun_direction, settings, radius)
-    u, v, z = project(view, q)
-    if view.is_projective:
-        # In a warped (projective) map a plane's NDC depth varies across a texel even when the
-        # plane faces the light squarely (a flat roof under a high sun gets no slope bias):
-        # subtract the receiver plane's depth change over the texels the filter reads
-        # (receiver-plane depth bias, Isidoro 2006).
-        gu, gv = receiver_plane_gradient(view, q, np.asarray(normals, np.float64).reshape(-1, 3),
-                                         u, v, z)
-        z = z - (np.abs(gu) + np.abs(gv)) * (0.5 + radius)
+    # In a warped (projective) map a plane's NDC depth varies across a texel even when the
+    # plane faces the light squarely (a flat roof under a high sun gets no slope bias): the
+    # receiver plane's depth change over the texels the filter reads is subtracted
+    # (receiver-plane depth bias, Isidoro 2006).
+    u, v, z = lookup_receivers(view, points_m, normals, sun_direction, settings, radius)
     if mode == "vsm":
         vsm = settings.vsm
         weights = (flt.gaussian_weights(vsm.blur_px / 2.0, vsm.blur_px)

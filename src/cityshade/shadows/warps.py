@@ -529,6 +529,6 @@ def focus(ctx) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     from cityshade.shadows import shadowmap as sm
 
     faces = ctx.faces
-    receivers = np.asarray(ctx.surfaces.position_m[faces], np.float64)
+    receivers = ctx.facing_points
     casters = extrude_to_box(receivers, ctx.sun.direction, sm.scene_bounds(ctx.scene))
-    return faces, receivers, ctx.normal[faces], casters
+    return faces, receivers, ctx.facing_normals, casters

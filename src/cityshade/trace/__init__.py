@@ -11,6 +11,7 @@ import numpy as np
 
 from cityshade.accel.kdtree_layout import KdTree
 from cityshade.errors import UsageError
+from cityshade.trace import bricks
 from cityshade.trace.bricks import (DEFAULT_BRICK_SIZE, intersect_bricks, occluded_bricks,
                                     tile_order)
 from cityshade.util import check_t_days
@@ -132,7 +133,10 @@ def occluded(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     if origins.shape[0] == 0 or kd.tri_records.shape[0] == 0:
         return out
     lo, hi = _padded_box(kd)
-    occluded_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, out)
+    if (directions == directions[0]).all():
+        directions = directions[:1]   # one direction for all (sun rays): its terms once
+    with bricks.dynamic_bricks():
+        occluded_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, out)
     return out
 
 
@@ -167,8 +171,9 @@ def intersect(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     if n == 0 or kd.tri_records.shape[0] == 0:
         return dist, tri, u, v
     lo, hi = _padded_box(kd)
-    intersect_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, dist, tri,
-                     u, v)
+    with bricks.dynamic_bricks():
+        intersect_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, dist,
+                         tri, u, v)
     return dist, tri, u, v
 
 
@@ -207,8 +212,8 @@ def shadow_rays_from_surface(points, normals, sun_dir) -> np.ndarray:
         faces away from the sun are offset all the same; callers treat those as
         self-shadowed (DESIGN §14).
     """
-    points = np.asarray(points, dtype=np.float64)
-    normals = np.asarray(normals, dtype=np.float64)
+    points = np.ascontiguousarray(points, dtype=np.float64)
+    normals = np.ascontiguousarray(normals, dtype=np.float64)
     if points.ndim != 2 or points.shape[1] != 3:
         raise TraceInputError(f"points must have shape (N, 3), not {points.shape}")
     if normals.shape != points.shape:
@@ -216,14 +221,22 @@ def shadow_rays_from_surface(points, normals, sun_dir) -> np.ndarray:
     sun = np.asarray(sun_dir, dtype=np.float64)
     if sun.shape not in ((3,), points.shape):
         raise TraceInputError(f"sun_dir must have shape (3,) or {points.shape}, not {sun.shape}")
-    for name, arr in (("points", points), ("normals", normals), ("sun_dir", sun)):
-        if not np.isfinite(arr).all():
-            raise TraceInputError(f"{name} contain NaN or infinite values")
+    if not np.isfinite(sun).all():
+        raise TraceInputError("sun_dir contain NaN or infinite values")
     if np.abs(np.linalg.norm(sun, axis=-1) - 1.0).max(initial=0.0) > UNIT_LENGTH_TOL:
         raise TraceInputError("sun_dir must be unit length")
-    if np.abs(np.linalg.norm(normals, axis=1) - 1.0).max(initial=0.0) > UNIT_LENGTH_TOL:
+    out = np.empty((points.shape[0], 3))
+    # One parallel pass: the checks and the offset (the numpy twin: tests/reference.py).
+    code = bricks.shadow_origins(points, normals, np.ascontiguousarray(sun.reshape(-1, 3)),
+                                 SHADOW_OFFSET_REL, SHADOW_OFFSET_MIN_SCALE_M, UNIT_LENGTH_TOL,
+                                 out)
+    if code & bricks.BAD_POINT:
+        raise TraceInputError("points contain NaN or infinite values")
+    if code & bricks.BAD_NORMAL:
+        raise TraceInputError("normals contain NaN or infinite values")
+    if code & bricks.NOT_UNIT_NORMAL:
         raise TraceInputError("normals must be unit length")
-    return points + (normals + sun) * shadow_offset_m(points)[:, None]
+    return out
 
 
 def sunlit(tree, points, normals, sun_direction, t_days: float = 0.0) -> np.ndarray:

@@ -10,10 +10,13 @@ count. Rays are most coherent when consecutive rays are neighbours in the image 
 from __future__ import annotations
 
 import numpy as np
+import contextlib
+
+import numba
 from numba import njit, prange
 
 from cityshade.accel.kdtree_layout import record_id
-from cityshade.trace.kernels import any_hit, closest_hit, new_stack
+from cityshade.trace.kernels import any_hit_dir, closest_hit, direction_terms, new_stack
 
 #: Rays per brick: large enough to amortise the per-brick stack allocation and to keep the
 #: caster cache warm (a 16x16 pixel tile in tile order), small enough for two threads to
@@ -25,6 +28,9 @@ DEFAULT_BRICK_SIZE = 256
 #: so iteration j is mapped to the brick ``(j % STRIPES) * per_stripe + j // STRIPES``: every
 #: thread then takes part of every stripe of the image, and the two cores finish together.
 STRIPES = 64
+#: Bricks a thread takes at a time from the shared queue (dynamic scheduling): few enough that
+#: a thread slowed by other load on the machine does not hold back the end of the call.
+BRICKS_PER_CHUNK = 4
 
 
 @njit(cache=True, inline="always")
@@ -57,15 +63,30 @@ def _n_iter(n, brick_size):
     return STRIPES * (((n + brick_size - 1) // brick_size + STRIPES - 1) // STRIPES)
 
 
+@contextlib.contextmanager
+def dynamic_bricks():
+    """Hand prange iterations (bricks) out ``BRICKS_PER_CHUNK`` at a time to whichever thread
+    is free (dynamic scheduling): shadow and camera work is uneven across an image, and on a
+    shared machine one core may be slowed by other load."""
+    old = numba.set_parallel_chunksize(BRICKS_PER_CHUNK)
+    try:
+        yield
+    finally:
+        numba.set_parallel_chunksize(old)
+
+
 @njit(cache=True, parallel=True)
 def occluded_bricks(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_days, brick_size,
                     out):
     """``out[i] = True`` when ray i hits a triangle valid at ``t_days`` within its segment.
 
-    ``tree``: :class:`~cityshade.accel.kdtree_layout.KdViews`; ``origins``, ``directions``:
-    (N, 3) float64; ``tmin``: scalar; ``tmax``: (N,) float64.
+    ``tree``: :class:`~cityshade.accel.kdtree_layout.KdViews`; ``origins``: (N, 3) float64;
+    ``directions``: (N, 3) float64, or (1, 3) for rays that all share one direction (sun rays:
+    its shear and inverses are then computed once); ``tmin``: scalar; ``tmax``: (N,) float64.
     """
     n = origins.shape[0]
+    shared = directions.shape[0] == 1
+    terms0 = direction_terms(directions[0, 0], directions[0, 1], directions[0, 2])
     for j in prange(_n_iter(n, brick_size)):
         i0, i1 = _brick_rays(j, n, brick_size)
         if i0 >= i1:
@@ -73,9 +94,10 @@ def occluded_bricks(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_day
         stack = new_stack()
         cache_k = -1
         for i in range(i0, i1):
-            k = any_hit(tree, box_lo, box_hi, origins[i, 0], origins[i, 1], origins[i, 2],
-                        directions[i, 0], directions[i, 1], directions[i, 2],
-                        tmin, tmax[i], t_days, cache_k, stack)
+            terms = terms0 if shared else direction_terms(directions[i, 0], directions[i, 1],
+                                                          directions[i, 2])
+            k = any_hit_dir(tree, box_lo, box_hi, origins[i, 0], origins[i, 1],
+                            origins[i, 2], terms, tmin, tmax[i], t_days, cache_k, stack)
             out[i] = k >= 0
             if k >= 0:
                 cache_k = k
@@ -99,6 +121,44 @@ def intersect_bricks(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_da
             out_tri[i] = record_id(tree, k) if k >= 0 else -1
             out_u[i] = u
             out_v[i] = v
+
+
+#: :func:`shadow_origins` check codes, in the order the wrapper reports them.
+BAD_POINT = 1
+BAD_NORMAL = 2
+NOT_UNIT_NORMAL = 4
+
+
+@njit(cache=True, parallel=True)
+def shadow_origins(points, normals, sun, offset_rel, min_scale_m, unit_tol, out):
+    """``out[i] = p + (n + s) * offset_rel * max(|p|_inf, min_scale_m)`` for every point, in
+    the float64 order of the numpy twin; returns the OR of the check codes of the rays (a
+    non-finite point or normal, a normal whose length is off 1 by more than ``unit_tol``).
+    ``sun`` is (1, 3) (one direction) or (N, 3)."""
+    n = points.shape[0]
+    per_ray_sun = sun.shape[0] > 1
+    flags = np.zeros(n, np.uint8)
+    for i in prange(n):
+        px, py, pz = np.float64(points[i, 0]), np.float64(points[i, 1]), np.float64(points[i, 2])
+        nx, ny, nz = (np.float64(normals[i, 0]), np.float64(normals[i, 1]),
+                      np.float64(normals[i, 2]))
+        j = np.int64(i) if per_ray_sun else np.int64(0)
+        f = 0
+        if not (np.isfinite(px) and np.isfinite(py) and np.isfinite(pz)):
+            f |= BAD_POINT
+        if not (np.isfinite(nx) and np.isfinite(ny) and np.isfinite(nz)):
+            f |= BAD_NORMAL
+        elif abs(np.sqrt(nx * nx + ny * ny + nz * nz) - 1.0) > unit_tol:
+            f |= NOT_UNIT_NORMAL
+        flags[i] = f
+        offset = offset_rel * max(max(max(abs(px), abs(py)), abs(pz)), min_scale_m)
+        out[i, 0] = px + (nx + sun[j, 0]) * offset
+        out[i, 1] = py + (ny + sun[j, 1]) * offset
+        out[i, 2] = pz + (nz + sun[j, 2]) * offset
+    code = 0
+    for i in range(n):
+        code |= flags[i]
+    return code
 
 
 def tile_order(height: int, width: int, tile_px: int = 16) -> np.ndarray:

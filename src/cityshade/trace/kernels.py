@@ -276,13 +276,30 @@ def any_hit(tree, box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax, t_days, ca
     cache: that record is tested first, so coherent shadow rays behind the same occluder skip
     the traversal.
     """
-    ray = _sheared(ox, oy, oz, dx, dy, dz)
+    return any_hit_dir(tree, box_lo, box_hi, ox, oy, oz, direction_terms(dx, dy, dz), tmin,
+                       tmax, t_days, cache_k, stack)
+
+
+@njit(cache=True, inline="always")
+def direction_terms(dx, dy, dz):
+    """Everything :func:`any_hit_dir` needs of a direction, computed once for rays that share
+    it (sun rays): ``(dx, dy, dz, inv_x, inv_y, inv_z, kx, ky, kz, sx, sy, sz)``."""
+    kx, ky, kz, sx, sy, sz = ray_shear(dx, dy, dz)
+    return (dx, dy, dz, _inverse(dx), _inverse(dy), _inverse(dz), kx, ky, kz, sx, sy, sz)
+
+
+@njit(cache=True, inline="always")
+def any_hit_dir(tree, box_lo, box_hi, ox, oy, oz, terms, tmin, tmax, t_days, cache_k, stack):
+    """:func:`any_hit` with the direction given by its :func:`direction_terms` (the same
+    values, so the same answer)."""
+    dx, dy, dz, inv_x, inv_y, inv_z, kx, ky, kz, sx, sy, sz = terms
+    ray = (ox if kx == 0 else (oy if kx == 1 else oz), ox if ky == 0 else (oy if ky == 1 else oz),
+           ox if kz == 0 else (oy if kz == 1 else oz), kx, ky, kz, sx, sy, sz)
     if cache_k >= 0 and _hit_at(tree, cache_k, t_days, tmin, tmax, ray)[0]:
         return cache_k
     seg0, seg1 = clip_to_box(box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax)
     if seg0 > seg1:
         return -1
-    inv_x, inv_y, inv_z = _inverse(dx), _inverse(dy), _inverse(dz)
     node, sp = 0, 0
     while True:
         first, count, seg1, sp = _descend(tree, node, seg0, seg1, sp, ox, oy, oz, dx, dy, dz,

@@ -1,0 +1,464 @@
+"""Tiled batches: the receivers of a batch split into disjoint tiles, tasks of tile × sun block.
+
+A batch's receivers are the surface points whose sun-hours it sums: the map's pixels (the
+camera pass, done once) and the surface samples of ``--surfaces``. Both get the same exact
+per-step rule as the untiled run (:class:`cityshade.batch._PixelRays`,
+:func:`cityshade.surfaces.samples_lit`): a receiver is lit when its oriented normal faces the
+sun and its shadow ray is free. That rule reads one receiver at a time, so any split of the
+receivers gives the same booleans; the sums are float64 added in the order of the sun
+positions for every receiver, so a tiled run equals the untiled one bit for bit.
+
+Layout: the receivers are stored tile by tile, each tile a contiguous range of one
+(N, 6) float64 array (point, normal), written once to ``OUTDIR/receivers.npy`` so that
+the workers of a distributed run memory-map it (:mod:`cityshade.distributed`); ``slot``
+maps each receiver to its place in one flat vector of sums (the H × W pixels, then the
+samples). A task is (tile, block of sun positions); it returns the lit bits of its receivers
+for each position of the block, packed, and the driver adds them in position order
+(:func:`accumulate`, the one place where a step's result enters the sums).
+
+Casters: each tile's shadow rays reach only the casters within its sun-ward sweep. The
+light-space engine (``izb``) culls the casters to the light-plane box of the rays it is given,
+so a tile pays for its own sweep only. Through the kd-tree (``raytrace``) a ray visits only
+the nodes it crosses; :func:`halo_m` gives the horizontal reach of that sweep, (highest caster
+− lowest receiver) / tan(lowest sun elevation), which the manifest reports per run.
+"""
+from __future__ import annotations
+
+import math
+import time
+from dataclasses import dataclass, field
+from typing import Any, Callable, Sequence
+
+import numpy as np
+
+from cityshade.errors import UsageError
+
+__all__ = ["TilePlan", "plan_tiles", "receiver_lit", "task_lit", "accumulate", "halo_m",
+           "tiled_sun_hours", "RECEIVERS_NAME", "EXACT_ENGINES"]
+
+RECEIVERS_NAME = "receivers.npy"
+#: Techniques whose per-receiver answer does not depend on the other receivers.
+EXACT_ENGINES = ("izb", "raytrace")
+#: Sun positions per task by default: enough work per task (tens of ms each) that the
+#: scheduling cost of a distributed run stays small, few enough for a steady progress bar.
+DEFAULT_BLOCK = 8
+
+
+@dataclass
+class TilePlan:
+    """Receivers stored tile by tile.
+
+    Attributes
+    ----------
+    data : (N, 6) float64
+        Point (render-space metres) and unit normal (turned to the seen side) of every receiver.
+    slot : (N,) int64
+        Index of each receiver in the flat sums: ``row * W + col`` for a pixel, ``H·W + i`` for
+        surface sample ``i``.
+    start : (T + 1,) int64
+        Tile ``t`` holds receivers ``start[t]:start[t + 1]``.
+    n_slots : int
+        ``H·W + samples``.
+    pixel_shape : (H, W)
+    n_samples : int
+    tile_px : int or None
+    """
+
+    data: np.ndarray
+    slot: np.ndarray
+    start: np.ndarray
+    n_slots: int
+    pixel_shape: tuple[int, int]
+    n_samples: int
+    tile_px: int | None
+
+    @property
+    def n_tiles(self) -> int:
+        return int(self.start.shape[0] - 1)
+
+
+def _grid_order(ij: np.ndarray, extra: np.ndarray | None = None) -> tuple[np.ndarray, np.ndarray]:
+    """(order, tile key of each sorted item) for items with integer tile coordinates (N, 2)."""
+    if ij.shape[0] == 0:
+        return np.zeros(0, np.int64), np.zeros(0, np.int64)
+    lo = ij.min(axis=0)
+    rel = ij - lo
+    key = rel[:, 0] * (int(rel[:, 1].max()) + 1) + rel[:, 1]
+    order = np.argsort(key, kind="stable")
+    return order, key[order]
+
+
+def plan_tiles(valid: np.ndarray | None, points_px: np.ndarray | None,
+               normals_px: np.ndarray | None, sample_points: np.ndarray | None,
+               sample_normals: np.ndarray | None, tile_px: int | None,
+               sample_tile_m: float) -> TilePlan:
+    """Split the receivers into tiles of ``tile_px`` × ``tile_px`` pixels (and the samples into
+    squares of ``sample_tile_m`` in plan); ``tile_px=None``: one tile of pixels, one of samples.
+
+    Parameters
+    ----------
+    valid : (H, W) bool or None
+        Pixels showing a surface (None: no camera).
+    points_px, normals_px : (H, W, 3) float64 or None
+    sample_points, sample_normals : (S, 3) float64 or None
+    tile_px : int or None
+    sample_tile_m : float
+        Plan size of a sample tile, metres.
+    """
+    if tile_px is not None and int(tile_px) < 1:
+        raise UsageError(f"--tile-px must be >= 1, not {tile_px}")
+    parts, slots, starts = [], [], [0]
+    shape = (0, 0) if valid is None else tuple(int(v) for v in valid.shape)
+    n_pixels = shape[0] * shape[1]
+
+    def add(data, slot, keys):
+        # Tiles are runs of equal key in sorted order.
+        cuts = np.flatnonzero(np.diff(keys)) + 1
+        base = starts[-1]
+        for c in cuts:
+            starts.append(base + int(c))
+        if len(keys):
+            starts.append(base + len(keys))
+        parts.append(data)
+        slots.append(slot)
+
+    if valid is not None:
+        rows, cols = np.nonzero(np.asarray(valid, bool))
+        if tile_px is None:
+            order = np.arange(rows.shape[0])
+            keys = np.zeros(rows.shape[0], np.int64)
+        else:
+            order, keys = _grid_order(np.column_stack([rows // tile_px, cols // tile_px]))
+        r, c = rows[order], cols[order]
+        data = np.concatenate([np.asarray(points_px, np.float64)[r, c],
+                               np.asarray(normals_px, np.float64)[r, c]], axis=1)
+        add(data, (r.astype(np.int64) * shape[1] + c), keys)
+    n_samples = 0 if sample_points is None else int(sample_points.shape[0])
+    if n_samples:
+        pts = np.asarray(sample_points, np.float64)
+        if tile_px is None:
+            order = np.arange(n_samples)
+            keys = np.zeros(n_samples, np.int64)
+        else:
+            ij = np.floor(pts[:, :2] / float(sample_tile_m)).astype(np.int64)
+            order, keys = _grid_order(ij)
+        data = np.concatenate([pts[order], np.asarray(sample_normals, np.float64)[order]],
+                              axis=1)
+        add(data, n_pixels + order.astype(np.int64), keys)
+    data = np.ascontiguousarray(np.concatenate(parts) if parts else np.zeros((0, 6)))
+    slot = np.concatenate(slots) if slots else np.zeros(0, np.int64)
+    return TilePlan(data=data, slot=slot, start=np.asarray(starts, np.int64),
+                    n_slots=n_pixels + n_samples, pixel_shape=shape, n_samples=n_samples,
+                    tile_px=None if tile_px is None else int(tile_px))
+
+
+def receiver_lit(scene, points: np.ndarray, normals: np.ndarray, direction: np.ndarray,
+                 t_days: float, engine: str) -> np.ndarray:
+    """(N,) bool: the receiver faces the sun (N·L > 0, the shared rule) and its shadow ray
+    (:func:`cityshade.trace.shadow_rays_from_surface`) is free; the untiled batch's rule."""
+    from cityshade.shadows import facing_mask
+    from cityshade.trace import shadow_rays_from_surface
+
+    faces = facing_mask(normals, True, direction)
+    lit = np.zeros(points.shape[0], bool)
+    if faces.any():
+        origins = shadow_rays_from_surface(points[faces], normals[faces], direction)
+        if engine == "izb":
+            from cityshade import lightspace
+
+            blocked = lightspace.occluded(scene, origins, direction, t_days)
+        else:
+            from cityshade.trace import occluded
+
+            blocked = occluded(scene, origins,
+                               np.ascontiguousarray(np.broadcast_to(direction, origins.shape)),
+                               t_days)
+        lit[faces] = ~blocked
+    return lit
+
+
+def task_lit(scene, data: np.ndarray, lo: int, hi: int, directions: np.ndarray,
+             t_days: float, engine: str) -> np.ndarray:
+    """One task: (K, ceil((hi − lo) / 8)) uint8, the packed lit bits of receivers ``lo:hi`` of
+    ``data`` for each of the K sun directions."""
+    block = np.asarray(data[lo:hi], dtype=np.float64)
+    points = np.ascontiguousarray(block[:, :3])
+    normals = np.ascontiguousarray(block[:, 3:])
+    out = np.zeros((directions.shape[0], (hi - lo + 7) // 8), np.uint8)
+    for k in range(directions.shape[0]):
+        direction = np.ascontiguousarray(directions[k], dtype=np.float64)
+        out[k] = np.packbits(receiver_lit(scene, points, normals, direction, t_days, engine))
+    return out
+
+
+def accumulate(sums: np.ndarray, slots: np.ndarray, weights_h: np.ndarray,
+               lit: np.ndarray) -> None:
+    """Add one sun position's result: ``sums[row, slots] += weights_h[row] · lit`` for each
+    row (the total and, with ``--monthly``, the month) with a weight.
+
+    The same float64 products as the untiled run (weight · 1.0 or weight · 0.0), added in the
+    order of the sun positions."""
+    lit64 = lit.astype(np.float64)
+    for row in np.flatnonzero(weights_h > 0.0):
+        sums[row, slots] += weights_h[row] * lit64
+
+
+def halo_m(scene, lowest_receiver_z_m: float, elevations_deg: Sequence[float]) -> float:
+    """Horizontal reach of a receiver's shadow rays over the run: (highest caster − lowest
+    receiver) / tan(lowest sun elevation above the horizon); 0 without a sun up."""
+    up = [float(e) for e in elevations_deg if e > 0.0]
+    if not up or scene.kdtree is None:
+        return 0.0
+    _, hi, _ = scene.kdtree.box_scale_m()
+    rise = max(0.0, float(hi[2]) - float(lowest_receiver_z_m))
+    return rise / math.tan(math.radians(min(up)))
+
+
+# --- the tiled run ----------------------------------------------------------------------------
+
+@dataclass
+class TiledState:
+    """Where a tiled run stands: per tile, how many sun positions are added, and the sums."""
+
+    tile_done: np.ndarray      # (T,) int64
+    sums: np.ndarray           # (1 + months, n_slots) float64
+
+
+def _load_state(checkpoint, n_tiles: int, n_units: int, shape: tuple[int, int]):
+    """A saved tiled state that fits, else None (see :class:`cityshade.batch.Checkpoint`)."""
+    import zipfile
+
+    if checkpoint is None or not checkpoint.path.exists():
+        return None
+    hint = "re-run with --overwrite to start afresh"
+    try:
+        with np.load(checkpoint.path, allow_pickle=False) as z:
+            key = str(z["key"])
+            tile_done = np.array(z["tile_done"], dtype=np.int64)
+            sums = np.array(z["sums"], dtype=np.float64)
+    except (OSError, ValueError, KeyError, zipfile.BadZipFile) as exc:
+        raise UsageError(f"the saved state {checkpoint.path} is damaged ({exc}); {hint}") \
+            from None
+    if key != checkpoint.key:
+        raise UsageError(f"the saved state {checkpoint.path} belongs to a run with other "
+                         f"parameters; {hint}")
+    if tile_done.shape != (n_tiles,) or sums.shape != shape or \
+            not ((tile_done >= 0) & (tile_done <= n_units)).all():
+        raise UsageError(f"the saved state {checkpoint.path} does not fit this run; {hint}")
+    return TiledState(tile_done, sums)
+
+
+def _save_state(checkpoint, state: TiledState) -> None:
+    """Atomically, the manifest told the new checksum first; ``units_done`` is what every
+    tile has added (what :meth:`cityshade.batch.Checkpoint.units_done` reads)."""
+    done = int(state.tile_done.min()) if state.tile_done.size else 0
+    checkpoint.save_arrays(done, tile_done=state.tile_done, sums=state.sums)
+
+
+@dataclass
+class TiledRun:
+    """What :func:`tiled_sun_hours` adds to :class:`cityshade.batch.SunHours`."""
+
+    plan: TilePlan
+    month_hours: dict[str, np.ndarray] = field(default_factory=dict)
+    month_sample_hours: dict[str, np.ndarray] = field(default_factory=dict)
+    tasks: int = 0
+    tasks_resumed: int = 0
+    halo_m: float = 0.0
+
+
+def unit_month_weights(units, weights_h: np.ndarray, step_month: Sequence[str] | None
+                       ) -> tuple[list[str], np.ndarray]:
+    """(month labels, (U, 1 + M) weights): column 0 the unit's total weight (its own), then
+    its weight in each month (its steps' weights there, added in step order)."""
+    months = sorted(set(step_month)) if step_month is not None else []
+    col = {m: i + 1 for i, m in enumerate(months)}
+    w = np.zeros((len(units), 1 + len(months)), np.float64)
+    for u, unit in enumerate(units):
+        w[u, 0] = unit.weight_h
+        if step_month is not None:
+            per: dict[int, float] = {}
+            for i in unit.steps:
+                c = col[step_month[i]]
+                per[c] = per[c] + float(weights_h[i]) if c in per else float(weights_h[i])
+            for c, v in per.items():
+                w[u, c] = v
+    return months, w
+
+
+def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, suns,
+                    technique: str = "izb", ground: str | None = None,
+                    samples_per_m2: float | None = None, checkpoint=None,
+                    tile_px: int | None = None, block: int = DEFAULT_BLOCK,
+                    step_month: Sequence[str] | None = None, workdir=None,
+                    executor=None, save_every_s: float = 10.0,
+                    on_plan: Callable[[int], None] | None = None,
+                    on_task: Callable[[int, int, list], None] | None = None):
+    """:func:`cityshade.batch.sun_hours` over tiles of receivers (and optionally per month).
+
+    Parameters
+    ----------
+    scene, camera, instants_utc, t_days, weights_h, suns, technique, ground, samples_per_m2
+        As for :func:`cityshade.batch.sun_hours` (``suns`` required; ``technique`` exact).
+    checkpoint : cityshade.batch.Checkpoint, optional
+        Saved every ``save_every_s`` seconds and when the run stops (Ctrl-C included).
+    tile_px : int, optional
+        Tile side in pixels; None: one tile.
+    block : int
+        Sun positions per task.
+    step_month : sequence of str, optional
+        A label (YYYY-MM) per step: also sum per month.
+    workdir : path-like, optional
+        Where ``receivers.npy`` is written for the workers of ``executor``.
+    executor : cityshade.distributed.Executor, optional
+        Runs the tasks elsewhere; default: here, in order.
+    on_plan : callable(tasks_to_run)
+    on_task : callable(tasks_done, tasks_total, units_finished)
+        After each task is added; ``units_finished`` lists the sun positions (indices into
+        the run's units) that every tile has now added.
+
+    Returns
+    -------
+    (SunHours, TiledRun)
+    """
+    from cityshade.batch import SunHours, _weights, plan_run, receivers_pass
+
+    if technique not in EXACT_ENGINES:
+        raise UsageError(f"tiled and distributed batches need an exact technique "
+                         f"({', '.join(EXACT_ENGINES)}), not {technique!r}: the others fit "
+                         f"their maps to the receivers, so tiles would change the answer")
+    if block < 1:
+        raise UsageError(f"a task needs at least one sun position, not {block}")
+    if camera is None and samples_per_m2 is None:
+        raise UsageError("nothing to compute: give a camera, samples_per_m2, or both")
+    if scene.kdtree is None:
+        raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
+    t_start = time.perf_counter()
+    instants = list(instants_utc)
+    weights = _weights(instants, weights_h)
+    suns = list(suns)
+    timings = dict.fromkeys(("suns_s", "camera_s", "samples_s", "shadow_s", "accumulate_s",
+                             "checkpoint_s"), 0.0)
+    warnings: list[str] = []
+    units, below, duplicates = plan_run(scene, instants, t_days, suns, weights, warnings)
+    months, unit_w = unit_month_weights(units, weights, step_month)
+
+    diagnostics: dict[str, Any] = {}
+    cp, samples = receivers_pass(scene, camera, t_days, ground, samples_per_m2, timings,
+                                 diagnostics)
+    pixel_m = float(camera.pixel_size_m) if camera is not None and camera.kind == "map" else 1.0
+    plan = plan_tiles(None if cp is None else cp.valid,
+                      None if cp is None else cp.surfaces.position_m,
+                      None if cp is None else cp.normal,
+                      None if samples is None else samples.points_m,
+                      None if samples is None else samples.normals,
+                      tile_px, (tile_px or 1) * pixel_m)
+    low_z = float(plan.data[:, 2].min()) if plan.data.shape[0] else 0.0
+    reach = halo_m(scene, low_z, [u.sun.elevation_deg for u in units])
+
+    n_tiles, n_units = plan.n_tiles, len(units)
+    state = _load_state(checkpoint, n_tiles, n_units, (1 + len(months), plan.n_slots))
+    if state is None:
+        state = TiledState(np.zeros(n_tiles, np.int64),
+                           np.zeros((1 + len(months), plan.n_slots), np.float64))
+    blocks = [(b, min(b + block, n_units)) for b in range(0, n_units, block)]
+    # Tasks of a tile whose first sun positions are saved resume at the saved count.
+    tasks = [(t, max(lo, int(state.tile_done[t])), hi) for t in range(n_tiles)
+             for lo, hi in blocks if hi > state.tile_done[t]]
+    total = sum(1 for t in range(n_tiles) for lo, hi in blocks)
+    resumed_tasks = total - len(tasks)
+    if on_plan is not None:
+        on_plan(len(tasks))
+    directions = np.array([np.asarray(u.sun.direction, np.float64) for u in units]
+                          ).reshape(n_units, 3)
+    units_resumed = int(state.tile_done.min()) if n_tiles else n_units
+
+    finished_units = units_resumed
+    done_tasks = resumed_tasks
+    last_save = time.perf_counter()
+    pending: dict[int, dict[int, np.ndarray]] = {t: {} for t in range(n_tiles)}
+
+    def add(t: int, lo: int, bits: np.ndarray) -> None:
+        a, b = int(plan.start[t]), int(plan.start[t + 1])
+        slots = plan.slot[a:b]
+        for k in range(bits.shape[0]):
+            lit = np.unpackbits(bits[k], count=b - a).astype(bool)
+            accumulate(state.sums, slots, unit_w[lo + k], lit)
+        state.tile_done[t] = lo + bits.shape[0]
+
+    def finished(t: int, lo: int, bits: np.ndarray) -> None:
+        # Blocks of one tile are added in sun-position order; a block that comes early waits.
+        nonlocal finished_units, done_tasks, last_save
+        pending[t][lo] = bits
+        while int(state.tile_done[t]) in pending[t]:
+            start = int(state.tile_done[t])
+            t0 = time.perf_counter()
+            add(t, start, pending[t].pop(start))
+            timings["accumulate_s"] += time.perf_counter() - t0
+            done_tasks += 1
+            now_done = int(state.tile_done.min())
+            newly = list(range(finished_units, now_done))
+            finished_units = now_done
+            if checkpoint is not None and time.perf_counter() - last_save >= save_every_s:
+                t0 = time.perf_counter()
+                _save_state(checkpoint, state)
+                timings["checkpoint_s"] += time.perf_counter() - t0
+                last_save = time.perf_counter()
+            if on_task is not None:
+                on_task(done_tasks, total, newly)
+
+    t0 = time.perf_counter()
+    completed = False
+    try:
+        if executor is None:
+            for t, lo, hi in tasks:
+                a, b = int(plan.start[t]), int(plan.start[t + 1])
+                finished(t, lo, task_lit(scene, plan.data, a, b, directions[lo:hi],
+                                         float(t_days), technique))
+        else:
+            executor.run(plan, tasks, directions, float(t_days), technique, workdir,
+                         finished)
+        completed = True
+    finally:
+        timings["shadow_s"] = time.perf_counter() - t0
+        if checkpoint is not None and (tasks or not completed):
+            t1 = time.perf_counter()
+            _save_state(checkpoint, state)
+            timings["checkpoint_s"] += time.perf_counter() - t1
+
+    n_px = plan.pixel_shape[0] * plan.pixel_shape[1]
+
+    def pixels(row):
+        return np.where(cp.valid, row[:n_px].reshape(plan.pixel_shape), np.nan
+                        ).astype(np.float32)
+
+    hours = pixels(state.sums[0]) if cp is not None else None
+    sample_hours = polygon_hours = None
+    run = TiledRun(plan=plan, tasks=total, tasks_resumed=resumed_tasks, halo_m=reach)
+    if samples is not None:
+        from cityshade.surfaces import polygon_means
+
+        sample_hours = state.sums[0, n_px:].copy()
+        polygon_hours = polygon_means(samples, sample_hours)
+    for m, month in enumerate(months):
+        if cp is not None:
+            run.month_hours[month] = pixels(state.sums[1 + m])
+        if samples is not None:
+            from cityshade.surfaces import polygon_means
+
+            run.month_sample_hours[month] = polygon_means(samples, state.sums[1 + m, n_px:])
+    timings["total_s"] = time.perf_counter() - t_start
+    diagnostics["tiles"] = {"tiles": n_tiles, "tile_px": plan.tile_px, "tasks": total,
+                            "sun_positions_per_task": block, "halo_m": reach,
+                            "receivers": int(plan.data.shape[0])}
+    below_set = set(below)
+    result = SunHours(hours=hours, valid=None if cp is None else cp.valid,
+                      surfaces=None if cp is None else cp.surfaces, samples=samples,
+                      sample_hours=sample_hours, polygon_hours=polygon_hours, steps=len(suns),
+                      steps_below_horizon=len(below), steps_duplicate=duplicates,
+                      units=n_units, units_resumed=units_resumed,
+                      hours_total=float(weights.sum()),
+                      hours_sun_up=float(sum(w for i, w in enumerate(weights)
+                                             if i not in below_set)),
+                      suns=suns, timings_s=timings, diagnostics=diagnostics, warnings=warnings)
+    return result, run

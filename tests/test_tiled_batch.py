@@ -1,0 +1,235 @@
+"""Tiled, distributed and monthly batches: the same numbers as the untiled run, bit for bit."""
+from __future__ import annotations
+
+import json
+from datetime import date, datetime, timezone
+
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from citygml_snippets import box_polygons, building, city, ground
+
+from cityshade import batch as B
+from cityshade.errors import UsageError
+from cityshade.tiles import plan_tiles
+
+X0, Y0, Z0 = 691_000.0, 5_334_000.0, 520.0
+REPO_SAMPLE = "sample_data/sample_city.gml"
+
+
+class Stop(Exception):
+    pass
+
+
+@pytest.fixture(scope="module")
+def files(tmp_path_factory):
+    """Two boxes on a plane (shadows across tile borders) and the sample city, built once."""
+    from pathlib import Path
+
+    from cityshade.build import build_file
+
+    tmp = tmp_path_factory.mktemp("tiles")
+    src = tmp / "boxes.gml"
+    src.write_text(city(ground(X0 - 60, Y0 - 60, X0 + 60, Y0 + 60, Z0),
+                        building("a", box_polygons(X0 - 5, Y0 - 5, Z0, 10, 10, 20.0, "a")),
+                        building("b", box_polygons(X0 + 20, Y0 + 8, Z0, 6, 12, 9.0, "b"))))
+    boxes, _, _ = build_file(src, tmp / "boxes.cityshade")
+    sample, _, _ = build_file(Path(__file__).parents[1] / REPO_SAMPLE, tmp / "sample.cityshade")
+    return boxes, sample
+
+
+def _steps(day=date(2024, 6, 21), every_s=5400, **kw):
+    return B.plan_steps(day, B.parse_clock_s("04:00"), B.parse_clock_s("22:00"), every_s,
+                        "Europe/Berlin", **kw)
+
+
+def _run(path, outdir, technique="izb", steps=None, **kw):
+    from cityshade.raster.camera import map_view
+    from cityshade.scenefile import load_scene
+
+    scene = load_scene(path)
+    cam = map_view(scene, 2.0)
+    return B.run_batch(outdir, scene, cam, steps or _steps(), 0.0, technique=technique,
+                       surfaces_csv=True, ground="auto", **kw)
+
+
+def test_plan_tiles_splits_receivers_into_disjoint_squares():
+    rng = np.random.default_rng(3)
+    valid = rng.random((23, 37)) < 0.6
+    pts = rng.random((23, 37, 3))
+    nrm = rng.random((23, 37, 3))
+    samples = rng.random((50, 3)) * 30.0
+    plan = plan_tiles(valid, pts, nrm, samples, -samples, tile_px=8, sample_tile_m=10.0)
+    n_px = 23 * 37
+    # Every valid pixel and every sample exactly once, carrying its own point and normal.
+    assert sorted(plan.slot.tolist()) == sorted(np.flatnonzero(valid.ravel()).tolist()
+                                                + list(range(n_px, n_px + 50)))
+    px = plan.slot < n_px
+    r, c = np.divmod(plan.slot[px], 37)
+    assert np.array_equal(plan.data[px, :3], pts[r, c])
+    assert np.array_equal(plan.data[px, 3:], nrm[r, c])
+    assert np.array_equal(plan.data[~px, :3], samples[plan.slot[~px] - n_px])
+    # Tiles are contiguous runs inside one 8 × 8 square (or one 10 m square of samples).
+    assert plan.start[0] == 0 and plan.start[-1] == plan.data.shape[0]
+    assert plan.n_tiles == 5 * 3 + len(np.unique(np.floor(samples[:, :2] / 10.0), axis=0))
+    for t in range(plan.n_tiles):
+        s = plan.slot[plan.start[t]:plan.start[t + 1]]
+        assert len(s) > 0
+        if s[0] < n_px:
+            rr, cc = np.divmod(s, 37)
+            assert len(set(rr // 8)) == 1 and len(set(cc // 8)) == 1
+        else:
+            ij = np.floor(samples[s - n_px, :2] / 10.0)
+            assert len(np.unique(ij, axis=0)) == 1
+    one = plan_tiles(valid, pts, nrm, None, None, tile_px=None, sample_tile_m=1.0)
+    assert one.n_tiles == 1
+    with pytest.raises(UsageError, match="--tile-px"):
+        plan_tiles(valid, pts, nrm, None, None, tile_px=0, sample_tile_m=1.0)
+
+
+@pytest.mark.parametrize("technique", ["izb", "raytrace"])
+def test_tiled_run_equals_untiled_bit_for_bit(files, tmp_path, technique):
+    boxes, _ = files
+    plain = _run(boxes, tmp_path / "plain", technique)
+    tiled = _run(boxes, tmp_path / "tiled", technique, tile_px=7)
+    assert tiled.result.diagnostics["tiles"]["tiles"] > 20
+    assert plain.result.hours.tobytes() == tiled.result.hours.tobytes()
+    assert plain.result.sample_hours.tobytes() == tiled.result.sample_hours.tobytes()
+    assert (tmp_path / "plain" / "surfaces.csv").read_bytes() == \
+        (tmp_path / "tiled" / "surfaces.csv").read_bytes()
+    # Shadows cross the tile borders: some pixels lit less than the full day.
+    hours = plain.result.hours
+    assert np.nanmax(hours) > np.nanmin(hours) + 1.0
+    assert tiled.manifest["status"] == "finished"
+    assert sorted(tiled.manifest["finished_steps"]) == list(range(len(_steps())))
+
+
+def test_tiled_run_resumes_bit_identical_without_redoing_tasks(files, tmp_path):
+    boxes, _ = files
+    from cityshade import tiles
+
+    straight = _run(boxes, tmp_path / "straight", tile_px=16)
+    calls = []
+    real = tiles.task_lit
+
+    def counting(*a, **kw):
+        calls.append(a[2])
+        return real(*a, **kw)
+
+    def stop_after(n):
+        def hook(done, total, unit):
+            if done >= n:
+                raise Stop
+        return hook
+
+    out = tmp_path / "cut"
+    with pytest.MonkeyPatch.context() as mp:
+        mp.setattr(tiles, "task_lit", counting)
+        with pytest.raises(Stop):
+            _run(boxes, out, tile_px=16, on_step=stop_after(5))
+        first = len(calls)
+        manifest = json.loads((out / B.MANIFEST_NAME).read_text())
+        assert manifest["status"] == "running" and manifest["tasks_done"] == 5
+        resumed = _run(boxes, out, tile_px=16)
+    total = straight.result.diagnostics["tiles"]["tasks"]
+    assert first == 5 and len(calls) == total  # finished tasks are not run again
+    assert resumed.result.hours.tobytes() == straight.result.hours.tobytes()
+    assert resumed.result.sample_hours.tobytes() == straight.result.sample_hours.tobytes()
+    # Another tiling is another run.
+    with pytest.raises(UsageError, match="differs in: tile_px"):
+        _run(boxes, out, tile_px=8)
+
+
+def test_monthly_sums_equal_runs_of_each_month(files, tmp_path):
+    boxes, _ = files
+    steps = _steps(date(2024, 1, 31), every_s=7200, days=2)
+    months = [s.start_utc.astimezone(timezone.utc).strftime("%Y-%m") for s in steps]
+    both = _run(boxes, tmp_path / "both", steps=steps, step_month=months)
+    whole = _run(boxes, tmp_path / "whole", steps=steps)
+    assert both.result.hours.tobytes() == whole.result.hours.tobytes()
+    jan = _run(boxes, tmp_path / "jan", steps=_steps(date(2024, 1, 31), every_s=7200))
+    feb = _run(boxes, tmp_path / "feb", steps=_steps(date(2024, 2, 1), every_s=7200))
+    from cityshade.imageio import read_exr
+
+    for label, single in (("2024-01", jan), ("2024-02", feb)):
+        got = read_exr(tmp_path / "both" / "monthly" / f"sun_hours_{label}.exr")[0]
+        assert got["sun_hours"].tobytes() == single.result.hours.tobytes()
+        assert (tmp_path / "both" / "monthly" / f"sun_hours_{label}.tif").exists()
+        csv = (tmp_path / "both" / "monthly" / f"surfaces_{label}.csv").read_bytes()
+        assert csv == (tmp_path / ("jan" if label.endswith("1") else "feb") /
+                       "surfaces.csv").read_bytes()
+
+
+def test_cog_has_geokeys_tiles_and_the_values(tmp_path):
+    rasterio = pytest.importorskip("rasterio")
+    from cityshade.imageio import write_cog
+
+    hours = np.arange(600 * 700, dtype=np.float32).reshape(600, 700) / 7.0
+    hours[0, 0] = np.nan
+    gt = (690_000.0, 0.5, 0.0, 5_336_000.0, 0.0, -0.5)
+    write_cog(tmp_path / "h.tif", hours, gt, epsg=25832, nodata=float("nan"),
+              attributes={"cityshade:units": "hours"})
+    with rasterio.open(tmp_path / "h.tif") as ds:
+        assert ds.crs.to_epsg() == 25832
+        assert ds.transform.to_gdal() == gt
+        assert ds.tags(ns="IMAGE_STRUCTURE")["LAYOUT"] == "COG"
+        assert ds.block_shapes[0] == (512, 512) and ds.overviews(1) == [2]
+        assert ds.tags()["cityshade_units"] == "hours"
+        assert ds.read(1).tobytes() == hours.tobytes()
+
+
+def test_year_of_suns_at_once_equals_each_instant():
+    """The vectorised SPA of a whole run gives what one instant at a time gives, exactly."""
+    from cityshade.citygml.crs import parse_srs_name
+    from cityshade.sun import sun_from_instant, suns_from_instants
+
+    crs = parse_srs_name("EPSG:25832")
+    origin = np.array([X0, Y0, Z0])
+    steps = B.plan_steps(date(2024, 1, 1), 0, 86_400, 3600, "Europe/Berlin",
+                         to_date=date(2024, 12, 31), every_day=7)
+    instants = [s.centre_utc for s in steps]
+    suns = suns_from_instants(instants, crs, origin)
+    for i in range(0, len(instants), 97):
+        assert sun_from_instant(instants[i], crs, origin).metadata() == suns[i].metadata()
+
+
+def test_local_cluster_of_two_workers_equals_local_run(files, tmp_path):
+    pytest.importorskip("dask.distributed")
+    _, sample = files
+    steps = _steps(every_s=10_800)
+    plain = _run(sample, tmp_path / "plain", steps=steps)
+    dask = _run(sample, tmp_path / "dask", steps=steps, tile_px=64, scheduler="local:2",
+                scene_path=sample)
+    tiles = dask.result.diagnostics["tiles"]
+    assert tiles["workers"] == 2 and tiles["tiles"] > 2
+    assert plain.result.hours.tobytes() == dask.result.hours.tobytes()
+    assert plain.result.sample_hours.tobytes() == dask.result.sample_hours.tobytes()
+    assert not (tmp_path / "dask" / "receivers.npy").exists()
+    assert dask.manifest["tasks_done"] == tiles["tasks"]
+
+
+def test_cli_tile_and_scheduler_options(files, tmp_path):
+    from cityshade.cli.main import cli
+
+    boxes, _ = files
+    base = ["batch", str(boxes), "--date", "2024-06-21", "--from", "06:00", "--to", "18:00",
+            "--every", "3h", "--tz", "Europe/Berlin", "--camera", "map", "--pixel-size", "4"]
+    runner = CliRunner()
+
+    def fails(args, text):
+        res = runner.invoke(cli, base + args + ["-o", str(tmp_path / "x")])
+        assert res.exit_code == 2, res.output
+        lines = [ln for ln in res.output.splitlines() if ln.strip()]
+        assert len(lines) == 1 and text in lines[0], res.output
+        assert not (tmp_path / "x").exists()
+
+    fails(["--tile-px", "0"], "--tile-px must be >= 1")
+    fails(["--scheduler", "lokal:2"], "--scheduler is local")
+    fails(["--scheduler", "local:zwei"], "number of workers")
+    fails(["--tile-px", "8", "--frames"], "--frames cannot be combined")
+    fails(["--tile-px", "8", "--shadows", "pcf"], "exact technique")
+    ok = runner.invoke(cli, base + ["--tile-px", "8", "--monthly", "-o", str(tmp_path / "ok")])
+    assert ok.exit_code == 0, ok.output
+    assert (tmp_path / "ok" / "monthly" / "sun_hours_2024-06.tif").exists()
+    assert (tmp_path / "ok" / "sun_hours.tif").exists()
