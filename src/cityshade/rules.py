@@ -378,8 +378,9 @@ def measures_from(rule: Rule, comp) -> tuple[Measures, Measures]:
         out = []
         for res in (comp.before, comp.after):
             st = res.stretches
-            out.append(Measures(res.hours.reshape(-1)[keep].astype(np.float64),
-                                st.pixels.longest_h[keep], st.pixels.qualified_h[keep],
+            total = res.hours.reshape(-1)[keep].astype(np.float64)
+            out.append(Measures(total, st.pixels.longest_h[keep],
+                                st.pixels.qualified_h[keep] if rule.min_stretch_h > 0 else total,
                                 np.full(int(keep.sum()), px_area)))
         return out[0], out[1]
     if rule.receivers == "openings":
@@ -391,8 +392,10 @@ def measures_from(rule: Rule, comp) -> tuple[Measures, Measures]:
         out = []
         for tag in ("before", "after"):
             total = o[f"ref_{tag}_h"] if use_ref else o[f"{tag}_h"]
-            out.append(Measures(total[keep], o[f"ref_longest_{tag}_h"][keep],
-                                o[f"ref_qualified_{tag}_h"][keep], o["area_m2"][keep], labels))
+            stretches = o[f"ref_qualified_{tag}_h"] if rule.min_stretch_h > 0 else \
+                o[f"ref_{tag}_h"]
+            out.append(Measures(total[keep], o[f"ref_longest_{tag}_h"][keep], stretches[keep],
+                                o["area_m2"][keep], labels))
         return out[0], out[1]
     # Surfaces: per polygon, area-weighted means; longest = the longest of its samples.
     from cityshade.compare import polygon_longest
@@ -404,7 +407,8 @@ def measures_from(rule: Rule, comp) -> tuple[Measures, Measures]:
     area = np.asarray(comp.scene_before.poly_area_m2)[keep]
     out = []
     for tag, res in (("before", comp.before), ("after", comp.after)):
-        q = polygon_means(comp.samples, res.stretches.samples.qualified_h)
+        q = polygon_means(comp.samples, res.stretches.samples.qualified_h) \
+            if rule.min_stretch_h > 0 else res.polygon_hours
         out.append(Measures(res.polygon_hours[keep], polygon_longest(comp, tag)[keep],
                             q[keep], area, labels))
     return out[0], out[1]

@@ -176,12 +176,21 @@ class Stretches:
 
     # --- checkpoint: the running arrays and the flags still needed by later steps ------------
 
+    def _parts(self) -> tuple[str, ...]:
+        # With no minimum every stretch counts: the qualified hours are the total hours, which
+        # the run keeps anyway, so they are not saved (the state is rewritten after every unit).
+        if self.min_stretch_h > 0.0:
+            return ("current_h", "longest_h", "qualified_h")
+        return ("current_h", "longest_h")
+
     def state(self) -> dict[str, np.ndarray]:
+        """The arrays a resumed run needs (:meth:`restore`). Without a minimum stretch the
+        qualified hours are left out: they equal the total hours, and after a resume
+        :attr:`_Track.qualified_h` holds only the hours since."""
         out = {"cursor": np.array(self.cursor, np.int64)}
         for name, track in (("px", self.pixels), ("sm", self.samples)):
-            out[f"{name}_current_h"] = track.current_h
-            out[f"{name}_longest_h"] = track.longest_h
-            out[f"{name}_qualified_h"] = track.qualified_h
+            for part in self._parts():
+                out[f"{name}_{part}"] = getattr(track, part)
         for k, (px, sm) in self._pending.items():
             if px is not None:
                 out[f"pending_px_{k}"] = px
@@ -192,7 +201,7 @@ class Stretches:
     def restore(self, state: dict[str, np.ndarray]) -> None:
         try:
             for name, track in (("px", self.pixels), ("sm", self.samples)):
-                for part in ("current_h", "longest_h", "qualified_h"):
+                for part in self._parts():
                     value = np.array(state[f"{name}_{part}"], np.float64)
                     if value.shape != getattr(track, part).shape:
                         raise ValueError(part)
