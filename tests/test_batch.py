@@ -404,11 +404,47 @@ def test_cli_resumes_after_interruption(files, tmp_path, monkeypatch):
             raise KeyboardInterrupt
 
     monkeypatch.setattr(B.Checkpoint, "save", save_then_interrupt)
+    monkeypatch.setattr(B, "CHECKPOINT_EVERY_S", 0.0)  # a save after every position
     cut = _run("batch", scene_path, *ARGS, "-o", out)
     assert cut.exit_code == 130 and "cityshade: interrupted" in cut.output
     manifest = json.loads((out / "manifest.json").read_text())
     assert manifest["status"] == "running" and manifest.get("sun_positions_done") in (4, 5)
     monkeypatch.setattr(B.Checkpoint, "save", real_save)
+    resumed = _run("batch", scene_path, *ARGS, "-o", out, "-v")
+    assert resumed.exit_code == 0 and "5 taken from the saved state" in resumed.output
+    a = read_exr(straight / "sun_hours.exr")[0]["sun_hours"]
+    b = read_exr(out / "sun_hours.exr")[0]["sun_hours"]
+    assert a.tobytes() == b.tobytes()
+
+
+def test_interruption_between_saves_keeps_every_finished_position(files, tmp_path,
+                                                                  monkeypatch):
+    # With the default interval nothing is saved during this short run until the interruption
+    # (inside the 6th position's shadows); the state must then hold the 5 finished positions.
+    from cityshade.imageio import read_exr
+
+    scene_path, _ = files
+    straight = tmp_path / "straight"
+    assert _run("batch", scene_path, *ARGS, "-o", straight).exit_code == 0
+    out = tmp_path / "interrupted"
+    saves = []
+    real_save, real_lit = B.Checkpoint.save, B._PixelRays.lit
+    calls = iter(range(1000))
+
+    def counting_save(self, done, *a):
+        saves.append(done)
+        real_save(self, done, *a)
+
+    def lit_then_interrupt(self, *a):
+        if next(calls) == 5:
+            raise KeyboardInterrupt
+        return real_lit(self, *a)
+
+    monkeypatch.setattr(B.Checkpoint, "save", counting_save)
+    monkeypatch.setattr(B._PixelRays, "lit", lit_then_interrupt)
+    cut = _run("batch", scene_path, *ARGS, "-o", out)
+    assert cut.exit_code == 130 and saves == [5]
+    monkeypatch.setattr(B._PixelRays, "lit", real_lit)
     resumed = _run("batch", scene_path, *ARGS, "-o", out, "-v")
     assert resumed.exit_code == 0 and "5 taken from the saved state" in resumed.output
     a = read_exr(straight / "sun_hours.exr")[0]["sun_hours"]

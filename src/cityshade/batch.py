@@ -243,8 +243,12 @@ def plan_units(suns: Sequence, weights_h: Sequence[float]) -> tuple[list[Unit], 
 
 # --- checkpoint ---------------------------------------------------------------------------------
 
+#: Seconds between two saves of a batch's state (and at its end and when it stops).
+CHECKPOINT_EVERY_S = 10.0
+
+
 class Checkpoint:
-    """Running sums of an unfinished run, saved atomically after every unit.
+    """Running sums of an unfinished run, saved atomically (see ``CHECKPOINT_EVERY_S``).
 
     Parameters
     ----------
@@ -540,15 +544,16 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
     samples_per_m2 : float, optional
         With a value, also compute per-surface sun-hours from sample points at this density.
     checkpoint : Checkpoint, optional
-        Resume from and save to this state after every sun position.
+        Resume from and save to this state: every ``CHECKPOINT_EVERY_S`` seconds, after the
+        last sun position, and when the run stops (an exception, e.g. KeyboardInterrupt).
     reuse_rays : bool
         For ``izb`` and ``raytrace``: the oriented normals and shadow-ray origins of the
         pixels do not depend on the sun, so they are computed once with the camera pass and
         each step only selects the pixels facing the sun and traces them. The result is
         identical to running the technique per step (``False``), which is tested.
     on_step : callable(units_done, units_total, unit), optional
-        Called after each position is accumulated and saved (progress; an exception raised
-        here, e.g. KeyboardInterrupt, stops the run with the state saved).
+        Called after each position is accumulated (progress; an exception raised here, e.g.
+        KeyboardInterrupt, stops the run with the state saved).
     on_frame : callable(unit, lit, valid), optional
         Receives each position's per-pixel lit fraction (for ``--frames``).
     samples : cityshade.surfaces.SurfaceSamples, optional
@@ -629,36 +634,61 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
             stretches.restore(checkpoint.extra)
     resumed = done
 
-    for k in range(done, len(units)):
-        unit = units[k]
-        lit = slit = None
-        if camera is not None:
-            t0 = time.perf_counter()
-            if rays is not None:
-                lit = rays.lit(scene, unit.sun, float(t_days))
-            else:
-                lit = shadow_pass(cp, unit.sun, tech, settings).lit
-            pixel_sum += unit.weight_h * lit.astype(np.float64)
-            timings["shadow_s"] += time.perf_counter() - t0
-            if on_frame is not None:
-                on_frame(unit, lit, valid)
-        if samples is not None:
-            from cityshade.surfaces import samples_lit
+    # The state is saved every CHECKPOINT_EVERY_S, after the last position and when the run
+    # stops (Ctrl-C, an error): saving after every position cost more than the shadows once
+    # the sunlit stretches joined the state (2.1 M px: 54 s of 302 s on the 1M city).
+    accumulated = done  # positions whose sums (and stretches) are complete
+    saved = done
+    last_save = time.perf_counter()
 
-            t0 = time.perf_counter()
-            slit = samples_lit(scene, samples, unit.sun, float(t_days),
-                               engine="raytrace" if technique == "raytrace" else "izb")
-            sample_sum += unit.weight_h * slit.astype(np.float64)
-            timings["surface_rays_s"] += time.perf_counter() - t0
-        if stretches is not None:
-            stretches.add(k, lit, slit)
-        if checkpoint is not None:
-            t0 = time.perf_counter()
-            checkpoint.save(k + 1, pixel_sum, sample_sum,
-                            stretches.state() if stretches is not None else None)
-            timings["checkpoint_s"] += time.perf_counter() - t0
-        if on_step is not None:
-            on_step(k + 1, len(units), unit)
+    def save() -> None:
+        nonlocal saved, last_save
+        t0 = time.perf_counter()
+        checkpoint.save(accumulated, pixel_sum, sample_sum,
+                        stretches.state() if stretches is not None else None)
+        saved, last_save = accumulated, time.perf_counter()
+        timings["checkpoint_s"] += last_save - t0
+
+    consistent = True
+    try:
+        for k in range(done, len(units)):
+            unit = units[k]
+            lit = slit = None
+            if camera is not None:
+                t0 = time.perf_counter()
+                if rays is not None:
+                    lit = rays.lit(scene, unit.sun, float(t_days))
+                else:
+                    lit = shadow_pass(cp, unit.sun, tech, settings).lit
+                timings["shadow_s"] += time.perf_counter() - t0
+            if samples is not None:
+                from cityshade.surfaces import samples_lit
+
+                t0 = time.perf_counter()
+                slit = samples_lit(scene, samples, unit.sun, float(t_days),
+                                   engine="raytrace" if technique == "raytrace" else "izb")
+                timings["surface_rays_s"] += time.perf_counter() - t0
+            # The sums change together: an interruption inside this block saves nothing.
+            consistent = False
+            if lit is not None:
+                pixel_sum += unit.weight_h * lit.astype(np.float64)
+            if slit is not None:
+                sample_sum += unit.weight_h * slit.astype(np.float64)
+            if stretches is not None:
+                stretches.add(k, lit, slit)
+            accumulated = k + 1
+            consistent = True
+            if lit is not None and on_frame is not None:
+                on_frame(unit, lit, valid)
+            if checkpoint is not None and (accumulated == len(units) or
+                                           time.perf_counter() - last_save >= CHECKPOINT_EVERY_S):
+                save()
+            if on_step is not None:
+                on_step(k + 1, len(units), unit)
+    except BaseException:
+        if checkpoint is not None and consistent and accumulated > saved:
+            save()
+        raise
 
     if stretches is not None:
         stretches.finish()

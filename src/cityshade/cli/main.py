@@ -64,6 +64,8 @@ def cli() -> None:
       cityshade render city.cityshade --date 1850 --sun-azimuth 135 --sun-elevation 30 -o a.exr
       cityshade batch city.cityshade --date 2024-06-21 --from 05:00 --to 21:00 --every 10min \\
           --tz Europe/Berlin --camera map -o sunhours/
+      cityshade compare city.cityshade --with proposal.gml --date 2025-03-21 \\
+          --tz Europe/London --rules bre209 -o planning/
       cityshade evaluate city.cityshade --shadows all -o report/
     """
 
