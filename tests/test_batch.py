@@ -389,9 +389,18 @@ def _city_days(text):
     return parse_user_date(text).city_days
 
 
-def test_cli_resumes_after_interruption(files, tmp_path, monkeypatch):
+def _resume_equals_straight(scene_path, straight, out):
+    """Resume the run in ``out`` (5 positions saved) and compare it with ``straight``."""
     from cityshade.imageio import read_exr
 
+    resumed = _run("batch", scene_path, *ARGS, "-o", out, "-v")
+    assert resumed.exit_code == 0 and "5 taken from the saved state" in resumed.output
+    a = read_exr(straight / "sun_hours.exr")[0]["sun_hours"]
+    b = read_exr(out / "sun_hours.exr")[0]["sun_hours"]
+    assert a.tobytes() == b.tobytes()
+
+
+def test_cli_resumes_after_interruption(files, tmp_path, monkeypatch):
     scene_path, _ = files
     straight = tmp_path / "straight"
     assert _run("batch", scene_path, *ARGS, "-o", straight).exit_code == 0
@@ -410,11 +419,7 @@ def test_cli_resumes_after_interruption(files, tmp_path, monkeypatch):
     manifest = json.loads((out / "manifest.json").read_text())
     assert manifest["status"] == "running" and manifest.get("sun_positions_done") in (4, 5)
     monkeypatch.setattr(B.Checkpoint, "save", real_save)
-    resumed = _run("batch", scene_path, *ARGS, "-o", out, "-v")
-    assert resumed.exit_code == 0 and "5 taken from the saved state" in resumed.output
-    a = read_exr(straight / "sun_hours.exr")[0]["sun_hours"]
-    b = read_exr(out / "sun_hours.exr")[0]["sun_hours"]
-    assert a.tobytes() == b.tobytes()
+    _resume_equals_straight(scene_path, straight, out)
 
 
 def test_interruption_between_saves_keeps_every_finished_position(files, tmp_path,
@@ -445,11 +450,7 @@ def test_interruption_between_saves_keeps_every_finished_position(files, tmp_pat
     cut = _run("batch", scene_path, *ARGS, "-o", out)
     assert cut.exit_code == 130 and saves == [5]
     monkeypatch.setattr(B._PixelRays, "lit", real_lit)
-    resumed = _run("batch", scene_path, *ARGS, "-o", out, "-v")
-    assert resumed.exit_code == 0 and "5 taken from the saved state" in resumed.output
-    a = read_exr(straight / "sun_hours.exr")[0]["sun_hours"]
-    b = read_exr(out / "sun_hours.exr")[0]["sun_hours"]
-    assert a.tobytes() == b.tobytes()
+    _resume_equals_straight(scene_path, straight, out)
 
 
 def test_cli_batch_failures(files, tmp_path):
