@@ -110,6 +110,21 @@ class DaskExecutor:
         self.scene_sha = scene_sha
         self.threads = threads_per_worker
         self.workers = 0
+        self.client = self.cluster = None
+
+    def connect(self) -> None:
+        """Start the LocalCluster or reach the scheduler (before any work, so that an
+        unreachable cluster fails at once)."""
+        if self.client is None:
+            self.client, self.cluster = self._client()
+            self.workers = len(self.client.scheduler_info().get("workers", {}))
+
+    def close(self) -> None:
+        client, cluster, self.client, self.cluster = self.client, self.cluster, None, None
+        if client is not None:
+            client.close()
+        if cluster is not None:
+            cluster.close()
 
     def _client(self):
         try:
@@ -149,13 +164,12 @@ class DaskExecutor:
         recv = Path(workdir) / "receivers.npy"
         with atomic_path(recv, keep_suffix=True, what="the receivers") as tmp:
             np.save(tmp, plan.data)
-        client = cluster = None
         try:
-            client, cluster = self._client()
+            self.connect()
+            client = self.client
             from dask.distributed import as_completed
             from distributed.scheduler import KilledWorker
 
-            self.workers = len(client.scheduler_info().get("workers", {}))
             futures = {}
             for t, lo, hi in tasks:
                 a, b = int(plan.start[t]), int(plan.start[t + 1])
@@ -177,10 +191,7 @@ class DaskExecutor:
                 for fut in futures:
                     fut.cancel()
         finally:
-            if client is not None:
-                client.close()
-            if cluster is not None:
-                cluster.close()
+            self.close()
             recv.unlink(missing_ok=True)
 
 
@@ -216,11 +227,17 @@ def run_tiled(scene, camera, instants, t_days: float, *, weights_h, suns, units,
         if on_step is not None:
             on_step(done, total, None)
 
-    result, run = tiled_sun_hours(scene, camera, instants, t_days, weights_h=weights_h,
-                                  suns=suns, technique=technique, ground=ground,
-                                  samples_per_m2=samples_per_m2, checkpoint=checkpoint,
-                                  tile_px=tile_px, step_month=step_month, workdir=workdir,
-                                  executor=executor, on_task=on_task)
+    if hasattr(executor, "connect"):
+        executor.connect()
+    try:
+        result, run = tiled_sun_hours(scene, camera, instants, t_days, weights_h=weights_h,
+                                      suns=suns, technique=technique, ground=ground,
+                                      samples_per_m2=samples_per_m2, checkpoint=checkpoint,
+                                      tile_px=tile_px, step_month=step_month,
+                                      workdir=workdir, executor=executor, on_task=on_task)
+    finally:
+        if hasattr(executor, "close"):
+            executor.close()
     if executor is not None:
         result.diagnostics["tiles"]["scheduler"] = scheduler
         result.diagnostics["tiles"]["workers"] = getattr(executor, "workers", 0)
