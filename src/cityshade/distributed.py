@@ -51,6 +51,12 @@ def parse_scheduler(spec: str) -> tuple[str, int | str]:
     raise UsageError(f"--scheduler is local, local:N or tcp://HOST:PORT, not {spec!r}")
 
 
+def _restore_environ(saved: dict[str, str]) -> None:
+    for key in [k for k in os.environ if k not in saved]:
+        del os.environ[key]
+    os.environ.update(saved)
+
+
 # --- worker side ------------------------------------------------------------------------------
 
 #: What a worker process has opened: {(path, size, mtime_ns): object}.
@@ -111,6 +117,7 @@ class DaskExecutor:
         self.threads = threads_per_worker
         self.workers = 0
         self.client = self.cluster = None
+        self._environ: dict[str, str] = {}
 
     def connect(self) -> None:
         """Start the LocalCluster or reach the scheduler (before any work, so that an
@@ -125,6 +132,7 @@ class DaskExecutor:
             client.close()
         if cluster is not None:
             cluster.close()
+            _restore_environ(self._environ)
 
     def _client(self):
         try:
@@ -141,10 +149,16 @@ class DaskExecutor:
             # Dask's default environment also sets MALLOC_TRIM_THRESHOLD_=64 KiB, which makes
             # glibc map and zero every large temporary afresh: the light-space engine's tasks
             # ran 1.3-1.8x slower in a worker than in the driver with it.
-            with dask.config.set({"distributed.nanny.pre-spawn-environ": WORKER_ENVIRON | {
-                    "NUMBA_NUM_THREADS": str(threads)}}):
-                cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                       dashboard_address=None, silence_logs=logging.ERROR)
+            # The nanny writes that environment into this process's os.environ before each
+            # spawn and leaves it there; this process's own (Numba's thread count) is put back.
+            self._environ = dict(os.environ)
+            try:
+                with dask.config.set({"distributed.nanny.pre-spawn-environ": WORKER_ENVIRON | {
+                        "NUMBA_NUM_THREADS": str(threads)}}):
+                    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                                           dashboard_address=None, silence_logs=logging.ERROR)
+            finally:
+                _restore_environ(self._environ)
             return Client(cluster), cluster
         try:
             client = Client(self.target, timeout="20s")
