@@ -2,6 +2,7 @@
 from __future__ import annotations
 
 import json
+import os
 from datetime import date, datetime, timezone
 
 import numpy as np
@@ -199,6 +200,7 @@ def test_local_cluster_of_two_workers_equals_local_run(files, tmp_path):
     _, sample = files
     steps = _steps(every_s=10_800)
     plain = _run(sample, tmp_path / "plain", steps=steps)
+    environ_before = dict(os.environ)
     dask = _run(sample, tmp_path / "dask", steps=steps, tile_px=64, scheduler="local:2",
                 scene_path=sample)
     tiles = dask.result.diagnostics["tiles"]
@@ -207,6 +209,9 @@ def test_local_cluster_of_two_workers_equals_local_run(files, tmp_path):
     assert plain.result.sample_hours.tobytes() == dask.result.sample_hours.tobytes()
     assert not (tmp_path / "dask" / "receivers.npy").exists()
     assert dask.manifest["tasks_done"] == tiles["tasks"]
+    # The workers' environment does not stay in this process (Numba's threads would clash).
+    keys = ("NUMBA_NUM_THREADS", "OMP_NUM_THREADS", "PYTHONHASHSEED", "MALLOC_TRIM_THRESHOLD_")
+    assert {k: os.environ.get(k) for k in keys} == {k: environ_before.get(k) for k in keys}
 
 
 def test_cli_tile_and_scheduler_options(files, tmp_path):

@@ -51,6 +51,12 @@ def parse_scheduler(spec: str) -> tuple[str, int | str]:
     raise UsageError(f"--scheduler is local, local:N or tcp://HOST:PORT, not {spec!r}")
 
 
+def _restore_environ(saved: dict[str, str]) -> None:
+    for key in [k for k in os.environ if k not in saved]:
+        del os.environ[key]
+    os.environ.update(saved)
+
+
 # --- worker side ------------------------------------------------------------------------------
 
 #: What a worker process has opened: {(path, size, mtime_ns): object}.
@@ -110,6 +116,23 @@ class DaskExecutor:
         self.scene_sha = scene_sha
         self.threads = threads_per_worker
         self.workers = 0
+        self.client = self.cluster = None
+        self._environ: dict[str, str] = {}
+
+    def connect(self) -> None:
+        """Start the LocalCluster or reach the scheduler (before any work, so that an
+        unreachable cluster fails at once)."""
+        if self.client is None:
+            self.client, self.cluster = self._client()
+            self.workers = len(self.client.scheduler_info().get("workers", {}))
+
+    def close(self) -> None:
+        client, cluster, self.client, self.cluster = self.client, self.cluster, None, None
+        if client is not None:
+            client.close()
+        if cluster is not None:
+            cluster.close()
+            _restore_environ(self._environ)
 
     def _client(self):
         try:
@@ -126,10 +149,16 @@ class DaskExecutor:
             # Dask's default environment also sets MALLOC_TRIM_THRESHOLD_=64 KiB, which makes
             # glibc map and zero every large temporary afresh: the light-space engine's tasks
             # ran 1.3-1.8x slower in a worker than in the driver with it.
-            with dask.config.set({"distributed.nanny.pre-spawn-environ": WORKER_ENVIRON | {
-                    "NUMBA_NUM_THREADS": str(threads)}}):
-                cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                       dashboard_address=None, silence_logs=logging.ERROR)
+            # The nanny writes that environment into this process's os.environ before each
+            # spawn and leaves it there; this process's own (Numba's thread count) is put back.
+            self._environ = dict(os.environ)
+            try:
+                with dask.config.set({"distributed.nanny.pre-spawn-environ": WORKER_ENVIRON | {
+                        "NUMBA_NUM_THREADS": str(threads)}}):
+                    cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
+                                           dashboard_address=None, silence_logs=logging.ERROR)
+            finally:
+                _restore_environ(self._environ)
             return Client(cluster), cluster
         try:
             client = Client(self.target, timeout="20s")
@@ -149,13 +178,12 @@ class DaskExecutor:
         recv = Path(workdir) / "receivers.npy"
         with atomic_path(recv, keep_suffix=True, what="the receivers") as tmp:
             np.save(tmp, plan.data)
-        client = cluster = None
         try:
-            client, cluster = self._client()
+            self.connect()
+            client = self.client
             from dask.distributed import as_completed
             from distributed.scheduler import KilledWorker
 
-            self.workers = len(client.scheduler_info().get("workers", {}))
             futures = {}
             for t, lo, hi in tasks:
                 a, b = int(plan.start[t]), int(plan.start[t + 1])
@@ -177,10 +205,7 @@ class DaskExecutor:
                 for fut in futures:
                     fut.cancel()
         finally:
-            if client is not None:
-                client.close()
-            if cluster is not None:
-                cluster.close()
+            self.close()
             recv.unlink(missing_ok=True)
 
 
@@ -216,11 +241,17 @@ def run_tiled(scene, camera, instants, t_days: float, *, weights_h, suns, units,
         if on_step is not None:
             on_step(done, total, None)
 
-    result, run = tiled_sun_hours(scene, camera, instants, t_days, weights_h=weights_h,
-                                  suns=suns, technique=technique, ground=ground,
-                                  samples_per_m2=samples_per_m2, checkpoint=checkpoint,
-                                  tile_px=tile_px, step_month=step_month, workdir=workdir,
-                                  executor=executor, on_task=on_task)
+    if hasattr(executor, "connect"):
+        executor.connect()
+    try:
+        result, run = tiled_sun_hours(scene, camera, instants, t_days, weights_h=weights_h,
+                                      suns=suns, technique=technique, ground=ground,
+                                      samples_per_m2=samples_per_m2, checkpoint=checkpoint,
+                                      tile_px=tile_px, step_month=step_month,
+                                      workdir=workdir, executor=executor, on_task=on_task)
+    finally:
+        if hasattr(executor, "close"):
+            executor.close()
     if executor is not None:
         result.diagnostics["tiles"]["scheduler"] = scheduler
         result.diagnostics["tiles"]["workers"] = getattr(executor, "workers", 0)
