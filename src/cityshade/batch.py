@@ -1008,6 +1008,8 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
 
     from cityshade.config import Settings
     from cityshade.sun import suns_from_instants
+    from types import SimpleNamespace
+
     from cityshade.pipeline import check_frame_memory
     from cityshade.util import check_outputs, output_group
 
@@ -1027,7 +1029,11 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
                                                                         technique=None))}
     key = params_key(params)
     if camera is not None:
-        check_frame_memory(camera, technique=technique, batch=True)  # before any work
+        # Before any work; a tiled run holds one tile's frame at a time (its sums are small).
+        view = camera if tile_px is None else SimpleNamespace(
+            width_px=min(tile_px, camera.width_px), height_px=min(tile_px, camera.height_px),
+            kind=camera.kind)
+        check_frame_memory(view, technique=technique, batch=True)
     check_outputs(("-o", outdir, None))  # a folder that can be written, before any work
     old = read_manifest(outdir)
     state = Checkpoint(outdir / STATE_NAME, key)

@@ -57,7 +57,6 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     from cityshade.util import check_outputs
 
     t_start = time.perf_counter()
-    check_outputs(("-o", outdir, None))  # before any work
     technique = settings.shadows.technique
     get_technique(technique)  # unknown names fail before any work
     if samples_per_m2 is not None:
@@ -89,6 +88,7 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
             technique not in ("izb", "raytrace"):
         raise UsageError(f"--tile-px, --scheduler and --monthly need an exact technique "
                          f"(izb, raytrace), not {technique!r}")
+    check_outputs(("-o", outdir, None))  # once the options are valid, before any work
     zone = solar_zone_of_file(tz, file)
     steps = B.plan_steps(first_day, B.parse_clock_s(from_text), B.parse_clock_s(to_text),
                          every_s, zone, days=days, to_date=to_date, every_day=every_day)
