@@ -47,7 +47,7 @@ def _check(rc, err, folder):
         # Warnings and the progress lines of a non-terminal stderr may precede the last line.
         lines = [line for line in err.splitlines()
                  if line.strip() and not line.startswith("cityshade: warning:")
-                 and not re.fullmatch(r"cityshade: .* \d+/\d+ \(\d+ %\).*", line)]
+                 and not re.fullmatch(r"cityshade: .* \d+/\d+ \(\d+ %(, ETA [\d:]+)?\).*", line)]
         assert lines == ["cityshade: interrupted"], err
     return rc == 130
 
