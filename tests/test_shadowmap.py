@@ -412,7 +412,10 @@ def test_lookup_receivers_match_the_step_by_step_twins(sample, warp):
         assert view.is_projective == (warp != "uniform") and len(u) == len(points) > 1000
         np.testing.assert_allclose(u, u0, rtol=0, atol=1e-9)
         np.testing.assert_allclose(v, v0, rtol=0, atol=1e-9)
-        np.testing.assert_allclose(z, z0, rtol=0, atol=1e-12)
+        # The projective receiver-plane bias is a 1 cm finite difference: it turns the paths'
+        # last-bit differences (dot-product order) into up to ~1e-9 of NDC depth, still below
+        # the float32 depth map's resolution (6e-8 near 1) that the lookup compares with.
+        np.testing.assert_allclose(z, z0, rtol=0, atol=1e-8 if view.is_projective else 1e-12)
 
 
 def test_light_box_matches_numpy():
