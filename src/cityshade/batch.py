@@ -435,7 +435,8 @@ class _PixelRays:
         return lit
 
 
-def _weights(instants: list, weights_h) -> np.ndarray:
+def step_weights(instants: list, weights_h) -> np.ndarray:
+    """Hours each instant stands for: ``weights_h`` checked, or the even spacing."""
     if weights_h is not None:
         w = np.asarray(weights_h, dtype=np.float64)
         if w.shape != (len(instants),):
@@ -590,7 +591,7 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
         raise UsageError("t_days must be a number of days, not NaN")
     if camera is None and samples_per_m2 is None and samples is None:
         raise UsageError("nothing to compute: give a camera, samples_per_m2, or both")
-    weights = _weights(instants, weights_h)
+    weights = step_weights(instants, weights_h)
     tech = get_technique(technique) if camera is not None else None
     timings = dict.fromkeys(("suns_s", "camera_s", "samples_s", "shadow_s", "surface_rays_s",
                              "checkpoint_s"), 0.0)

@@ -80,7 +80,7 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
     del raw
     release_freed_memory()
     timings["triangulate_s"] = time.perf_counter() - t1
-    scene.kdtree = _build_tree(scene, settings, progress, timings)
+    scene.kdtree = build_tree(scene, settings, progress, timings)
     scene.report["timings"] = {k: round(v, 4) for k, v in timings.items()}
     return scene
 
@@ -185,12 +185,13 @@ def build_scene_from_files(sources: list[Path], settings: Settings | None = None
     scene = merger.finish()
     release_freed_memory()
     timings["merge_s"] = time.perf_counter() - t
-    scene.kdtree = _build_tree(scene, settings, progress, timings)
+    scene.kdtree = build_tree(scene, settings, progress, timings)
     scene.report["timings"] = {k: round(v, 4) for k, v in timings.items()}
     return scene
 
 
-def _build_tree(scene: Scene, settings: Settings, progress, timings: dict):
+def build_tree(scene: Scene, settings: Settings, progress, timings: dict):
+    """The scene's kd-tree with the build settings (progress and stage timings filled)."""
     from cityshade.accel.kdtree_build import build_kdtree
 
     if progress:

@@ -78,7 +78,7 @@ def merge_scenes(existing, proposal, settings=None):
     """
     import dataclasses
 
-    from cityshade.build import _build_tree
+    from cityshade.build import build_tree
     from cityshade.config import Settings
 
     ea, pa = existing.crs.horizontal_epsg, proposal.crs.horizontal_epsg
@@ -131,7 +131,7 @@ def merge_scenes(existing, proposal, settings=None):
                     for oid, polys in (proposal.report or {}).get("openings", [])],
                 "proposal_objects": [no, no + len(proposal.obj_ids)]},
         kdtree=None, header=dict(existing.header or {}))
-    scene.kdtree = _build_tree(scene, settings or Settings(), None, {})
+    scene.kdtree = build_tree(scene, settings or Settings(), None, {})
     return scene
 
 

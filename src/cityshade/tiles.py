@@ -321,7 +321,7 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
     -------
     (SunHours, TiledRun)
     """
-    from cityshade.batch import SunHours, _weights, plan_run, receivers_pass
+    from cityshade.batch import SunHours, step_weights, plan_run, receivers_pass
 
     if technique not in EXACT_ENGINES:
         raise UsageError(f"tiled and distributed batches need an exact technique "
@@ -335,7 +335,7 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
         raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
     t_start = time.perf_counter()
     instants = list(instants_utc)
-    weights = _weights(instants, weights_h)
+    weights = step_weights(instants, weights_h)
     suns = list(suns)
     timings = dict.fromkeys(("suns_s", "camera_s", "samples_s", "shadow_s", "accumulate_s",
                              "checkpoint_s"), 0.0)

@@ -70,8 +70,8 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     if (eye is None) != (target is None):
         raise UsageError("give both --eye and --target, or neither")
     parse_triple(eye, "--eye"), parse_triple(target, "--target"), parse_size(size)  # fail early
-    first_day = _day(date_text, "--date")
-    to_date = _day(to_date_text, "--to-date") if to_date_text else None
+    first_day = parse_day(date_text, "--date")
+    to_date = parse_day(to_date_text, "--to-date") if to_date_text else None
     every_s = B.parse_duration_s(every_text)
     from cityshade.cli.options import solar_zone_of_file
 
@@ -170,7 +170,8 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     click.echo(" ".join(str(p) for p in run.written))
 
 
-def _day(text: str, option: str):
+def parse_day(text: str, option: str):
+    """A calendar day from ``text`` (YYYY-MM-DD), or a one-line error naming ``option``."""
     import datetime as dt
 
     from cityshade.errors import UsageError

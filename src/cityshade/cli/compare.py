@@ -50,7 +50,7 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
     from cityshade import compare as C
     from cityshade import planreport, rules as R
     from cityshade.citygml.temporal import parse_user_date
-    from cityshade.cli.batch import _day
+    from cityshade.cli.batch import parse_day
     from cityshade.cli.options import solar_zone_of_scene, warn_lmt
     from cityshade.errors import UsageError
     from cityshade.scenefile import load_scene
@@ -79,8 +79,8 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
         if min_stretch_text.strip() not in ("0", "0min", "0s", "0h") else 0.0
     rules = [r for f in rule_files for r in R.load_rules(f)]
     area = _area(area_text)
-    first_day = _day(date_text, "--date")
-    to_date = _day(to_date_text, "--to-date") if to_date_text else None
+    first_day = parse_day(date_text, "--date")
+    to_date = parse_day(to_date_text, "--to-date") if to_date_text else None
     every_s = B.parse_duration_s(every_text)
     from_s, to_s = B.parse_clock_s(from_text), B.parse_clock_s(to_text)
     before = parse_user_date(before_text or first_day.isoformat())
