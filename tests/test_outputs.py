@@ -23,7 +23,8 @@ def _one_error_line(args) -> str:
     return lines[0][len("cityshade: error: "):]
 
 
-def test_batch_evaluate_and_render_refuse_a_bad_output_before_reading_the_model(tmp_path):
+def test_batch_evaluate_compare_and_render_refuse_a_bad_output_before_reading_the_model(
+        tmp_path):
     # The model file does not exist: a command that looked at it first would say so.
     model = tmp_path / "no_such.cityshade"
     blocker = tmp_path / "plain_file"
@@ -34,6 +35,8 @@ def test_batch_evaluate_and_render_refuse_a_bad_output_before_reading_the_model(
         (["batch", model, "--date", "2024-06-21", "--tz", "UTC", "-o", out],
          f"-o {out}: {blocker} is a file, not a folder"),
         (["evaluate", model, "-o", out], f"-o {out}: {blocker} is a file, not a folder"),
+        (["compare", model, "--before", "1850", "--after", "1990", "--date", "2024-03-21",
+          "--tz", "UTC", "-o", out], f"-o {out}: {blocker} is a file, not a folder"),
         (["evaluate", model, "--stress", "-o", out],
          f"-o {out}: {blocker} is a file, not a folder"),
         (["render", model, *sun, "-o", tmp_path / "a.exr", "--png", out / "a.png"],

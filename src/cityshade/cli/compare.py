@@ -56,7 +56,7 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
     from cityshade.scenefile import load_scene
     from cityshade.shadows import get_technique
     from cityshade.surfaces import SampleSettings
-    from cityshade.util import make_folder
+    from cityshade.util import check_outputs, output_group
 
     t_start = time.perf_counter()
     technique = settings.shadows.technique
@@ -86,6 +86,7 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
     before = parse_user_date(before_text or first_day.isoformat())
     after = parse_user_date(after_text) if after_text else before
 
+    check_outputs(("-o", outdir, None))  # once the options are valid, before any work
     scene = load_scene(file)
     steps = B.plan_steps(first_day, from_s, to_s, every_s, solar_zone_of_scene(tz, scene),
                          days=days, to_date=to_date, every_day=every_day)
@@ -93,7 +94,6 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
     scene_after = scene
     if proposal is not None:
         scene_after = C.merge_scenes(scene, _load_any(proposal, settings), settings)
-    make_folder(outdir)
     cam = make_camera(scene_after, camera, eye, target, fov, size, pixel_size, cameras_file)
     progress = _progress("sun positions (before, after)")
     comp = C.compare_states(
@@ -110,7 +110,6 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
             "cityshade:after": after_text or f"with {Path(proposal).name}",
             "cityshade:technique": technique, "cityshade:crs": scene.crs.name,
             "cityshade:steps": len(steps), "cityshade:step_s": every_s}
-    written = C.write_comparison(outdir, comp, meta)
     request = {"file": str(file), "before": before_text or first_day.isoformat(),
                "after": after_text, "with": str(proposal) if proposal else None,
                "date": first_day.isoformat(), "from": from_text, "to": to_text,
@@ -119,7 +118,9 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
                "technique": technique, "camera": camera, "pixel_size": pixel_size,
                "ground": ground, "min_stretch": min_stretch_text,
                "rules": list(rule_files)}
-    written += planreport.write_report(outdir, comp, verdicts, request, steps)
+    with output_group():  # the rasters, tables and report appear together, or none of them
+        written = C.write_comparison(outdir, comp, meta)
+        written += planreport.write_report(outdir, comp, verdicts, request, steps)
     for warning in comp.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
     for v in verdicts:
