@@ -686,10 +686,10 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
                 save()
             if on_step is not None:
                 on_step(k + 1, len(units), unit)
-    except BaseException:
+    finally:
+        # A run that stops (Ctrl-C, an error) keeps what it finished; a finished run has saved.
         if checkpoint is not None and consistent and accumulated > saved:
             save()
-        raise
 
     if stretches is not None:
         stretches.finish()
