@@ -316,3 +316,189 @@ def any_hit_dir(tree, box_lo, box_hi, ox, oy, oz, terms, tmin, tmax, t_days, cac
 def new_stack():
     """A traversal scratch stack for one thread: ``(node, t0, t1)`` of ``STACK_SIZE`` entries."""
     return np.empty(STACK_SIZE, np.int64), np.empty(STACK_SIZE), np.empty(STACK_SIZE)
+
+
+#: Rays of a shadow-ray packet (:func:`any_hit_packet`): lanes of one traversal, one
+#: AVX-512 vector of float64 (the lane loops have a fixed trip count and no branches).
+PACKET_RAYS = 8
+
+
+@njit(cache=True, inline="always")
+def new_packet_stack():
+    """Scratch of :func:`any_hit_packet` for one thread: the stack ``(node, lane mask, t0,
+    t1)`` of ``STACK_SIZE`` entries (``t0``/``t1`` one row of ``PACKET_RAYS`` lanes each) and
+    the lanes' origins and sheared origins ``(2, 3, PACKET_RAYS)``, their segment and tmax
+    ``(3, PACKET_RAYS)``."""
+    return (np.empty(STACK_SIZE, np.int64), np.empty(STACK_SIZE, np.int64),
+            np.empty((STACK_SIZE, PACKET_RAYS)), np.empty((STACK_SIZE, PACKET_RAYS)),
+            np.zeros((2, 3, PACKET_RAYS)), np.zeros((3, PACKET_RAYS)))
+
+
+@njit(cache=True, error_model="numpy")
+def any_hit_packet(tree, box_lo, box_hi, origins, i0, n_lanes, terms, tmin, tmax, t_days,
+                   cache_k, scratch, hit_k):
+    """:func:`any_hit_dir` for the ``n_lanes`` (≤ ``PACKET_RAYS``) rays ``origins[i0:]`` that
+    share one direction (sun rays), traced down the tree together.
+
+    Every lane takes at every node the decision its own :func:`_descend` would take (same
+    split distances, tolerances and segment cuts), so it visits the same leaves in the same
+    order and tests the same records with :func:`hit_record`'s arithmetic: its answer is the
+    single ray's. The lanes share the node fetches and, with one direction, the near child;
+    the per-lane work is branch-free over all ``PACKET_RAYS`` lanes (dead lanes are masked
+    out), so it runs as vector instructions. A lane leaves the packet at its first hit.
+    ``scratch`` is :func:`new_packet_stack`'s; ``hit_k[l]`` gets the record lane l hit, or
+    -1. Returns the last record hit (the brick's new caster cache) or ``cache_k``.
+    """
+    dx, dy, dz, inv_x, inv_y, inv_z, kx, ky, kz, sx, sy, sz = terms
+    st_node, st_mask, st_t0, st_t1, lane, seg = scratch
+    lane_o = lane[0]
+    lane_k = lane[1]
+    seg0 = seg[0]
+    seg1 = seg[1]
+    recs = tree.recs
+    mask = 0
+    done = 0
+    lane_tmax = seg[2]
+    for l in range(PACKET_RAYS):
+        i = i0 + min(l, n_lanes - 1)   # unused lanes copy the last ray (masked out)
+        lane_tmax[l] = tmax[i]
+        lane_o[0, l] = origins[i, 0]
+        lane_o[1, l] = origins[i, 1]
+        lane_o[2, l] = origins[i, 2]
+        lane_k[0, l] = lane_o[kx, l]
+        lane_k[1, l] = lane_o[ky, l]
+        lane_k[2, l] = lane_o[kz, l]
+    cache_ok = cache_k >= 0 and record_present(tree, cache_k, t_days)
+    for l in range(n_lanes):
+        i = i0 + l
+        hit_k[l] = -1
+        if cache_ok:
+            hit, t, _, _ = hit_record(recs, cache_k, lane_k[0, l], lane_k[1, l], lane_k[2, l],
+                                      kx, ky, kz, sx, sy, sz)
+            if hit and tmin <= t <= tmax[i]:
+                hit_k[l] = cache_k
+                done |= 1 << l
+                continue
+        s0, s1 = clip_to_box(box_lo, box_hi, lane_o[0, l], lane_o[1, l], lane_o[2, l], dx, dy,
+                             dz, tmin, tmax[i])
+        seg0[l] = s0
+        seg1[l] = s1
+        if s0 <= s1:
+            mask |= 1 << l
+    last_k = cache_k
+    node, sp = 0, 0
+    while mask != 0:
+        # Down to a leaf: every lane in ``mask`` needs this subtree.
+        while True:
+            w0 = node_word(tree, node)
+            axis = word_axis(w0)
+            if axis == LEAF_CODE:
+                break
+            split = node_split(tree, node)
+            right = word_payload(w0)
+            if axis == TIME_AXIS:
+                node = node + 1 if t_days < split else right
+                continue
+            d = dx if axis == 0 else (dy if axis == 1 else dz)
+            inv = inv_x if axis == 0 else (inv_y if axis == 1 else inv_z)
+            o_row = lane_o[axis]
+            cut = st_t0[sp]   # the entry that a push fills
+            near_m = 0
+            far_m = 0
+            if d == 0.0:
+                # Parallel to the plane (all lanes): each by its side, both when in the plane.
+                for l in range(PACKET_RAYS):
+                    near_m |= np.int64(o_row[l] <= split) << l
+                    far_m |= np.int64(o_row[l] >= split) << l
+                    cut[l] = seg0[l]
+                near = node + 1
+                far = right
+            else:
+                for l in range(PACKET_RAYS):
+                    t_split = (split - o_row[l]) * inv
+                    tol = SPLIT_REL_TOL * abs(t_split) + SPLIT_ABS_TOL
+                    near_m |= np.int64(not (t_split < seg0[l] - tol)) << l
+                    far_m |= np.int64(not (t_split > seg1[l] + tol)) << l
+                    cut[l] = min(max(t_split, seg0[l]), seg1[l])
+                if d > 0.0:
+                    near = node + 1
+                    far = right
+                else:
+                    near = right
+                    far = node + 1
+            near_m &= mask
+            far_m &= mask
+            if far_m == 0:
+                node = near
+            elif near_m == 0:
+                node = far
+            else:
+                # Lanes in both children: near gets [seg0, cut], far [cut, seg1]; lanes in one
+                # keep their segment (cut = seg0 or seg1 then, by the tests above).
+                both_m = near_m & far_m if d != 0.0 else 0
+                top = st_t1[sp]
+                for l in range(PACKET_RAYS):
+                    b = (both_m >> l) & 1
+                    c = cut[l]
+                    top[l] = seg1[l]
+                    cut[l] = c if b else seg0[l]
+                    seg1[l] = c if b else seg1[l]
+                st_node[sp] = far
+                st_mask[sp] = far_m
+                sp += 1
+                node = near
+                mask = near_m
+        # The leaf's records valid at t_days, against every lane still looking.
+        first = leaf_first(tree, node)
+        count = word_payload(w0)
+        for k in range(first, first + count):
+            if not record_present(tree, k, t_days):
+                continue
+            # hit_record's arithmetic, written without early returns for all lanes at once.
+            v0x, v0y, v0z = recs[k, kx], recs[k, ky], recs[k, kz]
+            v1x, v1y, v1z = recs[k, 3 + kx], recs[k, 3 + ky], recs[k, 3 + kz]
+            v2x, v2y, v2z = recs[k, 6 + kx], recs[k, 6 + ky], recs[k, 6 + kz]
+            hits = 0
+            for l in range(PACKET_RAYS):
+                okx, oky, okz = lane_k[0, l], lane_k[1, l], lane_k[2, l]
+                a_z = v0z - okz
+                b_z = v1z - okz
+                c_z = v2z - okz
+                a_x = (v0x - okx) - sx * a_z
+                a_y = (v0y - oky) - sy * a_z
+                b_x = (v1x - okx) - sx * b_z
+                b_y = (v1y - oky) - sy * b_z
+                c_x = (v2x - okx) - sx * c_z
+                c_y = (v2y - oky) - sy * c_z
+                e_u = c_x * b_y - c_y * b_x
+                e_v = a_x * c_y - a_y * c_x
+                e_w = b_x * a_y - b_y * a_x
+                outside = ((e_u < 0.0) | (e_v < 0.0) | (e_w < 0.0)) & ((e_u > 0.0) | (e_v > 0.0)
+                                                                      | (e_w > 0.0))
+                det = e_u + e_v + e_w
+                # (det = 0 is never a hit; numpy's error model: no zero-division branch.)
+                t = ((e_u * a_z + e_v * b_z + e_w * c_z) * sz) * (1.0 / det)
+                hit = (not outside) & (det != 0.0) & (tmin <= t) & (t <= lane_tmax[l])
+                hits |= np.int64(hit) << l
+            hits &= mask
+            if hits != 0:
+                last_k = k
+                mask &= ~hits
+                done |= hits
+                for l in range(n_lanes):
+                    if (hits >> l) & 1:
+                        hit_k[l] = k
+                if mask == 0:
+                    break
+        # Next pending subtree some lane without a hit still needs.
+        mask = 0
+        while sp > 0 and mask == 0:
+            sp -= 1
+            mask = st_mask[sp] & ~done
+        if mask == 0:
+            break
+        node = st_node[sp]
+        for l in range(PACKET_RAYS):
+            seg0[l] = st_t0[sp, l]
+            seg1[l] = st_t1[sp, l]
+    return last_k
