@@ -13,7 +13,7 @@ from cityshade.accel.kdtree_layout import KdTree
 from cityshade.errors import UsageError
 from cityshade.trace import bricks
 from cityshade.trace.bricks import (DEFAULT_BRICK_SIZE, intersect_bricks, occluded_bricks,
-                                    occluded_packets, tile_order)
+                                    tile_order)
 from cityshade.util import check_t_days
 
 __all__ = ["TraceInputError", "intersect", "occluded", "shadow_rays_from_surface", "sunlit", "tree_of",
@@ -133,13 +133,10 @@ def occluded(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     if origins.shape[0] == 0 or kd.tri_records.shape[0] == 0:
         return out
     lo, hi = _padded_box(kd)
+    if (directions == directions[0]).all():
+        directions = directions[:1]   # one direction for all (sun rays): its terms once
     with bricks.dynamic_bricks():
-        if (directions == directions[0]).all():
-            # One direction for all (sun rays): its terms once, rays traced in packets.
-            occluded_packets(kd.views, lo, hi, origins, directions[0].copy(), 0.0, tmax_arr, t,
-                             brick, np.inf, out)
-        else:
-            occluded_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, out)
+        occluded_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, out)
     return out
 
 

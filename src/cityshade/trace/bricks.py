@@ -16,8 +16,7 @@ import numba
 from numba import njit, prange
 
 from cityshade.accel.kdtree_layout import record_id
-from cityshade.trace.kernels import (PACKET_RAYS, any_hit_dir, any_hit_packet, closest_hit,
-                                     direction_terms, new_packet_stack, new_stack)
+from cityshade.trace.kernels import any_hit_dir, closest_hit, direction_terms, new_stack
 
 #: Rays per brick: large enough to amortise the per-brick stack allocation and to keep the
 #: caster cache warm (a 16x16 pixel tile in tile order), small enough for two threads to
@@ -102,52 +101,6 @@ def occluded_bricks(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_day
             out[i] = k >= 0
             if k >= 0:
                 cache_k = k
-
-
-@njit(cache=True, parallel=True)
-def occluded_packets(tree, box_lo, box_hi, origins, direction, tmin, tmax, t_days, brick_size,
-                     spread_m, out):
-    """:func:`occluded_bricks` for rays that all share ``direction`` (3,): each brick traces
-    its rays in packets of ``PACKET_RAYS`` consecutive rays (:func:`any_hit_packet`), which
-    share the node fetches of their traversal, when the packet's origins lie within
-    ``spread_m`` of its first origin across the direction (coherent rays), else one by one;
-    the answers are the single rays' either way."""
-    n = origins.shape[0]
-    dx, dy, dz = direction[0], direction[1], direction[2]
-    terms = direction_terms(dx, dy, dz)
-    spread2 = spread_m * spread_m
-    for j in prange(_n_iter(n, brick_size)):
-        i0, i1 = _brick_rays(j, n, brick_size)
-        if i0 >= i1:
-            continue
-        scratch = new_packet_stack()
-        stack1 = new_stack()
-        hit_k = np.empty(PACKET_RAYS, np.int64)
-        cache_k = -1
-        for p0 in range(i0, i1, PACKET_RAYS):
-            lanes = min(PACKET_RAYS, i1 - p0)
-            wide = False
-            for i in range(p0 + 1, p0 + lanes):
-                ex = origins[i, 0] - origins[p0, 0]
-                ey = origins[i, 1] - origins[p0, 1]
-                ez = origins[i, 2] - origins[p0, 2]
-                along = ex * dx + ey * dy + ez * dz
-                if ex * ex + ey * ey + ez * ez - along * along > spread2:
-                    wide = True
-                    break
-            if wide:
-                for i in range(p0, p0 + lanes):
-                    k = any_hit_dir(tree, box_lo, box_hi, origins[i, 0], origins[i, 1],
-                                    origins[i, 2], terms, tmin, tmax[i], t_days, cache_k,
-                                    stack1)
-                    out[i] = k >= 0
-                    if k >= 0:
-                        cache_k = k
-                continue
-            cache_k = any_hit_packet(tree, box_lo, box_hi, origins, p0, lanes, terms, tmin,
-                                     tmax, t_days, cache_k, scratch, hit_k)
-            for l in range(lanes):
-                out[p0 + l] = hit_k[l] >= 0
 
 
 @njit(cache=True, parallel=True)
