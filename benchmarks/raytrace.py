@@ -9,7 +9,8 @@ triangles), then runs two workloads fixed by seed at the city time 2000-01-01:
 * map: a 2048x2048 top-down grid of vertical primary rays, then shadow rays to the same sun.
 
 Rays are traced in 16x16-pixel tile order (the same order for every engine). For each workload
-it reports Mrays/s of closest-hit and any-hit rays at 1 and 2 threads (median of ``--runs``),
+it reports Mrays/s of closest-hit and any-hit rays at 1 and 2 threads (median of ``--runs``; the
+any-hit and izb runs alternate 1 and 2 threads run by run),
 and the exact shadow decisions/s of the light-space engine ``izb`` (``cityshade.lightspace``)
 on the same shadow-ray origins, with the number of decisions that differ from the kd-tree's
 (must be 0), its first-call time (caster records made once per tree) and its stage profile.
@@ -20,8 +21,12 @@ embreex releases no work to a pool of its own) and Mitsuba 3 (``ray_test`` /
 ``ray_intersect_preliminary``, drjit thread count set per run); agreement with our results is
 checked (>= 99.99 % of rays) and throughput ratios are printed. Prints a table and writes JSON.
 
+With ``--profile`` it also counts the kd-tree any-hit's work per shadow ray (inner nodes, leaves,
+records tested, caster-cache hits) with a one-thread measuring twin of the kernel, and prints
+izb's phases (project, bin, query) with its cell size and tests per receiver.
+
 Usage: python benchmarks/raytrace.py [--triangles 1000000] [--runs 3] [--json out.json]
-       [--no-embree] [--no-mitsuba] [--sweep-sah]
+       [--no-embree] [--no-mitsuba] [--profile] [--sweep-sah]
 """
 from __future__ import annotations
 
@@ -37,8 +42,12 @@ import numba
 import numpy as np
 
 from cityshade.accel import KdTreeSettings, build_kdtree
+from cityshade.accel.kdtree_layout import (LEAF_CODE, TIME_AXIS, leaf_first, node_split,
+                                           node_word, record_present, word_axis, word_payload)
 from cityshade import lightspace
 from cityshade.trace import intersect, occluded, shadow_rays_from_surface, tile_order
+from cityshade.trace.kernels import (FAR_ONLY, NEAR_ONLY, STACK_SIZE, clip_to_box,
+                                     direction_terms, hit_record, split_side)
 
 DAY_2000 = 10957.0   # 2000-01-01 in days since 1970-01-01
 
@@ -172,6 +181,102 @@ def shadow_rays(vertices, triangles, origins, directions, dist, tri, sun):
     return so, np.ascontiguousarray(np.broadcast_to(sun, so.shape))
 
 
+#: Counters of :func:`anyhit_counts`, in its output order.
+COUNTER_NAMES = ("cache_hits", "inner_nodes", "leaves", "empty_leaves", "records",
+                 "records_present", "traversal_hits")
+
+
+@numba.njit(cache=True)
+def anyhit_counts(tree, box_lo, box_hi, origins, direction, t_days, brick_size, out):
+    """Work of the kd-tree any-hit per call, one thread, for rays sharing ``direction``: adds
+    to ``out`` the counts named by ``COUNTER_NAMES`` (caster-cache hits, inner nodes entered,
+    leaves, empty leaves, records looked at, records present at ``t_days`` and tested, rays
+    blocked found by traversal). The same decisions, order and cache (reset per brick) as
+    ``trace.bricks.occluded_bricks``; a measuring twin, not a fast path."""
+    dx, dy, dz, inv_x, inv_y, inv_z, kx, ky, kz, sx, sy, sz = direction_terms(
+        direction[0], direction[1], direction[2])
+    st_node = np.empty(STACK_SIZE, np.int64)
+    st_t0 = np.empty(STACK_SIZE)
+    st_t1 = np.empty(STACK_SIZE)
+    cache_k = -1
+    for i in range(origins.shape[0]):
+        if i % brick_size == 0:
+            cache_k = -1
+        o = origins[i]
+        okx, oky, okz = o[kx], o[ky], o[kz]
+        if cache_k >= 0 and record_present(tree, cache_k, t_days):
+            hit, t, _, _ = hit_record(tree.recs, cache_k, okx, oky, okz, kx, ky, kz, sx, sy, sz)
+            if hit and t >= 0.0:
+                out[0] += 1
+                continue
+        seg0, seg1 = clip_to_box(box_lo, box_hi, o[0], o[1], o[2], dx, dy, dz, 0.0, np.inf)
+        node, sp, found = 0, 0, False
+        while seg0 <= seg1:
+            w0 = node_word(tree, node)
+            axis = word_axis(w0)
+            if axis != LEAF_CODE:
+                out[1] += 1
+                split = node_split(tree, node)
+                right = word_payload(w0)
+                if axis == TIME_AXIS:
+                    node = node + 1 if t_days < split else right
+                    continue
+                d = dx if axis == 0 else (dy if axis == 1 else dz)
+                near, far = (node + 1, right) if d >= 0.0 else (right, node + 1)
+                if d == 0.0:
+                    # Parallel: the side of the origin (both sides when in the plane).
+                    if o[axis] != split:
+                        node = node + 1 if o[axis] < split else right
+                    else:
+                        st_node[sp], st_t0[sp], st_t1[sp] = right, seg0, seg1
+                        sp += 1
+                        node = node + 1
+                    continue
+                t_split = (split - o[axis]) * (inv_x if axis == 0 else
+                                               (inv_y if axis == 1 else inv_z))
+                side, ts = split_side(t_split, seg0, seg1)
+                if side == NEAR_ONLY:
+                    node = near
+                elif side == FAR_ONLY:
+                    node = far
+                else:
+                    st_node[sp], st_t0[sp], st_t1[sp] = far, ts, seg1
+                    sp += 1
+                    node = near
+                    seg1 = ts
+                continue
+            out[2] += 1
+            first, count = leaf_first(tree, node), word_payload(w0)
+            out[3] += count == 0
+            for k in range(first, first + count):
+                out[4] += 1
+                if record_present(tree, k, t_days):
+                    out[5] += 1
+                    hit, t, _, _ = hit_record(tree.recs, k, okx, oky, okz, kx, ky, kz, sx, sy,
+                                              sz)
+                    if hit and t >= 0.0:
+                        found = True
+                        cache_k = k
+                        break
+            if found or sp == 0:
+                break
+            sp -= 1
+            node, seg0, seg1 = st_node[sp], st_t0[sp], st_t1[sp]
+        out[6] += found
+
+
+def anyhit_profile(tree, origins, direction, t_days, brick_size=256):
+    """Per-ray counters of the kd-tree any-hit (``COUNTER_NAMES``), on one thread."""
+    from cityshade.trace import BOX_PAD_REL
+    lo, hi, scale_m = tree.box_scale_m()
+    pad = BOX_PAD_REL * scale_m
+    counts = np.zeros(len(COUNTER_NAMES), np.int64)
+    anyhit_counts(tree.views, lo - pad, hi + pad, np.ascontiguousarray(origins, np.float64),
+                  np.ascontiguousarray(direction, np.float64), t_days, brick_size, counts)
+    n = max(len(origins), 1)
+    return {name: float(c) / n for name, c in zip(COUNTER_NAMES, counts)}
+
+
 @numba.njit(parallel=True, cache=True)
 def _probe_kernel(n):
     """A trivial parallel loop (64 equal items of pure arithmetic): what 2 threads can give."""
@@ -214,6 +319,21 @@ def timed(fn, runs, clock=time.perf_counter):
         out = fn()
         times.append(clock() - t0)
     return statistics.median(times), out
+
+
+def timed_threads(fn, threads_list, runs):
+    """Median seconds of ``fn(threads)`` per thread count, the counts alternating run by run
+    (a burst of other load on a shared machine then falls on both counts, not on the runs of
+    one: the 2-thread / 1-thread ratio steadier), and the last result."""
+    times = {th: [] for th in threads_list}
+    out = None
+    for _ in range(runs):
+        for th in threads_list:
+            numba.set_num_threads(th)
+            t0 = time.perf_counter()
+            out = fn(th)
+            times[th].append(time.perf_counter() - t0)
+    return {th: statistics.median(v) for th, v in times.items()}, out
 
 
 class Embree:
@@ -343,25 +463,29 @@ def run(args):
         dist, tri, _, _ = prim
         so, sd = shadow_rays(verts, tris, po, pd, dist, tri, sun)
         wres["shadow_rays"] = int(len(so))
-        occ = None
+        secs, occ = timed_threads(lambda th: occluded(tree, so, sd, CITY_TIME_DAYS),
+                                  threads_list, args.runs)
         for th in threads_list:
-            numba.set_num_threads(th)
-            sec, occ = timed(lambda: occluded(tree, so, sd, CITY_TIME_DAYS), args.runs)
-            wres[f"anyhit_mrays_s_{th}t"] = len(so) / sec / 1e6
+            wres[f"anyhit_mrays_s_{th}t"] = len(so) / secs[th] / 1e6
         wres["shadowed_fraction"] = float(occ.mean())
+        if args.profile:
+            prof = anyhit_profile(tree, so, sun, CITY_TIME_DAYS)
+            twin = round((prof["cache_hits"] + prof["traversal_hits"]) * len(so))
+            prof["blocked_differing_from_kernel"] = abs(twin - int(occ.sum()))
+            wres["anyhit_per_ray"] = prof
         # The light-space engine (izb) on the same origins and sun: every decision must be
         # the kd-tree's. The first call per tree also makes the caster records (reported).
-        izb = None
         for th in threads_list:
             numba.set_num_threads(th)
             t0 = time.perf_counter()
             lightspace.occluded(tree, so, sun, CITY_TIME_DAYS)
             wres[f"izb_first_call_s_{th}t"] = time.perf_counter() - t0
-            profile = {}
-            sec, izb = timed(lambda: lightspace.occluded(tree, so, sun, CITY_TIME_DAYS,
-                                                         stats=profile), args.runs)
-            wres[f"izb_mrays_s_{th}t"] = len(so) / sec / 1e6
-            wres[f"izb_profile_{th}t"] = profile
+        profiles = {th: {} for th in threads_list}
+        secs, izb = timed_threads(lambda th: lightspace.occluded(
+            tree, so, sun, CITY_TIME_DAYS, stats=profiles[th]), threads_list, args.runs)
+        for th in threads_list:
+            wres[f"izb_mrays_s_{th}t"] = len(so) / secs[th] / 1e6
+            wres[f"izb_profile_{th}t"] = profiles[th]
         wres["izb_differing_from_ours"] = int((izb != occ).sum())
         # Other engines on the identical float32-rounded rays.
         po32, pd32 = po.astype(np.float32), pd.astype(np.float32)
@@ -408,6 +532,23 @@ def print_table(wname, wres, engines, threads_list):
     izb_cols = "".join(f"{wres[f'izb_mrays_s_{th}t']:>14.2f}" for th in threads_list)
     print(f"{'izb':<12}" + " " * 14 * len(threads_list) + izb_cols
           + f"{'differing from kd-tree: ':>26}{wres['izb_differing_from_ours']}")
+    if "anyhit_per_ray" in wres:
+        c = wres["anyhit_per_ray"]
+        blocked = c["cache_hits"] + c["traversal_hits"]
+        print(f"kd-tree any-hit per ray (1 thread): {c['inner_nodes']:.1f} inner nodes, "
+              f"{c['leaves']:.2f} leaves ({c['empty_leaves']:.2f} empty), {c['records']:.2f} "
+              f"records ({c['records_present']:.2f} present, tested); blocked "
+              f"{blocked:.3f} ({c['cache_hits']:.3f} by the caster cache); blocked count "
+              f"differing from the kernel's: {c['blocked_differing_from_kernel']}")
+    for th in threads_list:
+        prof = wres.get(f"izb_profile_{th}t", {})
+        if prof:
+            print(f"izb {th}t phases, ms: " + ", ".join(
+                f"{k[:-2]} {1e3 * prof[k]:.1f}" for k in ("sort_s", "project_s", "bin_s",
+                                                          "query_s"))
+                  + f"; cell {prof['cell_m']:.2f} m, {prof['references'] / wres['shadow_rays']:.3f}"
+                  f" references and {prof['tests'] / wres['shadow_rays']:.2f} full tests per "
+                  "receiver")
     for e in engines:
         er = wres[e.name]
         print(f"{e.name:<12}" + "".join(f"{er[k]:>14.2f}" for k in keys)
@@ -457,6 +598,9 @@ def main(argv=None):
     parser.add_argument("--json", default=None, help="write the results here")
     parser.add_argument("--no-embree", action="store_true")
     parser.add_argument("--no-mitsuba", action="store_true")
+    parser.add_argument("--profile", action="store_true",
+                        help="also count the kd-tree any-hit's work per ray (nodes, leaves, "
+                             "records; one thread, a measuring twin of the kernel)")
     parser.add_argument("--sweep-sah", action="store_true",
                         help="measure the SAH constants instead of the comparison")
     args = parser.parse_args(argv)

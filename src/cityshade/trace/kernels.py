@@ -151,6 +151,26 @@ def _hit_at(tree, k, t_days, tmin, tmax, ray):
     return hit and tmin <= t <= tmax, t, u, v
 
 
+#: :func:`split_side` answers: the segment needs the near child, the far child, or both.
+NEAR_ONLY = 0
+FAR_ONLY = 1
+BOTH_SIDES = 2
+
+
+@njit(cache=True, inline="always")
+def split_side(t_split, seg0, seg1):
+    """Which children the segment ``[seg0, seg1]`` needs when the split plane lies at
+    ``t_split`` along the ray: ``(side, cut)``, ``side`` one of ``NEAR_ONLY``, ``FAR_ONLY``,
+    ``BOTH_SIDES``; ``cut`` (the split clamped to the segment) ends the near part and starts
+    the far part when both are needed."""
+    tol = SPLIT_REL_TOL * abs(t_split) + SPLIT_ABS_TOL
+    if t_split > seg1 + tol:
+        return NEAR_ONLY, t_split
+    if t_split < seg0 - tol:
+        return FAR_ONLY, t_split
+    return BOTH_SIDES, min(max(t_split, seg0), seg1)
+
+
 @njit(cache=True, inline="always")
 def _pop(stack, sp):
     """Pop the next pending subtree: ``(sp, node, seg0, seg1)``."""
@@ -212,13 +232,12 @@ def _descend(tree, node, seg0, seg1, sp, ox, oy, oz, dx, dy, dz, inv_x, inv_y, i
         else:
             near = right
             far = node + 1
-        tol = SPLIT_REL_TOL * abs(t_split) + SPLIT_ABS_TOL
-        if t_split > seg1 + tol:
+        side, ts = split_side(t_split, seg0, seg1)
+        if side == NEAR_ONLY:
             node = near
-        elif t_split < seg0 - tol:
+        elif side == FAR_ONLY:
             node = far
         else:
-            ts = min(max(t_split, seg0), seg1)
             st_node[sp] = far
             st_t0[sp] = ts
             st_t1[sp] = seg1
