@@ -55,6 +55,14 @@ def _run(path, outdir, technique="izb", steps=None, **kw):
                        surfaces_csv=True, ground="auto", **kw)
 
 
+def _same_stretches(a, b):
+    """The sunlit stretches of two runs, bit for bit (pixels and samples)."""
+    sa, sb = a.result.stretches, b.result.stretches
+    assert sa is not None and sb is not None and sa.finished and sb.finished
+    assert sa.pixel_longest_h().tobytes() == sb.pixel_longest_h().tobytes()
+    assert sa.samples.longest_h.tobytes() == sb.samples.longest_h.tobytes()
+
+
 def test_plan_tiles_splits_receivers_into_disjoint_squares():
     rng = np.random.default_rng(3)
     valid = rng.random((23, 37)) < 0.6
@@ -102,6 +110,17 @@ def test_tiled_run_equals_untiled_bit_for_bit(files, tmp_path, technique):
     # Shadows cross the tile borders: some pixels lit less than the full day.
     hours = plain.result.hours
     assert np.nanmax(hours) > np.nanmin(hours) + 1.0
+    # The sunlit stretches too, and the EXR carries them.
+    _same_stretches(plain, tiled)
+    longest = plain.result.stretches.pixel_longest_h()[plain.result.valid]
+    assert longest.max() > longest.min() + 1.0
+    assert (longest <= plain.result.hours[plain.result.valid]).all()
+    from cityshade.imageio import read_exr
+
+    exr = read_exr(tmp_path / "tiled" / "sun_hours.exr")[0]
+    assert np.array_equal(exr["longest_sun_h"], read_exr(tmp_path / "plain" /
+                                                         "sun_hours.exr")[0]["longest_sun_h"],
+                          equal_nan=True)
     assert tiled.manifest["status"] == "finished"
     assert sorted(tiled.manifest["finished_steps"]) == list(range(len(_steps())))
 
@@ -137,6 +156,7 @@ def test_tiled_run_resumes_bit_identical_without_redoing_tasks(files, tmp_path):
     assert first == 5 and len(calls) == total  # finished tasks are not run again
     assert resumed.result.hours.tobytes() == straight.result.hours.tobytes()
     assert resumed.result.sample_hours.tobytes() == straight.result.sample_hours.tobytes()
+    _same_stretches(resumed, straight)
     # Another tiling is another run.
     with pytest.raises(UsageError, match="differs in: tile_px"):
         _run(boxes, out, tile_px=8)
@@ -149,6 +169,7 @@ def test_monthly_sums_equal_runs_of_each_month(files, tmp_path):
     both = _run(boxes, tmp_path / "both", steps=steps, step_month=months)
     whole = _run(boxes, tmp_path / "whole", steps=steps)
     assert both.result.hours.tobytes() == whole.result.hours.tobytes()
+    _same_stretches(both, whole)
     jan = _run(boxes, tmp_path / "jan", steps=_steps(date(2024, 1, 31), every_s=7200))
     feb = _run(boxes, tmp_path / "feb", steps=_steps(date(2024, 2, 1), every_s=7200))
     from cityshade.imageio import read_exr
@@ -207,6 +228,7 @@ def test_local_cluster_of_two_workers_equals_local_run(files, tmp_path):
     assert tiles["workers"] == 2 and tiles["tiles"] > 2
     assert plain.result.hours.tobytes() == dask.result.hours.tobytes()
     assert plain.result.sample_hours.tobytes() == dask.result.sample_hours.tobytes()
+    _same_stretches(plain, dask)
     assert not (tmp_path / "dask" / "receivers.npy").exists()
     assert dask.manifest["tasks_done"] == tiles["tasks"]
     # The workers' environment does not stay in this process (Numba's threads would clash).
