@@ -14,7 +14,7 @@ both cores, a cache load <= 0.5 s however large, a 20 Mpx map render within 2 GB
 * ``render_figures`` — ``cityshade render CACHE --camera map --pixel-size P`` at the pixel
   size that gives about ``--megapixels`` over the model's box (mask PNG output).
 
-The tiled-batch figures of the same issue are added beside these functions.
+The tiled and Dask batch figures of the same issue: ``benchmarks/scale_batch.py``.
 
 Usage::
 

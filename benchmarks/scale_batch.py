@@ -55,6 +55,13 @@ def _default_scene() -> Path:
                      "cityshade build, and give it with --scene")
 
 
+def _children_cpu_s() -> float:
+    import resource
+
+    u = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return u.ru_utime + u.ru_stime
+
+
 def _one(name: str, scene, scene_path, cam, steps, tile_px: int, outdir: Path) -> dict:
     import numba
 
@@ -70,11 +77,16 @@ def _one(name: str, scene, scene_path, cam, steps, tile_px: int, outdir: Path) -
 
         sha = (scene.header or {}).get("source", {}).get("sha256", "")
         kw["scheduler"] = DaskExecutor(name, scene_path, sha, threads_per_worker=1)
+    # CPU of this process and of the worker processes it started and joined (Dask's local
+    # workers are children of this process): the work done, whatever the machine's load.
+    c0, k0 = time.process_time(), _children_cpu_s()
     t0 = time.perf_counter()
     run = B.run_batch(outdir, scene, cam, steps, DAY_2000, technique="izb", **kw)
     wall = time.perf_counter() - t0
+    cpu, workers_cpu = time.process_time() - c0, _children_cpu_s() - k0
     res = run.result
-    return {"wall_s": wall, "timings_s": res.timings_s,
+    return {"wall_s": wall, "cpu_s": cpu + workers_cpu, "driver_cpu_s": cpu,
+            "workers_cpu_s": workers_cpu, "timings_s": res.timings_s,
             "tiles": res.diagnostics.get("tiles"), "units": res.units,
             "pixels": int(res.valid.sum()),
             "digest": hashlib.sha256(res.hours.tobytes()).hexdigest()}
@@ -89,6 +101,8 @@ def main(argv=None) -> dict:
     ap.add_argument("--repeat", type=int, default=1)
     ap.add_argument("--runs", default=",".join(ALL_RUNS))
     ap.add_argument("--json", type=Path)
+    ap.add_argument("--workdir", type=Path, help="where the runs' output folders go (a "
+                    "temporary folder inside it, removed at the end; default the system's)")
     args = ap.parse_args(argv)
 
     import numba
@@ -109,7 +123,9 @@ def main(argv=None) -> dict:
           f"tiles of {args.tile_px} px; Numba threads available {numba.config.NUMBA_NUM_THREADS}",
           flush=True)
     # Warm-up: compile/load every kernel a run uses (a small window, all code paths here).
-    with tempfile.TemporaryDirectory(dir=BENCH if BENCH.is_dir() else None) as tmp:
+    print("command: python benchmarks/scale_batch.py " + " ".join(argv if argv is not None
+                                                                  else sys.argv[1:]), flush=True)
+    with tempfile.TemporaryDirectory(dir=args.workdir) as tmp:
         small = map_view(scene, args.pixel_size * 16)
         _one("tiled-1t", scene, scene_path, small, steps[60:64], 64, Path(tmp) / "w")
         results: dict[str, list[dict]] = {r: [] for r in runs}
@@ -118,11 +134,13 @@ def main(argv=None) -> dict:
                 r = _one(name, scene, scene_path, cam, steps, args.tile_px,
                          Path(tmp) / f"{name.replace(':', '_')}_{k}")
                 results[name].append(r)
-                print(f"  {name:<9} {r['wall_s']:8.2f} s  shadow {r['timings_s']['shadow_s']:7.2f}"
+                print(f"  {name:<9} {r['wall_s']:8.2f} s  cpu {r['cpu_s']:8.2f} s (workers "
+                      f"{r['workers_cpu_s']:7.2f} s)  shadow {r['timings_s']['shadow_s']:7.2f}"
                       f" s  accumulate {r['timings_s'].get('accumulate_s', 0.0):6.2f} s",
                       flush=True)
     digests = {r["digest"] for rs in results.values() for r in rs}
     med = {n: statistics.median(r["wall_s"] for r in rs) for n, rs in results.items()}
+    med_cpu = {n: statistics.median(r["cpu_s"] for r in rs) for n, rs in results.items()}
     any_run = next(iter(results.values()))[0]
     px_steps = any_run["pixels"] * any_run["units"]
     out = {"commit": _commit(), "scene": str(scene_path),
@@ -130,6 +148,7 @@ def main(argv=None) -> dict:
            "map_px": [cam.width_px, cam.height_px], "surface_px": any_run["pixels"],
            "sun_positions": any_run["units"], "tile_px": args.tile_px,
            "identical_in_all_runs": len(digests) == 1, "median_wall_s": med,
+           "median_cpu_s": med_cpu, "load_average": list(__import__("os").getloadavg()),
            "runs": results, "machine": _machine()}
     if "local:1" in med and "tiled-1t" in med:
         out["dask_overhead_vs_tiled"] = med["local:1"] / med["tiled-1t"] - 1.0
@@ -137,6 +156,10 @@ def main(argv=None) -> dict:
         out["dask_overhead_vs_plain"] = med["local:1"] / med["plain-1t"] - 1.0
     if "local:1" in med and "local:2" in med:
         out["scaling_1_to_2_workers"] = med["local:1"] / med["local:2"]
+        # Work added by the second worker (the same tasks: ideally 1.0).
+        out["cpu_local2_over_local1"] = med_cpu["local:2"] / med_cpu["local:1"]
+    if "local:1" in med and "tiled-1t" in med:
+        out["dask_cpu_overhead_vs_tiled"] = med_cpu["local:1"] / med_cpu["tiled-1t"] - 1.0
     # Projection of a year at 1 m: pixel·steps of the year over the measured rates.
     year = B.plan_steps(date(2024, 1, 1), 0, 86_400, 600, "Europe/Berlin",
                         to_date=date(2024, 12, 31))
@@ -164,7 +187,12 @@ def main(argv=None) -> dict:
                    "pixel_steps": year_px_steps, "per_worker_px_steps_per_s": per_worker,
                    "driver_s_per_px_step": serial_per, "machines": proj}
     print(f"identical in all runs: {out['identical_in_all_runs']}")
-    for key in ("dask_overhead_vs_tiled", "dask_overhead_vs_plain", "scaling_1_to_2_workers"):
+    print(f"{'run':<9} {'wall s':>8} {'cpu s':>8}")
+    for n in med:
+        print(f"{n:<9} {med[n]:8.2f} {med_cpu[n]:8.2f}")
+    print(f"load average at the end: {out['load_average']}")
+    for key in ("dask_overhead_vs_tiled", "dask_overhead_vs_plain", "dask_cpu_overhead_vs_tiled",
+                "scaling_1_to_2_workers", "cpu_local2_over_local1"):
         if key in out:
             print(f"{key}: {out[key]:+.3f}" if "overhead" in key else f"{key}: {out[key]:.2f}×")
     print(f"year at 1 m: {year_units} sun-up steps × {px_1m / 1e6:.1f} Mpx = "

@@ -55,6 +55,20 @@ def _run(path, outdir, technique="izb", steps=None, **kw):
                        surfaces_csv=True, ground="auto", **kw)
 
 
+@pytest.fixture(scope="module")
+def sample_plain(files, tmp_path_factory):
+    """The sample city's plain run that the distributed runs are checked against."""
+    return _run(files[1], tmp_path_factory.mktemp("plain"), steps=_steps(every_s=5400))
+
+
+def _same_stretches(a, b):
+    """The sunlit stretches of two runs, bit for bit (pixels and samples)."""
+    sa, sb = a.result.stretches, b.result.stretches
+    assert sa is not None and sb is not None and sa.finished and sb.finished
+    assert sa.pixel_longest_h().tobytes() == sb.pixel_longest_h().tobytes()
+    assert sa.samples.longest_h.tobytes() == sb.samples.longest_h.tobytes()
+
+
 def test_plan_tiles_splits_receivers_into_disjoint_squares():
     rng = np.random.default_rng(3)
     valid = rng.random((23, 37)) < 0.6
@@ -102,6 +116,17 @@ def test_tiled_run_equals_untiled_bit_for_bit(files, tmp_path, technique):
     # Shadows cross the tile borders: some pixels lit less than the full day.
     hours = plain.result.hours
     assert np.nanmax(hours) > np.nanmin(hours) + 1.0
+    # The sunlit stretches too, and the EXR carries them.
+    _same_stretches(plain, tiled)
+    longest = plain.result.stretches.pixel_longest_h()[plain.result.valid]
+    assert longest.max() > longest.min() + 1.0
+    assert (longest <= plain.result.hours[plain.result.valid]).all()
+    from cityshade.imageio import read_exr
+
+    exr = read_exr(tmp_path / "tiled" / "sun_hours.exr")[0]
+    assert np.array_equal(exr["longest_sun_h"], read_exr(tmp_path / "plain" /
+                                                         "sun_hours.exr")[0]["longest_sun_h"],
+                          equal_nan=True)
     assert tiled.manifest["status"] == "finished"
     assert sorted(tiled.manifest["finished_steps"]) == list(range(len(_steps())))
 
@@ -137,6 +162,7 @@ def test_tiled_run_resumes_bit_identical_without_redoing_tasks(files, tmp_path):
     assert first == 5 and len(calls) == total  # finished tasks are not run again
     assert resumed.result.hours.tobytes() == straight.result.hours.tobytes()
     assert resumed.result.sample_hours.tobytes() == straight.result.sample_hours.tobytes()
+    _same_stretches(resumed, straight)
     # Another tiling is another run.
     with pytest.raises(UsageError, match="differs in: tile_px"):
         _run(boxes, out, tile_px=8)
@@ -149,6 +175,7 @@ def test_monthly_sums_equal_runs_of_each_month(files, tmp_path):
     both = _run(boxes, tmp_path / "both", steps=steps, step_month=months)
     whole = _run(boxes, tmp_path / "whole", steps=steps)
     assert both.result.hours.tobytes() == whole.result.hours.tobytes()
+    _same_stretches(both, whole)
     jan = _run(boxes, tmp_path / "jan", steps=_steps(date(2024, 1, 31), every_s=7200))
     feb = _run(boxes, tmp_path / "feb", steps=_steps(date(2024, 2, 1), every_s=7200))
     from cityshade.imageio import read_exr
@@ -195,25 +222,6 @@ def test_year_of_suns_at_once_equals_each_instant():
         assert sun_from_instant(instants[i], crs, origin).metadata() == suns[i].metadata()
 
 
-def test_local_cluster_of_two_workers_equals_local_run(files, tmp_path):
-    pytest.importorskip("dask.distributed")
-    _, sample = files
-    steps = _steps(every_s=10_800)
-    plain = _run(sample, tmp_path / "plain", steps=steps)
-    environ_before = dict(os.environ)
-    dask = _run(sample, tmp_path / "dask", steps=steps, tile_px=64, scheduler="local:2",
-                scene_path=sample)
-    tiles = dask.result.diagnostics["tiles"]
-    assert tiles["workers"] == 2 and tiles["tiles"] > 2
-    assert plain.result.hours.tobytes() == dask.result.hours.tobytes()
-    assert plain.result.sample_hours.tobytes() == dask.result.sample_hours.tobytes()
-    assert not (tmp_path / "dask" / "receivers.npy").exists()
-    assert dask.manifest["tasks_done"] == tiles["tasks"]
-    # The workers' environment does not stay in this process (Numba's threads would clash).
-    keys = ("NUMBA_NUM_THREADS", "OMP_NUM_THREADS", "PYTHONHASHSEED", "MALLOC_TRIM_THRESHOLD_")
-    assert {k: os.environ.get(k) for k in keys} == {k: environ_before.get(k) for k in keys}
-
-
 def test_cli_tile_and_scheduler_options(files, tmp_path):
     from cityshade.cli.main import cli
 
@@ -238,3 +246,164 @@ def test_cli_tile_and_scheduler_options(files, tmp_path):
     assert ok.exit_code == 0, ok.output
     assert (tmp_path / "ok" / "monthly" / "sun_hours_2024-06.tif").exists()
     assert (tmp_path / "ok" / "sun_hours.tif").exists()
+
+
+try:
+    from distributed.diagnostics.plugin import SchedulerPlugin
+except ImportError:  # without the [dask] extra these tests skip
+    SchedulerPlugin = object
+
+
+class TaskLog(SchedulerPlugin):
+    """A Dask scheduler plugin (the LocalCluster's scheduler runs in this process): per task
+    key, how often it started running and how often its result arrived; the workers lost."""
+
+    name = "cityshade-task-log"
+
+    def __init__(self):
+        self.started: dict[str, int] = {}
+        self.arrived: dict[str, int] = {}
+        self.lost_workers = 0
+
+    def transition(self, key, start, finish, *args, **kwargs):
+        if finish == "processing":
+            self.started[key] = self.started.get(key, 0) + 1
+        elif finish == "memory":
+            self.arrived[key] = self.arrived.get(key, 0) + 1
+
+    def remove_worker(self, scheduler=None, worker=None, **kwargs):
+        self.lost_workers += 1
+
+
+def _logged_executor(sample, log_holder):
+    """A DaskExecutor of 2 local workers (1 Numba thread each) whose scheduler logs tasks."""
+    from cityshade.distributed import DaskExecutor
+    from cityshade.scenefile import load_scene
+
+    sha = (load_scene(sample).header or {}).get("source", {}).get("sha256", "")
+
+    class Logged(DaskExecutor):
+        fetched: list[str] = []  # key prefixes of the results the driver has taken
+
+        def run(self, plan, tasks, directions, t_days, engine, workdir, finished):
+            def taken(t, lo, bits):
+                self.fetched.append(f"cityshade-tile{t}-sun{lo}-")
+                finished(t, lo, bits)
+
+            super().run(plan, tasks, directions, t_days, engine, workdir, taken)
+
+        def connect(self):
+            fresh = self.client is None
+            super().connect()
+            if fresh:
+                log = TaskLog()
+                self.cluster.scheduler.add_plugin(log, name=TaskLog.name)
+                log_holder.append(log)
+
+    return Logged("local:2", sample, sha, threads_per_worker=1)
+
+
+def _scheduler_call(executor, fn):
+    return executor.client.run_on_scheduler(lambda dask_scheduler: fn(dask_scheduler))
+
+
+def test_local_cluster_survives_a_killed_worker(files, sample_plain, tmp_path, monkeypatch):
+    """A LocalCluster of 2 workers, one killed mid-run: the run ends with the plain run's
+    numbers, the tasks the driver had added are not run again, the killed worker's are,
+    progress counts each task once."""
+    pytest.importorskip("dask.distributed")
+    import signal
+    import time
+
+    import numba
+
+    _, sample = files
+    steps = _steps(every_s=5400)
+    plain = sample_plain
+    # The driver's own thread count in its environment must not reach the workers.
+    monkeypatch.setenv("NUMBA_NUM_THREADS", str(numba.config.NUMBA_NUM_THREADS))
+    environ_before = dict(os.environ)
+    logs: list[TaskLog] = []
+    executor = _logged_executor(sample, logs)
+    progress, seen = [], {}
+
+    def hook(done, total, unit):
+        progress.append((done, total))
+        if done != 3:
+            return
+        client = executor.client
+        seen["threads"] = set(client.run(lambda: os.environ.get("NUMBA_NUM_THREADS")).values())
+        # Kill the worker holding the most finished results the driver has not taken yet.
+        taken = tuple(executor.fetched)
+        held = _scheduler_call(executor, lambda s: {
+            a: sorted(str(ts.key) for ts in ws.has_what) for a, ws in s.workers.items()})
+        held = {a: [k for k in ks if not k.startswith(taken)] for a, ks in held.items()}
+        victim = max(held, key=lambda a: len(held[a]))
+        seen["lost"] = held[victim]
+        seen["added"] = [k for k in logs[0].arrived if k.startswith(taken)]
+        pid = client.run(os.getpid, workers=[victim])[victim]
+        os.kill(pid, signal.SIGKILL)
+        deadline = time.monotonic() + 60
+        while logs[0].lost_workers == 0 and time.monotonic() < deadline:
+            time.sleep(0.05)
+
+    dask = _run(sample, tmp_path / "dask", steps=steps, tile_px=24, scheduler=executor,
+                on_step=hook)
+    log = logs[0]
+    total = dask.result.diagnostics["tiles"]["tasks"]
+    tiles = dask.result.diagnostics["tiles"]
+    assert tiles["workers"] == 2 and tiles["tiles"] > 2
+    assert total >= 12 and log.lost_workers >= 1
+    assert seen["threads"] == {"1"}
+    assert not (tmp_path / "dask" / "receivers.npy").exists()
+    # The workers' environment does not stay in this process (Numba's threads would clash).
+    keys = ("NUMBA_NUM_THREADS", "OMP_NUM_THREADS", "PYTHONHASHSEED", "MALLOC_TRIM_THRESHOLD_")
+    assert {k: os.environ.get(k) for k in keys} == {k: environ_before.get(k) for k in keys}
+    # Same numbers as without Dask.
+    assert plain.result.hours.tobytes() == dask.result.hours.tobytes()
+    assert plain.result.sample_hours.tobytes() == dask.result.sample_hours.tobytes()
+    _same_stretches(plain, dask)
+    assert dask.manifest["status"] == "finished" and dask.manifest["tasks_done"] == total
+    assert sorted(dask.manifest["finished_steps"]) == list(range(len(steps)))
+    # Progress: every task once, in order, out of the same total.
+    assert progress == [(k, total) for k in range(1, total + 1)]
+    # The results lost with the worker were computed again; the ones added before were not
+    # (a result that arrives twice was computed twice; a task can start twice when Dask moves
+    # it to the idle worker before it runs).
+    assert seen["lost"], "the killed worker held no results"
+    assert all(log.arrived[k] == 2 for k in seen["lost"]), \
+        {k: (log.started[k], log.arrived[k]) for k in seen["lost"]}
+    assert len(seen["added"]) >= 3 and all(log.arrived[k] == 1 for k in seen["added"]), \
+        {k: (log.started[k], log.arrived[k]) for k in seen["added"]}
+    assert len(log.started) == total
+
+
+def test_stopped_distributed_run_resumes_to_the_plain_result(files, sample_plain, tmp_path):
+    pytest.importorskip("dask.distributed")
+    _, sample = files
+    steps = _steps(every_s=5400)
+    plain = sample_plain
+    out = tmp_path / "dask"
+
+    def stop_after(n):
+        def hook(done, total, unit):
+            if done >= n:
+                raise Stop
+        return hook
+
+    first: list[TaskLog] = []
+    with pytest.raises(Stop):
+        _run(sample, out, steps=steps, tile_px=24, scheduler=_logged_executor(sample, first),
+             on_step=stop_after(5))
+    manifest = json.loads((out / B.MANIFEST_NAME).read_text())
+    assert manifest["status"] == "running" and manifest["tasks_done"] == 5
+    second: list[TaskLog] = []
+    resumed = _run(sample, out, steps=steps, tile_px=24,
+                   scheduler=_logged_executor(sample, second))
+    total = resumed.result.diagnostics["tiles"]["tasks"]
+    assert len(second[0].arrived) == total - 5  # only the tasks not added before
+    assert set(second[0].arrived.values()) == {1}
+    assert resumed.manifest["tasks_done"] == total
+    assert plain.result.hours.tobytes() == resumed.result.hours.tobytes()
+    assert plain.result.sample_hours.tobytes() == resumed.result.sample_hours.tobytes()
+    _same_stretches(plain, resumed)

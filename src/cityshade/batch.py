@@ -1024,8 +1024,7 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
               **({"tile_px": tile_px} if tile_px is not None or scheduler is not None
                  or step_month is not None else {}),
               **({"monthly": True} if step_month is not None else {}),
-              **({} if tile_px is not None or scheduler is not None or step_month is not None
-                 else {"stretches": True}),
+              "stretches": True,
               "shadow_settings": dataclasses.asdict(dataclasses.replace(settings.shadows,
                                                                         technique=None))}
     key = params_key(params)
@@ -1084,7 +1083,9 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
 
     instants = [s.centre_utc for s in steps]
     weights = [s.weight_h for s in steps]
+    t_suns = time.perf_counter()
     suns = suns_from_instants(instants, scene.crs, scene.origin_m, settings.sun)
+    suns_s = time.perf_counter() - t_suns  # the whole run's suns in one vectorised call
     units, below, _ = plan_units(suns, weights)
     finished: list[int] = list(below)  # nothing to compute for a sun below the horizon
     done_before = state.units_done()
@@ -1110,11 +1111,12 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
         for i in unit.steps:
             write_mask_png(frames_dir / frame_name(steps[i]), mask)
 
+    from cityshade.runs import Stretches
+
     tiled = None
     if tile_px is not None or scheduler is not None or step_month is not None:
         from cityshade.distributed import run_tiled
 
-        # Tiled runs keep no sunlit stretches yet (sums only).
         result, tiled = run_tiled(scene, camera, instants, t_days, weights_h=weights, suns=suns,
                                   units=units, technique=technique, ground=ground,
                                   samples_per_m2=samples_per_m2, checkpoint=state,
@@ -1122,16 +1124,15 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
                                   step_month=step_month, workdir=outdir, frames=frames,
                                   finished=finished, manifest=manifest,
                                   write_manifest=lambda: write_manifest(outdir, manifest),
-                                  on_step=on_step)
+                                  on_step=on_step, stretches=Stretches.for_steps(steps))
     else:
-        from cityshade.runs import Stretches
-
         result = sun_hours(scene, camera, instants, t_days, weights_h=weights,
                            technique=technique, settings=settings.shadows, ground=ground,
                            suns=suns, samples_per_m2=samples_per_m2, checkpoint=state,
                            reuse_rays=settings.batch.reuse_rays, on_step=step_done,
                            on_frame=frame_done if frames else None,
                            stretches=Stretches.for_steps(steps))
+    result.timings_s["suns_s"] = suns_s
     if state_warning is not None:
         result.warnings.insert(0, state_warning)
     if frames and below:

@@ -149,14 +149,17 @@ class DaskExecutor:
             # Dask's default environment also sets MALLOC_TRIM_THRESHOLD_=64 KiB, which makes
             # glibc map and zero every large temporary afresh: the light-space engine's tasks
             # ran 1.3-1.8x slower in a worker than in the driver with it.
-            # The nanny writes that environment into this process's os.environ before each
-            # spawn and leaves it there; this process's own (Numba's thread count) is put back.
+            # The nanny writes the pre-spawn environment into this process's os.environ before
+            # each spawn (a killed worker's restart too) and leaves it there, and a variable
+            # this process has wins over it; so Numba's thread count goes in ``env``, set in
+            # the worker process only and over what it inherits (a NUMBA_NUM_THREADS changed
+            # here would make this process's next compile fail).
             self._environ = dict(os.environ)
             try:
-                with dask.config.set({"distributed.nanny.pre-spawn-environ": WORKER_ENVIRON | {
-                        "NUMBA_NUM_THREADS": str(threads)}}):
+                with dask.config.set({"distributed.nanny.pre-spawn-environ": WORKER_ENVIRON}):
                     cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
-                                           dashboard_address=None, silence_logs=logging.ERROR)
+                                           dashboard_address=None, silence_logs=logging.ERROR,
+                                           env={"NUMBA_NUM_THREADS": str(threads)})
             finally:
                 _restore_environ(self._environ)
             return Client(cluster), cluster
@@ -212,7 +215,8 @@ class DaskExecutor:
 def run_tiled(scene, camera, instants, t_days: float, *, weights_h, suns, units, technique,
               ground, samples_per_m2, checkpoint, tile_px, scheduler, scene_path, step_month,
               workdir, frames: bool, finished: list, manifest: dict,
-              write_manifest: Callable[[], Any], on_step=None, executor=None):
+              write_manifest: Callable[[], Any], on_step=None, executor=None,
+              stretches=None):
     """The tiled run of :func:`cityshade.batch.run_batch`: (SunHours, TiledRun)."""
     from cityshade.tiles import tiled_sun_hours
 
@@ -248,7 +252,8 @@ def run_tiled(scene, camera, instants, t_days: float, *, weights_h, suns, units,
                                       suns=suns, technique=technique, ground=ground,
                                       samples_per_m2=samples_per_m2, checkpoint=checkpoint,
                                       tile_px=tile_px, step_month=step_month,
-                                      workdir=workdir, executor=executor, on_task=on_task)
+                                      workdir=workdir, executor=executor, on_task=on_task,
+                                      stretches=stretches)
     finally:
         if hasattr(executor, "close"):
             executor.close()

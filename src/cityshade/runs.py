@@ -16,6 +16,7 @@ step still shares its sun. Sums are float64 in step order, the same for any thre
 """
 from __future__ import annotations
 
+import copy
 from typing import Sequence
 
 import numpy as np
@@ -132,6 +133,34 @@ class Stretches:
         self.pixel_shape = tuple(pixel_shape) if pixel_shape is not None else (0, 0)
         self.pixels = _Track(n_px)
         self.samples = _Track(int(n_samples))
+
+    def part(self, n_receivers: int) -> "Stretches":
+        """A planned copy for other receivers (a tile's, :mod:`cityshade.tiles`): the same
+        steps and units, ``n_receivers`` of its own in :attr:`pixels` (flat), no samples."""
+        if self.pixels is None:
+            raise UsageError("plan the stretches before taking a part")
+        other = copy.copy(self)  # the step arrays are shared, never written
+        other.pixel_shape = (int(n_receivers),)
+        other.pixels = _Track(int(n_receivers))
+        other.samples = _Track(0)
+        other._pending = {}
+        other.cursor = 0
+        other.finished = False
+        return other
+
+    def merge(self, parts: Sequence["Stretches"], slots: Sequence[np.ndarray]) -> None:
+        """Take the finished parts' arrays into this planned one: part ``i``'s receiver ``j``
+        is receiver ``slots[i][j]`` of the flat pixels-then-samples order."""
+        n_px = self.pixels.current_h.size
+        for name in ("current_h", "longest_h", "qualified_h"):
+            flat = np.concatenate([getattr(self.pixels, name), getattr(self.samples, name)])
+            for part, slot in zip(parts, slots):
+                flat[np.asarray(slot, np.int64)] = getattr(part.pixels, name)
+            setattr(self.pixels, name, flat[:n_px].copy())
+            setattr(self.samples, name, flat[n_px:].copy())
+        self.cursor = len(self.starts)
+        self._pending = {}
+        self.finished = all(p.finished for p in parts)
 
     def add(self, k: int, pixel_lit, sample_lit) -> None:
         """Lit flags of unit ``k`` (pixels (H, W) or None, samples (N,) or None); applies every

@@ -222,6 +222,8 @@ class TiledState:
 
     tile_done: np.ndarray      # (T,) int64
     sums: np.ndarray           # (1 + months, n_slots) float64
+    #: Per tile, the arrays of its sunlit stretches (:meth:`cityshade.runs.Stretches.state`).
+    stretches: dict[int, dict[str, np.ndarray]] = field(default_factory=dict)
 
 
 def _load_state(checkpoint, n_tiles: int, n_units: int, shape: tuple[int, int]):
@@ -236,6 +238,11 @@ def _load_state(checkpoint, n_tiles: int, n_units: int, shape: tuple[int, int]):
             key = str(z["key"])
             tile_done = np.array(z["tile_done"], dtype=np.int64)
             sums = np.array(z["sums"], dtype=np.float64)
+            stretches: dict[int, dict[str, np.ndarray]] = {}
+            for name in z.files:
+                if name.startswith("st") and "_" in name and name[2:name.index("_")].isdigit():
+                    t = int(name[2:name.index("_")])
+                    stretches.setdefault(t, {})[name[name.index("_") + 1:]] = np.array(z[name])
     except (OSError, ValueError, KeyError, zipfile.BadZipFile) as exc:
         raise UsageError(f"the saved state {checkpoint.path} is damaged ({exc}); {hint}") \
             from None
@@ -245,14 +252,17 @@ def _load_state(checkpoint, n_tiles: int, n_units: int, shape: tuple[int, int]):
     if tile_done.shape != (n_tiles,) or sums.shape != shape or \
             not ((tile_done >= 0) & (tile_done <= n_units)).all():
         raise UsageError(f"the saved state {checkpoint.path} does not fit this run; {hint}")
-    return TiledState(tile_done, sums)
+    return TiledState(tile_done, sums, stretches)
 
 
-def _save_state(checkpoint, state: TiledState) -> None:
+def _save_state(checkpoint, state: TiledState, parts=None) -> None:
     """Atomically, the manifest told the new checksum first; ``units_done`` is what every
-    tile has added (what :meth:`cityshade.batch.Checkpoint.units_done` reads)."""
+    tile has added (what :meth:`cityshade.batch.Checkpoint.units_done` reads); with
+    ``parts``, each tile's sunlit stretches as ``st{tile}_{name}``."""
     done = int(state.tile_done.min()) if state.tile_done.size else 0
-    checkpoint.save_arrays(done, tile_done=state.tile_done, sums=state.sums)
+    extra = {f"st{t}_{k}": v for t, part in enumerate(parts or ())
+             for k, v in part.state().items()}
+    checkpoint.save_arrays(done, tile_done=state.tile_done, sums=state.sums, **extra)
 
 
 @dataclass
@@ -293,7 +303,8 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
                     step_month: Sequence[str] | None = None, workdir=None,
                     executor=None, save_every_s: float = 10.0,
                     on_plan: Callable[[int], None] | None = None,
-                    on_task: Callable[[int, int, list], None] | None = None):
+                    on_task: Callable[[int, int, list], None] | None = None,
+                    stretches=None):
     """:func:`cityshade.batch.sun_hours` over tiles of receivers (and optionally per month).
 
     Parameters
@@ -316,6 +327,11 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
     on_task : callable(tasks_done, tasks_total, units_finished)
         After each task is added; ``units_finished`` lists the sun positions (indices into
         the run's units) that every tile has now added.
+    stretches : cityshade.runs.Stretches, optional
+        Also keep the sunlit stretches, as :func:`cityshade.batch.sun_hours` does: each tile
+        replays its own receivers' steps in time order (its blocks arrive in sun-position
+        order), so every receiver sees the steps of the untiled run; merged at the end
+        (``result.stretches``). Kept for the whole run, not per month.
 
     Returns
     -------
@@ -361,6 +377,14 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
     if state is None:
         state = TiledState(np.zeros(n_tiles, np.int64),
                            np.zeros((1 + len(months), plan.n_slots), np.float64))
+    parts = None
+    if stretches is not None:
+        stretches.plan(units, plan.pixel_shape if cp is not None else None, plan.n_samples)
+        parts = [stretches.part(int(plan.start[t + 1] - plan.start[t]))
+                 for t in range(n_tiles)]
+        for t, part in enumerate(parts):
+            if state.tile_done[t]:
+                part.restore(state.stretches.get(t, {}))
     blocks = [(b, min(b + block, n_units)) for b in range(0, n_units, block)]
     # Tasks of a tile whose first sun positions are saved resume at the saved count.
     tasks = [(t, max(lo, int(state.tile_done[t])), hi) for t in range(n_tiles)
@@ -378,13 +402,20 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
     last_save = time.perf_counter()
     pending: dict[int, dict[int, np.ndarray]] = {t: {} for t in range(n_tiles)}
 
+    consistent = True  # False while a sun position is half added (then nothing is saved)
+
     def add(t: int, lo: int, bits: np.ndarray) -> None:
+        nonlocal consistent
         a, b = int(plan.start[t]), int(plan.start[t + 1])
         slots = plan.slot[a:b]
         for k in range(bits.shape[0]):
             lit = np.unpackbits(bits[k], count=b - a).astype(bool)
+            consistent = False
             accumulate(state.sums, slots, unit_w[lo + k], lit)
-        state.tile_done[t] = lo + bits.shape[0]
+            if parts is not None:
+                parts[t].add(lo + k, lit, None)
+            state.tile_done[t] = lo + k + 1
+            consistent = True
 
     def finished(t: int, lo: int, bits: np.ndarray) -> None:
         # Blocks of one tile are added in sun-position order; a block that comes early waits.
@@ -401,7 +432,7 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
             finished_units = now_done
             if checkpoint is not None and time.perf_counter() - last_save >= save_every_s:
                 t0 = time.perf_counter()
-                _save_state(checkpoint, state)
+                _save_state(checkpoint, state, parts)
                 timings["checkpoint_s"] += time.perf_counter() - t0
                 last_save = time.perf_counter()
             if on_task is not None:
@@ -421,9 +452,9 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
         completed = True
     finally:
         timings["shadow_s"] = time.perf_counter() - t0
-        if checkpoint is not None and (tasks or not completed):
+        if checkpoint is not None and consistent and (tasks or not completed):
             t1 = time.perf_counter()
-            _save_state(checkpoint, state)
+            _save_state(checkpoint, state, parts)
             timings["checkpoint_s"] += time.perf_counter() - t1
 
     n_px = plan.pixel_shape[0] * plan.pixel_shape[1]
@@ -433,6 +464,11 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
                         ).astype(np.float32)
 
     hours = pixels(state.sums[0]) if cp is not None else None
+    if parts is not None:
+        for part in parts:
+            part.finish()
+        stretches.merge(parts, [plan.slot[plan.start[t]:plan.start[t + 1]]
+                                for t in range(n_tiles)])
     sample_hours = polygon_hours = None
     run = TiledRun(plan=plan, tasks=total, tasks_resumed=resumed_tasks, halo_m=reach)
     if samples is not None:
@@ -460,5 +496,6 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
                       hours_total=float(weights.sum()),
                       hours_sun_up=float(sum(w for i, w in enumerate(weights)
                                              if i not in below_set)),
-                      suns=suns, timings_s=timings, diagnostics=diagnostics, warnings=warnings)
+                      suns=suns, timings_s=timings, diagnostics=diagnostics, warnings=warnings,
+                      stretches=stretches)
     return result, run
