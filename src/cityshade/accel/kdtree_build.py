@@ -249,6 +249,37 @@ def _split_probabilities(lo, hi, axis, p, t0, t1):
 
 
 @njit(cache=True)
+def _plane_terms(lo, hi, axis, t0, t1):
+    """The per-node terms of :func:`_split_probabilities` on one axis, computed once per sweep:
+    (start, end, cap, side, norm); ``norm`` <= 0 when the probabilities are undefined."""
+    if axis == TIME_AXIS:
+        a = max(lo[3], t0)
+        b = min(hi[3], t1)
+        return a, b, 0.0, 0.0, b - a
+    ex = hi[0] - lo[0]
+    ey = hi[1] - lo[1]
+    ez = hi[2] - lo[2]
+    area = 2.0 * (ex * ey + ex * ez + ey * ez)
+    if axis == 0:
+        e1, e2 = ey, ez
+    elif axis == 1:
+        e1, e2 = ex, ez
+    else:
+        e1, e2 = ex, ey
+    return lo[axis], hi[axis], e1 * e2, e1 + e2, area
+
+
+@njit(cache=True, inline="always")
+def _probabilities_at(is_time, p, start, end, cap, side, norm):
+    """(P_L, P_R) at ``p`` from :func:`_plane_terms`: the same arithmetic as
+    :func:`_split_probabilities`, on scalars (passing the box arrays per event costs a
+    reference-count update each)."""
+    if is_time:
+        return (p - start) / norm, (end - p) / norm
+    return 2.0 * (cap + (p - start) * side) / norm, 2.0 * (cap + (end - p) * side) / norm
+
+
+@njit(cache=True)
 def _split_cost(pl, pr, nl, nr, ct, ci, bonus):
     cost = ct + ci * (pl * nl + pr * nr)
     if nl == 0 or nr == 0:
@@ -287,12 +318,14 @@ def _sweep_axis(lo, hi, axis, ord_lo, ord_hi, blo, bhi, t0, t1, ct, ci, bonus, b
         if lo[r, axis] != b:
             ends[ne] = b
             ne += 1
-    if axis == TIME_AXIS:
+    is_time = axis == TIME_AXIS
+    if is_time:
         a_lo = max(blo[3], t0)
         a_hi = min(bhi[3], t1)
     else:
         a_lo = blo[axis]
         a_hi = bhi[axis]
+    start, end, cap, side, norm = _plane_terms(blo, bhi, axis, t0, t1)
     i = 0
     j = 0
     k = 0
@@ -321,21 +354,20 @@ def _sweep_axis(lo, hi, axis, ord_lo, ord_hi, blo, bhi, t0, t1, ct, ci, bonus, b
         if p == np.inf:
             break
         n_right -= p_planar + p_end
-        if a_lo < p < a_hi:
-            pl, pr = _split_probabilities(blo, bhi, axis, p, t0, t1)
-            if pl >= 0.0:
-                c_left = _split_cost(pl, pr, n_left + p_planar, n_right, ct, ci, bonus)
-                c_right = _split_cost(pl, pr, n_left, n_right + p_planar, ct, ci, bonus)
-                if c_left < best[0]:
-                    best[0] = c_left
-                    best[1] = axis
-                    best[2] = p
-                    best[3] = 1.0
-                if c_right < best[0]:
-                    best[0] = c_right
-                    best[1] = axis
-                    best[2] = p
-                    best[3] = 0.0
+        if a_lo < p < a_hi and norm > 0.0:
+            pl, pr = _probabilities_at(is_time, p, start, end, cap, side, norm)
+            c_left = _split_cost(pl, pr, n_left + p_planar, n_right, ct, ci, bonus)
+            c_right = _split_cost(pl, pr, n_left, n_right + p_planar, ct, ci, bonus)
+            if c_left < best[0]:
+                best[0] = c_left
+                best[1] = axis
+                best[2] = p
+                best[3] = 1.0
+            if c_right < best[0]:
+                best[0] = c_right
+                best[1] = axis
+                best[2] = p
+                best[3] = 0.0
         n_left += p_start + p_planar
 
 
@@ -352,6 +384,8 @@ def _binned_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, nbins, best):
     if not (b > a):
         return
     scale = nbins / (b - a)
+    is_time = axis == TIME_AXIS
+    start, end, cap, side, norm = _plane_terms(blo, bhi, axis, t0, t1)
     start_count = np.zeros(nbins, np.int64)
     end_count = np.zeros(nbins, np.int64)
     for r in range(n):
@@ -377,11 +411,9 @@ def _binned_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, nbins, best):
         n_left += start_count[i - 1]
         n_right -= end_count[i - 1]
         p = _f32_down(a + i * (b - a) / nbins)
-        if not (a < p < b):
+        if not (a < p < b) or norm <= 0.0:
             continue
-        pl, pr = _split_probabilities(blo, bhi, axis, p, t0, t1)
-        if pl < 0.0:
-            continue
+        pl, pr = _probabilities_at(is_time, p, start, end, cap, side, norm)
         c = _split_cost(pl, pr, n_left, n_right, ct, ci, bonus)
         if c < best[0]:
             best[0] = c
@@ -510,10 +542,21 @@ def _child_orders(orders, side, lo_l, hi_l, lo_r, hi_r, n_axes, clipped):
         use_hi = (q & 1) == 1
         nl = 0
         nr = 0
+        if n_both == 0:  # nothing re-sorted: the filtered orders are the children's
+            for i in range(n):
+                r = orders[q, i]
+                s = side[r]
+                if s & 1:
+                    order_l[q, nl] = map_l[r]
+                    nl += 1
+                if s & 2:
+                    order_r[q, nr] = map_r[r]
+                    nr += 1
+            continue
         for i in range(n):
             r = orders[q, i]
             s = side[r]
-            if n_both and s == 3:
+            if s == 3:
                 continue
             if s & 1:
                 rest_l[nl] = map_l[r]
