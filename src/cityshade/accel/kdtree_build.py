@@ -219,39 +219,13 @@ def _surface(lo, hi, has_time, t0, t1):
 
 
 @njit(cache=True)
-def _split_probabilities(lo, hi, axis, p, t0, t1):
-    """(P_L, P_R) of a split of box (lo, hi) at ``p`` on ``axis``; (-1, -1) if undefined."""
-    if axis == TIME_AXIS:
-        a = max(lo[3], t0)
-        b = min(hi[3], t1)
-        d = b - a
-        if d <= 0.0:
-            return -1.0, -1.0
-        return (p - a) / d, (b - p) / d
-    ex = hi[0] - lo[0]
-    ey = hi[1] - lo[1]
-    ez = hi[2] - lo[2]
-    area = 2.0 * (ex * ey + ex * ez + ey * ez)
-    if area <= 0.0:
-        return -1.0, -1.0
-    # The two other extents give the area of the faces parallel to the split plane.
-    if axis == 0:
-        e1, e2 = ey, ez
-    elif axis == 1:
-        e1, e2 = ex, ez
-    else:
-        e1, e2 = ex, ey
-    el = p - lo[axis]
-    er = hi[axis] - p
-    cap = e1 * e2
-    side = e1 + e2
-    return 2.0 * (cap + el * side) / area, 2.0 * (cap + er * side) / area
-
-
-@njit(cache=True)
 def _plane_terms(lo, hi, axis, t0, t1):
-    """The per-node terms of :func:`_split_probabilities` on one axis, computed once per sweep:
-    (start, end, cap, side, norm); ``norm`` <= 0 when the probabilities are undefined."""
+    """The per-node terms of the split probabilities on one axis, computed once per sweep:
+    (start, end, cap, side, norm); ``norm`` <= 0 when the probabilities are undefined.
+
+    A spatial split's probabilities are the child areas over the node's (the faces parallel
+    to the plane, ``cap``, plus the perimeter ``side`` times the child's extent); a time
+    split's are the ratios of the clamped durations."""
     if axis == TIME_AXIS:
         a = max(lo[3], t0)
         b = min(hi[3], t1)
@@ -271,9 +245,8 @@ def _plane_terms(lo, hi, axis, t0, t1):
 
 @njit(cache=True, inline="always")
 def _probabilities_at(is_time, p, start, end, cap, side, norm):
-    """(P_L, P_R) at ``p`` from :func:`_plane_terms`: the same arithmetic as
-    :func:`_split_probabilities`, on scalars (passing the box arrays per event costs a
-    reference-count update each)."""
+    """(P_L, P_R) of a split at ``p`` from :func:`_plane_terms`; scalars only (passing the
+    box arrays per event would cost reference-count updates each)."""
     if is_time:
         return (p - start) / norm, (end - p) / norm
     return 2.0 * (cap + (p - start) * side) / norm, 2.0 * (cap + (end - p) * side) / norm
