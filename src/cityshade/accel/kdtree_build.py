@@ -261,35 +261,35 @@ def _split_cost(pl, pr, nl, nr, ct, ci, bonus):
 
 
 @njit(cache=True)
-def _sweep_axis(lo, hi, axis, ord_lo, ord_hi, blo, bhi, t0, t1, ct, ci, bonus, best):
+def _sweep_axis(lo, hi, axis, ord_lo, ord_hi, blo, bhi, t0, t1, ct, ci, bonus, best,
+                events):
     """Exact SAH sweep over the sorted events of one axis (Wald & Havran 2006, §4.2).
 
     ``ord_lo`` / ``ord_hi`` list the references in increasing ``lo`` / ``hi`` on ``axis``
     (kept sorted from node to node by :func:`_child_orders`, so no sort happens here).
     ``best`` = [cost, axis, position, planar_left] is updated in place when a cheaper plane is
     found. Events: a start at ``lo``, an end at ``hi``, or a planar event when ``lo == hi``.
+    ``events`` is a (3, >= n) float64 work buffer (rows: starts, ends, planars), allocated once
+    per build instead of three arrays per node and axis.
     """
     n = lo.shape[0]
-    starts = np.empty(n)
-    ends = np.empty(n)
-    planars = np.empty(n)
     ns = 0
     npl = 0
     for i in range(n):
         r = ord_lo[i]
         a = lo[r, axis]
         if a == hi[r, axis]:
-            planars[npl] = a
+            events[2, npl] = a
             npl += 1
         else:
-            starts[ns] = a
+            events[0, ns] = a
             ns += 1
     ne = 0
     for i in range(n):
         r = ord_hi[i]
         b = hi[r, axis]
         if lo[r, axis] != b:
-            ends[ne] = b
+            events[1, ne] = b
             ne += 1
     is_time = axis == TIME_AXIS
     if is_time:
@@ -307,21 +307,21 @@ def _sweep_axis(lo, hi, axis, ord_lo, ord_hi, blo, bhi, t0, t1, ct, ci, bonus, b
     while i < ns or j < ns or k < npl:
         p = np.inf
         if i < ns:
-            p = starts[i]
-        if j < ns and ends[j] < p:
-            p = ends[j]
-        if k < npl and planars[k] < p:
-            p = planars[k]
+            p = events[0, i]
+        if j < ns and events[1, j] < p:
+            p = events[1, j]
+        if k < npl and events[2, k] < p:
+            p = events[2, k]
         p_end = 0
-        while j < ns and ends[j] == p:
+        while j < ns and events[1, j] == p:
             j += 1
             p_end += 1
         p_planar = 0
-        while k < npl and planars[k] == p:
+        while k < npl and events[2, k] == p:
             k += 1
             p_planar += 1
         p_start = 0
-        while i < ns and starts[i] == p:
+        while i < ns and events[0, i] == p:
             i += 1
             p_start += 1
         if p == np.inf:
@@ -596,6 +596,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
     n_prims = 0
 
     scratch = np.empty((2, 3, 16))
+    events = np.empty((3, max(1, min(sweep_threshold, n_tri))))
     clo = np.empty(3)
     chi = np.empty(3)
 
@@ -678,7 +679,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
                     _binned_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, nbins, best)
                 else:
                     _sweep_axis(lo, hi, axis, orders[2 * axis], orders[2 * axis + 1], blo, bhi,
-                                t0, t1, ct, ci, bonus, best)
+                                t0, t1, ct, ci, bonus, best, events)
         if best[1] < 0.0 or best[0] >= ci * n:
             # Leaf: references sorted by (material, triangle id) make the draw batches.
             key = np.empty(n, np.int64)
