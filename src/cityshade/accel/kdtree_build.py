@@ -682,13 +682,28 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
                                 t0, t1, ct, ci, bonus, best, events)
         if best[1] < 0.0 or best[0] >= ci * n:
             # Leaf: references sorted by (material, triangle id) make the draw batches.
-            key = np.empty(n, np.int64)
-            for r in range(n):
-                key[r] = (np.int64(material[ids[r]]) + 1) * n_key + ids[r]
-            order = np.argsort(key, kind="mergesort")
             prims = _grow(prims, n_prims + n)
-            for r in range(n):
-                prims[n_prims + r] = ids[order[r]]
+            if n <= 32:
+                # Insertion sort in place (keys are unique): most leaves hold a few
+                # references (no key and order arrays per leaf).
+                for r in range(n):
+                    t = ids[r]
+                    k = (np.int64(material[t]) + 1) * n_key + t
+                    j = n_prims + r
+                    while j > n_prims:
+                        u = prims[j - 1]
+                        if (np.int64(material[u]) + 1) * n_key + u <= k:
+                            break
+                        prims[j] = u
+                        j -= 1
+                    prims[j] = t
+            else:
+                key = np.empty(n, np.int64)
+                for r in range(n):
+                    key[r] = (np.int64(material[ids[r]]) + 1) * n_key + ids[r]
+                order = np.argsort(key, kind="mergesort")
+                for r in range(n):
+                    prims[n_prims + r] = ids[order[r]]
             node_axis[node] = LEAF_CODE
             node_child[node] = n
             node_first[node] = n_prims
