@@ -579,7 +579,7 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
     from cityshade.shadows import get_technique
 
     t_start = time.perf_counter()
-    if scene.kdtree is None:
+    if scene.kdtree is None and getattr(scene, "tiled", None) is None:
         raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
     instants = list(instants_utc)
     if not instants:

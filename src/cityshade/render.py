@@ -96,7 +96,7 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
     from cityshade.shading import shade
     from cityshade.shadows import get_technique
 
-    if scene.kdtree is None:
+    if scene.kdtree is None and getattr(scene, "tiled", None) is None:
         raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
     tech = get_technique(technique)
     check_frame_memory(camera, technique=technique, settings=settings)  # before any allocation
