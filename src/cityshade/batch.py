@@ -846,6 +846,10 @@ def write_sun_hours(outdir, result: SunHours, scene, camera, meta: dict[str, Any
     if result.hours is not None:
         exr = outdir / "sun_hours.exr"
         channels = {"sun_hours": result.hours, "objid": np.asarray(result.surfaces.obj_id)}
+        if getattr(scene, "tiled", None) is not None:  # a tiled cache's view: the global ids
+            from cityshade.tiledcache import to_global
+
+            channels["objid"] = to_global(scene.global_obj, channels["objid"])
         if result.stretches is not None:
             # Longest continuous sunlit stretch per pixel (NaN where no surface).
             channels["longest_sun_h"] = np.where(result.valid, result.stretches.pixel_longest_h(),

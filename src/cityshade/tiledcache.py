@@ -206,8 +206,11 @@ def save_tiled(scene: Scene, folder: str | os.PathLike, tile_m: float, settings,
             total += size
             del part, globals_, extra
             release_freed_memory()
+        from cityshade.ground import ground_height_m
+
         box = _box(scene.vertices)
-        index = {"kind": INDEX_KIND, "index_version": INDEX_VERSION,
+        index = {
+                 "ground_m": {m: ground_height_m(scene, m) for m in ("min", "auto")},"kind": INDEX_KIND, "index_version": INDEX_VERSION,
                  "tile_m": tile_m, "origin_m": np.asarray(scene.origin_m, np.float64).tolist(),
                  "crs": scene.crs.to_json(), "box_m": box,
                  "counts": {"objects": len(scene.obj_ids), "polygons": len(scene.poly_ids),
@@ -433,6 +436,12 @@ class TiledCache:
         hit = ((self.boxes[:, 0] <= sweep_hi + pad) & (self.boxes[:, 1] >= sweep_lo - pad)
                ).all(axis=1)
         return [int(i) for i in np.flatnonzero(hit)]
+
+
+def to_global(global_index: np.ndarray, ids: np.ndarray) -> np.ndarray:
+    """A view's ids (-1: none) as the one cache's ids, in ``ids``' dtype and shape."""
+    ids = np.asarray(ids)
+    return np.where(ids >= 0, np.asarray(global_index)[np.maximum(ids, 0)], -1).astype(ids.dtype)
 
 
 def occluded_over_tiles(view, origins, directions, engine: Callable) -> np.ndarray:

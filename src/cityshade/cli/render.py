@@ -113,6 +113,11 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
                        f"{sun.height_m:.1f} m", err=True)
         for key, value in frame.diagnostics.lines():
             click.echo(f"{key:<8} {value}", err=True)
+        tiled = getattr(scene, "tiled", None)
+        if tiled is not None:
+            click.echo(f"tiles    {len(scene.tile_ids)} of {len(tiled.tiles)} in view, "
+                       f"{len(tiled.tiles_mapped)} mapped (shadow rays reach the rest)",
+                       err=True)
     click.echo(" ".join(str(p) for p in written))
 
 
