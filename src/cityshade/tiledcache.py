@@ -320,6 +320,12 @@ class TiledCache:
             self._open[i] = scene
         return scene
 
+    def tile_globals(self, i: int) -> dict[str, np.ndarray]:
+        """Tile ``i``'s one-cache index of each of its objects, polygons, triangles and
+        vertices (``obj``, ``poly``, ``tri``, ``vert``)."""
+        self.tile(i)
+        return self._globals[i]
+
     @property
     def tiles_mapped(self) -> list[int]:
         """The tiles memory-mapped so far."""
