@@ -198,7 +198,7 @@ def test_bad_input_one_line(built, tmp_path):
 
 def test_real_file_in_tiles(tmp_path):
     """The TUM campus, read as 3 files with border duplicates, built as a tiled cache of
-    100 m tiles, renders the one-file cache's map bit for bit."""
+    100 m tiles, renders the map of the same files built as one cache bit for bit."""
     from test_tiles import split_citygml
 
     from cityshade.build import build_file
@@ -208,8 +208,9 @@ def test_real_file_in_tiles(tmp_path):
     from cityshade.sun import sun_from_angles
 
     tum = shared_file("munich-tum-campus-lod2/TUM Munich.gml")
-    one = load_scene(build_file(tum, tmp_path / "tum.cityshade")[0])
     files = split_citygml(tum, tmp_path, 3, overlap=2)
+    # The same files as one cache (material numbers follow the files' order, test_tiles).
+    one = load_scene(build_file(files, tmp_path / "tum.cityshade")[0])
     tc = open_scene(build_file(files, tmp_path / "tum_tiled.cityshade", tile_m=100.0)[0])
     assert len(tc.tiles) >= 4
     sun = sun_from_angles(150.0, 35.0, one.crs, one.origin_m)
