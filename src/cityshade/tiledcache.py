@@ -401,11 +401,13 @@ class TiledCache:
         fields["tri_polygon"] = remap("poly", fields["tri_polygon"], part_tri).astype(np.int32)
         fields["triangles"] = remap("vert", fields["triangles"], part_tri[:, None]
                                     ).astype(np.int32)
-        obj_src = [(k, j) for k, p in enumerate(parts) for j in range(len(p.obj_ids))]
-        poly_src = [(k, j) for k, p in enumerate(parts) for j in range(len(p.poly_ids))]
-        obj_ids = [parts[obj_src[i][0]].obj_ids[obj_src[i][1]] for i in order["obj"]]
-        obj_types = [parts[obj_src[i][0]].obj_types[obj_src[i][1]] for i in order["obj"]]
-        poly_ids = [parts[poly_src[i][0]].poly_ids[poly_src[i][1]] for i in order["poly"]]
+        # The id tables decoded once per tile (PackedStrings iterate fast, index slowly).
+        obj_all = [oid for p in parts for oid in p.obj_ids]
+        type_all = [t for p in parts for t in p.obj_types]
+        poly_all = [pid for p in parts for pid in p.poly_ids]
+        obj_ids = [obj_all[i] for i in order["obj"].tolist()]
+        obj_types = [type_all[i] for i in order["obj"].tolist()]
+        poly_ids = [poly_all[i] for i in order["poly"].tolist()]
         scene = Scene(crs=self.crs, obj_ids=obj_ids, obj_types=obj_types, poly_ids=poly_ids,
                       materials=self.materials, textures=self.textures, report=self.report,
                       **fields)
