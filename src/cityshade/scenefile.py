@@ -113,9 +113,9 @@ def open_scene(path: str | os.PathLike):
     """A scene file (:func:`load_scene`) or a tiled cache folder (its index only:
     :func:`cityshade.tiledcache.open_tiled`; :meth:`~cityshade.tiledcache.TiledCache.view`
     gives the scene of the tiles a camera reaches)."""
-    from cityshade.tiledcache import is_tiled_cache, open_tiled
+    from cityshade.tiledcache import open_tiled
 
-    return open_tiled(path) if is_tiled_cache(path) else load_scene(path)
+    return open_tiled(path) if Path(path).is_dir() else load_scene(path)
 
 
 def scene_for_camera(scene, camera, technique: str | None = None):

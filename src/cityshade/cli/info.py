@@ -179,9 +179,7 @@ def info(file: Path, as_json: bool, crs: str | None, verify: bool) -> None:
     from cityshade.cache import is_cache_file
     from cityshade.cli.options import settings_for_source
     from cityshade.errors import InputError
-    from cityshade.tiledcache import is_tiled_cache
-
-    if is_tiled_cache(file):
+    if file.is_dir():  # a tiled cache (or a folder that is not one: said in one line)
         import time
 
         from cityshade.tiledcache import open_tiled
