@@ -65,7 +65,8 @@ print(json.dumps({"load_s": seconds, "triangles": scene.n_triangles}))
 
 
 def git_commit(python: str) -> str:
-    where = Path(python).resolve().parents[2] if "/.venv/" in python else REPO
+    # absolute(), not resolve(): a venv's python links to the base interpreter (pyenv's repo)
+    where = Path(python).absolute().parents[2] if "/.venv/" in python else REPO
     try:
         return subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=where,
                               capture_output=True, text=True, check=True).stdout.strip()
