@@ -64,8 +64,9 @@ print(json.dumps({"load_s": seconds, "triangles": scene.n_triangles}))
 """
 
 
-def _git_commit(python: str) -> str:
-    where = Path(python).resolve().parents[2] if "/.venv/" in python else REPO
+def git_commit(python: str) -> str:
+    # absolute(), not resolve(): a venv's python links to the base interpreter (pyenv's repo)
+    where = Path(python).absolute().parents[2] if "/.venv/" in python else REPO
     try:
         return subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=where,
                               capture_output=True, text=True, check=True).stdout.strip()
@@ -170,7 +171,7 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     args.workdir.mkdir(parents=True, exist_ok=True)
     cache = args.workdir / (args.city.stem + ".cityshade")
-    result = {"commit": _git_commit(args.python), "python": args.python, "city": str(args.city)}
+    result = {"commit": git_commit(args.python), "python": args.python, "city": str(args.city)}
     if not args.skip_build:
         result["build"] = [build_figures(args.python, args.city, cache, int(t))
                            for t in args.threads.split(",")]

@@ -579,7 +579,7 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
     from cityshade.shadows import get_technique
 
     t_start = time.perf_counter()
-    if scene.kdtree is None:
+    if scene.kdtree is None and getattr(scene, "tiled", None) is None:
         raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
     instants = list(instants_utc)
     if not instants:
@@ -846,6 +846,10 @@ def write_sun_hours(outdir, result: SunHours, scene, camera, meta: dict[str, Any
     if result.hours is not None:
         exr = outdir / "sun_hours.exr"
         channels = {"sun_hours": result.hours, "objid": np.asarray(result.surfaces.obj_id)}
+        if getattr(scene, "tiled", None) is not None:  # a tiled cache's view: the global ids
+            from cityshade.tiledcache import to_global
+
+            channels["objid"] = to_global(scene.global_obj, channels["objid"])
         if result.stretches is not None:
             # Longest continuous sunlit stretch per pixel (NaN where no surface).
             channels["longest_sun_h"] = np.where(result.valid, result.stretches.pixel_longest_h(),

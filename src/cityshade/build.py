@@ -50,7 +50,8 @@ def read_model(source: str | os.PathLike, progress: Callable[[int, int], None] |
 
 
 def build_scene_from_file(source: str | os.PathLike, settings: Settings | None = None,
-                          progress: Callable[[str, int, int], None] | None = None) -> Scene:
+                          progress: Callable[[str, int, int], None] | None = None,
+                          tree: bool = True) -> Scene:
     """Read, triangulate and (when the scene needs one) build the kd-tree of a city model file
     (CityGML, CityJSON or CityJSONSeq).
 
@@ -80,7 +81,8 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
     del raw
     release_freed_memory()
     timings["triangulate_s"] = time.perf_counter() - t1
-    scene.kdtree = build_tree(scene, settings, progress, timings)
+    if tree:  # a tiled cache builds one tree per tile instead
+        scene.kdtree = build_tree(scene, settings, progress, timings)
     scene.report["timings"] = {k: round(v, 4) for k, v in timings.items()}
     return scene
 
@@ -123,7 +125,8 @@ def expand_sources(sources: Iterable[str | os.PathLike]) -> list[Path]:
 
 
 def build_scene_from_files(sources: list[Path], settings: Settings | None = None,
-                           progress: Callable[[str, int, int], None] | None = None) -> Scene:
+                           progress: Callable[[str, int, int], None] | None = None,
+                           tree: bool = True) -> Scene:
     """One scene from several city model files (tiles): one origin and CRS, the objects of
     every file, an object whose gml:id an earlier file had kept once (counted in
     ``report["tiles"]``). Files are read one at a time, so memory holds one file's read model
@@ -185,7 +188,8 @@ def build_scene_from_files(sources: list[Path], settings: Settings | None = None
     scene = merger.finish()
     release_freed_memory()
     timings["merge_s"] = time.perf_counter() - t
-    scene.kdtree = build_tree(scene, settings, progress, timings)
+    if tree:
+        scene.kdtree = build_tree(scene, settings, progress, timings)
     scene.report["timings"] = {k: round(v, 4) for k, v in timings.items()}
     return scene
 
@@ -211,10 +215,19 @@ def _source_record(path: Path) -> dict:
 
 def build_file(source: str | os.PathLike | list, output: str | os.PathLike | None = None,
                settings: Settings | None = None,
-               progress: Callable[[str, int, int], None] | None = None) -> tuple[Path, Scene, int]:
+               progress: Callable[[str, int, int], None] | None = None,
+               tile_m: float | None = None) -> tuple[Path, Scene, int]:
     """Build the ``.cityshade`` file of a CityGML/CityJSON file, or of several files and
-    folders (a list: :func:`build_scene_from_files`); returns (output path, scene, bytes)."""
+    folders (a list: :func:`build_scene_from_files`); returns (output path, scene, bytes).
+    With ``tile_m`` the output is a tiled cache folder (:mod:`cityshade.tiledcache`): tiles of
+    ``tile_m`` × ``tile_m`` CRS metres, each with its own kd-tree (the scene has none)."""
     from cityshade.scenefile import save_scene
+    from cityshade.tiledcache import save_tiled
+
+    def save(scene, output, source_info, options):
+        if tile_m is None:
+            return save_scene(scene, output, source_info, options)
+        return save_tiled(scene, output, tile_m, settings, source_info, options, progress)
 
     settings = settings or Settings()
     if isinstance(source, (list, tuple)):
@@ -227,7 +240,7 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
         if output is None:
             raise ContractError("several input files need an output path")
         output = Path(output)
-        scene = build_scene_from_files(sources, settings, progress)
+        scene = build_scene_from_files(sources, settings, progress, tree=tile_m is None)
         if progress:
             progress("write", 0, 1)
         files = [_source_record(p) for p in sources]
@@ -237,14 +250,14 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
                        "size": sum(f["size"] for f in files),
                        "mtime": max(f["mtime"] for f in files), "sha256": combined,
                        "files": files}
-        size = save_scene(scene, output, source_info, asdict(settings.build))
+        size = save(scene, output, source_info, asdict(settings.build))
         return output, scene, size
     source = Path(source)
     output = Path(output) if output is not None else default_output(source)
-    scene = build_scene_from_file(source, settings, progress)
+    scene = build_scene_from_file(source, settings, progress, tree=tile_m is None)
     if progress:
         progress("write", 0, 1)
     source_info = _source_record(source)
     options = asdict(settings.build)
-    size = save_scene(scene, output, source_info, options)
+    size = save(scene, output, source_info, options)
     return output, scene, size

@@ -28,6 +28,9 @@ GROUND_MARGIN_REL = 0.5
 
 def ground_height_m(scene, mode: str) -> float:
     """Render-space z of the ground plane for ``mode`` ("min", "auto" or a CRS height)."""
+    tiled = getattr(scene, "tiled", None)
+    if tiled is not None and mode in ("min", "auto"):  # a view of some tiles: the whole city's
+        return float(tiled.index["ground_m"][mode])
     vertices = np.asarray(scene.vertices, dtype=np.float64)
     if mode == "min":
         return float(vertices[:, 2].min())
@@ -56,8 +59,12 @@ def add_ground_plane(scene, camera, surfaces, z_m: float):
     with np.errstate(divide="ignore", invalid="ignore"):
         t = (z_m - origins[..., 2]) / directions[..., 2]
     point = origins + t[..., None] * directions
-    lo = np.asarray(scene.vertices, np.float64).min(axis=0)
-    hi = np.asarray(scene.vertices, np.float64).max(axis=0)
+    tiled = getattr(scene, "tiled", None)
+    if tiled is not None:  # a view of some tiles: the whole city's box
+        lo, hi = (np.asarray(b, np.float64) for b in tiled.index["box_m"])
+    else:
+        lo = np.asarray(scene.vertices, np.float64).min(axis=0)
+        hi = np.asarray(scene.vertices, np.float64).max(axis=0)
     margin = GROUND_MARGIN_REL * float(np.hypot(hi[0] - lo[0], hi[1] - lo[1]))
     inside = ((point[..., 0] >= lo[0] - margin) & (point[..., 0] <= hi[0] + margin)
               & (point[..., 1] >= lo[1] - margin) & (point[..., 1] <= hi[1] + margin))

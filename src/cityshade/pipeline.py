@@ -186,7 +186,7 @@ def camera_pass(scene: "Scene", camera: "Camera", t_days: float, *, ground: str 
     from cityshade.raster.rasterize import rasterize
     from cityshade.shadows import oriented_normals
 
-    if getattr(scene, "kdtree", None) is None:
+    if getattr(scene, "kdtree", None) is None and getattr(scene, "tiled", None) is None:
         raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
     if not hasattr(camera, "kind"):
         raise ContractError(f"camera_pass needs a Camera, not {type(camera).__name__}")

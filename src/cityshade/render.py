@@ -96,7 +96,7 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
     from cityshade.shading import shade
     from cityshade.shadows import get_technique
 
-    if scene.kdtree is None:
+    if scene.kdtree is None and getattr(scene, "tiled", None) is None:
         raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
     tech = get_technique(technique)
     check_frame_memory(camera, technique=technique, settings=settings)  # before any allocation
@@ -220,6 +220,11 @@ def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef) ->
             "N.x": normal[..., 0], "N.y": normal[..., 1], "N.z": normal[..., 2],
             "primid": frame.gbuffer.prim_id, "objid": s.obj_id,
         }
+        if getattr(scene, "tiled", None) is not None:  # a tiled cache's view: the global ids
+            from cityshade.tiledcache import to_global
+
+            channels["primid"] = to_global(scene.global_tri, frame.gbuffer.prim_id)
+            channels["objid"] = to_global(scene.global_obj, s.obj_id)
         for name, values in frame.extra_channels.items():
             channels[name] = np.asarray(values, dtype=np.float32)
         imageio.write_exr(exr, channels, meta)

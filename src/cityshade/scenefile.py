@@ -21,7 +21,8 @@ _KDTREE_PREFIX = "kdtree/"
 
 
 def save_scene(scene: Scene, path: str | os.PathLike, source: dict[str, Any],
-               build_options: dict[str, Any]) -> int:
+               build_options: dict[str, Any],
+               extra_arrays: dict[str, np.ndarray] | None = None) -> int:
     """Write ``scene`` (and its kd-tree, when built) to ``path``; returns the file size.
 
     Parameters
@@ -30,6 +31,9 @@ def save_scene(scene: Scene, path: str | os.PathLike, source: dict[str, Any],
         ``path``, ``size``, ``sha256`` of the source GML (to detect a cache of another file).
     build_options : dict
         The options the scene was built with (stored for ``info`` and cache checks).
+    extra_arrays : dict, optional
+        Further arrays stored under their names (a tiled cache's global indices,
+        :mod:`cityshade.tiledcache`); :func:`scene_from_cache` ignores them.
     """
     arrays: dict[str, np.ndarray] = {name: getattr(scene, name) for name in Scene.ARRAY_FIELDS}
     type_names = sorted(set(scene.obj_types))
@@ -42,6 +46,7 @@ def save_scene(scene: Scene, path: str | os.PathLike, source: dict[str, Any],
         for name, value in scene.kdtree.to_arrays().items():
             arrays[_KDTREE_PREFIX + name] = value
         kdtree_stats = scene.kdtree.stats
+    arrays.update(extra_arrays or {})
     header = {
         "kind": "cityshade-scene",
         "format_version": FORMAT_VERSION,
@@ -70,11 +75,15 @@ def load_scene(path: str | os.PathLike, verify: bool | str = "auto",
     CacheError
         Another format version, truncated, tampered, or not a scene file (subclasses say which).
     """
-    cache = open_cache(path, verify=verify)
+    return scene_from_cache(open_cache(path, verify=verify), with_kdtree)
+
+
+def scene_from_cache(cache, with_kdtree: bool = True) -> Scene:
+    """The scene of an opened cache file (:func:`cityshade.cache.open_cache`)."""
     header = cache.header
     if header.get("kind") != "cityshade-scene":
         raise CacheError("not a cityshade scene file; rebuild it with `cityshade build`",
-                         path=str(path))
+                         path=str(cache.path))
     fields = {name: cache.array(name) for name in Scene.ARRAY_FIELDS}
     type_names = header["object_types"]
     obj_types = [type_names[int(c)] for c in cache.array("obj_type")]
@@ -98,3 +107,37 @@ def load_scene(path: str | os.PathLike, verify: bool | str = "auto",
 def read_header(path: str | os.PathLike) -> dict[str, Any]:
     """The JSON header of a scene file (no array is read or verified)."""
     return open_cache(Path(path), verify=False).header
+
+
+def open_scene(path: str | os.PathLike):
+    """A scene file (:func:`load_scene`) or a tiled cache folder (its index only:
+    :func:`cityshade.tiledcache.open_tiled`; :meth:`~cityshade.tiledcache.TiledCache.view`
+    gives the scene of the tiles a camera reaches)."""
+    from cityshade.tiledcache import open_tiled
+
+    return open_tiled(path) if Path(path).is_dir() else load_scene(path)
+
+
+def scene_for_camera(scene, camera, technique: str | None = None):
+    """The scene a frame of ``camera`` draws: ``scene`` itself, or for a tiled cache the view
+    of the tiles the camera's frustum reaches (all tiles for ``camera`` None).
+
+    Raises
+    ------
+    UsageError
+        A tiled cache with a technique other than the exact ones (the map techniques draw
+        their casters from the scene, which holds only the tiles in view).
+    """
+    from cityshade.errors import UsageError
+    from cityshade.tiledcache import TiledCache
+
+    if not isinstance(scene, TiledCache):
+        return scene
+    if technique is not None:
+        from cityshade.shadows import exact_technique_names
+
+        if technique not in exact_technique_names():
+            raise UsageError(f"a tiled cache renders with the exact techniques "
+                             f"({', '.join(exact_technique_names())}), not {technique!r}: "
+                             f"build one cache file for the others")
+    return scene.view(None if camera is None else scene.tiles_in_view(camera))

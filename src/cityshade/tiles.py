@@ -207,9 +207,10 @@ def halo_m(scene, lowest_receiver_z_m: float, elevations_deg: Sequence[float]) -
     """Horizontal reach of a receiver's shadow rays over the run: (highest caster − lowest
     receiver) / tan(lowest sun elevation above the horizon); 0 without a sun up."""
     up = [float(e) for e in elevations_deg if e > 0.0]
-    if not up or scene.kdtree is None:
+    tiled = getattr(scene, "tiled", None)  # a tiled cache's view: the whole city's top
+    if not up or (scene.kdtree is None and tiled is None):
         return 0.0
-    _, hi, _ = scene.kdtree.box_scale_m()
+    hi = tiled.index["box_m"][1] if tiled is not None else scene.kdtree.box_scale_m()[1]
     rise = max(0.0, float(hi[2]) - float(lowest_receiver_z_m))
     return rise / math.tan(math.radians(min(up)))
 
@@ -347,7 +348,7 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
         raise UsageError(f"a task needs at least one sun position, not {block}")
     if camera is None and samples_per_m2 is None:
         raise UsageError("nothing to compute: give a camera, samples_per_m2, or both")
-    if scene.kdtree is None:
+    if scene.kdtree is None and getattr(scene, "tiled", None) is None:
         raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
     t_start = time.perf_counter()
     instants = list(instants_utc)

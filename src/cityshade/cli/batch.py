@@ -10,7 +10,7 @@ from cityshade.cli.options import (camera_options, ground_option, make_camera, p
 
 
 @click.command("batch")
-@click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
+@click.argument("file", type=click.Path(path_type=Path))
 @time_plan_options
 @click.option("--city-date", help="State of the city (default: --date); the city does not "
               "change during a run.")
@@ -51,7 +51,8 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     from cityshade import batch as B
     from cityshade.citygml.temporal import parse_user_date
     from cityshade.errors import UsageError
-    from cityshade.scenefile import load_scene
+    from cityshade.scenefile import open_scene, scene_for_camera
+    from cityshade.tiledcache import is_tiled_cache
     from cityshade.shadows import get_technique
     from cityshade.surfaces import SampleSettings
     from cityshade.util import check_outputs
@@ -102,8 +103,12 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
 
     warn_lmt([step.start_utc for step in steps[:1]], tz)
     city = parse_user_date(city_date or first_day.isoformat())
-    scene = load_scene(file)
+    scene = open_scene(file)
     cam = make_camera(scene, camera, eye, target, fov, size, pixel_size, cameras_file)
+    if scheduler is not None and is_tiled_cache(file):
+        raise UsageError("--scheduler needs one cache file: a tiled cache is not read by "
+                         "Dask workers yet")
+    scene = scene_for_camera(scene, None if surfaces else cam, technique)
     request = {
         "file": Path(file).name,
         "source_sha256": (scene.header or {}).get("source", {}).get("sha256", ""),

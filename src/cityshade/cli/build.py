@@ -24,9 +24,14 @@ def _lod_option(ctx, param, value: str | None) -> int | float | None:
 
 @click.command("build")
 @click.argument("city", nargs=-1, required=True, type=click.Path(path_type=Path))
-@click.option("-o", "--output", type=click.Path(dir_okay=False, path_type=Path),
+@click.option("-o", "--output", type=click.Path(path_type=Path),
               help="Output file (default for one CITY file: CITY with suffix .cityshade; "
-                   "needed for several files or a folder).")
+                   "needed for several files or a folder); with --tile-m a folder.")
+@click.option("--tile-m", type=float, metavar="SIDE",
+              help="Write a tiled cache: a folder of tile caches of SIDE × SIDE CRS metres "
+                   "(each object in the tile of its building's box centre, each tile with its "
+                   "own kd-tree) and an index.json; render, batch and info read it like a "
+                   "file, mapping only the tiles they reach.")
 @click.option("--lod", callback=_lod_option, metavar="LOD",
               help="LoD to take from every object: 0-4, or a CityJSON LoD such as 2.2 "
                    "(default: the highest each object has).")
@@ -45,7 +50,7 @@ def _lod_option(ctx, param, value: str | None) -> int | float | None:
 @click.option("-q", "--quiet", is_flag=True, help="No progress display and no summary.")
 def build(city: tuple[Path, ...], output: Path | None, lod: int | float | None, theme: str | None,
           crs: str | None, axis_order: str | None, time_source: str, time_attribute: str | None,
-          config_path: Path | None, quiet: bool) -> None:
+          config_path: Path | None, quiet: bool, tile_m: float | None) -> None:
     """Read CITY (CityGML 1.0/2.0/3.0, CityJSON 1.0/1.1/2.0 or CityJSONSeq, told apart by
     the content), triangulate it, build its kd-tree, and write one versioned,
     memory-mappable .cityshade file.
@@ -77,10 +82,15 @@ def build(city: tuple[Path, ...], output: Path | None, lod: int | float | None, 
         output = default_output(sources[0])
     if any(output.resolve() == s.resolve() for s in sources):
         raise UsageError("the output would overwrite the input file; choose another -o")
+    if tile_m is not None and not (tile_m > 0 and tile_m < float("inf")):
+        raise UsageError(f"--tile-m must be a positive number of metres, not {tile_m:g}")
+    if tile_m is None and output.is_dir():
+        raise UsageError(f"{output} is a folder: give a file name with -o, or --tile-m SIDE "
+                         f"for a tiled cache")
     progress = Progress(enabled=None if not quiet else False, files=several and not quiet)
     try:
         out, scene, size = build_file(list(city) if several else sources[0], output, settings,
-                                      progress)
+                                      progress, tile_m=tile_m)
     finally:
         progress.close()
     for warning in scene.report.get("warnings", []):
@@ -91,8 +101,15 @@ def build(city: tuple[Path, ...], output: Path | None, lod: int | float | None, 
         click.echo(f"{out}: {scene.n_triangles:,} triangles from {rep['polygons']['drawn']:,} "
                    f"polygons of {len(scene.obj_ids):,} objects"
                    f"{f', {skipped:,} polygons skipped' if skipped else ''}; "
-                   f"{size / 1e6:.1f} MB in {sum(rep.get('timings', {}).values()):.2f} s")
+                   f"{size / 1e6:.1f} MB in {sum(rep.get('timings', {}).values()):.2f} s"
+                   f"{f' (read and assembly; then {_tile_count(out)} tiles)' if tile_m else ''}")
         tiles = rep.get("tiles")
         if tiles:
             click.echo(f"{tiles['files']} files; {tiles['duplicate_objects']:,} objects met "
                        f"again in a later file (the same gml:id) kept once")
+
+
+def _tile_count(folder: Path) -> int:
+    from cityshade.tiledcache import open_tiled
+
+    return len(open_tiled(folder).tiles)

@@ -25,43 +25,72 @@ def describe(scene) -> dict:
         lo = hi = None
     classes = np.bincount(np.asarray(scene.tri_class), minlength=len(SURFACE_CLASSES))
     header = scene.header or {}
-    out = {
+    counts = {"triangles": scene.n_triangles, "vertices": int(scene.vertices.shape[0]),
+              "objects": len(scene.obj_ids)}
+    out = describe_report(rep, header, counts)
+    out.update({
+        "surface_classes": {SURFACE_CLASSES[i]: int(c) for i, c in enumerate(classes) if c},
+        "crs": scene.crs.to_json(),
+        "origin": [float(v) for v in scene.origin_m],
+        "bbox": {"min": lo, "max": hi},
+        "materials": len(scene.materials),
+        "textures": [t["uri"] for t in scene.textures],
+        "kdtree": scene.kdtree.stats if scene.kdtree is not None else None,
+    })
+    return out
+
+
+def describe_tiled(tiled) -> dict:
+    """The ``info --json`` object of a tiled cache, from its index alone (no tile is read)."""
+    from cityshade.citygml.namespaces import SURFACE_CLASSES
+
+    index = tiled.index
+    rep = dict(tiled.report)
+    box = index["box_m"]
+    origin = tiled.origin_m
+    counts = index["counts"]
+    out = describe_report(rep, index, counts)
+    out.update({
+        "crs": tiled.crs.to_json(), "origin": [float(v) for v in origin],
+        "bbox": {"min": [b + o for b, o in zip(box[0], origin)],
+                 "max": [b + o for b, o in zip(box[1], origin)]},
+        "surface_classes": {SURFACE_CLASSES[i]: int(c)
+                            for i, c in enumerate(index["surface_classes"]) if c},
+        "materials": len(tiled.materials), "textures": [t["uri"] for t in tiled.textures],
+        "kdtree": None,
+        "tiled": {"folder": str(tiled.path), "tile_m": index["tile_m"],
+                  "tiles": len(index["tiles"]),
+                  "bytes": sum(t["size"] for t in index["tiles"]),
+                  "kdtree_nodes": sum(t["kdtree"]["nodes"] or 0 for t in index["tiles"]),
+                  "per_tile": [{k: t[k] for k in ("key", "file", "size", "triangles",
+                                                  "objects", "box_m")}
+                               for t in index["tiles"]]},
+    })
+    return out
+
+
+def describe_report(rep: dict, header: dict, counts: dict) -> dict:
+    """The parts of ``info --json`` that come from the build report."""
+    return {
         "file": str(header.get("source", {}).get("path", "")) or None,
         "format_version": header.get("format_version"),
-        "triangles": scene.n_triangles,
-        "vertices": int(scene.vertices.shape[0]),
-        "objects": {"total": len(scene.obj_ids), "by_type": rep["objects_by_type"]},
-        "polygons": rep["polygons"],
-        "skipped": rep["skipped"],
-        "skipped_ids": rep.get("skipped_ids", {}),
-        "repairs": rep["repairs"],
-        "lods": rep["lods"],
-        "lods_drawn": rep.get("lods_drawn", {}),
+        "triangles": counts["triangles"], "vertices": counts["vertices"],
+        "objects": {"total": counts["objects"], "by_type": rep["objects_by_type"]},
+        "polygons": rep["polygons"], "skipped": rep["skipped"],
+        "skipped_ids": rep.get("skipped_ids", {}), "repairs": rep["repairs"],
+        "lods": rep["lods"], "lods_drawn": rep.get("lods_drawn", {}),
         "lod_requested": rep.get("lod_requested"),
-        "surface_classes": {SURFACE_CLASSES[i]: int(c) for i, c in enumerate(classes) if c},
-        "time_range": rep["time_range"],
-        "time_source": rep["time_source"],
+        "time_range": rep["time_range"], "time_source": rep["time_source"],
         "time_sources_used": rep["time_sources_used"],
         "time_attribute": rep.get("time_attribute"),
         "creation_dates_unused": rep.get("creation_dates_unused", 0),
-        "axis_order": rep.get("axis_order"),
-        "crs": scene.crs.to_json(),
-        "source_crs": rep.get("source_crs"),
-        "origin": [float(v) for v in scene.origin_m],
-        "bbox": {"min": lo, "max": hi},
-        "theme": rep.get("theme"),
-        "themes": rep.get("themes", []),
-        "materials": len(scene.materials),
-        "textures": [t["uri"] for t in scene.textures],
+        "axis_order": rep.get("axis_order"), "source_crs": rep.get("source_crs"),
+        "theme": rep.get("theme"), "themes": rep.get("themes", []),
         "input_format": rep.get("format", "CityGML"),
-        "citygml_versions": rep.get("versions", []),
-        "counters": rep.get("counters", {}),
-        "warnings": rep.get("warnings", []),
-        "timings": rep.get("timings", {}),
-        "kdtree": scene.kdtree.stats if scene.kdtree is not None else None,
+        "citygml_versions": rep.get("versions", []), "counters": rep.get("counters", {}),
+        "warnings": rep.get("warnings", []), "timings": rep.get("timings", {}),
         "tiles": rep.get("tiles"),
     }
-    return out
 
 
 def _text(d: dict) -> str:
@@ -112,6 +141,11 @@ def _text(d: dict) -> str:
             f"{hi[2]:.3f} ({hi[0] - lo[0]:.1f} × {hi[1] - lo[1]:.1f} × {hi[2] - lo[2]:.1f} m)")
     add(f"appearance    theme {d['theme']!r} of {d['themes']}; {d['materials']} materials, "
         f"{len(d['textures'])} textures" if d["themes"] else "appearance    none")
+    tiled = d.get("tiled")
+    if tiled:
+        add(f"tiled cache   {tiled['tiles']} tiles of {tiled['tile_m']:g} m, "
+            f"{tiled['bytes'] / 1e6:,.1f} MB, {tiled['kdtree_nodes']:,} kd-tree nodes in all "
+            f"(one kd-tree per tile)")
     kd = d["kdtree"]
     if kd:
         add(f"kd-tree       {kd.get('nodes', 0):,} nodes, {kd.get('leaves', 0):,} leaves "
@@ -129,7 +163,7 @@ def _text(d: dict) -> str:
 
 
 @click.command("info")
-@click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
+@click.argument("file", type=click.Path(path_type=Path))
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
 @click.option("--verify", is_flag=True,
               help="Check every array of a .cityshade file against its checksum (one pass over "
@@ -145,7 +179,22 @@ def info(file: Path, as_json: bool, crs: str | None, verify: bool) -> None:
     from cityshade.cache import is_cache_file
     from cityshade.cli.options import settings_for_source
     from cityshade.errors import InputError
+    if file.is_dir():  # a tiled cache (or a folder that is not one: said in one line)
+        import time
 
+        from cityshade.tiledcache import open_tiled
+
+        tiled = open_tiled(file)
+        d = describe_tiled(tiled)
+        if verify:
+            t0 = time.perf_counter()
+            tiled.verify()
+            d["verified"] = {"arrays": sum(len(tiled.tile(i).header["arrays"])
+                                           for i in range(len(tiled.tiles))),
+                             "bytes": d["tiled"]["bytes"],
+                             "seconds": round(time.perf_counter() - t0, 3)}
+        click.echo(json.dumps(d, indent=2, sort_keys=False) if as_json else _text(d))
+        return
     if not file.is_file():
         raise InputError("no such file", path=str(file))
     settings = settings_for_source(file, crs)

@@ -10,7 +10,7 @@ from cityshade.cli.options import (camera_options, ground_option, make_camera, p
 
 
 @click.command("render")
-@click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
+@click.argument("file", type=click.Path(path_type=Path))
 @click.option("--date", "date_text", help="City state: 1850, 1850-06-21 or 1850-06-21T15:00+01:00 "
               "(default: today).")
 @click.option("--tz", help="IANA time zone for a --date without UTC offset, e.g. Europe/Berlin; "
@@ -48,7 +48,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     from cityshade.cli.options import reparse_solar_date, solar_placeholder
     from cityshade.errors import UsageError
     from cityshade.render import check_frame_outputs, render_frame, write_frame
-    from cityshade.scenefile import load_scene
+    from cityshade.scenefile import open_scene, scene_for_camera
     from cityshade.shadows import get_technique
     from cityshade.sun import sun_from_angles
 
@@ -70,13 +70,14 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
                          "--time 15:00 --tz Europe/Berlin)")
     check_frame_outputs(None, exr=output, png=png, mask=mask, georef=geotiff)  # before any work
     t0 = time.perf_counter()
-    scene = load_scene(file)
+    scene = open_scene(file)
     load_s = time.perf_counter() - t0
     user_date = reparse_solar_date(user_date, tz, scene)
     for warning in user_date.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
     cam = make_camera(scene, camera, eye, target, fov, size, pixel_size, cameras_file)
     check_frame_outputs(cam.kind, exr=output, png=png, mask=mask, georef=geotiff)  # the view
+    scene = scene_for_camera(scene, cam, technique)
     if sun_azimuth is not None:
         sun = sun_from_angles(sun_azimuth, sun_elevation, scene.crs, scene.origin_m)
     else:
@@ -112,6 +113,11 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
                        f"{sun.height_m:.1f} m", err=True)
         for key, value in frame.diagnostics.lines():
             click.echo(f"{key:<8} {value}", err=True)
+        tiled = getattr(scene, "tiled", None)
+        if tiled is not None:
+            click.echo(f"tiles    {len(scene.tile_ids)} of {len(tiled.tiles)} in view, "
+                       f"{len(tiled.tiles_mapped)} mapped (shadow rays reach the rest)",
+                       err=True)
     click.echo(" ".join(str(p) for p in written))
 
 

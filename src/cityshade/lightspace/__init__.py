@@ -190,6 +190,12 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
     TraceInputError
         Wrong shapes, non-finite values, a non-unit sun direction, a NaN time.
     """
+    if getattr(tree, "tiled", None) is not None:  # a tiled cache's view: per tile, ORed
+        from cityshade.tiledcache import occluded_over_tiles
+
+        o = np.ascontiguousarray(origins, dtype=np.float64)
+        return occluded_over_tiles(tree, o, sun_direction, lambda part, rays: occluded(
+            part, o[rays], sun_direction, t_days, stats=stats, cell_m=cell_m))
     kd = tree_of(tree)
     origins = np.ascontiguousarray(origins, dtype=np.float64)
     if origins.ndim != 2 or origins.shape[1] != 3:

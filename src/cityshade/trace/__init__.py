@@ -125,6 +125,12 @@ def occluded(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     TraceInputError
         Wrong shapes, non-finite values, non-unit directions, negative or NaN ``tmax``.
     """
+    if getattr(tree, "tiled", None) is not None:  # a tiled cache's view: per tile, ORed
+        from cityshade.tiledcache import occluded_over_tiles
+
+        o, d, tm = _rays(origins, directions, tmax)
+        return occluded_over_tiles(tree, o, d, lambda part, rays: occluded(
+            part, o[rays], d[rays], t_days, tm[rays], brick_size=brick_size))
     kd = tree_of(tree)
     origins, directions, tmax_arr = _rays(origins, directions, tmax)
     t = check_t_days(t_days, TraceInputError)

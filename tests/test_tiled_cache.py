@@ -1,0 +1,223 @@
+"""The tiled cache (issue 15 point 2): ``build --tile-m`` writes a folder of tile caches and an
+index; a view of all tiles is the one-cache scene array for array, and renders (raytrace, izb;
+perspective, overview, map; views of some tiles) and batches (plain, --tile-px, surfaces)
+of the tiled cache equal those of the one cache bit for bit, ids included."""
+from __future__ import annotations
+
+import json
+import shutil
+
+import numpy as np
+import pytest
+from click.testing import CliRunner
+
+from conftest import REPO, shared_file
+
+from cityshade.cli.main import cli
+
+SAMPLE = REPO / "sample_data" / "sample_city.gml"
+SUN = dict(azimuth=235.0, elevation=28.0)
+T_DAYS = 19895.5  # 2024-06-21, every sample building stands
+
+
+@pytest.fixture(scope="module")
+def built(tmp_path_factory):
+    from cityshade.build import build_file
+
+    folder = tmp_path_factory.mktemp("tiled")
+    one = build_file(SAMPLE, folder / "one.cityshade")[0]
+    tiled = build_file(SAMPLE, folder / "tiled.cityshade", tile_m=60.0)[0]
+    return one, tiled
+
+
+def test_index_and_tiles(built):
+    from cityshade.scenefile import load_scene
+    from cityshade.tiledcache import open_tiled
+
+    one, tiled = built
+    scene = load_scene(one)
+    tc = open_tiled(tiled)
+    assert tc.tiles_mapped == []  # opening reads the index only
+    index = json.loads((tiled / "index.json").read_text())
+    assert len(index["tiles"]) >= 4
+    assert index["counts"]["triangles"] == scene.n_triangles == 1386
+    assert sum(t["triangles"] for t in index["tiles"]) == scene.n_triangles
+    assert sum(t["objects"] for t in index["tiles"]) == len(scene.obj_ids)
+    assert np.array_equal(index["origin_m"], scene.origin_m)
+    for t in index["tiles"]:
+        assert (tiled / t["file"]).stat().st_size == t["size"]
+    # Every object, polygon and triangle is in exactly one tile.
+    for group, n in (("obj", len(scene.obj_ids)), ("poly", len(scene.poly_ids)),
+                     ("tri", scene.n_triangles)):
+        ids = np.concatenate([tc.tile_globals(i)[group] for i in range(len(tc.tiles))])
+        assert np.array_equal(np.sort(ids), np.arange(n)), group
+    # A tile's box holds its triangles; its kd-tree is its own.
+    part = tc.tile(0)
+    refs = np.asarray(part.kdtree.prim_indices)
+    assert np.array_equal(np.unique(refs), np.arange(part.n_triangles))
+    lo, hi = np.asarray(index["tiles"][0]["box_m"])
+    assert (part.vertices >= lo).all() and (part.vertices <= hi).all()
+
+
+def test_view_of_all_tiles_is_the_one_cache_scene(built):
+    from cityshade.geometry.scene import Scene
+    from cityshade.scenefile import load_scene
+    from cityshade.tiledcache import open_tiled
+
+    one, tiled = built
+    scene = load_scene(one)
+    view = open_tiled(tiled).view()
+    for name in Scene.ARRAY_FIELDS:
+        assert np.array_equal(getattr(view, name), getattr(scene, name), equal_nan=True), name
+    assert list(view.obj_ids) == list(scene.obj_ids)
+    assert list(view.obj_types) == list(scene.obj_types)
+    assert list(view.poly_ids) == list(scene.poly_ids)
+    assert view.materials == scene.materials and view.textures == scene.textures
+
+
+def _cameras(scene):
+    from cityshade.raster import camera as cams
+
+    close = cams.perspective(np.array([-150.0, -90.0, 29.0]), np.array([-90.0, -30.0, -6.0]),
+                             vfov_deg=30.0, width_px=240, height_px=136, scene=scene)
+    return {"overview": cams.overview(scene, 240, 136), "map": cams.map_view(scene, 1.0),
+            "close": close}
+
+
+@pytest.mark.parametrize("technique", ["raytrace", "izb"])
+def test_render_equals_one_cache(built, technique):
+    from cityshade.render import render_frame
+    from cityshade.scenefile import load_scene, open_scene, scene_for_camera
+    from cityshade.sun import sun_from_angles
+    from cityshade.tiledcache import to_global
+
+    one, tiled = built
+    scene = load_scene(one)
+    tc = open_scene(tiled)
+    sun = sun_from_angles(SUN["azimuth"], SUN["elevation"], scene.crs, scene.origin_m)
+    cams_one, cams_tiled = _cameras(scene), _cameras(tc)
+    partial = 0
+    for name, cam in cams_one.items():
+        a = render_frame(scene, cam, T_DAYS, sun, technique, ground="auto")
+        view = scene_for_camera(tc, cams_tiled[name], technique)
+        partial += len(view.tile_ids) < len(tc.tiles)
+        b = render_frame(view, cams_tiled[name], T_DAYS, sun, technique, ground="auto")
+        assert np.array_equal(a.lit, b.lit), name
+        assert np.array_equal(a.rgb, b.rgb), name
+        assert np.array_equal(a.gbuffer.depth, b.gbuffer.depth), name
+        assert np.array_equal(a.gbuffer.prim_id, to_global(view.global_tri, b.gbuffer.prim_id))
+        assert np.array_equal(a.surfaces.obj_id, to_global(view.global_obj, b.surfaces.obj_id))
+        assert (a.lit > 0).any() and (a.lit == 0).any()  # sun and shadow in every picture
+    assert partial >= 1  # the close view draws some tiles only
+
+
+def test_shadow_rays_skip_tiles_they_cannot_reach(built):
+    from cityshade.raster import camera as cams
+    from cityshade.render import render_frame
+    from cityshade.scenefile import load_scene, open_scene, scene_for_camera
+    from cityshade.sun import sun_from_angles
+
+    one, tiled = built
+    scene = load_scene(one)
+    tc = open_scene(tiled)
+    # A small map of one corner under a high sun: its shadow rays reach only nearby tiles.
+    box = np.array([[-170.0, -110.0], [-120.0, -60.0]])
+    sun = sun_from_angles(180.0, 75.0, scene.crs, scene.origin_m)
+    cam_t = cams.map_view(tc, 0.5, bbox=box.ravel())
+    view = scene_for_camera(tc, cam_t, "raytrace")
+    b = render_frame(view, cam_t, T_DAYS, sun, "raytrace")
+    assert len(tc.tiles_mapped) < len(tc.tiles)
+    a = render_frame(scene, cams.map_view(scene, 0.5, bbox=box.ravel()), T_DAYS, sun, "raytrace")
+    assert np.array_equal(a.lit, b.lit) and (a.lit == 0).any() and (a.lit > 0).any()
+
+
+def _exr(path):
+    from cityshade.imageio import read_exr
+
+    return read_exr(path)[0]
+
+
+def test_cli_batch_and_info(built, tmp_path):
+    one, tiled = built
+    runner = CliRunner()
+    common = ["--date", "2024-06-21", "--from", "08:00", "--to", "18:00", "--every", "3h",
+              "--tz", "Europe/Berlin", "--pixel-size", "2", "--surfaces"]
+    for extra, technique in (([], "izb"), ([], "raytrace"), (["--tile-px", "32"], "izb")):
+        out = {}
+        for label, path in (("one", one), ("tiled", tiled)):
+            out[label] = tmp_path / f"{label}_{technique}_{len(extra)}"
+            r = runner.invoke(cli, ["batch", str(path), *common, *extra, "--shadows",
+                                    technique, "-o", str(out[label])])
+            assert r.exit_code == 0, r.output
+        a, b = _exr(out["one"] / "sun_hours.exr"), _exr(out["tiled"] / "sun_hours.exr")
+        assert a.keys() == b.keys()
+        for k in a:
+            assert np.array_equal(a[k], b[k], equal_nan=True), k
+        assert np.nanmax(a["sun_hours"]) > 0
+        assert ((out["one"] / "surfaces.csv").read_bytes()
+                == (out["tiled"] / "surfaces.csv").read_bytes())
+    r = runner.invoke(cli, ["info", str(tiled), "--verify"])
+    assert r.exit_code == 0, r.output
+    assert "tiled cache" in r.output and "triangles     1,386" in r.output
+    assert "all" in r.output and "match their checksums" in r.output
+    d = json.loads(runner.invoke(cli, ["info", str(tiled), "--json"]).output)
+    assert d["triangles"] == 1386 and d["tiled"]["tiles"] >= 4
+
+
+def test_bad_input_one_line(built, tmp_path):
+    one, tiled = built
+    runner = CliRunner()
+    render = ["--camera", "map", "--sun-azimuth", "200", "--sun-elevation", "30"]
+    r = runner.invoke(cli, ["render", str(tiled), *render, "--shadows", "shadowmap",
+                            "-o", str(tmp_path / "x.exr")])
+    assert r.exit_code != 0 and "tiled cache renders with the exact techniques" in r.output
+    assert not (tmp_path / "x.exr").exists()
+    damaged = tmp_path / "damaged.cityshade"
+    shutil.copytree(tiled, damaged)
+    (damaged / "index.json").write_text("{not json")
+    r = runner.invoke(cli, ["info", str(damaged)])
+    assert r.exit_code != 0 and "index.json is damaged" in r.output
+    assert "Traceback" not in r.output
+    # A tile file replaced by another is refused before use.
+    index = json.loads((tiled / "index.json").read_text())
+    (damaged / "index.json").write_text(json.dumps(index))
+    first, second = index["tiles"][0]["file"], index["tiles"][1]["file"]
+    shutil.copy(damaged / second, damaged / first)
+    r = runner.invoke(cli, ["render", str(damaged), *render, "-o", str(tmp_path / "y.exr")])
+    assert r.exit_code != 0 and "is not the one the index lists" in r.output
+    r = runner.invoke(cli, ["build", str(SAMPLE), "-o", str(tmp_path), "--tile-m", "-5"])
+    assert r.exit_code != 0 and "--tile-m must be a positive number" in r.output
+    # A build onto a folder that is not a tiled cache leaves it alone.
+    (tmp_path / "keep").mkdir()
+    (tmp_path / "keep" / "mine.txt").write_text("x")
+    r = runner.invoke(cli, ["build", str(SAMPLE), "-o", str(tmp_path / "keep"), "--tile-m", "60"])
+    assert r.exit_code != 0 and "not a tiled cache" in r.output
+    assert (tmp_path / "keep" / "mine.txt").read_text() == "x"
+
+
+def test_real_file_in_tiles(tmp_path):
+    """The TUM campus, read as 3 files with border duplicates, built as a tiled cache of
+    100 m tiles, renders the map of the same files built as one cache bit for bit."""
+    from test_tiles import split_citygml
+
+    from cityshade.build import build_file
+    from cityshade.raster import camera as cams
+    from cityshade.render import render_frame
+    from cityshade.scenefile import load_scene, open_scene, scene_for_camera
+    from cityshade.sun import sun_from_angles
+
+    tum = shared_file("munich-tum-campus-lod2/TUM Munich.gml")
+    files = split_citygml(tum, tmp_path, 3, overlap=2)
+    # The same files as one cache (material numbers follow the files' order, test_tiles).
+    one = load_scene(build_file(files, tmp_path / "tum.cityshade")[0])
+    tc = open_scene(build_file(files, tmp_path / "tum_tiled.cityshade", tile_m=100.0)[0])
+    assert len(tc.tiles) >= 4
+    sun = sun_from_angles(150.0, 35.0, one.crs, one.origin_m)
+    for technique in ("raytrace", "izb"):
+        a = render_frame(one, cams.map_view(one, 2.0), 0.0, sun, technique)
+        cam = cams.map_view(tc, 2.0)
+        b = render_frame(scene_for_camera(tc, cam, technique), cam, 0.0, sun, technique)
+        assert np.array_equal(a.lit, b.lit)
+        assert np.array_equal(a.rgb, b.rgb, equal_nan=True)  # NaN: no surface
+        assert np.array_equal(a.gbuffer.prim_id, b.gbuffer.prim_id)
+        assert (a.lit == 0).any() and (a.lit > 0).any()
