@@ -127,13 +127,10 @@ def _raster_tiles(start, items, ids, coef, vals, bbox, xs, ys, near, far, ortho,
                                                    own2)
                     if not inside:
                         continue
-                    s = e0 + e1 + e2
-                    if not s > 0.0:
-                        continue
                     # Exact barycentrics of the ray/plane point; its view depth.
-                    inv = 1.0 / s
-                    u = e1 * inv
-                    v = e2 * inv
+                    ok, u, v = tc.barycentrics(e0, e1, e2)
+                    if not ok:
+                        continue
                     z = z0 + u * dz1 + v * dz2
                     if z < near or z > far:
                         continue
