@@ -24,6 +24,7 @@ from cityshade.raster import culling as cull
 from cityshade.raster import triangles as tc
 from cityshade.raster.camera import Camera
 from cityshade.raster.gbuffer import GBuffer
+from cityshade.trace.bricks import dynamic_bricks
 from cityshade.util import check_t_days
 
 #: Side of the blocks of the hierarchical max-depth buffer (8 blocks per tile side).
@@ -176,9 +177,11 @@ class _Target:
         self.hiz_tile = np.full((self.tiles_y, self.tiles_x), np.inf, np.float32)
 
     def __call__(self, start, items, ids, coef, vals, bbox) -> None:
-        _raster_tiles(start, items, ids, coef, vals, bbox, self.view.xs, self.view.ys, self.near,
-                      self.far, self.ortho, self.tile_px, self.tiles_x, self.prim, self.depth,
-                      self.bary, self.occlusion, self.hiz_block, self.hiz_tile, BLOCK_PX)
+        with dynamic_bricks():  # tiles handed out a few at a time: a picture's work is uneven
+            _raster_tiles(start, items, ids, coef, vals, bbox, self.view.xs, self.view.ys,
+                          self.near, self.far, self.ortho, self.tile_px, self.tiles_x, self.prim,
+                          self.depth, self.bary, self.occlusion, self.hiz_block, self.hiz_tile,
+                          BLOCK_PX)
 
     def queries(self, query_min_refs: int):
         """The walk's occlusion argument: None when the queries are off."""
