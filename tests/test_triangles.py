@@ -106,3 +106,42 @@ def test_layout_errors_are_typed(dated):
     with pytest.raises(kl.KdTreeLayoutError, match="too large"):
         kl.pack_nodes([0], [2 ** 29], [0], [0.0])
     assert issubclass(kl.KdTreeLayoutError, CityshadeError)
+
+
+def test_depth_pass_narrow_and_wide_boxes_agree_with_the_ray_cast_twin():
+    # Casters of 1-3 texels (tested texel by texel) and of tens (within column bounds) over
+    # several tiles of 8 texels: both tile-kernel paths against the numpy twin.
+    from types import SimpleNamespace
+
+    from cityshade.raster.depthpass import NARROW_COLS
+    from cityshade.sun import sun_from_angles
+    from reference import reference_depth_map
+
+    rng = np.random.default_rng(5)
+    n_small, n_big = 300, 20
+    centres = rng.uniform(-12, 12, (n_small + n_big, 1, 3))
+    spread = np.r_[np.full(n_small, 0.25), np.full(n_big, 3.0)][:, None, None]
+    verts = (centres + spread * rng.normal(0, 1, (n_small + n_big, 3, 3))).reshape(-1, 3)
+    n = n_small + n_big
+    scene = SimpleNamespace(vertices=verts.astype(np.float32),
+                            triangles=np.arange(3 * n, dtype=np.int32).reshape(n, 3),
+                            tri_t_begin_days=np.zeros(n), tri_t_end_days=np.full(n, np.inf),
+                            kdtree=None)
+    view = sm.ortho_view(sun_from_angles(120.0, 50.0).direction, (-16, 16), (-14, 14),
+                         (-40, 40), 64, 56)
+    dm = sm.render_depth_map(scene, view, 0.0, tile_px=8)
+    depth, prim = reference_depth_map(scene.vertices, scene.triangles, scene.tri_t_begin_days,
+                                      scene.tri_t_end_days, view.clip_from_world, 64, 56)
+    # Texel centres exactly on a shared edge may go either way in the twin (closed edges).
+    same = dm.prim_id == prim
+    assert same.mean() >= 0.99, f"{(~same).sum()} of {same.size} texels differ"
+    both = same & (prim >= 0)
+    assert both.sum() > 0.1 * same.size
+    np.testing.assert_allclose(dm.depth[both], depth[both], atol=2e-6)
+    # Both paths were taken: boxes of at most NARROW_COLS columns and wider ones drawn.
+    clip = np.c_[scene.vertices.astype(np.float64), np.ones(3 * n)] @ view.clip_from_world.T
+    cols = (clip[:, 0] / clip[:, 3] + 1.0) * 32.0 - 0.5
+    width = np.ptp(cols.reshape(n, 3), axis=1)
+    drawn = set(dm.prim_id[dm.prim_id >= 0].tolist())
+    assert any(width[i] < NARROW_COLS - 1 for i in drawn)
+    assert any(width[i] > 3 * NARROW_COLS for i in drawn)

@@ -24,7 +24,7 @@ from __future__ import annotations
 import math
 import os
 from pathlib import Path
-from typing import Mapping, Sequence
+from typing import Callable, Mapping, NamedTuple, Sequence
 
 import numpy as np
 
@@ -122,8 +122,31 @@ def _set_attribute(spec, path: Path, name: str, value) -> None:
                            f"{type(value).__name__}", path=str(path))
 
 
+#: Rows of an EXR written by strips (:func:`write_exr`): only one strip's interleaved buffer
+#: exists at a time (a multiple of the 16-row blocks of its zip compression).
+EXR_STRIP_ROWS = 64
+
+
+class Strips(NamedTuple):
+    """Pixels produced strip by strip: ``rows(y0, y1)`` gives rows ``[y0, y1)`` as a
+    ``(y1 - y0, W, C)`` array of ``dtype``; ``shape`` is the whole image's (H, W, C)."""
+
+    shape: tuple
+    dtype: np.dtype
+    rows: Callable[[int, int], np.ndarray]
+
+
+class LazyChannel(NamedTuple):
+    """A float channel of :func:`write_exr` computed per strip of rows: ``rows(y0, y1)`` gives
+    rows ``[y0, y1)`` of the (H, W) ``shape`` (so no full-size temporary is made for it)."""
+
+    shape: tuple
+    rows: Callable[[int, int], np.ndarray]
+
+
 def _write_atomically(path: Path, parts: Sequence[tuple], finish=None) -> None:
-    """Write ``parts`` [(ImageSpec, pixels), ...] (several = a multi-part EXR) to ``path``.
+    """Write ``parts`` [(ImageSpec, pixels), ...] (several = a multi-part EXR) to ``path``;
+    pixels given as :class:`Strips` are written ``EXR_STRIP_ROWS`` scanlines at a time.
 
     The image goes to a temporary name next to the destination (:func:`cityshade.util.atomic_path`;
     the name keeps the extension because OpenImageIO picks the format from it).
@@ -153,7 +176,14 @@ def _write_atomically(path: Path, parts: Sequence[tuple], finish=None) -> None:
             if not opened:
                 raise ImageIOError(f"cannot write image: {out.geterror() or oiio.geterror()}",
                                    path=str(path))
-            ok = out.write_image(pixels)
+            if isinstance(pixels, Strips):
+                for y0 in range(0, pixels.shape[0], EXR_STRIP_ROWS):
+                    y1 = min(y0 + EXR_STRIP_ROWS, pixels.shape[0])
+                    ok = out.write_scanlines(y0, y1, 0, np.ascontiguousarray(pixels.rows(y0, y1)))
+                    if not ok:
+                        break
+            else:
+                ok = out.write_image(pixels)
             if not ok:
                 error = out.geterror()
                 break
@@ -308,8 +338,10 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
     ----------
     path : str or path-like
         Destination ending in ``.exr``.
-    channels : mapping of str to numpy.ndarray, each (H, W)
+    channels : mapping of str to numpy.ndarray (H, W) or :class:`LazyChannel`
         E.g. ``R, G, B, shadow, Z, N.x, N.y, N.z, primid, objid``; order is kept on reading.
+        The file is written by strips of ``EXR_STRIP_ROWS`` rows: beside the channels only one
+        strip's buffer is held (a lazy channel's strip is computed when written).
     attributes : mapping of str to str, int or float, optional
         Header metadata (provenance: date, sun, technique, CRS, timings...), in every part.
 
@@ -332,6 +364,18 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
         if not isinstance(name, str) or not name or "," in name:
             raise ImageIOError(f"channel names must be non-empty strings without commas, "
                                f"not {name!r}", path=str(path))
+        if isinstance(values, LazyChannel):
+            if len(values.shape) != 2 or 0 in values.shape:
+                raise ImageIOError(f"channel {name!r} must be a non-empty (H, W) channel, not "
+                                   f"{values.shape}", path=str(path))
+            if shape is None:
+                shape = tuple(values.shape)
+            elif tuple(values.shape) != shape:
+                raise ImageIOError(f"channel {name!r} has shape {values.shape}, others {shape}",
+                                   path=str(path))
+            float_names.append(name)
+            float_planes.append(values)
+            continue
         values = np.asarray(values)
         if values.ndim != 2 or 0 in values.shape:
             raise ImageIOError(f"channel {name!r} must be a non-empty (H, W) array, not "
@@ -352,9 +396,8 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
                 float_planes.append(values)
                 int_names.append(name)
             elif lo >= -1 and hi < _UINT32_NONE:
-                wide = values.astype(np.int64)
                 uint_names.append(name)
-                uint_planes.append(np.where(wide < 0, _UINT32_NONE, wide).astype(np.uint32))
+                uint_planes.append(values)      # -1 → _UINT32_NONE per strip
             else:
                 raise ImageIOError(f"channel {name!r} has values {lo} … {hi}; EXR ids must lie "
                                    f"in -1 … {_UINT32_NONE - 1}", path=str(path))
@@ -371,12 +414,11 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
             continue
         if len(set(names)) != len(names):
             raise ImageIOError(f"channel names must be distinct: {names!r}", path=str(path))
-        # One interleaved (H, W, C) buffer, each plane converted straight into it (exact:
-        # integers here are at most 2**24 in magnitude).
-        pixels = np.empty(shape + (len(planes),), np.float32 if part_name == "data"
-                          else np.uint32)
-        for index, plane in enumerate(planes):
-            pixels[..., index] = plane
+        # Interleaved strips, each plane converted straight into them (exact: integers in the
+        # float part are at most 2**24 in magnitude).
+        pixels = Strips(shape + (len(planes),), np.dtype(np.float32 if part_name == "data"
+                                                          else np.uint32),
+                        _interleaver(planes, part_name == "ids"))
         part_attrs = dict(attrs)
         part_attrs["name"] = part_name
         if pixels.dtype == np.uint32:
@@ -387,7 +429,27 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
     _write_atomically(path, parts)
 
 
-def _make_uint32_spec(path: Path, pixels: np.ndarray, attributes, names):
+def _interleaver(planes, ids: bool) -> Callable[[int, int], np.ndarray]:
+    """``rows(y0, y1)``: rows ``[y0, y1)`` of the planes interleaved as one (rows, W, C)
+    float32 strip, or uint32 with -1 as ``_UINT32_NONE`` when ``ids``."""
+    width = planes[0].shape[1]
+
+    def rows(y0: int, y1: int) -> np.ndarray:
+        strip = np.empty((y1 - y0, width, len(planes)), np.uint32 if ids else np.float32)
+        for index, plane in enumerate(planes):
+            if isinstance(plane, LazyChannel):
+                strip[..., index] = plane.rows(y0, y1)
+            elif ids:
+                wide = plane[y0:y1].astype(np.int64)
+                strip[..., index] = np.where(wide < 0, _UINT32_NONE, wide)
+            else:
+                strip[..., index] = plane[y0:y1]
+        return strip
+
+    return rows
+
+
+def _make_uint32_spec(path: Path, pixels, attributes, names):
     """ImageSpec of a uint32 EXR part (not a type :func:`write_image` accepts)."""
     import OpenImageIO as oiio
 

@@ -211,13 +211,19 @@ def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef) ->
     written = []
     s = frame.surfaces
     if exr is not None:
-        normal = np.where(s.valid[..., None], s.normal, 0.0).astype(np.float32)
+        shape = s.valid.shape
+
+        def normal(axis):       # computed per strip of the EXR: no full-size temporaries
+            return imageio.LazyChannel(shape, lambda y0, y1: np.where(
+                s.valid[y0:y1], s.normal[y0:y1, :, axis], 0.0).astype(np.float32))
+
         channels = {
             "R": frame.rgb[..., 0], "G": frame.rgb[..., 1], "B": frame.rgb[..., 2],
             "shadow": frame.lit,
             # The resolved depth: the ground plane's pixels carry the plane's.
-            "Z": np.where(s.valid, s.depth, np.inf).astype(np.float32),
-            "N.x": normal[..., 0], "N.y": normal[..., 1], "N.z": normal[..., 2],
+            "Z": imageio.LazyChannel(shape, lambda y0, y1: np.where(
+                s.valid[y0:y1], s.depth[y0:y1], np.inf).astype(np.float32)),
+            "N.x": normal(0), "N.y": normal(1), "N.z": normal(2),
             "primid": frame.gbuffer.prim_id, "objid": s.obj_id,
         }
         if getattr(scene, "tiled", None) is not None:  # a tiled cache's view: the global ids

@@ -31,6 +31,7 @@ import numpy as np
 from numba import njit, prange
 
 from cityshade.errors import CityshadeError
+from cityshade.trace.bricks import dynamic_bricks
 from cityshade.textures import (TextureSet, load_texture_set,
                                 lod_from_uv_neighbours, sample_trilinear, srgb_to_linear)
 
@@ -408,9 +409,11 @@ def shade(scene, surfaces, camera, lit_fraction: np.ndarray, sun_dir_render, *,
     albedo = albedo_of_surfaces(scene, surfaces, settings=settings, prim_id=prim_id,
                                 report=report)
     out = np.full((height, width, 3), np.nan, np.float32)
-    _shade_kernel(valid, normal, position, np.ascontiguousarray(albedo, np.float32), lit, sun,
-                  eye, view_dir, perspective, np.array(settings.sun_rgb),
-                  np.array(settings.sky_ambient_rgb), np.array(settings.ground_ambient_rgb), out)
+    with dynamic_bricks():      # rows handed out a few at a time: surfaces are uneven
+        _shade_kernel(valid, normal, position, np.ascontiguousarray(albedo, np.float32), lit,
+                      sun, eye, view_dir, perspective, np.array(settings.sun_rgb),
+                      np.array(settings.sky_ambient_rgb), np.array(settings.ground_ambient_rgb),
+                      out)
     if perspective and sky and not valid.all():
         xs, ys = camera.screen_coordinates()
         if xs.shape != (width,) or ys.shape != (height,):

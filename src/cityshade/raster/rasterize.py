@@ -24,6 +24,7 @@ from cityshade.raster import culling as cull
 from cityshade.raster import triangles as tc
 from cityshade.raster.camera import Camera
 from cityshade.raster.gbuffer import GBuffer
+from cityshade.trace.bricks import dynamic_bricks
 from cityshade.util import check_t_days
 
 #: Side of the blocks of the hierarchical max-depth buffer (8 blocks per tile side).
@@ -127,13 +128,10 @@ def _raster_tiles(start, items, ids, coef, vals, bbox, xs, ys, near, far, ortho,
                                                    own2)
                     if not inside:
                         continue
-                    s = e0 + e1 + e2
-                    if not s > 0.0:
-                        continue
                     # Exact barycentrics of the ray/plane point; its view depth.
-                    inv = 1.0 / s
-                    u = e1 * inv
-                    v = e2 * inv
+                    ok, u, v = tc.barycentrics(e0, e1, e2)
+                    if not ok:
+                        continue
                     z = z0 + u * dz1 + v * dz2
                     if z < near or z > far:
                         continue
@@ -179,9 +177,11 @@ class _Target:
         self.hiz_tile = np.full((self.tiles_y, self.tiles_x), np.inf, np.float32)
 
     def __call__(self, start, items, ids, coef, vals, bbox) -> None:
-        _raster_tiles(start, items, ids, coef, vals, bbox, self.view.xs, self.view.ys, self.near,
-                      self.far, self.ortho, self.tile_px, self.tiles_x, self.prim, self.depth,
-                      self.bary, self.occlusion, self.hiz_block, self.hiz_tile, BLOCK_PX)
+        with dynamic_bricks():  # tiles handed out a few at a time: a picture's work is uneven
+            _raster_tiles(start, items, ids, coef, vals, bbox, self.view.xs, self.view.ys,
+                          self.near, self.far, self.ortho, self.tile_px, self.tiles_x, self.prim,
+                          self.depth, self.bary, self.occlusion, self.hiz_block, self.hiz_tile,
+                          BLOCK_PX)
 
     def queries(self, query_min_refs: int):
         """The walk's occlusion argument: None when the queries are off."""

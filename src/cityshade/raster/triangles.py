@@ -56,6 +56,11 @@ TILE_PX = 64
 #: descheduled thread (1.2 ms per empty region at 2 threads measured here under load), so
 #: batches should not be small either.
 MAX_BATCH = 262144
+#: The depth pass's batches: about 270 bytes per triangle make a 262144-triangle batch's arrays larger
+#: than glibc's largest mmap threshold (32 MiB), so every map would take fresh pages (a fault
+#: each; 25 ms of a 4096² map of the 1M-triangle city at one thread); half of it reuses freed
+#: heap memory.
+DEPTH_BATCH = 131072
 #: Slack of the pixel bounding box, in pixels: projected vertex positions and the pixel mapping
 #: are float64 (errors ~1e-12 px), so a centre the edge functions find inside is never outside
 #: the box; the edge functions alone decide coverage inside it.
@@ -163,6 +168,18 @@ def covers(x, a0, row0, own0, a1, row1, own1, a2, row2, own2):
         return False, e0, e1, 0.0
     e2 = a2 * x + row2
     return edge_covers(e2, own2), e0, e1, e2
+
+
+@njit(cache=True, inline="always")
+def barycentrics(e0, e1, e2):
+    """``(ok, u, v)``: the barycentrics ``e1 / s``, ``e2 / s`` of the point where a covered
+    pixel's ray meets the triangle's plane (``s = e0 + e1 + e2``; not ok when ``s`` is not
+    positive: the plane is seen edge-on or the point lies behind the projection centre)."""
+    s = e0 + e1 + e2
+    if not s > 0.0:
+        return False, 0.0, 0.0
+    inv = 1.0 / s
+    return True, e1 * inv, e2 * inv
 
 
 @njit(cache=True, inline="always")
@@ -463,7 +480,8 @@ class Batcher:
     """Set up, bin and rasterize batches of triangles into one target.
 
     ``raster(start, items, ids, coef, vals, bbox)`` is the pass's tile kernel call; timings of the
-    three steps accumulate in ``timings`` (seconds).
+    three steps accumulate in ``timings`` (seconds). ``batch`` is the pass's batch size
+    (``DEPTH_BATCH`` or ``MAX_BATCH``).
     """
 
     def __init__(self, scene, view: ClipView, depth_pass: bool, tile_px: int, raster):
@@ -477,10 +495,12 @@ class Batcher:
         self.tiles_x = -(-int(view.width) // self.tile_px)
         self.tiles_y = -(-int(view.height) // self.tile_px)
         self.raster = raster
+        self.batch = DEPTH_BATCH if depth_pass else MAX_BATCH
         self.timings = {"setup_s": 0.0, "bin_s": 0.0, "raster_s": 0.0}
         self.batches = 0
         self.drawn = 0
         self.tile_triangles = 0
+        self.scratch = None
 
     def draw(self, items: np.ndarray, from_records: bool) -> None:
         """Draw triangle ids, or kd-tree record indices when ``from_records``."""
@@ -488,10 +508,12 @@ class Batcher:
         if n == 0:
             return
         t0 = time.perf_counter()
-        ids = np.empty(n, np.int32)
-        coef = np.empty((n, EDGE_WORDS))
-        vals = np.empty((n, self.words))
-        bbox = np.empty((n, 4), np.int32)
+        if self.scratch is None or self.scratch[0].shape[0] < n:
+            # Kept for the later batches: fresh pages cost a fault each on first touch (about
+            # a third of the setup's time when every batch allocated its own).
+            self.scratch = (np.empty(n, np.int32), np.empty((n, EDGE_WORDS)),
+                            np.empty((n, self.words)), np.empty((n, 4), np.int32))
+        ids, coef, vals, bbox = (a[:n] for a in self.scratch)
         setup_triangles(self.vertices, self.triangles, self.tree, from_records, items, self.view,
                         self.depth_pass, ids, coef, vals, bbox)
         t1 = time.perf_counter()
@@ -514,8 +536,8 @@ class Batcher:
         ids = present_triangles(np.asarray(scene.tri_t_begin_days, np.float64),
                                 np.asarray(scene.tri_t_end_days, np.float64), t_days)
         filter_s = time.perf_counter() - t0
-        for b in range(0, ids.shape[0], MAX_BATCH):
-            self.draw(ids[b:b + MAX_BATCH], False)
+        for b in range(0, ids.shape[0], self.batch):
+            self.draw(ids[b:b + self.batch], False)
         return int(scene.triangles.shape[0] - ids.shape[0]), filter_s
 
 
