@@ -657,3 +657,48 @@ def reference_shadow_origins(points, normals, sun_dir):
     points = np.asarray(points, np.float64)
     scale = np.maximum(np.abs(points).max(axis=1), 1.0)
     return points + (np.asarray(normals, np.float64) + sun_dir) * (2.0 ** -18 * scale)[:, None]
+
+
+def reference_bracket_states(depth_map, scene, points, normals, own_poly, sun_dir, radius,
+                             thin_map):
+    """The bracket classifier's receiver states in plain numpy (twin of
+    ``cityshade.shadows.hybrid.bracket_states``): origins, projection and receiver-plane
+    gradient step by step, then every texel of the (2 radius + 1)² window."""
+    from cityshade.shadows.shadowmap import project, receiver_plane_gradient
+
+    origins = reference_shadow_origins(points, normals, np.asarray(sun_dir, np.float64))
+    view = depth_map.view
+    u, v, z = project(view, origins)
+    gu, gv = receiver_plane_gradient(view, origins, np.asarray(normals, np.float64), u, v, z)
+    tol = 1e-6 + 0.01 * (np.abs(gu) + np.abs(gv))
+    prim = np.asarray(depth_map.prim_id)
+    texel_poly = np.where(prim >= 0, np.asarray(scene.tri_polygon)[np.maximum(prim, 0)], -1)
+    depth = np.asarray(depth_map.depth)
+    h, w = depth.shape
+    ok = np.isfinite(u) & np.isfinite(v) & np.isfinite(z)
+    cu = np.floor(np.where(ok, u, 0.0)).astype(np.int64)
+    cv = np.floor(np.where(ok, v, 0.0)).astype(np.int64)
+    n = len(u)
+    occluding = np.zeros(n, np.int64)
+    thin_occluding = np.zeros(n, np.int64)
+    clear = np.zeros(n, np.int64)
+    first = np.full(n, -2, np.int64)
+    mixed = np.zeros(n, bool)
+    for dv in range(-radius, radius + 1):
+        for du in range(-radius, radius + 1):
+            row, col = cv + dv, cu + du
+            inside = (row >= 0) & (row < h) & (col >= 0) & (col < w)
+            r, c = np.clip(row, 0, h - 1), np.clip(col, 0, w - 1)
+            plane = z + gu * (col + 0.5 - u) + gv * (row + 0.5 - v) - tol
+            thin = inside & (thin_map[0][r, c] < plane) & (thin_map[1][r, c] != own_poly)
+            occ = inside & (depth[r, c] < plane) & (texel_poly[r, c] != own_poly)
+            poly = texel_poly[r, c]
+            mixed |= occ & (first != -2) & (poly != first)
+            first = np.where(occ & (first == -2), poly, first)
+            occluding += occ
+            thin_occluding += thin
+            clear += ~occ
+    state = np.where((occluding == 0) & (thin_occluding == 0), 0,
+                     np.where((clear == 0) & ~mixed, 1, 2)).astype(np.uint8)
+    state[~ok] = 2
+    return state
