@@ -404,6 +404,20 @@ TECHNIQUES = ["raytrace", "izb", "shadowmap", "pcf", "vsm", "psm", "lispsm", "xp
               "hybrid:csm"]
 
 
+def _stages(d) -> dict:
+    """Stage seconds of one shadow pass: the technique's ``timings_s`` (a hybrid's base stages
+    prefixed ``base.``), and the depth pass's own steps (``depth.setup`` …) of a single map."""
+    out = {k.removesuffix("_s"): v for k, v in (d.get("timings_s") or {}).items()
+           if isinstance(v, (int, float))}
+    base = d.get("base")
+    if base is not None:
+        out.update({f"base.{k}": v for k, v in _stages(base).items()})
+    depth = (d.get("depth_map") or {}).get("timings_s") or {}
+    out.update({f"depth.{k.removesuffix('_s')}": v for k, v in depth.items()
+                if k != "total_s" and isinstance(v, (int, float))})
+    return out
+
+
 def techniques_main(argv=None) -> dict:
     """The overview at --size and the top-down map at --map-side² of the 1M-triangle city:
     the full exact frames of ``raytrace`` and ``izb`` (G-buffer + resolve + shadows + shading,
@@ -469,10 +483,13 @@ def techniques_main(argv=None) -> dict:
         truth = ref.lit >= 0.5
         rows = {}
         for name in args.techniques.split(","):
-            times, frame = [], None
-            for _ in range(args.repeat + 1):
+            times, stages, frame = [], {}, None
+            for k in range(args.repeat + 1):
                 frame = render_frame(scene, cam, args.date_days, sun, name)
                 times.append(frame.timings_s["shadow_s"])
+                if k:
+                    for stage, s in _stages(frame.diagnostics.shadow).items():
+                        stages.setdefault(stage, []).append(s)
             got = frame.lit >= 0.5
             d = frame.diagnostics.shadow
             rows[name] = {
@@ -481,6 +498,7 @@ def techniques_main(argv=None) -> dict:
                 "wrong_pct": 100 * float(((got != truth) & valid).sum() / valid.sum()),
                 "false_lit_pct": 100 * float((got & ~truth & valid).sum() / valid.sum()),
                 "false_shadow_pct": 100 * float((~got & truth & valid).sum() / valid.sum()),
+                "stages_ms": {k: 1000 * statistics.median(v) for k, v in stages.items()},
                 "traced_share": d.get("traced_share"),
                 "aliasing_m": d.get("aliasing_m"), "texel_m": d.get("texel_m"),
                 "map_px": d.get("map_px")}
@@ -504,11 +522,13 @@ def techniques_main(argv=None) -> dict:
               f"all threads: frame {v['izb_frame_cpu_ms_median']:.0f} ms, EXR "
               f"{v['izb_exr_cpu_ms_median']:.0f} ms")
         print(f"{'technique':<18} {'shadow ms':>10} {'wrong %':>9} {'false-lit %':>12} "
-              f"{'false-shadow %':>15} {'traced %':>9}")
+              f"{'false-shadow %':>15} {'traced %':>9}  stages ms (median)")
         for name, r in v["techniques"].items():
             traced = "" if r["traced_share"] is None else f"{100 * r['traced_share']:.1f}"
+            stages = " ".join(f"{k}={ms:.0f}" for k, ms in r["stages_ms"].items())
             print(f"{name:<18} {r['shadow_ms_median']:>10.0f} {r['wrong_pct']:>9.4f} "
-                  f"{r['false_lit_pct']:>12.4f} {r['false_shadow_pct']:>15.4f} {traced:>9}")
+                  f"{r['false_lit_pct']:>12.4f} {r['false_shadow_pct']:>15.4f} {traced:>9}  "
+                  f"{stages}")
     if args.json:
         args.json.write_text(json.dumps(report, indent=2, default=float))
     return report

@@ -657,3 +657,96 @@ def reference_shadow_origins(points, normals, sun_dir):
     points = np.asarray(points, np.float64)
     scale = np.maximum(np.abs(points).max(axis=1), 1.0)
     return points + (np.asarray(normals, np.float64) + sun_dir) * (2.0 ** -18 * scale)[:, None]
+
+
+def reference_bracket_states(depth_map, scene, points, normals, own_poly, sun_dir, radius,
+                             thin_map):
+    """The bracket classifier's receiver states in plain numpy (twin of
+    ``cityshade.shadows.hybrid.bracket_states``): origins, projection and receiver-plane
+    gradient step by step, then every texel of the (2 radius + 1)² window."""
+    from cityshade.shadows.shadowmap import project, receiver_plane_gradient
+
+    origins = reference_shadow_origins(points, normals, np.asarray(sun_dir, np.float64))
+    view = depth_map.view
+    u, v, z = project(view, origins)
+    gu, gv = receiver_plane_gradient(view, origins, np.asarray(normals, np.float64), u, v, z)
+    tol = 1e-6 + 0.01 * (np.abs(gu) + np.abs(gv))
+    prim = np.asarray(depth_map.prim_id)
+    texel_poly = np.where(prim >= 0, np.asarray(scene.tri_polygon)[np.maximum(prim, 0)], -1)
+    depth = np.asarray(depth_map.depth)
+    h, w = depth.shape
+    ok = np.isfinite(u) & np.isfinite(v) & np.isfinite(z)
+    cu = np.floor(np.where(ok, u, 0.0)).astype(np.int64)
+    cv = np.floor(np.where(ok, v, 0.0)).astype(np.int64)
+    n = len(u)
+    occluding = np.zeros(n, np.int64)
+    thin_occluding = np.zeros(n, np.int64)
+    clear = np.zeros(n, np.int64)
+    first = np.full(n, -2, np.int64)
+    mixed = np.zeros(n, bool)
+    for dv in range(-radius, radius + 1):
+        for du in range(-radius, radius + 1):
+            row, col = cv + dv, cu + du
+            inside = (row >= 0) & (row < h) & (col >= 0) & (col < w)
+            r, c = np.clip(row, 0, h - 1), np.clip(col, 0, w - 1)
+            plane = z + gu * (col + 0.5 - u) + gv * (row + 0.5 - v) - tol
+            other = np.where(thin_map[1][r, c] != own_poly, thin_map[0][r, c], thin_map[2][r, c])
+            thin = inside & (other < plane)
+            occ = inside & (depth[r, c] < plane) & (texel_poly[r, c] != own_poly)
+            poly = texel_poly[r, c]
+            mixed |= occ & (first != -2) & (poly != first)
+            first = np.where(occ & (first == -2), poly, first)
+            occluding += occ
+            thin_occluding += thin
+            clear += ~occ
+    state = np.where((occluding == 0) & (thin_occluding == 0), 0,
+                     np.where((clear == 0) & ~mixed, 1, 2)).astype(np.uint8)
+    state[~ok] = 2
+    return state
+
+
+def reference_thin_caster_map(scene, view, t_days, thin_texels=2.0):
+    """The hybrid's thin-caster map in plain numpy (twin of
+    ``cityshade.shadows.hybrid.thin_caster_map``): per texel, every polygon's nearest thin
+    triangle (light-space height below ``thin_texels``, box grown by one texel), then the
+    nearest polygon and the nearest of the others (lowest polygon id on ties)."""
+    h, w = view.height_px, view.width_px
+    v = np.asarray(scene.vertices, np.float64)
+    tri = np.asarray(scene.triangles)
+    m = view.clip_from_world
+    clip = v @ m[:, :3].T + m[:, 3]
+    cw = clip[:, 3]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        u = (clip[:, 0] / cw + 1.0) * 0.5 * w
+        r = (1.0 - clip[:, 1] / cw) * 0.5 * h
+        z = clip[:, 2] / cw
+    best = {}    # (row, col) -> {polygon: nearest depth}
+    present = ((np.asarray(scene.tri_t_begin_days) <= t_days)
+               & (t_days < np.asarray(scene.tri_t_end_days)))
+    for i in np.nonzero(present)[0]:
+        q = tri[i]
+        if not (cw[q] > 0).all():
+            continue
+        pu, pv = u[q], r[q]
+        area2 = abs((pu[1] - pu[0]) * (pv[2] - pv[0]) - (pu[2] - pu[0]) * (pv[1] - pv[0]))
+        longest = max(np.hypot(pu[a] - pu[b], pv[a] - pv[b]) for a, b in ((0, 1), (0, 2), (1, 2)))
+        if longest > 0 and area2 / longest >= thin_texels:
+            continue
+        zmin = np.float32(z[q].min())
+        if not zmin <= 1.0:
+            continue
+        c0, c1 = max(int(np.floor(pu.min())) - 1, 0), min(int(np.floor(pu.max())) + 1, w - 1)
+        r0, r1 = max(int(np.floor(pv.min())) - 1, 0), min(int(np.floor(pv.max())) + 1, h - 1)
+        poly = int(scene.tri_polygon[i])
+        for row in range(r0, r1 + 1):
+            for col in range(c0, c1 + 1):
+                per = best.setdefault((row, col), {})
+                per[poly] = min(per.get(poly, np.float32(np.inf)), zmin)
+    out = (np.full((h, w), np.inf, np.float32), np.full((h, w), -1, np.int32),
+           np.full((h, w), np.inf, np.float32), np.full((h, w), -1, np.int32))
+    for (row, col), per in best.items():
+        ranked = sorted(per.items(), key=lambda kv: (kv[1], kv[0]))
+        out[0][row, col], out[1][row, col] = ranked[0][1], ranked[0][0]
+        if len(ranked) > 1:
+            out[2][row, col], out[3][row, col] = ranked[1][1], ranked[1][0]
+    return out

@@ -155,3 +155,53 @@ def test_refining_with_izb_gives_the_same_frame(scene, references, monkeypatch):
     assert izb.diagnostics.shadow["traced_px"] == rays.diagnostics.shadow["traced_px"] > 0
     assert np.array_equal(izb.lit, rays.lit)
     assert np.array_equal(izb.extra_channels["refined"], rays.extra_channels["refined"])
+
+
+def test_bracket_kernel_agrees_with_its_numpy_twin(scene, references):
+    """The one-pass classifier gives the states of the step-by-step numpy twin on every facing
+    pixel of the sample city (three views, a low and a high sun; all three states occur)."""
+    from reference import reference_bracket_states
+
+    from cityshade.pipeline import camera_pass
+    from cityshade.shadows.hybrid import bracket_states, thin_caster_map
+
+    t, refs = references
+    seen = set()
+    for view, el in (("overview", 5.0), ("map", 30.0), ("south", 70.0)):
+        cam, sun, _ = refs[view, el]
+        ctx = camera_pass(scene, cam, t).context(sun)
+        use = get_technique("vsm").prepare(ctx).maps[0]
+        points, normals = ctx.receivers(ctx.faces)
+        prim = np.asarray(ctx.surfaces.prim_id)[ctx.faces]
+        own = np.where(prim >= 0, np.asarray(scene.tri_polygon)[np.maximum(prim, 0)], -1)
+        thin = thin_caster_map(scene, use.depth_map.view, t)
+        got = bracket_states(use.depth_map, scene, points, normals, own, sun.direction, 1, thin)
+        want = reference_bracket_states(use.depth_map, scene, points, normals, own,
+                                        sun.direction, 1, thin)
+        assert np.array_equal(got, want), f"{view}: {(got != want).sum()} of {len(got)} differ"
+        seen |= set(np.unique(got).tolist())
+    assert seen == {0, 1, 2}
+
+
+def test_thin_caster_map_agrees_with_its_numpy_twin(scene, references):
+    """The nearest thin polygon and the nearest of the others per texel, as the brute-force
+    twin finds them, on a low sun (many walls thin in light space)."""
+    from reference import reference_thin_caster_map
+
+    from cityshade.pipeline import camera_pass
+    from cityshade.shadows.hybrid import thin_caster_map
+
+    t, refs = references
+    cam, sun, _ = refs["overview", 5.0]
+    ctx = camera_pass(scene, cam, t).context(sun, ShadowSettings().override(map_px=256))
+    view = get_technique("shadowmap").prepare(ctx).views[0]
+    got = thin_caster_map(scene, view, t)
+    want = reference_thin_caster_map(scene, view, t)
+    # Depths exactly; polygons where the depth is finite (ties of equal depth may differ only
+    # in which polygon is named first when both have the same depth).
+    for k in (0, 2):
+        assert np.array_equal(got[k], want[k])
+    assert np.array_equal(got[1], want[1])
+    second = np.isfinite(want[2])
+    assert second.sum() > 100
+    assert np.array_equal(got[3][second], want[3][second])

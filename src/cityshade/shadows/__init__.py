@@ -32,6 +32,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Protocol
 
 import numpy as np
+from numba import njit
 
 from cityshade.config import ShadowSettings
 from cityshade.errors import ContractError, UsageError
@@ -92,19 +93,19 @@ class ShadowContext:
     def facing_points(self) -> np.ndarray:
         """(N, 3) float64 surface points of the :attr:`faces` pixels (row-major order),
         gathered once for the planner, the lookup and the rays."""
-        return np.ascontiguousarray(self.surfaces.position_m[self.faces], np.float64)
+        return gather_pixels(self.surfaces.position_m, self.faces)
 
     @functools.cached_property
     def facing_normals(self) -> np.ndarray:
         """(N, 3) float64 oriented normals of the :attr:`faces` pixels."""
-        return np.ascontiguousarray(self.normal[self.faces], np.float64)
+        return gather_pixels(self.normal, self.faces)
 
     def receivers(self, pixels: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(points, oriented normals) of the pixels of mask ``pixels`` (the gathered facing
         ones when ``pixels`` is :attr:`faces` itself)."""
         if pixels is self.faces:
             return self.facing_points, self.facing_normals
-        return self.surfaces.position_m[pixels], self.normal[pixels]
+        return gather_pixels(self.surfaces.position_m, pixels), gather_pixels(self.normal, pixels)
 
 
 @dataclass
@@ -293,6 +294,28 @@ def oriented_normals(surfaces: "Surfaces", camera: "Camera") -> np.ndarray:
     from cityshade.raster.gbuffer import seen_side_normals
 
     return seen_side_normals(surfaces, camera)
+
+
+@njit(cache=True)
+def _gather_kernel(image, mask, out):
+    k = 0
+    for r in range(mask.shape[0]):
+        for c in range(mask.shape[1]):
+            if mask[r, c]:
+                for j in range(image.shape[2]):
+                    out[k, j] = image[r, c, j]
+                k += 1
+
+
+def gather_pixels(image, mask) -> np.ndarray:
+    """(N, C) float64 ``image[mask]`` of an (H, W, C) image and an (H, W) bool mask, in
+    row-major order (numpy's boolean gather of a 3-D image is several times slower)."""
+    image = np.asarray(image)
+    mask = np.ascontiguousarray(mask, bool)
+    out = np.empty((int(np.count_nonzero(mask)), image.shape[2]), np.float64)
+    if out.shape[0]:
+        _gather_kernel(image, mask, out)
+    return out
 
 
 def facing_mask(normal, valid, sun_direction) -> np.ndarray:

@@ -44,6 +44,7 @@ from numba import njit, prange
 
 from cityshade.errors import UsageError
 from cityshade.shadows import TECHNIQUES, ShadowContext, ShadowResult, TechniqueDiagnostics
+from cityshade.shadows.shadowmap import clip_point, plane_depth_gradient
 
 #: Receiver states of the classifiers.
 SURE_LIT, SURE_SHADOW, UNCERTAIN = 0, 1, 2
@@ -110,27 +111,44 @@ def _light_texel(vertices, q, m, cw, width, height):
 
 
 @njit(cache=True)
-def _thin_splat(box, zmin, poly, thin_depth, thin_poly):
+def _thin_splat(box, zmin, poly, d1, p1, d2, p2):
     """Splat the thin triangles' nearest depth over their boxes, in id order (serial: the
-    splats overlap; the lowest id wins ties)."""
+    splats overlap; the lowest id wins ties), keeping per texel the nearest polygon (d1, p1)
+    and the nearest of every other polygon (d2, p2)."""
     for i in range(box.shape[0]):
         if box[i, 0] > box[i, 1]:
             continue
         z32 = np.float32(zmin[i])
+        q = poly[i]
         for r in range(box[i, 2], box[i, 3] + 1):
             for c in range(box[i, 0], box[i, 1] + 1):
-                if z32 < thin_depth[r, c]:
-                    thin_depth[r, c] = z32
-                    thin_poly[r, c] = poly[i]
+                if q == p1[r, c]:
+                    if z32 < d1[r, c]:
+                        d1[r, c] = z32
+                elif q == p2[r, c]:
+                    if z32 < d2[r, c]:
+                        d2[r, c] = z32
+                        if z32 < d1[r, c]:
+                            d1[r, c], d2[r, c] = d2[r, c], d1[r, c]
+                            p1[r, c], p2[r, c] = p2[r, c], p1[r, c]
+                elif z32 < d1[r, c]:
+                    d2[r, c], p2[r, c] = d1[r, c], p1[r, c]
+                    d1[r, c], p1[r, c] = z32, q
+                elif z32 < d2[r, c]:
+                    d2[r, c], p2[r, c] = z32, q
 
 
-def thin_caster_map(scene, view, t_days: float) -> tuple[np.ndarray, np.ndarray]:
-    """(depth (H, W) float32, polygon (H, W) int32) of the triangles present at ``t_days`` that
-    are thinner than :data:`THIN_TEXELS` in the light view — the casters a point-sampled depth
-    map may miss entirely (walls seen edge-on by a low sun)."""
+def thin_caster_map(scene, view, t_days: float) -> tuple[np.ndarray, ...]:
+    """(depth, polygon, second depth, second polygon), each (H, W) (float32, int32), of the
+    triangles present at ``t_days`` that are thinner than :data:`THIN_TEXELS` in the light
+    view — the casters a point-sampled depth map may miss entirely (walls seen edge-on by a
+    low sun). Per texel: the nearest polygon, and the nearest of all other polygons (+inf,
+    -1 where none), so that a receiver whose own polygon is the nearest still sees another's
+    thin caster under it (a 2-cm step between two roof polygons of the Munich CityGML 3.0
+    tile, sun 240°/10°, hid behind a sliver of the receiver's own roof)."""
     h, w = view.height_px, view.width_px
-    thin_depth = np.full((h, w), np.inf, np.float32)
-    thin_poly = np.full((h, w), -1, np.int32)
+    thin = (np.full((h, w), np.inf, np.float32), np.full((h, w), -1, np.int32),
+            np.full((h, w), np.inf, np.float32), np.full((h, w), -1, np.int32))
     present = ((np.asarray(scene.tri_t_begin_days) <= t_days)
                & (t_days < np.asarray(scene.tri_t_end_days)))
     n = scene.triangles.shape[0]
@@ -138,14 +156,20 @@ def thin_caster_map(scene, view, t_days: float) -> tuple[np.ndarray, np.ndarray]
     zmin = np.empty(n)
     _thin_boxes(scene.vertices, scene.triangles, present,
                 np.ascontiguousarray(view.clip_from_world.reshape(16)), w, h, box, zmin)
-    _thin_splat(box, zmin, np.asarray(scene.tri_polygon, np.int32), thin_depth, thin_poly)
-    return thin_depth, thin_poly
+    _thin_splat(box, zmin, np.asarray(scene.tri_polygon, np.int32), *thin)
+    return thin
 
 
 @njit(cache=True, parallel=True)
-def _bracket_kernel(depth, texel_poly, thin_depth, thin_poly, u_s, v_s, z_surface, dz_du,
-                    dz_dv, tol, own_poly, radius, state):
-    """Classify receivers from the depth-map texels around their true surface points.
+def _bracket_kernel(m, width, height, depth, prim, tri_polygon, thin_depth, thin_poly,
+                    thin_depth2, points, normals, sun, offset_rel, min_scale_m, own_poly, radius,
+                    state):
+    """Classify receivers from the depth-map texels around their true surface points, in one
+    pass per receiver: its shadow-ray origin (:func:`cityshade.trace.shadow_rays_from_surface`'s
+    offset, the arithmetic of :func:`cityshade.trace.bricks.shadow_origins`), its projection
+    (:func:`~cityshade.shadows.shadowmap.project`'s), its tangent plane's depth gradient (that
+    of :func:`~cityshade.shadows.shadowmap.receiver_plane_gradient`), then the texels, until
+    the answer is known.
 
     A texel occludes a receiver when its caster lies in front of the receiver's tangent plane
     at that texel (``z_surface + dz_du Δu + dz_dv Δv - tol``) and belongs to another polygon.
@@ -157,36 +181,71 @@ def _bracket_kernel(depth, texel_poly, thin_depth, thin_poly, u_s, v_s, z_surfac
     decision is about the exact surface point, within the map's one-texel position accuracy.
     """
     h, w = depth.shape
-    for i in prange(u_s.shape[0]):
+    for i in prange(points.shape[0]):
+        px, py, pz = points[i, 0], points[i, 1], points[i, 2]
+        nx, ny, nz = normals[i, 0], normals[i, 1], normals[i, 2]
+        offset = offset_rel * max(max(max(abs(px), abs(py)), abs(pz)), min_scale_m)
+        px = px + (nx + sun[0]) * offset
+        py = py + (ny + sun[1]) * offset
+        pz = pz + (nz + sun[2]) * offset
+        u_s, v_s, z_s = clip_point(m, px, py, pz, width, height)
         # A non-finite lookup cannot be decided from the map.
-        if not (np.isfinite(u_s[i]) and np.isfinite(v_s[i]) and np.isfinite(z_surface[i])):
+        if not (np.isfinite(u_s) and np.isfinite(v_s) and np.isfinite(z_s)):
             state[i] = UNCERTAIN
             continue
-        cu = int(np.floor(u_s[i]))
-        cv = int(np.floor(v_s[i]))
+        # Two tangents of the receiver's plane, 1 cm long (receiver_plane_gradient's helper
+        # axis z, or x for a nearly vertical normal).
+        if abs(nz) < 0.9:
+            ax, ay, az = ny, -nx, 0.0
+        else:
+            ax, ay, az = 0.0, nz, -ny
+        la = math.sqrt(ax * ax + ay * ay + az * az)
+        ax, ay, az = ax / la, ay / la, az / la
+        bx, by, bz = ny * az - nz * ay, nz * ax - nx * az, nx * ay - ny * ax
+        # A plane holding the light's rays (seen edge-on) gets no gradient: the own-polygon
+        # rule alone decides.
+        dz_du, dz_dv = plane_depth_gradient(m, width, height, px, py, pz, u_s, v_s, z_s,
+                                            ax, ay, az, bx, by, bz)
+        tol = _PLANE_TOL_NDC + _PLANE_TOL_SLOPE * (abs(dz_du) + abs(dz_dv))
+        own = own_poly[i]
+        cu = int(np.floor(u_s))
+        cv = int(np.floor(v_s))
         occluding = 0
         clear = 0
         thin_occluding = 0
         first_poly = -2
         mixed = False
+        decided = False
         for dv in range(-radius, radius + 1):
             row = cv + dv
+            if decided:
+                break
             for du in range(-radius, radius + 1):
+                # Occluded somewhere and clear (or a second caster) somewhere: uncertain,
+                # whatever the other texels hold.
+                if (occluding > 0 or thin_occluding > 0) and (clear > 0 or mixed):
+                    decided = True
+                    break
                 col = cu + du
                 # Outside the map nothing was drawn: empty, i.e. no caster there.
                 if row < 0 or row >= h or col < 0 or col >= w:
                     clear += 1
                     continue
                 # The receiver's plane at this texel's centre.
-                plane = (z_surface[i] + dz_du[i] * (col + 0.5 - u_s[i])
-                         + dz_dv[i] * (row + 0.5 - v_s[i]) - tol[i])
-                if thin_depth[row, col] < plane and thin_poly[row, col] != own_poly[i]:
+                plane = (z_s + dz_du * (col + 0.5 - u_s) + dz_dv * (row + 0.5 - v_s) - tol)
+                # The nearest thin caster of another polygon: the nearest one, or the nearest
+                # of the others when that is the receiver's own.
+                thin_other = (thin_depth[row, col] if thin_poly[row, col] != own
+                              else thin_depth2[row, col])
+                if thin_other < plane:
                     thin_occluding += 1
-                if depth[row, col] < plane and texel_poly[row, col] != own_poly[i]:
+                t = prim[row, col]
+                texel_poly = tri_polygon[t] if t >= 0 else -1
+                if depth[row, col] < plane and texel_poly != own:
                     occluding += 1
                     if first_poly == -2:
-                        first_poly = texel_poly[row, col]
-                    elif texel_poly[row, col] != first_poly:
+                        first_poly = texel_poly
+                    elif texel_poly != first_poly:
                         mixed = True
                 else:
                     clear += 1
@@ -207,28 +266,28 @@ _PLANE_TOL_SLOPE = 0.01
 
 def bracket_states(depth_map, scene, points_m, normals, own_poly, sun_direction,
                    radius_texels: int, thin_map) -> np.ndarray:
-    """(N,) uint8 receiver states from one depth map.
+    """(N,) uint8 receiver states from one depth map (one kernel pass; its numpy twin is
+    ``tests/reference.py``'s ``reference_bracket_states``).
 
     ``own_poly`` (N,) are the receivers' polygon indices (-1 for the ground plane); the surface
     point is the shadow-ray origin (pushed off its surface by the tracer's tiny offset);
     ``thin_map`` is :func:`thin_caster_map` of the same view.
     """
-    from cityshade.shadows.shadowmap import project, receiver_plane_gradient
-    from cityshade.trace import shadow_rays_from_surface
+    from cityshade.trace import SHADOW_OFFSET_MIN_SCALE_M, SHADOW_OFFSET_REL
 
-    origins = shadow_rays_from_surface(points_m, normals, sun_direction)
-    u_s, v_s, z_surface = project(depth_map.view, origins)
-    gu, gv = receiver_plane_gradient(depth_map.view, origins, np.asarray(normals, np.float64),
-                                     u_s, v_s, z_surface)
-    tol = _PLANE_TOL_NDC + _PLANE_TOL_SLOPE * (np.abs(gu) + np.abs(gv))
-    prim = np.asarray(depth_map.prim_id)
-    safe = np.maximum(prim, 0)
-    texel_poly = np.where(prim >= 0, np.asarray(scene.tri_polygon)[safe], -1).astype(np.int32)
-    state = np.empty(len(u_s), np.uint8)
-    f64 = lambda a: np.ascontiguousarray(a, np.float64)  # noqa: E731
-    _bracket_kernel(np.asarray(depth_map.depth), texel_poly, thin_map[0], thin_map[1],
-                    f64(u_s), f64(v_s), f64(z_surface), f64(gu), f64(gv), f64(tol),
-                    np.ascontiguousarray(own_poly, np.int32), int(radius_texels), state)
+    points = np.ascontiguousarray(points_m, np.float64).reshape(-1, 3)
+    normals = np.ascontiguousarray(normals, np.float64).reshape(-1, 3)
+    view = depth_map.view
+    state = np.empty(points.shape[0], np.uint8)
+    if points.shape[0]:
+        _bracket_kernel(np.ascontiguousarray(view.clip_from_world.reshape(16), np.float64),
+                        float(view.width_px), float(view.height_px),
+                        np.asarray(depth_map.depth), np.asarray(depth_map.prim_id),
+                        np.asarray(scene.tri_polygon), thin_map[0], thin_map[1], thin_map[2],
+                        points,
+                        normals, np.ascontiguousarray(sun_direction, np.float64).reshape(3),
+                        SHADOW_OFFSET_REL, SHADOW_OFFSET_MIN_SCALE_M,
+                        np.ascontiguousarray(own_poly, np.int32), int(radius_texels), state)
     return state
 
 
@@ -310,20 +369,23 @@ class Hybrid:
             diagnostics.update(traced_px=0, traced_share=0.0, note="sun below the horizon")
             return ShadowResult(lit=lit, diagnostics=diagnostics,
                                 extra_channels={"refined": refined.astype(np.float32)})
-        normal, faces = ctx.normal, ctx.faces
+        faces = ctx.faces
         # 1. Classify facing pixels.
         state = np.full(shape, SURE_SHADOW, np.uint8)
         if settings.classifier == "bracket" and maps:
             prim = np.asarray(surfaces.prim_id)
-            own_poly = np.where(prim >= 0, np.asarray(ctx.scene.tri_polygon)[np.maximum(prim, 0)],
-                                -1)
+            tri_polygon = np.asarray(ctx.scene.tri_polygon)
             for use in maps:
-                mask = use.pixels & faces
+                # A single map serves the facing pixels themselves: their gathered receivers.
+                mask = faces if use.pixels is faces else use.pixels & faces
                 if mask.any():
+                    points, normals = ctx.receivers(mask)
+                    p = prim[mask]
+                    own_poly = np.where(p >= 0, tri_polygon[np.maximum(p, 0)], -1)
                     thin = thin_caster_map(ctx.scene, use.depth_map.view, ctx.t_days)
                     state[mask] = bracket_states(
-                        use.depth_map, ctx.scene, surfaces.position_m[mask], normal[mask],
-                        own_poly[mask], ctx.sun.direction, settings.extra_texels, thin)
+                        use.depth_map, ctx.scene, points, normals, own_poly, ctx.sun.direction,
+                        settings.extra_texels, thin)
             classifier_used = "bracket"
         else:
             b = self.base.look_up(ctx, prepared) if base_lit is None else base_lit
@@ -337,12 +399,12 @@ class Hybrid:
         engines: list[str] = []
 
         def trace(mask: np.ndarray) -> int:
-            points = surfaces.position_m[mask]
+            points, normals = ctx.receivers(mask)
             if not len(points):
                 return 0
             engine, sunlit = refine_engine(len(points))
             engines.append(engine)
-            lit[mask] = sunlit(ctx.scene, points, normal[mask], ctx.sun.direction,
+            lit[mask] = sunlit(ctx.scene, points, normals, ctx.sun.direction,
                                ctx.t_days).astype(np.float32)
             refined[mask] = True
             return len(points)

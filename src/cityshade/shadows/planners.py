@@ -113,6 +113,7 @@ class Warped:
         from cityshade.shadows.warps import focus, warp_matrix
 
         out = PreparedMaps(sun_direction=_unit(ctx.sun.direction))
+        t0 = time.perf_counter()
         faces, receivers, _, casters = focus(ctx)
         if receivers.shape[0] == 0:
             out.diagnostics.note = "no visible surface faces the sun"
@@ -121,10 +122,13 @@ class Warped:
         m, info = warp_matrix(self.warp, ctx.camera, ctx.sun.direction, receivers, casters,
                               ctx.settings.warp)
         view = sm.LightView(m, size, size, self.name)
+        t1 = time.perf_counter()
         dmap = sm.render_depth_map(ctx.scene, view, ctx.t_days)
+        t2 = time.perf_counter()
         out.maps.append(MapUse(dmap, faces, radius_px))
         out.views.append(view)
-        out.diagnostics.update(map_px=[(size, size)], warp=info, depth_map=dmap.stats)
+        out.diagnostics.update(map_px=[(size, size)], warp=info, depth_map=dmap.stats,
+                               timings_s={"fit_s": t1 - t0, "depth_s": t2 - t1})
         return out
 
     def measure(self, ctx: ShadowContext, prepared: PreparedMaps) -> dict[str, Any]:
@@ -155,12 +159,14 @@ class Cascaded:
         settings = ctx.settings
         surfaces = ctx.surfaces
         sun = np.asarray(ctx.sun.direction, np.float64)
+        t_start = time.perf_counter()
+        depth_s = 0.0
         diagnostics = TechniqueDiagnostics(warp=self.warp, map_px=[], cascades=0,
                                            cascades_rendered=0, cascades_skipped=[],
                                            per_cascade=[])
         out = PreparedMaps(sun_direction=_unit(sun), diagnostics=diagnostics)
         faces = ctx.faces
-        receivers = np.asarray(surfaces.position_m[faces], np.float64)
+        receivers = ctx.facing_points
         if receivers.shape[0] == 0:
             diagnostics.note = "no visible surface faces the sun"
             return out
@@ -197,7 +203,9 @@ class Cascaded:
             m, info = warps.warp_matrix(self.warp, ctx.camera, sun, r,
                                         warps.extrude_to_box(r, sun, box), settings.warp)
             view = sm.LightView(m, size, size, f"csm-{k}")
+            t0 = time.perf_counter()
             dmap = sm.render_depth_map(ctx.scene, view, ctx.t_days)
+            depth_s += time.perf_counter() - t0
             out.layers[k] = dmap.depth
             mask = np.zeros(surfaces.valid.shape, bool)
             mask[face_rows[sel], face_cols[sel]] = True
@@ -208,6 +216,9 @@ class Cascaded:
                           "depth_s": dmap.stats.get("timings_s", {}).get("total_s", 0.0)})
             diagnostics.map_px.append((size, size))
             diagnostics.cascades_rendered += 1
+        # fit: splits, focus and warps of every cascade (all but the depth passes).
+        diagnostics.timings_s = {"fit_s": time.perf_counter() - t_start - depth_s,
+                                 "depth_s": depth_s}
         return out
 
     def measure(self, ctx: ShadowContext, prepared: PreparedMaps) -> dict[str, Any]:

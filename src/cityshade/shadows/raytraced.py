@@ -22,11 +22,11 @@ class RayTraced:
             diagnostics.note = "sun at or below the horizon: everything in shadow"
             return ShadowResult(lit=lit, diagnostics=diagnostics)
         t0 = time.perf_counter()
-        normal, faces = ctx.normal, ctx.faces
+        faces = ctx.faces
         diagnostics.self_shadowed_px = int((surfaces.valid & ~faces).sum())
-        points = surfaces.position_m[faces]
+        points, normals = ctx.receivers(faces)
         if len(points):
-            lit[faces] = self.sunlit(ctx.scene, points, normal[faces], ctx.sun.direction,
+            lit[faces] = self.sunlit(ctx.scene, points, normals, ctx.sun.direction,
                                      ctx.t_days, diagnostics).astype(np.float32)
         diagnostics.rays = int(len(points))
         diagnostics.shadow_s = time.perf_counter() - t0

@@ -604,7 +604,7 @@ def offset_receivers(view: LightView, points_m, normals, sun_direction,
 
 
 @njit(cache=True, inline="always")
-def _clip_point(m, x, y, z, width, height):
+def clip_point(m, x, y, z, width, height):
     """(u_px, v_px, NDC depth) of a point in the view of clip matrix ``m`` (16,); NaN where
     ``w <= 0`` (:func:`project`'s arithmetic)."""
     cx = x * m[0] + y * m[1] + z * m[2] + m[3]
@@ -613,6 +613,22 @@ def _clip_point(m, x, y, z, width, height):
     cw = x * m[12] + y * m[13] + z * m[14] + m[15]
     inv = 1.0 / cw if cw > 0.0 else np.nan
     return (cx * inv + 1.0) * (0.5 * width), (1.0 - cy * inv) * (0.5 * height), cz * inv
+
+
+@njit(cache=True, inline="always")
+def plane_depth_gradient(m, width, height, px, py, pz, u, v, z, ax, ay, az, bx, by, bz):
+    """(dz/du, dz/dv) in the view of clip matrix ``m`` (16,) of the plane through point p (at
+    texel ``u, v``, depth ``z``) spanned by the unit tangents a and b, from two steps of 1 cm
+    (:func:`receiver_plane_gradient`'s arithmetic); 0, 0 for a plane seen edge-on."""
+    u1, v1, z1 = clip_point(m, px + 0.01 * ax, py + 0.01 * ay, pz + 0.01 * az, width, height)
+    u2, v2, z2 = clip_point(m, px + 0.01 * bx, py + 0.01 * by, pz + 0.01 * bz, width, height)
+    ja, jb, jc, jd = u1 - u, u2 - u, v1 - v, v2 - v
+    det = ja * jd - jb * jc
+    gu = ((z1 - z) * jd - (z2 - z) * jc) / det
+    gv = ((z2 - z) * ja - (z1 - z) * jb) / det
+    if not (np.isfinite(gu) and np.isfinite(gv)):
+        return 0.0, 0.0
+    return gu, gv
 
 
 @njit(cache=True, parallel=True)
@@ -643,21 +659,12 @@ def _lookup_receivers(m, width, height, projective, points, normals, sun, consta
         qx = px + constant_m * sx + offset * nx
         qy = py + constant_m * sy + offset * ny
         qz = pz + constant_m * sz + offset * nz
-        u, v, z = _clip_point(m, qx, qy, qz, width, height)
+        u, v, z = clip_point(m, qx, qy, qz, width, height)
         if projective:
             # Two tangents of the receiver's plane, 1 cm long (receiver_plane_gradient).
             ax, ay, az, bx, by, bz = _tangent_frame(nx, ny, nz)
-            u1, v1, z1 = _clip_point(m, qx + 0.01 * ax, qy + 0.01 * ay, qz + 0.01 * az, width,
-                                     height)
-            u2, v2, z2 = _clip_point(m, qx + 0.01 * bx, qy + 0.01 * by, qz + 0.01 * bz, width,
-                                     height)
-            ja, jb, jc, jd = u1 - u, u2 - u, v1 - v, v2 - v
-            jdet = ja * jd - jb * jc
-            gu = ((z1 - z) * jd - (z2 - z) * jc) / jdet
-            gv = ((z2 - z) * ja - (z1 - z) * jb) / jdet
-            if not (np.isfinite(gu) and np.isfinite(gv)):
-                gu = 0.0
-                gv = 0.0
+            gu, gv = plane_depth_gradient(m, width, height, qx, qy, qz, u, v, z,
+                                          ax, ay, az, bx, by, bz)
             z = z - (abs(gu) + abs(gv)) * (0.5 + radius)
         u_out[i] = u
         v_out[i] = v

@@ -60,7 +60,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
-from numba import njit
+from numba import njit, prange
 
 from cityshade.config import WarpSettings
 from cityshade.errors import UsageError
@@ -106,18 +106,89 @@ def extrude_to_box(points_m, sun_direction, box_m) -> np.ndarray:
     (N, 3) float64
         ``p + t d`` with ``t >= 0`` the exit distance (0 for a point already outside).
     """
-    p = np.asarray(points_m, dtype=np.float64)
-    d = np.asarray(sun_direction, dtype=np.float64)
-    box = np.asarray(box_m, dtype=np.float64)
-    t = np.full(len(p), np.inf)
-    for k in range(3):
-        # Distance to the slab face ahead of the ray on axis k (none when the ray is parallel).
-        if d[k] > 0.0:
-            t = np.minimum(t, (box[1, k] - p[:, k]) / d[k])
-        elif d[k] < 0.0:
-            t = np.minimum(t, (box[0, k] - p[:, k]) / d[k])
-    t = np.where(np.isfinite(t), np.maximum(t, 0.0), 0.0)
-    return p + t[:, None] * d
+    p = np.ascontiguousarray(points_m, dtype=np.float64).reshape(-1, 3)
+    out = np.empty_like(p)
+    _extrude_kernel(p, np.ascontiguousarray(sun_direction, np.float64).reshape(3),
+                    np.ascontiguousarray(box_m, np.float64).reshape(2, 3), out)
+    return out
+
+
+@njit(cache=True, parallel=True)
+def _extrude_kernel(p, d, box, out):
+    """:func:`extrude_to_box` per point (one pass, no (N,) temporaries)."""
+    for i in prange(p.shape[0]):
+        t = np.inf
+        for k in range(3):
+            # Distance to the slab face ahead of the ray on axis k (none when it is parallel).
+            if d[k] > 0.0:
+                t = min(t, (box[1, k] - p[i, k]) / d[k])
+            elif d[k] < 0.0:
+                t = min(t, (box[0, k] - p[i, k]) / d[k])
+        t = max(t, 0.0) if np.isfinite(t) else 0.0
+        for k in range(3):
+            out[i, k] = p[i, k] + t * d[k]
+
+
+@njit(cache=True)
+def _ndc_bounds(m, points, lo, hi):
+    """Fold the NDC x, y, z (after the divide by w) of ``points`` under the (4, 4) matrix ``m``
+    into ``lo``/``hi`` (3,); returns the smallest w (:func:`ndc`'s arithmetic, one pass)."""
+    wmin = np.inf
+    for i in range(points.shape[0]):
+        x, y, z = points[i, 0], points[i, 1], points[i, 2]
+        w = x * m[3, 0] + y * m[3, 1] + z * m[3, 2] + m[3, 3]
+        wmin = min(wmin, w)
+        for k in range(3):
+            c = (x * m[k, 0] + y * m[k, 1] + z * m[k, 2] + m[k, 3]) / w
+            lo[k] = min(lo[k], c)
+            hi[k] = max(hi[k], c)
+    return wmin
+
+
+@njit(cache=True, inline="always")
+def _ndc_point(m, points, i):
+    x, y, z = points[i, 0], points[i, 1], points[i, 2]
+    w = x * m[3, 0] + y * m[3, 1] + z * m[3, 2] + m[3, 3]
+    return ((x * m[0, 0] + y * m[0, 1] + z * m[0, 2] + m[0, 3]) / w,
+            (x * m[1, 0] + y * m[1, 1] + z * m[1, 2] + m[1, 3]) / w,
+            (x * m[2, 0] + y * m[2, 1] + z * m[2, 2] + m[2, 3]) / w)
+
+
+@njit(cache=True)
+def _ndc_sum(m, points, total, centre, unit):
+    """Add up the points' NDC positions into ``total`` (3,); with ``unit``, their unit
+    directions from ``centre`` instead (PSM's light axis)."""
+    for i in range(points.shape[0]):
+        qx, qy, qz = _ndc_point(m, points, i)
+        if unit:
+            qx, qy, qz = qx - centre[0], qy - centre[1], qz - centre[2]
+            length = math.sqrt(qx * qx + qy * qy + qz * qz)
+            qx, qy, qz = qx / length, qy / length, qz / length
+        total[0] += qx
+        total[1] += qy
+        total[2] += qz
+
+
+@njit(cache=True)
+def _min_cos(m, points, centre, axis):
+    """Smallest cosine between ``axis`` and the points' NDC directions from ``centre``."""
+    lowest = np.inf
+    for i in range(points.shape[0]):
+        qx, qy, qz = _ndc_point(m, points, i)
+        qx, qy, qz = qx - centre[0], qy - centre[1], qz - centre[2]
+        length = math.sqrt(qx * qx + qy * qy + qz * qz)
+        lowest = min(lowest, (qx * axis[0] + qy * axis[1] + qz * axis[2]) / length)
+    return lowest
+
+
+def ndc_bounds(matrix, points_m) -> tuple[float, np.ndarray, np.ndarray]:
+    """(smallest w, lo (3,), hi (3,)) of the points' homogeneous w and NDC coordinates under a
+    (4, 4) matrix: what a fit needs of :func:`ndc`, without the (N, 4) array."""
+    lo = np.full(3, np.inf)
+    hi = np.full(3, -np.inf)
+    wmin = _ndc_bounds(np.ascontiguousarray(matrix, np.float64),
+                       np.ascontiguousarray(points_m, np.float64).reshape(-1, 3), lo, hi)
+    return float(wmin), lo, hi
 
 
 def light_basis(sun_direction, forward=None) -> np.ndarray:
@@ -149,18 +220,12 @@ def _affine4(rot3, origin) -> np.ndarray:
 def _fit(k_matrix, receivers_m, casters_m, margin_rel) -> np.ndarray:
     """Compose an axis-aligned scale and shift after ``k_matrix`` so that the receivers' NDC x, y
     and the receivers' and casters' NDC z fill [-1, 1] (x, y with a margin)."""
-    hr = apply_h(k_matrix, receivers_m)
-    hc = apply_h(k_matrix, casters_m)
-    wmin = min(hr[:, 3].min(), hc[:, 3].min())
-    if not wmin > 0.0:
+    w_r, lo, hi = ndc_bounds(k_matrix, receivers_m)
+    w_c, lo_c, hi_c = ndc_bounds(k_matrix, casters_m)
+    if not min(w_r, w_c) > 0.0:
         raise UsageError("warp geometry: a focus point lies behind a projection centre")
-    nr = hr[:, :3] / hr[:, 3:4]
-    nc = hc[:, :3] / hc[:, 3:4]
-    lo = np.empty(3)
-    hi = np.empty(3)
-    lo[:2], hi[:2] = nr[:, :2].min(axis=0), nr[:, :2].max(axis=0)
-    lo[2] = min(nr[:, 2].min(), nc[:, 2].min())
-    hi[2] = max(nr[:, 2].max(), nc[:, 2].max())
+    lo[2] = min(lo[2], lo_c[2])
+    hi[2] = max(hi[2], hi_c[2])
     span = hi - lo
     # A flat focus (one pixel, one wall seen edge-on) still needs a non-zero extent.
     span = np.maximum(span, 1e-9 * (np.abs(lo) + np.abs(hi)) + 1e-12)
@@ -251,11 +316,12 @@ def _warp_frame(camera, d):
 def _body_params(camera, d, r, c):
     """LiSPSM/XPSM parameters of the body: light-space coordinates, n_opt and friends."""
     eye, fwd, sin_gamma, basis = _warp_frame(camera, d)
-    rl = (r - eye) @ basis.T
-    y0, y1 = float(rl[:, 1].min()), float(rl[:, 1].max())
+    # Light-space y (rows 0) and view depth (row 1) of the receivers, in one pass.
+    _, lo, hi = ndc_bounds(_affine4(np.stack([basis[1], fwd, fwd]), eye), r)
+    y0, y1 = float(lo[0]), float(hi[0])
     depth_y_m = max(y1 - y0, 0.0)
     # z_n: the nearest receiver's view depth (a tight near plane, not the camera's tiny one).
-    z_n = max(float(((r - eye) @ fwd).min()), camera.near_m, 1e-6)
+    z_n = max(float(lo[1]), camera.near_m, 1e-6)
     z_f = z_n + depth_y_m * sin_gamma
     n = lispsm_n_opt(z_n, z_f, min(sin_gamma, 1.0))
     return eye, basis, sin_gamma, y0, depth_y_m, z_n, z_f, n
@@ -460,9 +526,11 @@ def psm_matrix(camera, sun_direction, receivers_m, casters_m,
         return m, dict(info, note="orthographic camera: no perspective aliasing, uniform map")
     right, up, fwd = camera.frame()
     eye = np.asarray(camera.eye_m, dtype=np.float64)
-    pts = np.concatenate([r, c])
-    depth = (pts - eye) @ fwd
-    dmin, dmax = float(depth.min()), float(depth.max())
+    # View depth of every focus point (receivers and casters), one pass each.
+    along = _affine4(np.stack([fwd, fwd, fwd]), eye)
+    _, lo_r, hi_r = ndc_bounds(along, r)
+    _, lo_c, hi_c = ndc_bounds(along, c)
+    dmin, dmax = float(min(lo_r[0], lo_c[0])), float(max(hi_r[0], hi_c[0]))
     # Slide the virtual camera back until every focus point is in front of a near plane of at
     # least psm_min_near_far times the far distance (casters behind the eye included).
     rho = s.psm_min_near_far
@@ -475,23 +543,27 @@ def psm_matrix(camera, sun_direction, receivers_m, casters_m,
                          camera.width_px / camera.height_px, near_v * (1.0 - 1e-6),
                          far_v * (1.0 + 1e-6))
     light_pp = cam_v @ np.append(d, 0.0)          # the sun in post-perspective space
-    q = ndc(cam_v, pts)
     info = {"warp": "psm", "slide_back_m": slide, "near_m": near_v, "far_m": far_v}
     length = float(np.linalg.norm(light_pp[:3]))
+    n_focus = r.shape[0] + c.shape[0]
     if abs(light_pp[3]) <= s.psm_directional_eps * length:
         # Directional in post-perspective space too: orthographic along -L (toward the sun is +L).
         basis = light_basis(light_pp[:3])
-        k = _affine4(basis, q.mean(axis=0)) @ cam_v
+        total = np.zeros(3)
+        for pts in (r, c):
+            _ndc_sum(cam_v, pts, total, np.zeros(3), False)
+        k = _affine4(basis, total / n_focus) @ cam_v
         info["light"] = "directional"
     else:
         centre = light_pp[:3] / light_pp[3]
         info["light"] = "point" if light_pp[3] > 0.0 else "inverted"
         # Axis of the light's frustum: the mean direction toward the focus; every focus point
         # lies beyond the plane z = (f + n) / (f - n) of the sun's image, so -z is a safe axis.
-        u = q - centre
-        u /= np.linalg.norm(u, axis=1, keepdims=True)
-        axis = _unit(u.sum(axis=0))
-        if not (u @ axis).min() > 1e-3:
+        total = np.zeros(3)
+        for pts in (r, c):
+            _ndc_sum(cam_v, pts, total, centre, True)
+        axis = _unit(total)
+        if not min(_min_cos(cam_v, r, centre, axis), _min_cos(cam_v, c, centre, axis)) > 1e-3:
             axis = np.array([0.0, 0.0, -1.0])
         basis = light_basis(-axis)                # rows x, y, axis
         view_pp = _affine4(basis, centre)
