@@ -355,7 +355,7 @@ def config_option(func):
     """``--config FILE``: the TOML settings tree (:mod:`cityshade.config`)."""
     return click.option("--config", "config_path", type=click.Path(dir_okay=False),
                         help="TOML settings file ([shadows], [sun], [batch], [evaluate], "
-                             "...; configs/default.toml lists them). Flags override it.")(func)
+                             "...; cityshade/configs/default.toml lists them). Flags override it.")(func)
 
 
 def load_config(config_path):
@@ -522,9 +522,9 @@ def ground_option(func):
 # --- camera options shared by render, batch and evaluate ---------------------------------------
 
 def _preset_names() -> list[str]:
-    from cityshade.raster.camera import BUILTIN_PRESETS
+    from cityshade.raster.camera import load_presets
 
-    return [n for n in BUILTIN_PRESETS if n != "overview"]
+    return [n for n in load_presets() if n != "overview"]
 
 
 _PRESET_NAMES = _preset_names()
@@ -537,7 +537,8 @@ def camera_options(default_camera: str):
         for option in reversed([
             click.option("--camera", default=default_camera, show_default=True,
                          help=f"overview, map, or a preset: {', '.join(_PRESET_NAMES)} "
-                              f"(configs/cameras.toml) or one of --cameras."),
+                              f"(shipped in cityshade/configs/cameras.toml) or one of "
+                              f"--cameras."),
             click.option("--eye", help="Camera position X,Y,Z in the model CRS (metres); "
                          "with --target."),
             click.option("--target", help="Point looked at, X,Y,Z in the model CRS (metres)."),
@@ -549,7 +550,7 @@ def camera_options(default_camera: str):
                          help="Metres per pixel of the map view (default: fits 2048 px)."),
             click.option("--cameras", "cameras_file", type=click.Path(dir_okay=False),
                          help="TOML file of more camera presets (same tables as "
-                              "configs/cameras.toml), added to the built-in ones."),
+                              "cityshade/configs/cameras.toml), added to the built-in ones."),
         ]):
             func = option(func)
         return func
