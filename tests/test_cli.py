@@ -328,3 +328,23 @@ def test_a_non_editable_install_reads_its_presets_settings_and_rules(tmp_path):
     assert done.returncode == 0, done.stderr
     assert done.stdout.splitlines() == [
         "['bird', 'east', 'north', 'overview', 'south', 'tower', 'west']", "True", "2"]
+
+
+def test_a_bad_option_is_one_line(capsys, tmp_path):
+    """click's usage errors took four lines (usage, hint, blank line, message)."""
+    from cityshade.cli.main import main
+
+    cases = [(["render", tmp_path / "a.cityshade", "--fov", "500"],
+              "cityshade: error: Invalid value for '--fov': 500.0 is not in the range "
+              "1<=x<=170. (see 'cityshade render --help')"),
+             (["render"], "cityshade: error: Missing argument 'FILE'. "
+                          "(see 'cityshade render --help')"),
+             (["batch", tmp_path / "a.cityshade", "--nosuch"],
+              "cityshade: error: No such option '--nosuch'. (see 'cityshade batch --help')"),
+             (["nosuch"], "cityshade: error: No such command 'nosuch'. "
+                          "(see 'cityshade --help')")]
+    for args, line in cases:
+        with pytest.raises(SystemExit) as done:
+            main([str(a) for a in args])
+        assert done.value.code == 2
+        assert capsys.readouterr().err.splitlines() == [line]

@@ -105,6 +105,15 @@ def main(argv: list[str] | None = None) -> None:
     except (KeyboardInterrupt, click.exceptions.Abort):
         Interrupted().show()
         status = 130
+    except click.exceptions.NoArgsIsHelpError as exc:
+        exc.show()  # ``cityshade`` alone: the help
+        status = exc.exit_code
+    except click.UsageError as exc:
+        # click's own form is four lines (usage, hint, blank, message): one line, as for
+        # every other bad input.
+        hint = f" (see '{exc.ctx.command_path} --help')" if exc.ctx is not None else ""
+        click.echo(f"cityshade: error: {exc.format_message()}{hint}", err=True)
+        status = exc.exit_code
     except click.ClickException as exc:
         exc.show()
         status = exc.exit_code
