@@ -266,8 +266,11 @@ def test_sigint_while_the_package_is_imported(tmp_path, kind):
     Python's traceback and status -2."""
     script = tmp_path / "child.py"
     script.write_text(START_CHILD)
+    # As from a terminal: a test run started in the background inherits an ignored SIGINT,
+    # which the command leaves ignored.
     done = subprocess.run([sys.executable, str(script), kind], capture_output=True, text=True,
-                          timeout=60, cwd=tmp_path)
+                          timeout=60, cwd=tmp_path,
+                          preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
     if kind == "library":
         assert done.returncode == -signal.SIGINT and "KeyboardInterrupt" in done.stderr
     else:
