@@ -150,14 +150,15 @@ def test_nice_pixel_sizes():
         [0.1, 0.1, 0.2, 0.5, 5.0, 10.0]
 
 
-def test_presets_file_matches_builtin_and_unknown_names_fail(tmp_path):
-    # The repository's configs/cameras.toml and the presets built into the package agree (an
-    # installed package has no configs folder and uses the built-in ones).
-    repo_presets = Path(__file__).resolve().parents[1] / "configs" / "cameras.toml"
-    with repo_presets.open("rb") as fh:
-        assert tomllib.load(fh) == cams.BUILTIN_PRESETS
-    assert cams.load_presets(repo_presets) == cams.BUILTIN_PRESETS
-    assert cams.load_presets() == cams.BUILTIN_PRESETS
+def test_shipped_presets_and_unknown_names_fail(tmp_path):
+    # The presets are the package's configs/cameras.toml (one copy; an installed package reads
+    # it through importlib.resources, tests/test_cli.py checks that on a built wheel).
+    shipped = Path(cams.__file__).resolve().parents[1] / "configs" / "cameras.toml"
+    with shipped.open("rb") as fh:
+        assert cams.load_presets() == tomllib.load(fh)
+    assert sorted(cams.load_presets()) == ["bird", "east", "north", "overview", "south", "west"]
+    assert cams.load_presets()["overview"] == {"azimuth_deg": 225.0, "elevation_deg": 35.0,
+                                               "vfov_deg": 40.0, "zoom": 1.0}
     scene = box_scene()
     south = cams.preset("south", scene, 160, 90)
     _, _, fwd = south.frame()

@@ -2,8 +2,10 @@
 from __future__ import annotations
 
 import json
+import os
 import subprocess
 import sys
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -279,3 +281,70 @@ def test_camera_presets_from_a_user_file(built, tmp_path):
             "--size", "64x48", "--camera", "low_south", "-o", tmp_path / "p.exr")
     assert_one_line_error(run(*args), "unknown camera 'low_south'", code=2)
     assert run(*args, "--cameras", presets).exit_code == 0
+
+
+#: Run in the package laid out as ``pip install .`` lays it out, with no repository around it.
+INSTALLED_CHILD = """
+import sys
+from importlib import resources
+from pathlib import Path
+import cityshade
+from cityshade.config import Settings, load_settings
+from cityshade.raster.camera import load_presets
+from cityshade.rules import load_rules
+site = Path(sys.argv[1])
+assert Path(cityshade.__file__).resolve().parent == site / "cityshade", cityshade.__file__
+# The presets are read from the installed file, not from a copy inside the code.
+with open(site / "cityshade" / "configs" / "cameras.toml", "a") as fh:
+    fh.write("\\n[tower]\\nazimuth_deg = 10.0\\nelevation_deg = 80.0\\n")
+print(sorted(load_presets()))
+with resources.as_file(resources.files("cityshade") / "configs" / "default.toml") as p:
+    print(load_settings(p) == Settings())
+print(len(load_rules("bre209")))
+"""
+
+
+def test_a_non_editable_install_reads_its_presets_settings_and_rules(tmp_path):
+    """``pip install .`` copies what setuptools' ``build_py`` lays out: the modules and the
+    package data that pyproject.toml declares. The camera presets were read from the
+    repository's ``configs/`` folder (``parents[3]``), with a second copy in the code for an
+    install, and ``default.toml`` was not installed at all; both are package data now."""
+    import shutil
+
+    repo = Path(__file__).resolve().parents[1]
+    shutil.copytree(repo / "src" / "cityshade", tmp_path / "src" / "cityshade",
+                    ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+    for name in ("pyproject.toml", "README.md"):
+        shutil.copy(repo / name, tmp_path / name)
+    site = tmp_path / "site"
+    done = subprocess.run([sys.executable, "-c", "import setuptools; setuptools.setup()", "-q",
+                           "build_py", "-d", str(site)], cwd=tmp_path, capture_output=True,
+                          text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    (tmp_path / "child.py").write_text(INSTALLED_CHILD)
+    env = dict(os.environ, PYTHONPATH=str(site))
+    done = subprocess.run([sys.executable, str(tmp_path / "child.py"), str(site)], cwd=site,
+                          capture_output=True, text=True, timeout=120, env=env)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines() == [
+        "['bird', 'east', 'north', 'overview', 'south', 'tower', 'west']", "True", "2"]
+
+
+def test_a_bad_option_is_one_line(capsys, tmp_path):
+    """click's usage errors took four lines (usage, hint, blank line, message)."""
+    from cityshade.cli.main import main
+
+    cases = [(["render", tmp_path / "a.cityshade", "--fov", "500"],
+              "cityshade: error: Invalid value for '--fov': 500.0 is not in the range "
+              "1<=x<=170. (see 'cityshade render --help')"),
+             (["render"], "cityshade: error: Missing argument 'FILE'. "
+                          "(see 'cityshade render --help')"),
+             (["batch", tmp_path / "a.cityshade", "--nosuch"],
+              "cityshade: error: No such option '--nosuch'. (see 'cityshade batch --help')"),
+             (["nosuch"], "cityshade: error: No such command 'nosuch'. "
+                          "(see 'cityshade --help')")]
+    for args, line in cases:
+        with pytest.raises(SystemExit) as done:
+            main([str(a) for a in args])
+        assert done.value.code == 2
+        assert capsys.readouterr().err.splitlines() == [line]

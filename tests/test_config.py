@@ -8,7 +8,7 @@ import pytest
 from cityshade.config import BuildSettings, Settings, load_settings, settings_from_mapping
 from cityshade.errors import ConfigError
 
-CONFIGS = Path(__file__).resolve().parents[1] / "configs"
+CONFIGS = Path(__file__).resolve().parents[1] / "src" / "cityshade" / "configs"
 
 
 def test_default_toml_equals_defaults():

@@ -171,6 +171,112 @@ def test_sigint_during_a_first_call_compile(tmp_path):
     assert not (out / "a.exr").exists()
 
 
+#: A child that runs a Numba kernel returning typed lists between arrays (as the kd-tree
+#: build's kernel does) under the command's Ctrl-C handler, as ``main()`` runs a command.
+BOXING_CHILD = """
+import sys, time
+import numpy as np
+from numba import njit
+from numba.typed import List
+from cityshade.cli.options import Interrupted, install_sigint_handler, translate_errors
+
+@njit(nogil=True)
+def kernel(seconds):
+    x = 0.0
+    for i in range(int(seconds * 2e8)):
+        x += i * 1e-9
+    return np.full(4, x), (List([np.zeros(3)]), List([np.zeros(2)])), np.zeros(5)
+
+kernel(0.0)
+install_sigint_handler()
+print("ready", flush=True)
+try:
+    with translate_errors():
+        kernel(float(sys.argv[1]))
+        time.sleep(1.0)   # a held Ctrl-C is raised here at the latest
+except Interrupted as exc:
+    exc.show()
+    sys.exit(130)
+print("not interrupted")
+"""
+
+
+def test_sigint_while_a_kernel_runs_is_raised_after_numba_boxed_its_result(tmp_path):
+    """The intermittent SIGSEGV of the kd-tree build (status -11, empty stderr): a SIGINT that
+    arrives while a kernel runs is handled at the next bytecode, which is Python code run by
+    Numba's wrapper to box the typed lists of the result. A KeyboardInterrupt raised there
+    was not expected by the wrapper: it went on boxing with the exception set and freed a
+    half-made array (``NRT_MemInfo_release(NULL)``), or returned the result with the
+    exception set (``SystemError``). The signal is sent while the kernel runs, every time."""
+    script = tmp_path / "child.py"
+    script.write_text(BOXING_CHILD)
+    env = dict(os.environ, PYTHONUNBUFFERED="1")
+    proc = subprocess.Popen([sys.executable, str(script), "3"], stdout=subprocess.PIPE,
+                            stderr=subprocess.PIPE, env=env, text=True)
+    assert proc.stdout.readline() == "ready\n"
+    time.sleep(0.3)
+    proc.send_signal(signal.SIGINT)
+    out, err = proc.communicate(timeout=120)
+    assert (proc.returncode, err, out) == (130, "cityshade: interrupted\n", "")
+
+
+def test_numba_on_stack_sees_numba_code_called_from_a_kernel_wrapper():
+    """The rule behind the test above: the handler holds the interrupt while a frame of
+    Numba's is on the stack (here numba's typeof, which asks the object for its type)."""
+    import numba
+    from cityshade.cli.options import numba_on_stack
+
+    seen = []
+
+    class Probe:
+        @property
+        def _numba_type_(self):
+            seen.append(numba_on_stack(sys._getframe()))
+            return numba.types.int64
+
+    numba.typeof(Probe())
+    assert seen == [True]
+    assert not numba_on_stack(sys._getframe())
+
+
+#: ``python -m cityshade`` (runpy imports the package with argv[0] "-m") and the console
+#: script, each sent a Ctrl-C right after ``import cityshade``; and a program that imports
+#: the library, whose Ctrl-C stays Python's.
+START_CHILD = """
+import os, signal, sys, time
+kind = sys.argv[1]
+if kind == "-m":
+    sys.argv[0] = "-m"
+    sys.orig_argv = [sys.executable, "-X", "utf8", "-m", "cityshade", "build", "x.gml"]
+elif kind == "script":
+    sys.argv[0] = os.path.join(os.path.dirname(sys.executable), "cityshade")
+import cityshade
+os.kill(os.getpid(), signal.SIGINT)
+time.sleep(2)
+print("still running")
+"""
+
+
+@pytest.mark.parametrize("kind", ["-m", "script", "library"])
+def test_sigint_while_the_package_is_imported(tmp_path, kind):
+    """Ctrl-C while the command's process imports the package (the Numba cache folder is
+    keyed by a hash of the sources there, then numba, lxml, pyproj): one line and 130. The
+    handler used to be installed by ``cityshade.__main__``, after the package's import: 8 of
+    300 Ctrl-Cs 0.1-0.5 s into ``python -m cityshade build`` on a loaded machine gave
+    Python's traceback and status -2."""
+    script = tmp_path / "child.py"
+    script.write_text(START_CHILD)
+    # As from a terminal: a test run started in the background inherits an ignored SIGINT,
+    # which the command leaves ignored.
+    done = subprocess.run([sys.executable, str(script), kind], capture_output=True, text=True,
+                          timeout=60, cwd=tmp_path,
+                          preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    if kind == "library":
+        assert done.returncode == -signal.SIGINT and "KeyboardInterrupt" in done.stderr
+    else:
+        assert (done.returncode, done.stderr, done.stdout) == (130, "cityshade: interrupted\n", "")
+
+
 def test_numba_systemerror_from_an_interrupt_is_an_interrupt():
     """Ctrl-C inside a Numba kernel surfaces as SystemError('CPUDispatcher(...) returned a
     result with an exception set') chained to the KeyboardInterrupt."""

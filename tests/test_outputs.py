@@ -49,6 +49,26 @@ def test_batch_evaluate_compare_and_render_refuse_a_bad_output_before_reading_th
     assert sorted(p.name for p in tmp_path.iterdir()) == ["plain_file"]  # nothing written
 
 
+def test_a_failed_command_leaves_none_of_the_folders_it_made(tmp_path):
+    """check_outputs creates missing output folders before the work; when the command fails
+    afterwards (here: the model does not exist) they were left behind, empty."""
+    model = tmp_path / "no_such.cityshade"
+    kept = tmp_path / "kept"
+    kept.mkdir()  # there before the command: stays
+    sun = ["--date", "2000", "--sun-azimuth", "135", "--sun-elevation", "30"]
+    cases = [
+        ["render", model, *sun, "-o", kept / "r" / "deep" / "a.exr", "--png", tmp_path / "p" / "a.png"],
+        ["batch", model, "--date", "2024-06-21", "--tz", "UTC", "-o", tmp_path / "b" / "out"],
+        ["evaluate", model, "-o", kept / "e"],
+        ["compare", model, "--before", "1850", "--after", "1990", "--date", "2024-03-21",
+         "--tz", "UTC", "-o", tmp_path / "c"],
+    ]
+    for args in cases:
+        assert _one_error_line(args).startswith(f"{model}: ")
+        assert sorted(p.name for p in tmp_path.iterdir()) == ["kept"], args
+        assert list(kept.iterdir()) == [], args
+
+
 def test_check_outputs_kinds_and_clashes(tmp_path):
     (tmp_path / "f.exr").write_text("")
     (tmp_path / "d.png").mkdir()

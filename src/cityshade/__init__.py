@@ -5,7 +5,11 @@ only by the stages that use them, so ``cityshade --help`` stays instant.
 """
 from __future__ import annotations
 
-import os as _os
+from cityshade.startup import hold_ctrl_c_while_starting
+
+hold_ctrl_c_while_starting()  # first: a Ctrl-C from here on is one line and status 130
+
+import os as _os  # noqa: E402
 
 __version__ = "0.1.0"
 

@@ -1016,7 +1016,7 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
     from types import SimpleNamespace
 
     from cityshade.pipeline import check_frame_memory
-    from cityshade.util import check_outputs, output_group
+    from cityshade.util import check_outputs, make_folder, output_group
 
     settings = settings or Settings()
     outdir = Path(outdir)
@@ -1083,7 +1083,7 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
     state.before_write = before_state_write
     frames_dir = outdir / "frames"
     if frames:
-        frames_dir.mkdir(exist_ok=True)
+        make_folder(frames_dir)
 
     instants = [s.centre_utc for s in steps]
     weights = [s.weight_h for s in steps]

@@ -5,7 +5,8 @@ and time window it is measured on, what is measured (total hours, the longest co
 stretch, or hours in stretches of a minimum length), the threshold, the share of the area that
 must reach it, and an "after >= k x before" comparison. The format and the shipped rules (BRE
 209 garden and window tests, EN 17037 sunlight exposure, a minimum continuous sunshine rule of
-the Chinese kind) are documented in ``docs/RULES.md``; the files are ``configs/rules/*.toml``.
+the Chinese kind) are documented in ``docs/RULES.md``; the files are the package's
+``rules_data/*.toml``.
 
 The engine (:func:`evaluate`) works on plain arrays (:class:`Measures`), so it is tested on
 synthetic hours; :func:`measures_from` takes them from a :class:`cityshade.compare.Comparison`.

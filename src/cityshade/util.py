@@ -223,15 +223,40 @@ def check_t_days(t_days, error: type[CityshadeError] = UsageError) -> float:
     return t
 
 
+#: Every folder :func:`make_folder` created, outermost first (:func:`folders_made`).
+_MADE: list[Path] = []
+
+
 def make_folder(path: str | os.PathLike, what: str = "output folder") -> Path:
     """Create ``path`` (and its parents) if needed; an :class:`OutputError` naming it when
-    that is impossible."""
+    that is impossible. The folders it creates are recorded (:func:`remove_folders_made`)."""
     path = Path(path)
+    missing = []
+    for folder in (path, *path.parents):
+        if folder.exists():
+            break
+        missing.append(folder)
     try:
         path.mkdir(parents=True, exist_ok=True)
     except OSError as exc:
         raise OutputError(f"cannot create the {what}: {exc.strerror}", path=str(path)) from None
+    _MADE.extend(reversed(missing))
     return path
+
+
+def folders_made() -> int:
+    """A mark for :func:`remove_folders_made`: how many folders were created until now."""
+    return len(_MADE)
+
+
+def remove_folders_made(since: int) -> None:
+    """Remove the folders :func:`make_folder` created after the mark ``since`` that are still
+    empty, innermost first: a failed command leaves none of the folders it made (a folder with
+    something in it, e.g. the saved state of an interrupted batch, stays)."""
+    for folder in reversed(_MADE[since:]):
+        with contextlib.suppress(OSError):
+            folder.rmdir()
+    del _MADE[since:]
 
 
 def read_toml(path: str | os.PathLike, what: str = "config") -> dict[str, Any]:

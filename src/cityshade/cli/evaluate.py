@@ -50,7 +50,7 @@ def _int_list(text: str, what: str) -> tuple[int, ...]:
 @click.command("evaluate")
 @click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
 @click.option("--views", default="overview,map", show_default=True,
-              help="Comma list: overview, map, or presets of configs/cameras.toml.")
+              help="Comma list: overview, map, or camera presets (render --help lists them).")
 @click.option("--sun", "sun_text", help="Sun positions 'AZ,EL;AZ,EL' in degrees (azimuth "
               "clockwise from true north). Default: '135,45;240,15'.")
 @click.option("--date", "date_text", help="City state (YYYY[-MM-DD]); with --times, the day "

@@ -31,9 +31,21 @@ class LazyGroup(click.Group):
 
     def invoke(self, ctx):
         from cityshade.cli.options import translate_errors
+        from cityshade.util import folders_made, remove_folders_made
 
-        with translate_errors(verbose=ctx.meta.get("cityshade.verbose", False)):
-            return super().invoke(ctx)
+        # A command that fails (or is interrupted) leaves none of the folders it created for
+        # its outputs, e.g. the -o folder check_outputs makes before the work.
+        mark = folders_made()
+        try:
+            with translate_errors(verbose=ctx.meta.get("cityshade.verbose", False)):
+                return super().invoke(ctx)
+        except click.exceptions.Exit as exc:
+            if exc.exit_code:
+                remove_folders_made(mark)
+            raise
+        except BaseException:
+            remove_folders_made(mark)
+            raise
 
     def list_commands(self, ctx):
         return list(COMMANDS)
@@ -93,6 +105,15 @@ def main(argv: list[str] | None = None) -> None:
     except (KeyboardInterrupt, click.exceptions.Abort):
         Interrupted().show()
         status = 130
+    except click.exceptions.NoArgsIsHelpError as exc:
+        exc.show()  # ``cityshade`` alone: the help
+        status = exc.exit_code
+    except click.UsageError as exc:
+        # click's own form is four lines (usage, hint, blank, message): one line, as for
+        # every other bad input.
+        hint = f" (see '{exc.ctx.command_path} --help')" if exc.ctx is not None else ""
+        click.echo(f"cityshade: error: {exc.format_message()}{hint}", err=True)
+        status = exc.exit_code
     except click.ClickException as exc:
         exc.show()
         status = exc.exit_code

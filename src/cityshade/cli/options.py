@@ -34,23 +34,76 @@ class Interrupted(LibraryFailure):
 
 #: Set by :func:`on_sigint`: every failure after a Ctrl-C is the interrupt's consequence.
 #: ``held``: a Ctrl-C that came while Numba compiled, raised when the compile is over.
-_interrupt = {"seen": False, "held": False, "listening": False}
+#: ``raised``: the KeyboardInterrupt is on its way; ``again``: the thread that delivers a
+#: Ctrl-C held outside a compile once more (:func:`_deliver_again`) is running.
+_interrupt = {"seen": False, "held": False, "listening": False, "raised": False,
+              "again": False}
+#: Seconds between deliveries of a held Ctrl-C: short against a user's patience, long
+#: against the few microseconds Numba's wrappers spend in Python code.
+REDELIVER_S = 0.005
 
 
 def on_sigint(signum, frame) -> None:
     """SIGINT handler of the command: raise KeyboardInterrupt once, ignore further Ctrl-Cs so
     the clean-up (temporary files removed, nothing half-written) runs to its end.
 
-    While Numba compiles (a first call after an install, about a minute) the exception would
-    be raised inside llvmlite, whose clean-up then prints its own traceback (a half-made
-    ``PassBuilder``): it is held until the compiler's current pass ends
-    (:func:`_raise_after_compile`)."""
+    The exception is raised only where Python can unwind it: never inside Numba. Python
+    signal handlers run between any two bytecodes, also in Python code that compiled code
+    calls (boxing a kernel's typed-list result, typing its arguments), and Numba's wrappers
+    do not expect an exception there: they go on with it set and free a half-made result
+    (SIGSEGV in ``NRT_MemInfo_release``, or ``SystemError: CPUDispatcher(...) returned a
+    result with an exception set``). With Numba on the stack the Ctrl-C is held: during a
+    compile until the compiler's current pass ends (:func:`_raise_after_compile`; llvmlite's
+    objects are whole then), otherwise it is delivered again every :data:`REDELIVER_S`
+    until it lands in code that is not Numba's (:func:`_deliver_again`)."""
+    if _interrupt["raised"]:
+        return
     _interrupt["seen"] = True
-    signal.signal(signal.SIGINT, signal.SIG_IGN)
     if _numba_compiling():
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
         _raise_after_compile()
         return
+    if numba_on_stack(frame):
+        _deliver_again()
+        return
+    _interrupt["raised"] = True
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
     raise KeyboardInterrupt
+
+
+def numba_on_stack(frame) -> bool:
+    """Whether ``frame`` or a frame it was called from is Numba's or llvmlite's Python code
+    (without importing them: not imported, not on the stack)."""
+    import os
+
+    roots = tuple(os.path.dirname(module.__file__) + os.sep for name in ("numba", "llvmlite")
+                  if (module := sys.modules.get(name)) is not None
+                  and getattr(module, "__file__", None))
+    while roots and frame is not None:
+        if frame.f_code.co_filename.startswith(roots):
+            return True
+        frame = frame.f_back
+    return False
+
+
+def _deliver_again() -> None:
+    """Send SIGINT to the main thread every :data:`REDELIVER_S` until :func:`on_sigint` has
+    raised it (a daemon thread: it ends with the process)."""
+    import threading
+
+    if _interrupt["again"]:
+        return
+    _interrupt["again"] = True
+    main = threading.main_thread().ident
+
+    def again() -> None:
+        while not _interrupt["raised"]:
+            time.sleep(REDELIVER_S)
+            if not _interrupt["raised"]:
+                signal.pthread_kill(main, signal.SIGINT)
+        _interrupt["again"] = False
+
+    threading.Thread(target=again, name="cityshade-ctrl-c", daemon=True).start()
 
 
 def _numba_compiling() -> bool:
@@ -74,6 +127,7 @@ def _raise_after_compile() -> None:
         def on_end(self, ev) -> None:
             if _interrupt["held"] and threading.current_thread() is threading.main_thread():
                 _interrupt["held"] = False
+                _interrupt["raised"] = True
                 raise KeyboardInterrupt
 
     _interrupt["held"] = True
@@ -301,7 +355,7 @@ def config_option(func):
     """``--config FILE``: the TOML settings tree (:mod:`cityshade.config`)."""
     return click.option("--config", "config_path", type=click.Path(dir_okay=False),
                         help="TOML settings file ([shadows], [sun], [batch], [evaluate], "
-                             "...; configs/default.toml lists them). Flags override it.")(func)
+                             "...; cityshade/configs/default.toml lists them). Flags override it.")(func)
 
 
 def load_config(config_path):
@@ -468,9 +522,9 @@ def ground_option(func):
 # --- camera options shared by render, batch and evaluate ---------------------------------------
 
 def _preset_names() -> list[str]:
-    from cityshade.raster.camera import BUILTIN_PRESETS
+    from cityshade.raster.camera import load_presets
 
-    return [n for n in BUILTIN_PRESETS if n != "overview"]
+    return [n for n in load_presets() if n != "overview"]
 
 
 _PRESET_NAMES = _preset_names()
@@ -483,7 +537,8 @@ def camera_options(default_camera: str):
         for option in reversed([
             click.option("--camera", default=default_camera, show_default=True,
                          help=f"overview, map, or a preset: {', '.join(_PRESET_NAMES)} "
-                              f"(configs/cameras.toml) or one of --cameras."),
+                              f"(shipped in cityshade/configs/cameras.toml) or one of "
+                              f"--cameras."),
             click.option("--eye", help="Camera position X,Y,Z in the model CRS (metres); "
                          "with --target."),
             click.option("--target", help="Point looked at, X,Y,Z in the model CRS (metres)."),
@@ -495,7 +550,7 @@ def camera_options(default_camera: str):
                          help="Metres per pixel of the map view (default: fits 2048 px)."),
             click.option("--cameras", "cameras_file", type=click.Path(dir_okay=False),
                          help="TOML file of more camera presets (same tables as "
-                              "configs/cameras.toml), added to the built-in ones."),
+                              "cityshade/configs/cameras.toml), added to the built-in ones."),
         ]):
             func = option(func)
         return func

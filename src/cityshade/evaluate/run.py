@@ -282,8 +282,8 @@ def _keep_picture(scene, camera, gbuf, surfaces, ref_lit, sun, view, label, eval
 def make_camera(scene, view: str, size: tuple[int, int] = (1280, 720),
                 pixel_size_m: float | None = None, t_days: float | None = None,
                 cameras_file=None):
-    """Camera of a view name: ``overview``, ``map`` or a preset of ``configs/cameras.toml``
-    (or of the user's preset file ``cameras_file``)."""
+    """Camera of a view name: ``overview``, ``map`` or a shipped camera preset
+    (``cityshade/configs/cameras.toml``) or one of the user's preset file ``cameras_file``."""
     from cityshade.raster import camera as cams
 
     w, h = size

@@ -26,18 +26,9 @@ import numpy as np
 
 from cityshade.errors import ConfigError, UsageError
 
-#: Camera presets shipped with the repository.
-DEFAULT_PRESETS_PATH = Path(__file__).resolve().parents[3] / "configs" / "cameras.toml"
-#: The same presets, used when the package runs without the repository's configs folder
-#: (tests check that both agree).
-BUILTIN_PRESETS = {
-    "overview": {"azimuth_deg": 225.0, "elevation_deg": 35.0, "vfov_deg": 40.0, "zoom": 1.0},
-    "south": {"azimuth_deg": 180.0, "elevation_deg": 20.0, "vfov_deg": 40.0, "zoom": 1.0},
-    "east": {"azimuth_deg": 90.0, "elevation_deg": 20.0, "vfov_deg": 40.0, "zoom": 1.0},
-    "north": {"azimuth_deg": 0.0, "elevation_deg": 20.0, "vfov_deg": 40.0, "zoom": 1.0},
-    "west": {"azimuth_deg": 270.0, "elevation_deg": 20.0, "vfov_deg": 40.0, "zoom": 1.0},
-    "bird": {"azimuth_deg": 200.0, "elevation_deg": 60.0, "vfov_deg": 40.0, "zoom": 1.0},
-}
+#: The camera presets shipped in the package (``cityshade/configs/cameras.toml``), read
+#: through :mod:`importlib.resources`: an installed package has no repository around it.
+PRESETS_RESOURCE = ("configs", "cameras.toml")
 #: Fraction of the image the fitted model box may fill (a thin border around the city).
 FIT_FILL = 0.95
 #: Default image side of a map view when no pixel size is given (the CLI's "fits 2048 px").
@@ -55,7 +46,7 @@ MAP_EYE_MARGIN_REL = 0.01
 
 
 class UnknownPresetError(ConfigError):
-    """A camera preset name that ``configs/cameras.toml`` does not define."""
+    """A camera preset name that the shipped presets (and ``--cameras``) do not define."""
 
 
 @dataclass(frozen=True, eq=False)
@@ -453,17 +444,19 @@ _PRESET_KEYS = {"azimuth_deg": float, "elevation_deg": float, "vfov_deg": float,
 
 
 def load_presets(path: str | Path | None = None) -> dict[str, dict[str, float]]:
-    """Named perspective presets from a TOML file (default ``configs/cameras.toml``).
+    """Named perspective presets from a TOML file (default: the package's
+    ``configs/cameras.toml``, :data:`PRESETS_RESOURCE`).
 
     Each table is a preset with ``azimuth_deg``, ``elevation_deg`` (required), ``vfov_deg``
     (default 40) and ``zoom`` (default 1); see :func:`fitted`. Unknown keys are errors.
     """
-    if path is None:
-        if not DEFAULT_PRESETS_PATH.exists():
-            return {name: dict(values) for name, values in BUILTIN_PRESETS.items()}
-        path = DEFAULT_PRESETS_PATH
+    from importlib import resources
+
     from cityshade.util import read_toml
 
+    if path is None:
+        with resources.as_file(resources.files("cityshade").joinpath(*PRESETS_RESOURCE)) as p:
+            return load_presets(p)
     path = Path(path)
     data = read_toml(path, "camera presets")
     presets = {}
@@ -489,7 +482,7 @@ def load_presets(path: str | Path | None = None) -> dict[str, dict[str, float]]:
 def preset(name: str, scene, width_px: int = 1280, height_px: int = 720, *,
            path: str | Path | None = None, extra: str | Path | None = None,
            t_days: float | None = None) -> Camera:
-    """The named preset of ``configs/cameras.toml`` (or ``path``), or of the user's preset
+    """The named preset of the shipped presets (or of ``path``), or of the user's preset
     file ``extra`` (``--cameras``; its presets win), fitted to the scene's box.
 
     Raises

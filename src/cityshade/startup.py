@@ -1,0 +1,56 @@
+"""Ctrl-C while the ``cityshade`` command starts, before it has installed its own handler.
+
+The package's ``__init__`` is the first cityshade code that runs, in ``python -m cityshade``
+(runpy imports the package before its ``__main__``) and in the console script (which imports
+``cityshade.__main__``); it calls :func:`hold_ctrl_c_while_starting` first thing, and the
+imports that follow (hashing the sources for the Numba cache folder, numba, lxml, pyproj)
+leave with one line and status 130 on a Ctrl-C. Nothing is written before the command's own
+handler (``cityshade.cli.options.on_sigint``) takes over. A program that imports the library
+keeps its handler: only the command's process is touched.
+"""
+from __future__ import annotations
+
+import os
+import sys
+
+import _signal  # the C module: ``signal`` builds its enums first, 25 ms of start-up
+
+
+def interrupted_while_starting(signum, frame) -> None:
+    """Leave at once: the imports are still running and nothing is written yet."""
+    sys.stderr.write("cityshade: interrupted\n")
+    sys.stderr.flush()
+    os._exit(130)
+
+
+def command_is_starting() -> bool:
+    """Whether this process is the ``cityshade`` command on its way to ``main()``."""
+    argv0 = sys.argv[0] if sys.argv else ""
+    if argv0 == "-m":
+        # ``python -m NAME``: runpy imports NAME's package with argv[0] = "-m" until it has
+        # found the module; the module's name is in the original command line.
+        args = getattr(sys, "orig_argv", [])
+        for k, arg in enumerate(args[1:], 1):
+            if arg == "-m":
+                return args[k + 1:k + 2] == ["cityshade"]
+            if arg.startswith("-m"):
+                return arg == "-mcityshade"
+        return False
+    return os.path.basename(argv0).lower() in ("cityshade", "cityshade.exe",
+                                               "cityshade-script.py")
+
+
+def hold_ctrl_c_while_starting() -> None:
+    """In the command's process (:func:`command_is_starting`), :func:`install_start_handler`."""
+    if command_is_starting():
+        install_start_handler()
+
+
+def install_start_handler() -> None:
+    """With Python's own Ctrl-C handler still in place (not an ignored SIGINT, not a handler
+    of the caller), install :func:`interrupted_while_starting`."""
+    try:
+        if _signal.getsignal(_signal.SIGINT) is _signal.default_int_handler:
+            _signal.signal(_signal.SIGINT, interrupted_while_starting)
+    except ValueError:  # not the main thread: not the command's start
+        pass
