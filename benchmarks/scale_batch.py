@@ -104,6 +104,8 @@ def main(argv=None) -> dict:
     ap.add_argument("--workdir", type=Path, help="where the runs' output folders go (a "
                     "temporary folder inside it, removed at the end; default the system's)")
     args = ap.parse_args(argv)
+    if args.workdir is not None:
+        args.workdir.mkdir(parents=True, exist_ok=True)
 
     import numba
 
