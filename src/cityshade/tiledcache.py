@@ -219,8 +219,7 @@ def save_tiled(scene: Scene, folder: str | os.PathLike, tile_m: float, settings,
                  "source": source, "build_options": build_options, "report": scene.report,
                  "materials": scene.materials, "textures": scene.textures,
                  "object_types": sorted(set(scene.obj_types)), "tiles": tiles,
-                 "surface_classes": np.bincount(np.asarray(scene.tri_class)).tolist(),
-                 "tree": tile_tree([t["box_m"] for t in tiles])}
+                 "surface_classes": np.bincount(np.asarray(scene.tri_class)).tolist()}
         blob = json.dumps(index, sort_keys=True, indent=1).encode("utf-8")
         (tmp / INDEX_NAME).write_bytes(blob)
         total += len(blob)
@@ -239,26 +238,6 @@ def save_tiled(scene: Scene, folder: str | os.PathLike, tile_m: float, settings,
     for t in tiles:
         write_verified_stamp(folder / t["file"], t["header_blake2b"])
     return total
-
-
-def tile_tree(boxes: list) -> dict:
-    """A median-split tree over the tile boxes (x, y centres): nested ``{"split": [axis,
-    value], "lo": …, "hi": …}`` with leaves ``{"tiles": [i, …]}`` of at most 4 tiles, each
-    node with the box of its tiles (``box_m``), for culling many tiles at once."""
-    def node(ids: list[int]) -> dict:
-        lo = np.min([boxes[i][0] for i in ids], axis=0).tolist()
-        hi = np.max([boxes[i][1] for i in ids], axis=0).tolist()
-        if len(ids) <= 4:
-            return {"box_m": [lo, hi], "tiles": ids}
-        centre = np.array([[0.5 * (boxes[i][0][a] + boxes[i][1][a]) for a in (0, 1)]
-                           for i in ids])
-        axis = int(np.argmax(centre.max(axis=0) - centre.min(axis=0)))
-        order = [ids[k] for k in np.argsort(centre[:, axis], kind="stable")]
-        half = len(order) // 2
-        return {"box_m": [lo, hi], "split": axis, "lo": node(order[:half]),
-                "hi": node(order[half:])}
-
-    return node(list(range(len(boxes)))) if boxes else {"box_m": [[0] * 3, [0] * 3], "tiles": []}
 
 
 # --- use ---------------------------------------------------------------------------------------
