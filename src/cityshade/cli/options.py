@@ -522,7 +522,7 @@ def ground_option(func):
 # --- camera options shared by render, batch and evaluate ---------------------------------------
 
 def _preset_names() -> list[str]:
-    from cityshade.raster.camera import load_presets
+    from cityshade.raster.presets import load_presets
 
     return [n for n in load_presets() if n != "overview"]
 
