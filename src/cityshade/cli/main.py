@@ -103,8 +103,9 @@ def main(argv: list[str] | None = None) -> None:
             # A Ctrl-C swallowed by a library (a bare except around an import) still stops.
             raise Interrupted()
     except (KeyboardInterrupt, click.exceptions.Abort):
-        Interrupted().show()
-        status = 130
+        stop = Interrupted()
+        stop.show()
+        status = stop.exit_code
     except click.exceptions.NoArgsIsHelpError as exc:
         exc.show()  # ``cityshade`` alone: the help
         status = exc.exit_code
@@ -123,7 +124,8 @@ def main(argv: list[str] | None = None) -> None:
         # The interpreter's shutdown resets handlers to the default, which would kill the
         # process on a late Ctrl-C (status -2 instead of ours); an ignored SIGINT stays ignored.
         signal.signal(signal.SIGINT, signal.SIG_IGN)
-    if status == 130:
+        signal.signal(signal.SIGTERM, signal.SIG_IGN)
+    if status in (130, 143):
         # After a KeyboardInterrupt inside code that a C library ran through PyRun_* the
         # interpreter's epilogue kills itself with SIGINT (status -2, not 130) whatever
         # sys.exit says; everything is written and closed here, so leave without it.
@@ -131,5 +133,5 @@ def main(argv: list[str] | None = None) -> None:
 
         sys.stdout.flush()
         sys.stderr.flush()
-        os._exit(130)
+        os._exit(status)
     sys.exit(status)
