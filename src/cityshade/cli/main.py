@@ -92,7 +92,8 @@ def main(argv: list[str] | None = None) -> None:
     import signal
     import sys
 
-    from cityshade.cli.options import Interrupted, install_sigint_handler, interrupt_seen
+    from cityshade.cli.options import (Interrupted, install_sigint_handler, interrupt_seen,
+                                       terminate_is_ours)
 
     install_sigint_handler()
     try:
@@ -124,7 +125,10 @@ def main(argv: list[str] | None = None) -> None:
         # The interpreter's shutdown resets handlers to the default, which would kill the
         # process on a late Ctrl-C (status -2 instead of ours); an ignored SIGINT stays ignored.
         signal.signal(signal.SIGINT, signal.SIG_IGN)
-        signal.signal(signal.SIGTERM, signal.SIG_IGN)
+        # Not ignored, but given back: an ignored SIGTERM would be inherited by every process
+        # the caller starts later (a test run's Dask workers would not stop).
+        if terminate_is_ours():
+            signal.signal(signal.SIGTERM, signal.SIG_DFL)
     if status in (130, 143):
         # After a KeyboardInterrupt inside code that a C library ran through PyRun_* the
         # interpreter's epilogue kills itself with SIGINT (status -2, not 130) whatever

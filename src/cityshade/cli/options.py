@@ -39,7 +39,7 @@ class Interrupted(LibraryFailure):
 #: ``raised``: the KeyboardInterrupt is on its way; ``again``: the thread that delivers a
 #: Ctrl-C held outside a compile once more (:func:`_deliver_again`) is running.
 _interrupt = {"seen": False, "held": False, "listening": False, "raised": False,
-              "again": False, "terminated": False}
+              "again": False, "terminated": False, "sigterm_ours": False}
 #: Seconds between deliveries of a held Ctrl-C: short against a user's patience, long
 #: against the few microseconds Numba's wrappers spend in Python code.
 REDELIVER_S = 0.005
@@ -80,6 +80,11 @@ def on_sigterm(signum, frame) -> None:
     if not _interrupt["seen"]:
         _interrupt["terminated"] = True
     on_sigint(signal.SIGINT, frame)
+
+
+def terminate_is_ours() -> bool:
+    """Whether :func:`install_sigint_handler` installed :func:`on_sigterm`."""
+    return _interrupt["sigterm_ours"]
 
 
 def numba_on_stack(frame) -> bool:
@@ -164,6 +169,7 @@ def install_sigint_handler() -> None:
         signal.signal(signal.SIGINT, on_sigint)
         if signal.getsignal(signal.SIGTERM) is signal.SIG_DFL:
             signal.signal(signal.SIGTERM, on_sigterm)
+            _interrupt["sigterm_ours"] = True
         previous = sys.unraisablehook
 
         def unraisable(info) -> None:
