@@ -328,6 +328,20 @@ def test_a_non_editable_install_reads_its_presets_settings_and_rules(tmp_path):
     assert done.returncode == 0, done.stderr
     assert done.stdout.splitlines() == [
         "['bird', 'east', 'north', 'overview', 'south', 'tower', 'west']", "True", "2"]
+    # pyproject.toml declares the package typed (PEP 561): the marker must be installed.
+    assert (site / "cityshade" / "py.typed").is_file()
+
+
+def test_help_does_not_load_numpy():
+    """``cityshade --help`` lists the camera presets; reading them loaded numpy (and the
+    camera module) before any command ran."""
+    child = ("import sys\nfrom cityshade.cli.main import main\ntry:\n    main(['--help'])\n"
+             "except SystemExit as e:\n    assert e.code == 0, e.code\n"
+             "print(sorted(m for m in ('numpy', 'numba') if m in sys.modules))")
+    done = subprocess.run([sys.executable, "-c", child], capture_output=True, text=True,
+                          timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.splitlines()[-1] == "[]"
 
 
 def test_a_bad_option_is_one_line(capsys, tmp_path):

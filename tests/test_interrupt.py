@@ -27,29 +27,29 @@ DELAYS_S = (0.6, 1.1, 1.7)
 pytestmark = pytest.mark.skipif(sys.platform == "win32", reason="POSIX signals")
 
 
-def _interrupt(args, delay_s, cwd):
+def _interrupt(args, delay_s, cwd, sig=signal.SIGINT):
     env = dict(os.environ, PYTHONUNBUFFERED="1")
     proc = subprocess.Popen([sys.executable, "-m", "cityshade", *map(str, args)], cwd=cwd,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, env=env, text=True)
     time.sleep(delay_s)
-    proc.send_signal(signal.SIGINT)
+    proc.send_signal(sig)
     _, err = proc.communicate(timeout=300)
     return proc.returncode, err
 
 
-def _check(rc, err, folder):
+def _check(rc, err, folder, status=130, word="interrupted"):
     assert "Traceback" not in err, err
     leftovers = [p.name for p in folder.iterdir() if p.name.startswith(".") or
                  p.name.endswith(".tmp")]
     assert not leftovers, f"partial files left: {leftovers}"
-    assert rc in (0, 130), f"exit status {rc}: {err}"
-    if rc == 130:
+    assert rc in (0, status), f"exit status {rc}: {err}"
+    if rc == status:
         # Warnings and the progress lines of a non-terminal stderr may precede the last line.
         lines = [line for line in err.splitlines()
                  if line.strip() and not line.startswith("cityshade: warning:")
                  and not re.fullmatch(r"cityshade: .* \d+/\d+ \(\d+ %(, ETA [\d:]+)?\).*", line)]
-        assert lines == ["cityshade: interrupted"], err
-    return rc == 130
+        assert lines == [f"cityshade: {word}"], err
+    return rc == status
 
 
 @pytest.fixture(scope="module")
@@ -119,6 +119,19 @@ def test_sigint_during_the_kdtree_build(tmp_path, city_gml):
     worker threads while the main thread waits, and the interrupt is clean."""
     interrupted = _interrupted_builds(tmp_path, city_gml, (1.1, 1.4, 1.7))
     assert interrupted, "no run was interrupted: the delays are too long for this machine"
+
+
+def test_sigterm_during_a_tiled_build_cleans_up(tmp_path, city_gml):
+    """A job scheduler's or ``kill``'s SIGTERM killed the process where it stood and left the
+    tiled build's hidden temporary folder behind; it now cleans up as Ctrl-C does (143)."""
+    ended = 0
+    for k, delay in enumerate((1.0, 1.6, 2.4)):
+        folder = tmp_path / f"t{k}"
+        folder.mkdir()
+        rc, err = _interrupt(["build", city_gml, "--tile-m", "150", "-o", folder / "city"],
+                             delay, folder, signal.SIGTERM)
+        ended += _check(rc, err, folder, 143, "terminated")
+    assert ended, "no run was terminated: the delays are too long for this machine"
 
 
 def test_sigint_during_render(tmp_path, scene_file):

@@ -43,7 +43,7 @@ import numpy as np
 
 from cityshade.errors import (CacheCorruptError, CacheError, CacheVersionError, InputError,
                               OutputError)
-from cityshade.util import atomic_write
+from cityshade.util import atomic_write, make_folder
 
 MAGIC = b"CITYSHD\n"
 #: Bump on any change of layout or meaning of a stored array; old files are refused.
@@ -121,11 +121,6 @@ def pack_strings(values: list[str]) -> tuple[np.ndarray, np.ndarray]:
         np.cumsum([len(e) for e in encoded], out=offsets[1:])
     blob = np.frombuffer(b"".join(encoded), dtype=np.uint8)
     return blob, offsets
-
-
-def unpack_strings(blob: np.ndarray, offsets: np.ndarray) -> list[str]:
-    data = bytes(blob)
-    return [data[offsets[i]:offsets[i + 1]].decode("utf-8") for i in range(len(offsets) - 1)]
 
 
 class PackedStrings(Sequence):
@@ -210,10 +205,8 @@ def write_cache(path: str | os.PathLike, header: Mapping[str, Any],
                           hashlib.blake2b(blob, digest_size=16).digest())
     if path.parent.exists() and not path.parent.is_dir():
         raise OutputError(f"cannot write here: {path.parent} is not a folder", path=str(path))
-    try:
-        path.parent.mkdir(parents=True, exist_ok=True)
-    except OSError as exc:
-        raise OutputError(f"cannot write here: {exc.strerror}", path=str(path)) from None
+    # Recorded, so that a command that fails afterwards removes the folders it made.
+    make_folder(path.parent, "folder")
     with atomic_write(path, "wb", fsync=True, what="here") as fh:
         fh.write(prefix)
         fh.write(blob)

@@ -92,7 +92,8 @@ def main(argv: list[str] | None = None) -> None:
     import signal
     import sys
 
-    from cityshade.cli.options import Interrupted, install_sigint_handler, interrupt_seen
+    from cityshade.cli.options import (Interrupted, install_sigint_handler, interrupt_seen,
+                                       terminate_is_ours)
 
     install_sigint_handler()
     try:
@@ -103,8 +104,9 @@ def main(argv: list[str] | None = None) -> None:
             # A Ctrl-C swallowed by a library (a bare except around an import) still stops.
             raise Interrupted()
     except (KeyboardInterrupt, click.exceptions.Abort):
-        Interrupted().show()
-        status = 130
+        stop = Interrupted()
+        stop.show()
+        status = stop.exit_code
     except click.exceptions.NoArgsIsHelpError as exc:
         exc.show()  # ``cityshade`` alone: the help
         status = exc.exit_code
@@ -123,7 +125,11 @@ def main(argv: list[str] | None = None) -> None:
         # The interpreter's shutdown resets handlers to the default, which would kill the
         # process on a late Ctrl-C (status -2 instead of ours); an ignored SIGINT stays ignored.
         signal.signal(signal.SIGINT, signal.SIG_IGN)
-    if status == 130:
+        # Not ignored, but given back: an ignored SIGTERM would be inherited by every process
+        # the caller starts later (a test run's Dask workers would not stop).
+        if terminate_is_ours():
+            signal.signal(signal.SIGTERM, signal.SIG_DFL)
+    if status in (130, 143):
         # After a KeyboardInterrupt inside code that a C library ran through PyRun_* the
         # interpreter's epilogue kills itself with SIGINT (status -2, not 130) whatever
         # sys.exit says; everything is written and closed here, so leave without it.
@@ -131,5 +137,5 @@ def main(argv: list[str] | None = None) -> None:
 
         sys.stdout.flush()
         sys.stderr.flush()
-        os._exit(130)
+        os._exit(status)
     sys.exit(status)

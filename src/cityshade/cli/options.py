@@ -23,13 +23,15 @@ class LibraryFailure(click.ClickException):
 
 
 class Interrupted(LibraryFailure):
-    """Ctrl-C: ``cityshade: interrupted`` and exit status 130 (128 + SIGINT)."""
+    """Ctrl-C: ``cityshade: interrupted`` and exit status 130 (128 + SIGINT); a SIGTERM (a job
+    scheduler's, ``kill``'s) ends the same way as ``cityshade: terminated`` and 143."""
 
     def __init__(self):
-        super().__init__("interrupted", 130)
+        terminated = _interrupt["terminated"]
+        super().__init__("terminated" if terminated else "interrupted", 143 if terminated else 130)
 
     def show(self, file=None) -> None:
-        click.echo("cityshade: interrupted", err=True)
+        click.echo(f"cityshade: {self.message}", err=True)
 
 
 #: Set by :func:`on_sigint`: every failure after a Ctrl-C is the interrupt's consequence.
@@ -37,7 +39,7 @@ class Interrupted(LibraryFailure):
 #: ``raised``: the KeyboardInterrupt is on its way; ``again``: the thread that delivers a
 #: Ctrl-C held outside a compile once more (:func:`_deliver_again`) is running.
 _interrupt = {"seen": False, "held": False, "listening": False, "raised": False,
-              "again": False}
+              "again": False, "terminated": False, "sigterm_ours": False}
 #: Seconds between deliveries of a held Ctrl-C: short against a user's patience, long
 #: against the few microseconds Numba's wrappers spend in Python code.
 REDELIVER_S = 0.005
@@ -69,6 +71,20 @@ def on_sigint(signum, frame) -> None:
     _interrupt["raised"] = True
     signal.signal(signal.SIGINT, signal.SIG_IGN)
     raise KeyboardInterrupt
+
+
+def on_sigterm(signum, frame) -> None:
+    """SIGTERM handler of the command: the clean-up of a Ctrl-C (temporary files and folders
+    removed), by way of :func:`on_sigint`; ends with status 143."""
+    signal.signal(signal.SIGTERM, signal.SIG_IGN)
+    if not _interrupt["seen"]:
+        _interrupt["terminated"] = True
+    on_sigint(signal.SIGINT, frame)
+
+
+def terminate_is_ours() -> bool:
+    """Whether :func:`install_sigint_handler` installed :func:`on_sigterm`."""
+    return _interrupt["sigterm_ours"]
 
 
 def numba_on_stack(frame) -> bool:
@@ -144,13 +160,16 @@ def interrupt_seen() -> bool:
 
 
 def install_sigint_handler() -> None:
-    """Route Ctrl-C through :func:`on_sigint` (only in the main thread, e.g. not in tests), and
-    keep an interrupt that lands in a destructor (``Exception ignored in ...``) quiet: the
-    command ends with its one line anyway."""
+    """Route Ctrl-C through :func:`on_sigint` and SIGTERM through :func:`on_sigterm` (only in
+    the main thread, e.g. not in tests), and keep an interrupt that lands in a destructor
+    (``Exception ignored in ...``) quiet: the command ends with its one line anyway."""
     import threading
 
     if threading.current_thread() is threading.main_thread():
         signal.signal(signal.SIGINT, on_sigint)
+        if signal.getsignal(signal.SIGTERM) is signal.SIG_DFL:
+            signal.signal(signal.SIGTERM, on_sigterm)
+            _interrupt["sigterm_ours"] = True
         previous = sys.unraisablehook
 
         def unraisable(info) -> None:
@@ -522,7 +541,7 @@ def ground_option(func):
 # --- camera options shared by render, batch and evaluate ---------------------------------------
 
 def _preset_names() -> list[str]:
-    from cityshade.raster.camera import load_presets
+    from cityshade.raster.presets import load_presets
 
     return [n for n in load_presets() if n != "overview"]
 
