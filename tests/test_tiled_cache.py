@@ -221,3 +221,69 @@ def test_real_file_in_tiles(tmp_path):
         assert np.array_equal(a.rgb, b.rgb, equal_nan=True)  # NaN: no surface
         assert np.array_equal(a.gbuffer.prim_id, b.gbuffer.prim_id)
         assert (a.lit == 0).any() and (a.lit > 0).any()
+
+
+def _same_tiled(a, b) -> None:
+    """Two tiled caches hold the same index (but the build's timings and source) and the same
+    tiles, every cache array equal."""
+    from cityshade.cache import open_cache
+
+    ia, ib = (json.loads((p / "index.json").read_text()) for p in (a, b))
+    for index in (ia, ib):
+        index["report"].pop("timings")
+        for k in ("source", "build_options"):
+            index.pop(k)
+        for t in index["tiles"]:
+            for k in ("size", "header_blake2b"):
+                t.pop(k)
+            t["kdtree"].pop("build_s")
+    assert ia == ib
+    for t in ia["tiles"]:
+        ca, cb = open_cache(a / t["file"]), open_cache(b / t["file"])
+        names = sorted(cb.header["arrays"])
+        assert names == sorted(ca.header["arrays"]) and "global/vert" in names
+        for n in names:
+            assert np.array_equal(ca.array(n), cb.array(n), equal_nan=True), (t["file"], n)
+
+
+def test_tiles_from_many_files_spilled_equal_the_assembled_city(tmp_path):
+    """A tiled build of several files spills each file's objects to their tiles and never
+    assembles the city; it equals the tiled cache cut from the assembled city, also where an
+    object changes tile after it was spilled: a building part in a later file (the building
+    met again there) widens its building's box into another tile, and an object without
+    geometry waits for the lowest tile."""
+    from citygml_snippets import box_polygons, building, city
+
+    from cityshade.build import build_file, build_scene_from_files
+    from cityshade.config import Settings
+    from cityshade.tiledcache import save_tiled
+
+    x, y = 690000.0, 5336000.0
+    part = building("bp", box_polygons(x + 70, y, 0, 3, 3, 3, "q"), solid_refs=False
+                    ).replace("bldg:Building", "bldg:BuildingPart")
+    b = box_polygons(x, y, 0, 5, 5, 5, "p")
+    (tmp_path / "t1.gml").write_text(city(building("b", b), building(
+        "c", box_polygons(x + 40, y + 30, 0, 4, 4, 9, "c")), '<bldg:Building gml:id="empty"/>'))
+    (tmp_path / "t2.gml").write_text(city(
+        building("b", b, extra=f"<bldg:consistsOfBuildingPart>{part}</bldg:consistsOfBuildingPart>"),
+        building("d", box_polygons(x + 10, y + 45, 0, 4, 4, 9, "d"))))
+    files = [tmp_path / "t1.gml", tmp_path / "t2.gml"]
+    spilled = build_file(files, tmp_path / "spilled.cityshade", tile_m=20.0)[0]
+    cut = tmp_path / "cut.cityshade"
+    save_tiled(build_scene_from_files(files, Settings(), tree=False), cut, 20.0, Settings(), {}, {})
+    _same_tiled(spilled, cut)
+    index = json.loads((spilled / "index.json").read_text())
+    by_key = {tuple(t["key"]): t["objects"] for t in index["tiles"]}
+    # b (0..5 m) with its part (70..73 m) is centred at 36.5 m: tile 34501, not 34500.
+    assert by_key == {(34501, 266800): 3, (34502, 266801): 1, (34500, 266802): 1}
+    assert not list(tmp_path.glob(".*.tmp"))  # the spill went with the temporary folder
+
+    # The sample city in 3 files with border duplicates, in 60 m tiles.
+    from test_tiles import split_citygml
+
+    shutil.copy(REPO / "sample_data" / "sample_city_facade.png", tmp_path)
+    files = split_citygml(SAMPLE, tmp_path, 3, overlap=2)
+    spilled = build_file(files, tmp_path / "s_spilled.cityshade", tile_m=60.0)[0]
+    cut = tmp_path / "s_cut.cityshade"
+    save_tiled(build_scene_from_files(files, Settings(), tree=False), cut, 60.0, Settings(), {}, {})
+    _same_tiled(spilled, cut)
