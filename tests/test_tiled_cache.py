@@ -168,10 +168,15 @@ def test_bad_input_one_line(built, tmp_path):
     one, tiled = built
     runner = CliRunner()
     render = ["--camera", "map", "--sun-azimuth", "200", "--sun-elevation", "30"]
-    r = runner.invoke(cli, ["render", str(tiled), *render, "--shadows", "shadowmap",
-                            "-o", str(tmp_path / "x.exr")])
-    assert r.exit_code != 0 and "tiled cache renders with the exact techniques" in r.output
-    assert not (tmp_path / "x.exr").exists()
+    # evaluate and compare read a tiled cache; a folder that is not one is one line.
+    (tmp_path / "plain").mkdir()
+    for cmd in (["evaluate", str(tmp_path / "plain"), "-o", str(tmp_path / "e")],
+                ["compare", str(tmp_path / "plain"), "--before", "1850", "--after", "1990",
+                 "--date", "2024-03-21", "--tz", "UTC", "-o", str(tmp_path / "c")]):
+        r = runner.invoke(cli, cmd)
+        assert r.exit_code != 0 and "not a tiled cache (no index.json" in r.output, cmd
+        assert len(r.output.strip().splitlines()) == 1 and "Traceback" not in r.output
+    assert not (tmp_path / "e").exists() and not (tmp_path / "c").exists()
     damaged = tmp_path / "damaged.cityshade"
     shutil.copytree(tiled, damaged)
     (damaged / "index.json").write_text("{not json")
@@ -287,3 +292,120 @@ def test_tiles_from_many_files_spilled_equal_the_assembled_city(tmp_path):
     cut = tmp_path / "s_cut.cityshade"
     save_tiled(build_scene_from_files(files, Settings(), tree=False), cut, 60.0, Settings(), {}, {})
     _same_tiled(spilled, cut)
+
+
+def test_tree_over_tiles_finds_what_the_linear_test_finds():
+    """The tree over the tile boxes gives the tiles the test of every box in turn gives: for
+    the sun-ward overlap test and the camera frustum's plane test, on random grids of
+    tiles (with empty and overlapping boxes) and on the sample city's tiles."""
+    from reference import reference_tiles_passing
+
+    from cityshade.raster import culling as cull
+    from cityshade.tiledcache import TileTree
+
+    rng = np.random.default_rng(5)
+    for n in (0, 1, 3, 5, 40, 200):
+        lo = rng.uniform(0, 1000, (n, 3))
+        boxes = np.stack([lo, lo + rng.uniform(0, 300, (n, 3))], axis=1)
+        boxes[: n // 7, 1] = boxes[: n // 7, 0]  # flat boxes
+        tree = TileTree(boxes)
+        assert tree.n_nodes <= max(1, 2 * n)
+        found = 0
+        for _ in range(15):
+            a, b = np.sort(rng.uniform(-100, 1100, (2, 3)), axis=0)
+
+            def overlap(lo, hi, a=a, b=b):
+                return bool((lo <= b).all() and (hi >= a).all())
+
+            planes = np.concatenate([rng.normal(size=(6, 3)), rng.uniform(-500, 900, (6, 1))],
+                                    axis=1)
+
+            def inside(lo, hi, planes=planes):
+                return not cull.box_outside(planes, lo, hi, 63)[0]
+
+            for test in (overlap, inside):
+                want = reference_tiles_passing(boxes, test)
+                assert tree.query(test) == want
+                found += len(want)
+        assert n == 0 or found > 0
+
+
+def test_views_use_the_tree(built):
+    """The sample city's 17 tiles: the frustum culling of each camera and the sun-ward sweep
+    of some receivers, through the tree, against every tile box tested in turn."""
+    from reference import reference_tiles_passing
+
+    from cityshade.raster import culling as cull
+    from cityshade.tiledcache import open_tiled
+
+    tc = open_tiled(built[1])
+    assert tc.tree.n_nodes > 1
+    box = np.asarray(tc.index["box_m"])
+    pad = cull.FRUSTUM_PAD_REL * max(float(np.max(box[1] - box[0])), 1.0)
+    counts = []
+    for cam in _cameras(tc).values():
+        planes = cull.frustum_planes(cam, pad)
+        mask = (1 << planes.shape[0]) - 1
+        want = reference_tiles_passing(
+            tc.boxes, lambda lo, hi: not cull.box_outside(planes, lo, hi, mask)[0])
+        assert tc.tiles_in_view(cam) == want
+        counts.append(len(want))
+    assert min(counts) < len(tc.tiles) == max(counts)  # the close view draws some tiles
+    origins = np.array([[-60.0, -40.0, 0.5], [-50.0, -30.0, 2.0]])
+    sun = np.array([0.5, 0.3, 0.81])
+    reach = tc.tiles_reaching(origins, sun)
+    assert 0 < len(reach) < len(tc.tiles)
+
+
+def test_map_techniques_evaluate_and_compare_on_a_tiled_cache(built, tmp_path):
+    """The map techniques draw their casters from the view of all tiles (a caster outside
+    the frustum still shades what is in it), and evaluate and compare read a tiled cache as
+    that view: the same pictures, errors and sun-hours as the one cache."""
+    import csv
+
+    from cityshade.render import render_frame
+    from cityshade.scenefile import load_scene, open_scene, scene_for_camera
+    from cityshade.sun import sun_from_angles
+
+    one, tiled = built
+    scene, tc = load_scene(one), open_scene(tiled)
+    sun = sun_from_angles(SUN["azimuth"], SUN["elevation"], scene.crs, scene.origin_m)
+    cams_one, cams_tiled = _cameras(scene), _cameras(tc)
+    for technique in ("shadowmap", "pcf", "vsm", "csm", "hybrid:shadowmap"):
+        for name in ("map", "close"):
+            a = render_frame(scene, cams_one[name], T_DAYS, sun, technique)
+            view = scene_for_camera(tc, cams_tiled[name], technique)
+            assert len(view.tile_ids) == len(tc.tiles)
+            b = render_frame(view, cams_tiled[name], T_DAYS, sun, technique)
+            assert np.array_equal(a.lit, b.lit), (technique, name)
+            assert np.array_equal(a.rgb, b.rgb), (technique, name)
+            assert (a.lit > 0).any() and (a.lit == 0).any()
+    runner = CliRunner()
+    rows = {}
+    for label, path in (("one", one), ("tiled", tiled)):
+        out = tmp_path / f"e_{label}"
+        r = runner.invoke(cli, ["evaluate", str(path), "--views", "map", "--size", "96x64",
+                                "--pixel-size", "2", "--sun", "135,30", "--date", "2024",
+                                "--shadows", "shadowmap,izb", "--sizes", "256", "--repeat", "1",
+                                "-o", str(out)])
+        assert r.exit_code == 0, r.output
+        rows[label] = [{k: v for k, v in row.items()
+                        if k != "model" and not k.endswith(("_s", "_ms"))}
+                       for row in csv.DictReader(open(out / "results.csv"))]
+    assert rows["one"] == rows["tiled"] and len(rows["one"]) == 3
+    out = {}
+    for label, path in (("one", one), ("tiled", tiled)):
+        out[label] = tmp_path / f"c_{label}"
+        r = runner.invoke(cli, ["compare", str(path), "--before", "1850", "--after", "1990",
+                                "--date", "2024-03-21", "--from", "09:00", "--to", "15:00",
+                                "--every", "2h", "--tz", "UTC", "--pixel-size", "3",
+                                "-o", str(out[label])])
+        assert r.exit_code == 0, r.output
+    exrs = sorted(p.name for p in out["one"].glob("*.exr"))
+    assert exrs and exrs == sorted(p.name for p in out["tiled"].glob("*.exr"))
+    for name in exrs:
+        a, b = _exr(out["one"] / name), _exr(out["tiled"] / name)
+        assert a.keys() == b.keys()
+        for k in a:
+            assert np.array_equal(a[k], b[k], equal_nan=True), (name, k)
+    assert (out["one"] / "surfaces.csv").read_bytes() == (out["tiled"] / "surfaces.csv").read_bytes()

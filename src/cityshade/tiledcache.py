@@ -567,6 +567,76 @@ def build_tiled_from_files(sources: list[Path], folder: str | os.PathLike, tile_
 
 # --- use ---------------------------------------------------------------------------------------
 
+class TileTree:
+    """A bounding-volume tree over the tile boxes, the top level above the tiles' kd-trees.
+
+    Built on opening from the index's boxes (derived state, never stored): nodes split at the
+    median of the tile centres along their longest axis, up to ``LEAF_TILES`` tiles per leaf;
+    each node's box is the union of its tiles' boxes. :meth:`query` descends only into nodes
+    whose box passes the test, and tests every tile of a leaf reached: a conservative test that
+    is monotone in the box (a box inside a failing box fails too: the frustum-plane and overlap
+    tests are, also in floating point, since rounding is monotone) gives the tiles the test of
+    every tile in turn would give.
+    """
+
+    LEAF_TILES = 4
+
+    def __init__(self, boxes: np.ndarray):
+        boxes = np.asarray(boxes, np.float64).reshape(-1, 2, 3)
+        self.boxes = boxes
+        self.order = np.arange(len(boxes))
+        lo, hi, first, count, children = [], [], [], [], []
+        if len(boxes):
+            todo = [(0, len(boxes), -1, 0)]  # (begin, end, parent node, which child)
+            centre = boxes.mean(axis=1)
+            while todo:
+                begin, end, parent, side = todo.pop()
+                node = len(lo)
+                if parent >= 0:
+                    children[parent][side] = node
+                idx = self.order[begin:end]
+                lo.append(boxes[idx, 0].min(axis=0))
+                hi.append(boxes[idx, 1].max(axis=0))
+                children.append([-1, -1])
+                if end - begin <= self.LEAF_TILES:
+                    first.append(begin)
+                    count.append(end - begin)
+                    continue
+                first.append(begin)
+                count.append(0)
+                c = centre[idx]
+                axis = int(np.argmax(c.max(axis=0) - c.min(axis=0)))
+                self.order[begin:end] = idx[np.argsort(c[:, axis], kind="stable")]
+                mid = (begin + end) // 2
+                todo.append((mid, end, node, 1))
+                todo.append((begin, mid, node, 0))
+        self.lo = np.array(lo).reshape(-1, 3)
+        self.hi = np.array(hi).reshape(-1, 3)
+        self.first = np.array(first, np.int64)
+        self.count = np.array(count, np.int64)
+        self.children = np.array(children, np.int64).reshape(-1, 2)
+
+    @property
+    def n_nodes(self) -> int:
+        return len(self.lo)
+
+    def query(self, passes: Callable[[np.ndarray, np.ndarray], bool]) -> list[int]:
+        """The tiles (ascending) whose box passes ``passes(lo, hi)``."""
+        out: list[int] = []
+        stack = [0] if self.n_nodes else []
+        while stack:
+            node = stack.pop()
+            if not passes(self.lo[node], self.hi[node]):
+                continue
+            if self.count[node]:
+                b = self.first[node]
+                out += [int(t) for t in self.order[b:b + self.count[node]]
+                        if passes(self.boxes[t, 0], self.boxes[t, 1])]
+            else:
+                stack += [int(self.children[node, 1]), int(self.children[node, 0])]
+        return sorted(out)
+
+
 class TiledCache:
     """An opened tiled cache: the index in memory, tiles memory-mapped on first use.
 
@@ -589,6 +659,7 @@ class TiledCache:
         self.textures = index.get("textures", [])
         self.tiles = index["tiles"]
         self.boxes = np.array([t["box_m"] for t in self.tiles], np.float64).reshape(-1, 2, 3)
+        self.tree = TileTree(self.boxes)
         box = np.asarray(index["box_m"], np.float64)
         self.vertices = box.astype(np.float32)
         self.triangles = np.array([[0, 1, 1]], np.int32)
@@ -643,7 +714,7 @@ class TiledCache:
 
     def tiles_in_view(self, camera) -> list[int]:
         """The tiles whose box the camera's frustum reaches (padded as the rasterizer's
-        culling pads it)."""
+        culling pads it), found through the tree over the tiles."""
         from cityshade.raster import culling as cull
 
         if len(self.tiles) == 0:
@@ -652,8 +723,7 @@ class TiledCache:
         size = float(np.max(box[1] - box[0]))
         planes = cull.frustum_planes(camera, cull.FRUSTUM_PAD_REL * max(size, 1.0))
         mask = (1 << planes.shape[0]) - 1
-        return [i for i in range(len(self.tiles))
-                if not cull.box_outside(planes, self.boxes[i, 0], self.boxes[i, 1], mask)[0]]
+        return self.tree.query(lambda lo, hi: not cull.box_outside(planes, lo, hi, mask)[0])
 
     def view(self, tile_ids: list[int] | None = None) -> Scene:
         """The tiles ``tile_ids`` (all when None) as one in-memory scene in the global order
@@ -745,9 +815,8 @@ class TiledCache:
             sweep_lo = np.minimum(sweep_lo, lo + np.minimum(end, 0.0))
             sweep_hi = np.maximum(sweep_hi, hi + np.maximum(end, 0.0))
         pad = 1e-6 * max(1.0, float(np.max(np.abs(self.boxes)))) if len(self.boxes) else 0.0
-        hit = ((self.boxes[:, 0] <= sweep_hi + pad) & (self.boxes[:, 1] >= sweep_lo - pad)
-               ).all(axis=1)
-        return [int(i) for i in np.flatnonzero(hit)]
+        reach_lo, reach_hi = sweep_lo - pad, sweep_hi + pad
+        return self.tree.query(lambda lo, hi: bool((lo <= reach_hi).all() and (hi >= reach_lo).all()))
 
 
 def to_global(global_index: np.ndarray, ids: np.ndarray) -> np.ndarray:
