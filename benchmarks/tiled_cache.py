@@ -3,7 +3,11 @@
 Every figure runs in a child process (``--python``, as ``benchmarks/scale.py`` does) and
 reports wall time and peak RSS:
 
-* ``build`` — ``cityshade build CITY -o TILED --tile-m SIDE`` (skipped with ``--skip-build``).
+* ``build`` — ``cityshade build CITY -o TILED --tile-m SIDE`` (skipped with ``--skip-build``);
+  with ``--split N`` (CITY a CityJSONSeq file) the city is first written as N files of
+  consecutive features (each with the header line) in ``WORKDIR/split_N/`` and the folder is
+  built: the streaming build of many files, whose peak RSS the issue bounds by
+  1.5 × the cache + 300 MB (``goal_peak_MB``).
 * ``open`` — ``open_scene(TILED)`` in a fresh process (index only), median of ``--repeat``.
 * ``district`` — a map of a ``--district-m`` square at the city's south-west corner at
   ``--pixel-size``, raytrace, one sun (azimuth 200°, elevation 30°): from the tiled cache
@@ -15,6 +19,8 @@ Usage::
     python benchmarks/tiled_cache.py --city /work/bench_data/city_1000000_s7.gml \\
         --workdir /work/bench_data/s4_tiledcache --tile-m 250 \\
         [--one /work/bench_data/city_1000000_s7.cityshade] [--skip-build]
+    python benchmarks/tiled_cache.py --city /work/bench_data/s5_tiles/city10m.city.jsonl \
+        --split 16 --workdir /work/bench_data/s5_tiles --tile-m 500
 
 MB are 10^6 bytes. Prints one JSON object (with the git commit).
 """
@@ -81,6 +87,28 @@ def _child(python: str, script: str, *args) -> dict:
     return json.loads(proc.stdout.strip().splitlines()[-1])
 
 
+def split_cityjsonseq(city: Path, folder: Path, n_files: int) -> Path:
+    """``city`` (CityJSONSeq) as ``n_files`` files of consecutive features in ``folder``, each
+    starting with the header line; the images beside ``city`` are copied along."""
+    import shutil
+
+    folder.mkdir(parents=True, exist_ok=True)
+    with open(city, "rb") as fh:
+        header = fh.readline()
+        features = sum(1 for _ in fh)
+    with open(city, "rb") as fh:
+        fh.readline()
+        for i in range(n_files):
+            stop = round((i + 1) * features / n_files) - round(i * features / n_files)
+            with open(folder / f"part_{i:03d}.city.jsonl", "wb") as out:
+                out.write(header)
+                for _ in range(stop):
+                    out.write(fh.readline())
+    for image in city.parent.glob("*.png"):
+        shutil.copy(image, folder)
+    return folder
+
+
 def main(argv=None) -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--city", type=Path, required=True)
@@ -91,14 +119,21 @@ def main(argv=None) -> int:
     ap.add_argument("--pixel-size", type=float, default=1.0)
     ap.add_argument("--repeat", type=int, default=5)
     ap.add_argument("--skip-build", action="store_true")
+    ap.add_argument("--split", type=int, metavar="N",
+                    help="build from CITY (CityJSONSeq) written as N files")
     ap.add_argument("--python", default=sys.executable)
     args = ap.parse_args(argv)
     args.workdir.mkdir(parents=True, exist_ok=True)
-    tiled = args.workdir / (args.city.stem + f"_tiled{args.tile_m:g}.cityshade")
+    name = args.city.name.split(".")[0] + (f"_split{args.split}" if args.split else "")
+    tiled = args.workdir / (name + f"_tiled{args.tile_m:g}.cityshade")
     out: dict = {"commit": git_commit(args.python), "city": str(args.city),
                  "tiled": str(tiled), "tile_m": args.tile_m}
+    source = args.city
+    if args.split:
+        source = split_cityjsonseq(args.city, args.workdir / f"split_{args.split}", args.split)
+        out["files"] = args.split
     if not args.skip_build:
-        r = run_measured([args.python, "-m", "cityshade", "build", str(args.city), "-o",
+        r = run_measured([args.python, "-m", "cityshade", "build", str(source), "-o",
                           str(tiled), "--tile-m", str(args.tile_m)])
         if r["returncode"] != 0:
             raise SystemExit(f"build failed: {r['stderr']}")
@@ -107,6 +142,7 @@ def main(argv=None) -> int:
     index = json.loads((tiled / "index.json").read_text())
     out["tiles"] = len(index["tiles"])
     out["size_MB"] = sum(t["size"] for t in index["tiles"]) / MB
+    out["goal_peak_MB"] = 1.5 * out["size_MB"] + 300.0
     out["largest_tile_triangles"] = max(t["triangles"] for t in index["tiles"])
     opens = [_child(args.python, _OPEN_CHILD, tiled)["open_s"] for _ in range(args.repeat)]
     out["open_s_median"] = statistics.median(opens)

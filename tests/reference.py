@@ -750,3 +750,10 @@ def reference_thin_caster_map(scene, view, t_days, thin_texels=2.0):
         if len(ranked) > 1:
             out[2][row, col], out[3][row, col] = ranked[1][1], ranked[1][0]
     return out
+
+
+# --- tiledcache -------------------------------------------------------------------------------
+
+def reference_tiles_passing(boxes, passes):
+    """Twin of :meth:`cityshade.tiledcache.TileTree.query`: every tile box tested in turn."""
+    return [i for i in range(len(boxes)) if passes(boxes[i][0], boxes[i][1])]

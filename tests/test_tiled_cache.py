@@ -168,10 +168,15 @@ def test_bad_input_one_line(built, tmp_path):
     one, tiled = built
     runner = CliRunner()
     render = ["--camera", "map", "--sun-azimuth", "200", "--sun-elevation", "30"]
-    r = runner.invoke(cli, ["render", str(tiled), *render, "--shadows", "shadowmap",
-                            "-o", str(tmp_path / "x.exr")])
-    assert r.exit_code != 0 and "tiled cache renders with the exact techniques" in r.output
-    assert not (tmp_path / "x.exr").exists()
+    # evaluate and compare read a tiled cache; a folder that is not one is one line.
+    (tmp_path / "plain").mkdir()
+    for cmd in (["evaluate", str(tmp_path / "plain"), "-o", str(tmp_path / "e")],
+                ["compare", str(tmp_path / "plain"), "--before", "1850", "--after", "1990",
+                 "--date", "2024-03-21", "--tz", "UTC", "-o", str(tmp_path / "c")]):
+        r = runner.invoke(cli, cmd)
+        assert r.exit_code != 0 and "not a tiled cache (no index.json" in r.output, cmd
+        assert len(r.output.strip().splitlines()) == 1 and "Traceback" not in r.output
+    assert not (tmp_path / "e").exists() and not (tmp_path / "c").exists()
     damaged = tmp_path / "damaged.cityshade"
     shutil.copytree(tiled, damaged)
     (damaged / "index.json").write_text("{not json")
@@ -221,3 +226,186 @@ def test_real_file_in_tiles(tmp_path):
         assert np.array_equal(a.rgb, b.rgb, equal_nan=True)  # NaN: no surface
         assert np.array_equal(a.gbuffer.prim_id, b.gbuffer.prim_id)
         assert (a.lit == 0).any() and (a.lit > 0).any()
+
+
+def _same_tiled(a, b) -> None:
+    """Two tiled caches hold the same index (but the build's timings and source) and the same
+    tiles, every cache array equal."""
+    from cityshade.cache import open_cache
+
+    ia, ib = (json.loads((p / "index.json").read_text()) for p in (a, b))
+    for index in (ia, ib):
+        index["report"].pop("timings")
+        for k in ("source", "build_options"):
+            index.pop(k)
+        for t in index["tiles"]:
+            for k in ("size", "header_blake2b"):
+                t.pop(k)
+            t["kdtree"].pop("build_s")
+    assert ia == ib
+    for t in ia["tiles"]:
+        ca, cb = open_cache(a / t["file"]), open_cache(b / t["file"])
+        names = sorted(cb.header["arrays"])
+        assert names == sorted(ca.header["arrays"]) and "global/vert" in names
+        for n in names:
+            assert np.array_equal(ca.array(n), cb.array(n), equal_nan=True), (t["file"], n)
+
+
+def test_tiles_from_many_files_spilled_equal_the_assembled_city(tmp_path):
+    """A tiled build of several files spills each file's objects to their tiles and never
+    assembles the city; it equals the tiled cache cut from the assembled city, also where an
+    object changes tile after it was spilled: a building part in a later file (the building
+    met again there) widens its building's box into another tile, and an object without
+    geometry waits for the lowest tile."""
+    from citygml_snippets import box_polygons, building, city
+
+    from cityshade.build import build_file, build_scene_from_files
+    from cityshade.config import Settings
+    from cityshade.tiledcache import save_tiled
+
+    x, y = 690000.0, 5336000.0
+    part = building("bp", box_polygons(x + 70, y, 0, 3, 3, 3, "q"), solid_refs=False
+                    ).replace("bldg:Building", "bldg:BuildingPart")
+    b = box_polygons(x, y, 0, 5, 5, 5, "p")
+    (tmp_path / "t1.gml").write_text(city(building("b", b), building(
+        "c", box_polygons(x + 40, y + 30, 0, 4, 4, 9, "c")), '<bldg:Building gml:id="empty"/>'))
+    (tmp_path / "t2.gml").write_text(city(
+        building("b", b, extra=f"<bldg:consistsOfBuildingPart>{part}</bldg:consistsOfBuildingPart>"),
+        building("d", box_polygons(x + 10, y + 45, 0, 4, 4, 9, "d"))))
+    files = [tmp_path / "t1.gml", tmp_path / "t2.gml"]
+    spilled = build_file(files, tmp_path / "spilled.cityshade", tile_m=20.0)[0]
+    cut = tmp_path / "cut.cityshade"
+    save_tiled(build_scene_from_files(files, Settings(), tree=False), cut, 20.0, Settings(), {}, {})
+    _same_tiled(spilled, cut)
+    index = json.loads((spilled / "index.json").read_text())
+    by_key = {tuple(t["key"]): t["objects"] for t in index["tiles"]}
+    # b (0..5 m) with its part (70..73 m) is centred at 36.5 m: tile 34501, not 34500.
+    assert by_key == {(34501, 266800): 3, (34502, 266801): 1, (34500, 266802): 1}
+    assert not list(tmp_path.glob(".*.tmp"))  # the spill went with the temporary folder
+
+    # The sample city in 3 files with border duplicates, in 60 m tiles.
+    from test_tiles import split_citygml
+
+    shutil.copy(REPO / "sample_data" / "sample_city_facade.png", tmp_path)
+    files = split_citygml(SAMPLE, tmp_path, 3, overlap=2)
+    spilled = build_file(files, tmp_path / "s_spilled.cityshade", tile_m=60.0)[0]
+    cut = tmp_path / "s_cut.cityshade"
+    save_tiled(build_scene_from_files(files, Settings(), tree=False), cut, 60.0, Settings(), {}, {})
+    _same_tiled(spilled, cut)
+
+
+def test_tree_over_tiles_finds_what_the_linear_test_finds():
+    """The tree over the tile boxes gives the tiles the test of every box in turn gives: for
+    the sun-ward overlap test and the camera frustum's plane test, on random grids of
+    tiles (with empty and overlapping boxes) and on the sample city's tiles."""
+    from reference import reference_tiles_passing
+
+    from cityshade.raster import culling as cull
+    from cityshade.tiledcache import TileTree
+
+    rng = np.random.default_rng(5)
+    for n in (0, 1, 3, 5, 40, 200):
+        lo = rng.uniform(0, 1000, (n, 3))
+        boxes = np.stack([lo, lo + rng.uniform(0, 300, (n, 3))], axis=1)
+        boxes[: n // 7, 1] = boxes[: n // 7, 0]  # flat boxes
+        tree = TileTree(boxes)
+        assert tree.n_nodes <= max(1, 2 * n)
+        found = 0
+        for _ in range(15):
+            a, b = np.sort(rng.uniform(-100, 1100, (2, 3)), axis=0)
+
+            def overlap(lo, hi, a=a, b=b):
+                return bool((lo <= b).all() and (hi >= a).all())
+
+            planes = np.concatenate([rng.normal(size=(6, 3)), rng.uniform(-500, 900, (6, 1))],
+                                    axis=1)
+
+            def inside(lo, hi, planes=planes):
+                return not cull.box_outside(planes, lo, hi, 63)[0]
+
+            for test in (overlap, inside):
+                want = reference_tiles_passing(boxes, test)
+                assert tree.query(test) == want
+                found += len(want)
+        assert n == 0 or found > 0
+
+
+def test_views_use_the_tree(built):
+    """The sample city's 17 tiles: the frustum culling of each camera and the sun-ward sweep
+    of some receivers, through the tree, against every tile box tested in turn."""
+    from reference import reference_tiles_passing
+
+    from cityshade.raster import culling as cull
+    from cityshade.tiledcache import open_tiled
+
+    tc = open_tiled(built[1])
+    assert tc.tree.n_nodes > 1
+    box = np.asarray(tc.index["box_m"])
+    pad = cull.FRUSTUM_PAD_REL * max(float(np.max(box[1] - box[0])), 1.0)
+    counts = []
+    for cam in _cameras(tc).values():
+        planes = cull.frustum_planes(cam, pad)
+        mask = (1 << planes.shape[0]) - 1
+        want = reference_tiles_passing(
+            tc.boxes, lambda lo, hi: not cull.box_outside(planes, lo, hi, mask)[0])
+        assert tc.tiles_in_view(cam) == want
+        counts.append(len(want))
+    assert min(counts) < len(tc.tiles) == max(counts)  # the close view draws some tiles
+    origins = np.array([[-60.0, -40.0, 0.5], [-50.0, -30.0, 2.0]])
+    sun = np.array([0.5, 0.3, 0.81])
+    reach = tc.tiles_reaching(origins, sun)
+    assert 0 < len(reach) < len(tc.tiles)
+
+
+def test_map_techniques_evaluate_and_compare_on_a_tiled_cache(built, tmp_path):
+    """The map techniques draw their casters from the view of all tiles (a caster outside
+    the frustum still shades what is in it), and evaluate and compare read a tiled cache as
+    that view: the same pictures, errors and sun-hours as the one cache."""
+    import csv
+
+    from cityshade.render import render_frame
+    from cityshade.scenefile import load_scene, open_scene, scene_for_camera
+    from cityshade.sun import sun_from_angles
+
+    one, tiled = built
+    scene, tc = load_scene(one), open_scene(tiled)
+    sun = sun_from_angles(SUN["azimuth"], SUN["elevation"], scene.crs, scene.origin_m)
+    cams_one, cams_tiled = _cameras(scene), _cameras(tc)
+    for technique in ("pcf", "csm", "hybrid:shadowmap"):
+        for name in ("map", "close"):
+            a = render_frame(scene, cams_one[name], T_DAYS, sun, technique)
+            view = scene_for_camera(tc, cams_tiled[name], technique)
+            assert len(view.tile_ids) == len(tc.tiles)
+            b = render_frame(view, cams_tiled[name], T_DAYS, sun, technique)
+            assert np.array_equal(a.lit, b.lit), (technique, name)
+            assert np.array_equal(a.rgb, b.rgb), (technique, name)
+            assert (a.lit > 0).any() and (a.lit == 0).any()
+    runner = CliRunner()
+    rows = {}
+    for label, path in (("one", one), ("tiled", tiled)):
+        out = tmp_path / f"e_{label}"
+        r = runner.invoke(cli, ["evaluate", str(path), "--views", "map", "--size", "96x64",
+                                "--pixel-size", "2", "--sun", "135,30", "--date", "2024",
+                                "--shadows", "shadowmap,izb", "--sizes", "256", "--repeat", "1",
+                                "-o", str(out)])
+        assert r.exit_code == 0, r.output
+        rows[label] = [{k: v for k, v in row.items()
+                        if k not in ("model", "stages") and not k.endswith(("_s", "_ms"))}
+                       for row in csv.DictReader(open(out / "results.csv"))]
+    assert rows["one"] == rows["tiled"] and len(rows["one"]) == 3
+    out = {}
+    for label, path in (("one", one), ("tiled", tiled)):
+        out[label] = tmp_path / f"c_{label}"
+        r = runner.invoke(cli, ["compare", str(path), "--before", "1850", "--after", "1990",
+                                "--date", "2024-03-21", "--from", "10:00", "--to", "14:00",
+                                "--every", "2h", "--tz", "UTC", "--pixel-size", "4",
+                                "-o", str(out[label])])
+        assert r.exit_code == 0, r.output
+    exrs = sorted(p.name for p in out["one"].glob("*.exr"))
+    assert exrs and exrs == sorted(p.name for p in out["tiled"].glob("*.exr"))
+    for name in exrs:
+        a, b = _exr(out["one"] / name), _exr(out["tiled"] / name)
+        assert a.keys() == b.keys()
+        for k in a:
+            assert np.array_equal(a[k], b[k], equal_nan=True), (name, k)
+    assert (out["one"] / "surfaces.csv").read_bytes() == (out["tiled"] / "surfaces.csv").read_bytes()

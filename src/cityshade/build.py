@@ -146,14 +146,37 @@ def build_scene_from_files(sources: list[Path], settings: Settings | None = None
     CRSError
         Files in different CRSs without ``--crs``, or a ``--crs`` that is not projected.
     """
+    from cityshade.geometry.merge import SceneMerger
+
+    merger, timings = read_files(sources, settings or Settings(), progress, SceneMerger)
+    if progress:
+        progress("merge", 0, 1)
+    t = time.perf_counter()
+    scene = merger.finish()
+    release_freed_memory()
+    timings["merge_s"] = time.perf_counter() - t
+    if tree:
+        scene.kdtree = build_tree(scene, settings or Settings(), progress, timings)
+    scene.report["timings"] = {k: round(v, 4) for k, v in timings.items()}
+    return scene
+
+
+def read_files(sources: list[Path], settings: Settings, progress, make_merger):
+    """Read the files one at a time, each assembled in float64 model coordinates and handed to
+    ``make_merger(crs_given=...)``'s merger (:class:`~cityshade.geometry.merge.SceneMerger`
+    or a subclass), then dropped; returns the merger and the read/triangulate timings.
+
+    Raises
+    ------
+    CRSError, UsageError
+        As :func:`build_scene_from_files`.
+    """
     import dataclasses
 
     from cityshade.citygml.crs import parse_srs_name
     from cityshade.errors import UsageError
-    from cityshade.geometry.merge import SceneMerger
     from cityshade.geometry.scene import build_scene
 
-    settings = settings or Settings()
     target = None
     if settings.build.crs is not None:
         target = parse_srs_name(settings.build.crs)
@@ -167,7 +190,7 @@ def build_scene_from_files(sources: list[Path], settings: Settings | None = None
 
         generic = [n for n in parse_time_attribute(settings.build.time_attribute) if n]
     timings = {"read_s": 0.0, "triangulate_s": 0.0}
-    merger = SceneMerger(crs_given=target is not None)
+    merger = make_merger(crs_given=target is not None)
     for i, source in enumerate(sources):
         stage = f"file {source.name} {i + 1}/{len(sources)}"
         read_progress = (lambda done, total, stage=stage: progress(stage, done, total)
@@ -182,16 +205,7 @@ def build_scene_from_files(sources: list[Path], settings: Settings | None = None
         release_freed_memory()
         timings["read_s"] += t1 - t0
         timings["triangulate_s"] += time.perf_counter() - t1
-    if progress:
-        progress("merge", 0, 1)
-    t = time.perf_counter()
-    scene = merger.finish()
-    release_freed_memory()
-    timings["merge_s"] = time.perf_counter() - t
-    if tree:
-        scene.kdtree = build_tree(scene, settings, progress, timings)
-    scene.report["timings"] = {k: round(v, 4) for k, v in timings.items()}
-    return scene
+    return merger, timings
 
 
 def build_tree(scene: Scene, settings: Settings, progress, timings: dict):
@@ -220,7 +234,9 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
     """Build the ``.cityshade`` file of a CityGML/CityJSON file, or of several files and
     folders (a list: :func:`build_scene_from_files`); returns (output path, scene, bytes).
     With ``tile_m`` the output is a tiled cache folder (:mod:`cityshade.tiledcache`): tiles of
-    ``tile_m`` × ``tile_m`` CRS metres, each with its own kd-tree (the scene has none)."""
+    ``tile_m`` × ``tile_m`` CRS metres, each with its own kd-tree (the scene has none; for
+    several files the city is never assembled and a :class:`~cityshade.tiledcache.TiledBuild`
+    summary stands for the scene)."""
     from cityshade.scenefile import save_scene
     from cityshade.tiledcache import save_tiled
 
@@ -240,9 +256,6 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
         if output is None:
             raise ContractError("several input files need an output path")
         output = Path(output)
-        scene = build_scene_from_files(sources, settings, progress, tree=tile_m is None)
-        if progress:
-            progress("write", 0, 1)
         files = [_source_record(p) for p in sources]
         combined = hashlib.sha256("".join(f["sha256"] for f in files).encode()).hexdigest()
         source_info = {"path": files[0]["path"] if len(files) == 1 else
@@ -250,6 +263,15 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
                        "size": sum(f["size"] for f in files),
                        "mtime": max(f["mtime"] for f in files), "sha256": combined,
                        "files": files}
+        if tile_m is not None:  # file by file into tile spills: memory of one file + one tile
+            from cityshade.tiledcache import build_tiled_from_files
+
+            summary, size = build_tiled_from_files(sources, output, tile_m, settings,
+                                                   source_info, asdict(settings.build), progress)
+            return output, summary, size
+        scene = build_scene_from_files(sources, settings, progress)
+        if progress:
+            progress("write", 0, 1)
         size = save(scene, output, source_info, asdict(settings.build))
         return output, scene, size
     source = Path(source)

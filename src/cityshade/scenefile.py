@@ -120,15 +120,9 @@ def open_scene(path: str | os.PathLike):
 
 def scene_for_camera(scene, camera, technique: str | None = None):
     """The scene a frame of ``camera`` draws: ``scene`` itself, or for a tiled cache the view
-    of the tiles the camera's frustum reaches (all tiles for ``camera`` None).
-
-    Raises
-    ------
-    UsageError
-        A tiled cache with a technique other than the exact ones (the map techniques draw
-        their casters from the scene, which holds only the tiles in view).
-    """
-    from cityshade.errors import UsageError
+    of the tiles the camera's frustum reaches (all tiles for ``camera`` None, and for the map
+    techniques, whose depth pass draws the casters from the scene: a caster outside the
+    frustum still shades what is in it, and the light view is fitted to the whole city)."""
     from cityshade.tiledcache import TiledCache
 
     if not isinstance(scene, TiledCache):
@@ -137,7 +131,13 @@ def scene_for_camera(scene, camera, technique: str | None = None):
         from cityshade.shadows import exact_technique_names
 
         if technique not in exact_technique_names():
-            raise UsageError(f"a tiled cache renders with the exact techniques "
-                             f"({', '.join(exact_technique_names())}), not {technique!r}: "
-                             f"build one cache file for the others")
+            return scene.view()
     return scene.view(None if camera is None else scene.tiles_in_view(camera))
+
+
+def whole_scene(path: str | os.PathLike):
+    """A scene file (:func:`load_scene`), or a tiled cache folder as the view of all its tiles
+    (the one-cache scene array for array; shadow rays through the tiles' own trees)."""
+    from cityshade.tiledcache import open_tiled
+
+    return open_tiled(path).view() if Path(path).is_dir() else load_scene(path)

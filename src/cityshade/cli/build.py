@@ -102,14 +102,17 @@ def build(city: tuple[Path, ...], output: Path | None, lod: int | float | None, 
                    f"polygons of {len(scene.obj_ids):,} objects"
                    f"{f', {skipped:,} polygons skipped' if skipped else ''}; "
                    f"{size / 1e6:.1f} MB in {sum(rep.get('timings', {}).values()):.2f} s"
-                   f"{f' (read and assembly; then {_tile_count(out)} tiles)' if tile_m else ''}")
+                   f"{_tiles_note(out, scene) if tile_m else ''}")
         tiles = rep.get("tiles")
         if tiles:
             click.echo(f"{tiles['files']} files; {tiles['duplicate_objects']:,} objects met "
                        f"again in a later file (the same gml:id) kept once")
 
 
-def _tile_count(folder: Path) -> int:
-    from cityshade.tiledcache import open_tiled
+def _tiles_note(folder: Path, scene) -> str:
+    from cityshade.tiledcache import TiledBuild, open_tiled
 
-    return len(open_tiled(folder).tiles)
+    n = len(open_tiled(folder).tiles)
+    if isinstance(scene, TiledBuild):  # several files: the timings cover the tiles too
+        return f" (read, spilled to tiles, {n} tiles built)"
+    return f" (read and assembly; then {n} tiles)"

@@ -10,7 +10,7 @@ from cityshade.cli.options import (camera_options, ground_option, make_camera, s
 
 
 @click.command("compare")
-@click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
+@click.argument("file", type=click.Path(path_type=Path))
 @click.option("--before", "before_text", help="State of the city before (date or year); "
               "default: --date.")
 @click.option("--after", "after_text", help="State of the city after (date or year), on the "
@@ -39,8 +39,9 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
             tz, days, to_date_text, every_day, camera, eye, target, fov, size, pixel_size,
             cameras_file, settings, ground, no_refraction, no_surfaces, samples_per_m2,
             min_stretch_text, rule_files, area_text, outdir, verbose):
-    """Sun-hours of the same receivers in two states of FILE (a .cityshade scene): --before
-    and --after dates of one model, or FILE with the proposal --with added. Writes before,
+    """Sun-hours of the same receivers in two states of FILE (a .cityshade scene or a tiled
+    cache folder): --before and --after dates of one model, or FILE with the proposal --with
+    added. Writes before,
     after and loss maps (EXR, PNG, GeoTIFF for the map view), surfaces.csv, openings.csv,
     the rule verdicts and report.md to OUTDIR."""
     import dataclasses
@@ -53,7 +54,7 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
     from cityshade.cli.batch import parse_day
     from cityshade.cli.options import solar_zone_of_scene, warn_lmt
     from cityshade.errors import UsageError
-    from cityshade.scenefile import load_scene
+    from cityshade.scenefile import whole_scene
     from cityshade.shadows import get_technique
     from cityshade.surfaces import SampleSettings
     from cityshade.util import check_outputs, output_group
@@ -87,7 +88,7 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
     after = parse_user_date(after_text) if after_text else before
 
     check_outputs(("-o", outdir, None))  # once the options are valid, before any work
-    scene = load_scene(file)
+    scene = whole_scene(file)  # a tiled cache: the view of all its tiles
     steps = B.plan_steps(first_day, from_s, to_s, every_s, solar_zone_of_scene(tz, scene),
                          days=days, to_date=to_date, every_day=every_day)
     warn_lmt([step.start_utc for step in steps[:1]], tz)

@@ -48,7 +48,7 @@ def _int_list(text: str, what: str) -> tuple[int, ...]:
 
 
 @click.command("evaluate")
-@click.argument("file", type=click.Path(dir_okay=False, path_type=Path))
+@click.argument("file", type=click.Path(path_type=Path))
 @click.option("--views", default="overview,map", show_default=True,
               help="Comma list: overview, map, or camera presets (render --help lists them).")
 @click.option("--sun", "sun_text", help="Sun positions 'AZ,EL;AZ,EL' in degrees (azimuth "
@@ -82,7 +82,8 @@ def _int_list(text: str, what: str) -> tuple[int, ...]:
 def evaluate(file, views, sun_text, date_text, times, tz, settings, sizes, size, pixel_size,
              cameras_file, ground, repeat, stress, quick, output, crs):
     """Error of every shadow technique against the exact ray-traced shadows of FILE (a
-    .cityshade scene or a CityGML file), and its run time, per view, sun and map size."""
+    .cityshade scene, a tiled cache folder or a CityGML file), and its run time, per view,
+    sun and map size."""
     import dataclasses
 
     from cityshade.cli.options import parse_size

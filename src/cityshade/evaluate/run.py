@@ -326,7 +326,7 @@ def run_evaluation(scene: "Scene", views: Sequence[tuple[str, Any]], suns: Seque
     Evaluation
     """
     settings = settings or EvaluateSettings()
-    if scene.kdtree is None:
+    if scene.kdtree is None and getattr(scene, "tiled", None) is None:
         raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
     if not views or not suns:
         raise UsageError("evaluate needs at least one view and one sun position")
@@ -356,15 +356,16 @@ def run_evaluation(scene: "Scene", views: Sequence[tuple[str, Any]], suns: Seque
 # --- inputs of the command ----------------------------------------------------------------
 
 def open_scene(path, settings=None):
-    """A scene with its kd-tree: a ``.cityshade`` file is loaded, a city model (CityGML,
-    CityJSON: anything else) is built in memory (nothing written)."""
+    """A scene with its kd-tree: a ``.cityshade`` file is loaded, a tiled cache gives the view
+    of all its tiles, a city model (CityGML, CityJSON: anything else) is built in memory
+    (nothing written)."""
     from cityshade.build import build_scene_from_file
     from cityshade.cache import is_cache_file
-    from cityshade.scenefile import load_scene
+    from cityshade.scenefile import whole_scene
 
     path = Path(path)
-    if is_cache_file(path) or not path.exists():
-        return load_scene(path)
+    if is_cache_file(path) or path.is_dir() or not path.exists():
+        return whole_scene(path)
     return build_scene_from_file(path, settings)
 
 

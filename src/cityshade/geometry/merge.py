@@ -47,7 +47,7 @@ class SceneMerger:
         self.crs_given = crs_given
         self.parts: list[dict] = []
         self.obj_index: dict[str, int] = {}  # gml:id → merged object index
-        self.n_obj = self.n_poly = self.n_vert = 0
+        self.n_obj = self.n_poly = self.n_vert = self.n_tri = 0
         self.duplicates: Counter = Counter()  # file → objects dropped as already read
         self.files: list[dict] = []
         self.crs = None
@@ -98,15 +98,15 @@ class SceneMerger:
         obj = {f: np.asarray(getattr(scene, f))[kept_obj] for f in _OBJ_FIELDS}
         parent = obj["obj_parent"].astype(np.int64)
         obj["obj_parent"] = np.where(parent >= 0, remap[np.maximum(parent, 0)], -1).astype(np.int32)
-        self.obj_ids += [scene.obj_ids[i] for i in kept_obj]
-        self.obj_types += [scene.obj_types[i] for i in kept_obj]
+        obj_ids = [scene.obj_ids[i] for i in kept_obj]
+        obj_types = [scene.obj_types[i] for i in kept_obj]
         # Polygons and triangles of the kept objects.
         kept_poly = np.nonzero(keep[np.asarray(scene.poly_object)])[0]
         poly_remap = np.full(len(scene.poly_ids), -1, np.int64)
         poly_remap[kept_poly] = self.n_poly + np.arange(len(kept_poly))
         poly = {f: np.asarray(getattr(scene, f))[kept_poly] for f in _POLY_FIELDS}
         poly["poly_object"] = remap[poly["poly_object"]].astype(np.int32)
-        self.poly_ids += [scene.poly_ids[i] for i in kept_poly]
+        poly_ids = [scene.poly_ids[i] for i in kept_poly]
         kept_tri = np.nonzero(keep[np.asarray(scene.tri_object)])[0]
         tri = {f: np.asarray(getattr(scene, f))[kept_tri] for f in _TRI_FIELDS}
         tri["tri_object"] = remap[tri["tri_object"]].astype(np.int32)
@@ -123,12 +123,23 @@ class SceneMerger:
         tri["triangles"] = new_index[tri["triangles"]].astype(np.int32)
         world = np.asarray(scene.vertices, np.float64)[used]
         uv = np.asarray(scene.uv)[used]
-        self.parts.append({"obj": obj, "poly": poly, "tri": tri, "world": world, "uv": uv})
+        self.keep({"obj": obj, "poly": poly, "tri": tri, "world": world, "uv": uv,
+                   "obj_ids": obj_ids, "obj_types": obj_types, "poly_ids": poly_ids})
         self.n_obj, self.n_poly, self.n_vert = (next_index, self.n_poly + len(kept_poly),
                                                 self.n_vert + len(world))
+        self.n_tri += int(len(kept_tri))
         self.reports.append((name, scene.report))
         self.files.append({"path": name, "objects": n, "duplicates": dropped,
                            "triangles": int(len(kept_tri))})
+
+    def keep(self, part: dict) -> None:
+        """Keep one file's new objects (arrays in the merged numbering; called by :meth:`add`
+        before the counts move on). Here they are gathered for :meth:`finish`; a tiled build
+        spills them to disk instead (:class:`cityshade.tiledcache.TileSpill`)."""
+        self.obj_ids += part.pop("obj_ids")
+        self.obj_types += part.pop("obj_types")
+        self.poly_ids += part.pop("poly_ids")
+        self.parts.append(part)
 
     @staticmethod
     def _tables(codes: np.ndarray, records: list[dict], out: list[dict], index: dict,
@@ -170,9 +181,9 @@ class SceneMerger:
         return Scene(origin_m=origin.astype(np.float64), crs=self.crs, obj_ids=self.obj_ids,
                      obj_types=self.obj_types, poly_ids=self.poly_ids,
                      materials=self.materials, textures=self.textures,
-                     report=self._report(fields), **fields)
+                     report=self.report_for(fields), **fields)
 
-    def _report(self, fields: dict) -> dict:
+    def report_for(self, fields: dict) -> dict:
         """One build report for all files: counts summed, warnings named by file."""
         first = self.reports[0][1]
         rep = {k: v for k, v in first.items()}
@@ -193,7 +204,7 @@ class SceneMerger:
         polys = Counter()
         for _, r in self.reports:
             polys.update(r["polygons"])
-        polys["drawn"] = len(self.poly_ids)
+        polys["drawn"] = self.n_poly
         rep["polygons"] = dict(polys)
         begin, end = fields["obj_t_begin_days"], fields["obj_t_end_days"]
         finite = np.concatenate([begin[np.isfinite(begin)], end[np.isfinite(end)]])
