@@ -71,8 +71,9 @@ def _range_text(rng) -> str:
 #: A map frame of an exact technique whose estimate (:func:`cityshade.pipeline.frame_bytes`)
 #: exceeds this is rendered in strips of rows (:func:`strip_rows_for`) ...
 STRIP_FRAME_BYTES = 2 * 1024 ** 3
-#: ... each of them estimated at about this many bytes (a few hundred rows of a 5000-pixel map).
-STRIP_BYTES = 256 * 1024 ** 2
+#: ... each of them estimated at about this many bytes (about 90 rows of a 5000-pixel map): on
+#: the 1M city's 20 Mpx izb map, strips of 186 rows peaked at 1976 MB, of 60 rows at 1865 MB.
+STRIP_BYTES = 128 * 1024 ** 2
 #: Rows each strip computes above and below its own and then drops: a texture's mip level
 #: comes from the pixel's neighbours (:func:`cityshade.textures.lod_from_uv_neighbours`), and
 #: at the strip's edge they must be the whole map's.
