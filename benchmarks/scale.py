@@ -12,7 +12,9 @@ both cores, a cache load <= 0.5 s however large, a 20 Mpx map render within 2 GB
   ``--repeat`` more (median), and a load with every checksum checked (``verify=True``, what
   ``info --verify`` does), so the cost the verified stamp saves is measured beside it.
 * ``render_figures`` — ``cityshade render CACHE --camera map --pixel-size P`` at the pixel
-  size that gives about ``--megapixels`` over the model's box (mask PNG output).
+  size that gives about ``--megapixels`` over the model's box (EXR and mask PNG outputs), with
+  ``--shadows`` and ``--strip-rows`` passed on (without ``--strip-rows`` the render decides:
+  a map this large goes in strips of rows by itself), and the stage timings of ``-v``.
 
 The tiled and Dask batch figures of the same issue: ``benchmarks/scale_batch.py``.
 
@@ -20,6 +22,8 @@ Usage::
 
     python benchmarks/scale.py --city /work/bench_data/city_10000000.gml \\
         --workdir /work/bench_data/build2 [--threads 2] [--repeat 5] [--skip-build]
+    python benchmarks/scale.py --cache /work/bench_data/final10m/city_10000000.cityshade \
+        --workdir /tmp/scale --render-only [--strip-rows N] [--shadows izb]
 
 MB are 10^6 bytes. Prints one JSON object (with the git commit), then a table.
 """
@@ -46,7 +50,7 @@ seconds = time.perf_counter() - t0
 usage = resource.getrusage(resource.RUSAGE_CHILDREN)
 print(json.dumps({"returncode": proc.returncode, "seconds": seconds,
                   "peak_rss_bytes": usage.ru_maxrss * 1024,
-                  "stdout": proc.stdout[-4000:], "stderr": proc.stderr[-2000:]}))
+                  "stdout": proc.stdout[-4000:], "stderr": proc.stderr[-8000:]}))
 """
 
 #: One load in a fresh process: seconds of load_scene alone (after the imports).
@@ -133,7 +137,8 @@ def load_figures(python: str, cache: Path, repeat: int) -> dict:
             "goal_met": median <= 0.5}
 
 
-def render_figures(python: str, cache: Path, workdir: Path, megapixels: float) -> dict:
+def render_figures(python: str, cache: Path, workdir: Path, megapixels: float,
+                   shadows: str = "raytrace", strip_rows: int | None = None) -> dict:
     """A top-down map render of about ``megapixels`` Mpx: wall time and peak RSS."""
     code = ("import json, sys; from cityshade.scenefile import load_scene; "
             "s = load_scene(sys.argv[1], with_kdtree=False); v = s.vertices; "
@@ -147,14 +152,21 @@ def render_figures(python: str, cache: Path, workdir: Path, megapixels: float) -
     out = workdir / "scale_map.exr"
     cmd = [python, "-m", "cityshade", "render", str(cache), "--camera", "map", "--pixel-size",
            str(pixel_m), "--sun-azimuth", "135", "--sun-elevation", "30", "--date", "2000",
-           "-o", str(out), "--mask", str(workdir / "scale_map_mask.png"), "-v"]
+           "-o", str(out), "--mask", str(workdir / "scale_map_mask.png"), "-v",
+           "--shadows", shadows]
+    if strip_rows is not None:
+        cmd += ["--strip-rows", str(strip_rows)]
     run = run_measured(cmd)
     if run.get("returncode"):
         return {"error": run.get("stderr", "")[-500:], "pixel_m": pixel_m}
     peak = run["peak_rss_bytes"]
     return {"pixel_m": pixel_m, "megapixels": round(ex * ey / pixel_m ** 2 / 1e6, 1),
+            "shadows": shadows, "strip_rows": strip_rows,
             "seconds": round(run["seconds"], 2), "peak_rss_mb": round(peak / MB),
-            "goal_met": peak <= 2000 * MB, "log_tail": run["stderr"].strip().splitlines()[-12:]}
+            "goal_met": peak <= 2000 * MB,
+            "timings": next((ln for ln in run["stderr"].splitlines() if ln.startswith("timings")),
+                            None),
+            "log_tail": run["stderr"].strip().splitlines()[-12:]}
 
 
 def main(argv=None) -> int:
@@ -168,28 +180,39 @@ def main(argv=None) -> int:
     parser.add_argument("--megapixels", type=float, default=20.0)
     parser.add_argument("--skip-build", action="store_true",
                         help="reuse WORKDIR/CITY.cityshade (no build figures)")
+    parser.add_argument("--cache", type=Path,
+                        help="an existing cache to load and render (read only; no build)")
+    parser.add_argument("--render-only", action="store_true", help="only the map render")
+    parser.add_argument("--shadows", default="raytrace", help="technique of the map render")
+    parser.add_argument("--strip-rows", type=int,
+                        help="render --strip-rows N (default: the render decides)")
     args = parser.parse_args(argv)
     args.workdir.mkdir(parents=True, exist_ok=True)
-    cache = args.workdir / (args.city.stem + ".cityshade")
-    result = {"commit": git_commit(args.python), "python": args.python, "city": str(args.city)}
-    if not args.skip_build:
+    cache = args.cache or args.workdir / (args.city.stem + ".cityshade")
+    result = {"commit": git_commit(args.python), "python": args.python,
+              "city": str(args.city if args.cache is None else cache)}
+    if not (args.skip_build or args.cache or args.render_only):
         result["build"] = [build_figures(args.python, args.city, cache, int(t))
                            for t in args.threads.split(",")]
-    result["load"] = load_figures(args.python, cache, args.repeat)
-    result["render"] = render_figures(args.python, cache, args.workdir, args.megapixels)
+    if not args.render_only:
+        result["load"] = load_figures(args.python, cache, args.repeat)
+    result["render"] = render_figures(args.python, cache, args.workdir, args.megapixels,
+                                      args.shadows, args.strip_rows)
     print(json.dumps(result, indent=1))
     for b in result.get("build", []):
         if "error" not in b:
             print(f"build {b['threads']} thr: {b['seconds']} s ({b['mb_per_s']} MB/s), peak "
                   f"{b['peak_rss_mb']} MB (goal {b['goal_peak_mb']}), cache {b['cache_mb']} MB")
-    ld = result["load"]
+    ld = result.get("load", {"error": "not run"})
     if "error" not in ld:
         print(f"load: median {ld['median_s']} s (first after build {ld['first_after_build_s']} "
               f"s, all checksums {ld['full_check_median_s']} s)")
     r = result["render"]
     if "error" not in r:
-        print(f"map render {r['megapixels']} Mpx at {r['pixel_m']} m: {r['seconds']} s, "
-              f"peak {r['peak_rss_mb']} MB")
+        print(f"map render {r['megapixels']} Mpx at {r['pixel_m']} m ({r['shadows']}, "
+              f"strip rows {r['strip_rows'] or 'auto'}): {r['seconds']} s, peak "
+              f"{r['peak_rss_mb']} MB (goal 2000: {'met' if r['goal_met'] else 'not met'})")
+        print(f"  {r['timings']}")
     return 0
 
 

@@ -757,3 +757,46 @@ def reference_thin_caster_map(scene, view, t_days, thin_texels=2.0):
 def reference_tiles_passing(boxes, passes):
     """Twin of :meth:`cityshade.tiledcache.TileTree.query`: every tile box tested in turn."""
     return [i for i in range(len(boxes)) if passes(boxes[i][0], boxes[i][1])]
+
+
+# --- shading: textures over the base colour -------------------------------------------------
+
+def reference_albedo(scene, surfaces, prim_id=None, settings=None):
+    """``shading.albedo_of_surfaces`` by gathering the textured pixels, sampling them one array
+    at a time and scattering the composite back (the numpy path it replaced)."""
+    import dataclasses
+
+    from cityshade.shading import ShadingSettings, albedo_of_surfaces
+    from cityshade.textures import load_texture_set, lod_from_uv_neighbours, sample_trilinear
+
+    settings = settings or ShadingSettings()
+    albedo = albedo_of_surfaces(scene, surfaces, settings=dataclasses.replace(settings,
+                                                                              textures=False))
+    textures = list(getattr(scene, "textures", []) or [])
+    if not (settings.textures and textures):
+        return albedo
+    valid = np.asarray(surfaces.valid, bool)
+    texture = np.asarray(surfaces.texture, np.int64)
+    textured = valid & (texture >= 0) & (texture < len(textures))
+    if not textured.any():
+        return albedo
+    used = np.zeros(len(textures), bool)
+    used[np.unique(texture[textured])] = True
+    tex_set = load_texture_set(textures, used)
+    if prim_id is None:
+        prim_id = getattr(surfaces, "prim_id", None)
+    if prim_id is not None and getattr(scene, "tri_polygon", None) is not None:
+        prim = np.asarray(prim_id, np.int64)
+        group = np.where(prim >= 0, np.asarray(scene.tri_polygon)[np.maximum(prim, 0)], -1)
+    elif prim_id is not None:
+        group = np.asarray(prim_id, np.int64)
+    else:
+        group = np.zeros(valid.shape, np.int64)
+    tex_ids = np.where(textured, texture, -1)
+    lod = lod_from_uv_neighbours(surfaces.uv, tex_ids, group, surfaces.normal, tex_set,
+                                 bias=settings.mip_bias)
+    rows, cols = np.nonzero(textured)
+    rgba = sample_trilinear(tex_set, tex_ids[rows, cols], surfaces.uv[rows, cols],
+                            lod[rows, cols])
+    albedo[rows, cols] = rgba[:, :3] + (1.0 - rgba[:, 3:4]) * albedo[rows, cols]
+    return albedo

@@ -266,6 +266,12 @@ def test_png_rgb_and_mask_values(tmp_path):
     valid = np.array([[True, True, True, True], [True, False, True, True]])
     mask = mask_from_lit(lit, valid)
     np.testing.assert_array_equal(mask, [[0, 0, 255, 255], [128, 128, 0, 255]])
+    np.testing.assert_array_equal(mask_from_lit(lit.astype(np.float32), valid), mask)
+    # float32 lit against a float64 threshold just above it: compared in float64 (in float32
+    # the threshold would round down onto the value and count it as lit).
+    x = np.float32(0.3)
+    assert mask_from_lit(np.array([[x]]), threshold=float(x) + 1e-12)[0, 0] == 0
+    assert mask_from_lit(np.array([[x]]), threshold=float(x))[0, 0] == 255
     write_mask_png(tmp_path / "mask.png", mask)
     back, _ = read_image(tmp_path / "mask.png")
     assert back.shape == (2, 4, 1) and back.dtype == np.uint8

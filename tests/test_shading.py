@@ -250,3 +250,39 @@ def test_sample_city_overview_is_textured_and_deterministic(sample_scene):
     np.testing.assert_array_equal(rgb[~textured], plain[~textured])
     srgb = to_srgb8(rgb)
     assert srgb.shape == (100, 160, 3) and len(np.unique(srgb.reshape(-1, 3), axis=0)) > 50
+
+
+def test_texture_composite_equals_the_gather_twin(tmp_path):
+    """The one-pass texture kernels against the gather/sample/scatter twin, bit for bit: a
+    half-transparent texture over material colours, uv patches by triangle and by polygon,
+    pixels without surface or outside the texture list, and no ids at all."""
+    from reference import reference_albedo
+
+    from cityshade import imageio
+    from cityshade.shading import albedo_of_surfaces
+
+    rng = np.random.default_rng(5)
+    rgba = rng.integers(0, 256, (16, 24, 4), dtype=np.uint8)
+    rgba[..., 3] = rng.choice([0, 90, 255], (16, 24))
+    imageio.write_image(tmp_path / "t.png", rgba)
+    scene = FakeScene(materials=[{"diffuse": [0.2, 0.4, 0.6]}],
+                      textures=[{"path": str(tmp_path / "t.png"), "wrap_mode": "wrap"},
+                                {"path": str(FACADE), "wrap_mode": "mirror"}])
+    h, w = 37, 41
+    surf = _surfaces(h, w, material=0)
+    surf.texture[:] = rng.integers(-1, 3, (h, w))          # 2: beyond the list
+    surf.valid[rng.random((h, w)) < 0.1] = False
+    yy, xx = np.mgrid[0:h, 0:w]
+    surf.uv[..., 0] = xx * rng.choice([0.01, 0.3], (h, w)) # smooth and jumpy patches
+    surf.uv[..., 1] = yy * 0.05
+    surf.prim_id = np.where(surf.valid, (xx // 7 + 10 * (yy // 9)).astype(np.int32), -1)
+    scene.tri_polygon = (np.arange(60) // 3).astype(np.int32)
+    fast = albedo_of_surfaces(scene, surf, prim_id=surf.prim_id)
+    assert fast.tobytes() == reference_albedo(scene, surf, surf.prim_id).tobytes()
+    assert np.abs(fast - albedo_of_surfaces(scene, surf, settings=ShadingSettings(
+        textures=False))).max() > 0.1                      # the textures show
+    del scene.tri_polygon                                   # patches by triangle
+    assert (albedo_of_surfaces(scene, surf, prim_id=surf.prim_id).tobytes()
+            == reference_albedo(scene, surf, surf.prim_id).tobytes())
+    surf.prim_id = None                                     # one patch
+    assert albedo_of_surfaces(scene, surf).tobytes() == reference_albedo(scene, surf).tobytes()

@@ -550,8 +550,13 @@ def mask_from_lit(lit_fraction: np.ndarray, valid: np.ndarray | None = None, *,
 
     NaN lit fractions and pixels where ``valid`` is False are nodata (128).
     """
-    lit = np.asarray(lit_fraction, dtype=np.float64)
-    mask = np.where(lit >= threshold, MASK_LIT, MASK_SHADOW).astype(np.uint8)
+    lit = np.asarray(lit_fraction)
+    if lit.dtype.kind != "f":
+        lit = lit.astype(np.float64)
+    # Compared in float64 chunk by chunk (a float64 scalar), not through float64 and int64
+    # copies of the whole map: 2 bytes per pixel of temporaries instead of 16.
+    mask = np.full(lit.shape, MASK_SHADOW, np.uint8)
+    mask[np.greater_equal(lit, np.float64(threshold))] = MASK_LIT
     nodata = np.isnan(lit)
     if valid is not None:
         nodata |= ~np.asarray(valid, bool)

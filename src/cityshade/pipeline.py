@@ -162,8 +162,8 @@ def check_frame_memory(camera: "Camera", available_bytes: int | None = None, *,
     return need
 
 
-def camera_pass(scene: "Scene", camera: "Camera", t_days: float, *, ground: str | None = None
-                ) -> CameraPass:
+def camera_pass(scene: "Scene", camera: "Camera", t_days: float, *, ground: str | None = None,
+                ground_z_m: float | None = None) -> CameraPass:
     """Rasterize, resolve, add the ground plane: the camera pass of a frame.
 
     Parameters
@@ -176,6 +176,9 @@ def camera_pass(scene: "Scene", camera: "Camera", t_days: float, *, ground: str 
     ground : str, optional
         "min", "auto" or a CRS height: add a ground plane where no surface was drawn
         (:mod:`cityshade.ground`).
+    ground_z_m : float, optional
+        The render-space height of ``ground``'s plane when already known
+        (:func:`cityshade.ground.ground_height_m`; the strips of one frame compute it once).
 
     Raises
     ------
@@ -200,7 +203,7 @@ def camera_pass(scene: "Scene", camera: "Camera", t_days: float, *, ground: str 
     if ground is not None:
         from cityshade.ground import add_ground_plane, ground_height_m
 
-        z = ground_height_m(scene, ground)
+        z = ground_height_m(scene, ground) if ground_z_m is None else float(ground_z_m)
         surfaces, filled = add_ground_plane(scene, camera, surfaces, z)
         ground_info = GroundInfo(mode=str(ground), z_crs_m=z + float(scene.origin_m[2]),
                                  pixels=int(filled))

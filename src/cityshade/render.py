@@ -68,9 +68,63 @@ def _range_text(rng) -> str:
     return f"{days_to_iso(rng[0])} … {days_to_iso(rng[1])}"
 
 
+#: A map frame of an exact technique whose estimate (:func:`cityshade.pipeline.frame_bytes`)
+#: exceeds this is rendered in strips of rows (:func:`strip_rows_for`) ...
+STRIP_FRAME_BYTES = 2 * 1024 ** 3
+#: ... each of them estimated at about this many bytes (about 90 rows of a 5000-pixel map): on
+#: the 1M city's 20 Mpx izb map, strips of 186 rows peaked at 1976 MB, of 60 rows at 1865 MB.
+STRIP_BYTES = 128 * 1024 ** 2
+#: Rows each strip computes above and below its own and then drops: a texture's mip level
+#: comes from the pixel's neighbours (:func:`cityshade.textures.lod_from_uv_neighbours`), and
+#: at the strip's edge they must be the whole map's.
+STRIP_HALO_ROWS = 1
+#: Bytes per pixel that a strip-wise frame keeps for the whole map: lit 4, RGB 12, valid 1,
+#: depth 4, normal 12, object and triangle ids 4 + 4.
+STRIP_KEPT_BYTES_PER_PX = 41
+
+
+def strip_rows_for(camera: "Camera", technique: str = "raytrace",
+                   settings: ShadowSettings | None = None, strip_rows: int | None = None
+                   ) -> int | None:
+    """Rows per strip of a frame, or None for the whole frame at once.
+
+    ``strip_rows`` (``render --strip-rows``) asks for strips of that many rows; without it a
+    map of an exact technique goes in strips when its estimate exceeds
+    :data:`STRIP_FRAME_BYTES`. Only the exact techniques (raytrace, izb) and map views can: a
+    shadow map is fitted to the whole view, so a strip's map would differ, and a perspective
+    view's pixel rays depend on its whole height.
+
+    Raises
+    ------
+    UsageError
+        ``strip_rows`` below 1, for a perspective view or a technique that is not exact.
+    """
+    from cityshade.pipeline import frame_bytes
+    from cityshade.shadows import exact_technique_names
+
+    exact = technique in exact_technique_names()
+    height, width = camera.shape
+    if strip_rows is not None:
+        if int(strip_rows) < 1:
+            raise UsageError(f"--strip-rows must be at least 1, not {strip_rows}")
+        if camera.kind != "map":
+            raise UsageError("--strip-rows needs the map view (--camera map)")
+        if not exact:
+            raise UsageError(f"--strip-rows needs an exact technique (raytrace or izb), not "
+                             f"{technique}: a shadow map is fitted to the whole view")
+        return None if int(strip_rows) >= height else int(strip_rows)
+    if camera.kind != "map" or not exact:
+        return None
+    need, per_px = frame_bytes(camera, technique, settings)
+    if need <= STRIP_FRAME_BYTES:
+        return None
+    return max(1, min(height, STRIP_BYTES // (width * per_px)))
+
+
 def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosition",
                  technique: str = "raytrace", settings: ShadowSettings | None = None,
-                 sky: bool = True, ground: str | None = None, measure: bool = False) -> Frame:
+                 sky: bool = True, ground: str | None = None, measure: bool = False,
+                 strip_rows: int | None = None) -> Frame:
     """Render one frame: the pipeline's camera pass and shadow pass, then shading.
 
     Parameters
@@ -91,6 +145,12 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
     measure : bool
         Also the map techniques' per-frame measures (texel footprint, aliasing m), as
         ``render -v`` reports them.
+    strip_rows : int, optional
+        Render a map in strips of this many rows (:func:`strip_rows_for`, which also decides
+        when a large map goes in strips without it). The pixels are the whole frame's, bit for
+        bit; the frame then keeps only what :func:`write_frame` writes
+        (:data:`STRIP_KEPT_BYTES_PER_PX`): ``surfaces`` has ``valid``, ``normal``, ``depth``,
+        ``obj_id`` and ``prim_id`` (the rest None), ``gbuffer`` ``prim_id`` and ``depth``.
     """
     from cityshade.pipeline import camera_pass, check_frame_memory, shadow_pass
     from cityshade.shading import shade
@@ -99,7 +159,11 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
     if scene.kdtree is None and getattr(scene, "tiled", None) is None:
         raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
     tech = get_technique(technique)
-    check_frame_memory(camera, technique=technique, settings=settings)  # before any allocation
+    rows = strip_rows_for(camera, technique, settings, strip_rows)
+    if rows is None:
+        check_frame_memory(camera, technique=technique, settings=settings)  # before allocating
+    else:
+        check_strip_memory(camera, rows, technique, settings)
     warnings: list[str] = []
     if not sun.above_horizon:
         warnings.append(f"the sun is at or below the horizon (elevation {sun.elevation_deg:g}°): "
@@ -111,6 +175,9 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
     elif rng is not None and not rng[0] <= t_days < rng[1]:
         warnings.append(f"the date is outside the model's time range ({_range_text(rng)}): "
                         f"nothing stands then")
+    if rows is not None:
+        return _render_strips(scene, camera, t_days, sun, technique, tech, settings, sky,
+                              ground, measure, rows, warnings)
     cp = camera_pass(scene, camera, t_days, ground=ground)
     timings: dict[str, float] = dict(cp.timings_s)
     sp = shadow_pass(cp, sun, tech, settings, measure)
@@ -125,6 +192,103 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
                  sun=sun, t_days=t_days, technique=technique, timings_s=timings,
                  diagnostics=sp.diagnostics(cp), warnings=warnings,
                  extra_channels=dict(sp.result.extra_channels))
+
+
+def check_strip_memory(camera: "Camera", rows: int, technique: str,
+                       settings: ShadowSettings | None = None) -> int:
+    """The estimated peak bytes of a strip-wise frame (the kept whole-map arrays plus one
+    strip's work); refuse one that does not fit in the available memory.
+
+    Raises
+    ------
+    UsageError
+        The estimate exceeds the available memory.
+    """
+    from cityshade.pipeline import available_memory_bytes, frame_bytes
+
+    height, width = camera.shape
+    strip = camera.strip(0, min(height, rows + 2 * STRIP_HALO_ROWS))
+    need = height * width * STRIP_KEPT_BYTES_PER_PX + frame_bytes(strip, technique, settings)[0]
+    have = available_memory_bytes()
+    if have is not None and need > have:
+        raise UsageError(f"the picture of {width} × {height} pixels in strips of {rows} rows "
+                         f"needs about {need / 1e9:.1f} GB but {have / 1e9:.1f} GB are "
+                         f"available: use a larger --pixel-size")
+    return need
+
+
+def _render_strips(scene, camera, t_days, sun, technique, tech, settings, sky, ground, measure,
+                   rows, warnings) -> Frame:
+    """:func:`render_frame` of a map in strips of ``rows`` rows (each with
+    :data:`STRIP_HALO_ROWS` more on either side, dropped), copied into whole-map arrays."""
+    from cityshade.pipeline import camera_pass, shadow_pass
+    from cityshade.raster.gbuffer import GBuffer, Surfaces
+    from cityshade.shading import shade
+
+    height, width = camera.shape
+    lit = np.zeros((height, width), np.float32)
+    rgb = np.empty((height, width, 3), np.float32)
+    valid = np.zeros((height, width), bool)
+    depth = np.empty((height, width), np.float32)
+    normal = np.empty((height, width, 3), np.float32)
+    obj_id = np.empty((height, width), np.int32)
+    prim_id = np.empty((height, width), np.int32)
+    extra: dict[str, np.ndarray] = {}
+    timings: dict[str, float] = {}
+    ground_z = None
+    if ground is not None:
+        from cityshade.ground import ground_height_m
+
+        ground_z = ground_height_m(scene, ground)  # once, not per strip
+    diagnostics = None
+    filled = 0
+    n_strips = 0
+    for r0 in range(0, height, rows):
+        r1 = min(height, r0 + rows)
+        h0, h1 = max(0, r0 - STRIP_HALO_ROWS), min(height, r1 + STRIP_HALO_ROWS)
+        cp = camera_pass(scene, camera.strip(h0, h1), t_days, ground=ground,
+                         ground_z_m=ground_z)
+        sp = shadow_pass(cp, sun, tech, settings, measure)
+        t = time.perf_counter()
+        shade_report: dict = {}
+        strip_rgb = shade(scene, cp.surfaces, cp.camera, sp.lit, sun.direction, sky=sky,
+                          prim_id=cp.gbuffer.prim_id, report=shade_report)
+        for key, value in {**cp.timings_s, "shadow_s": sp.seconds,
+                           "shade_s": time.perf_counter() - t}.items():
+            timings[key] = timings.get(key, 0.0) + value
+        warnings += [w for w in shade_report.get("texture_warnings", []) if w not in warnings]
+        a, b = r0 - h0, r1 - h0          # the strip's own rows in its arrays
+        s = cp.surfaces
+        lit[r0:r1] = sp.lit[a:b]
+        rgb[r0:r1] = strip_rgb[a:b]
+        valid[r0:r1] = s.valid[a:b]
+        depth[r0:r1] = s.depth[a:b]
+        normal[r0:r1] = s.normal[a:b]
+        obj_id[r0:r1] = s.obj_id[a:b]
+        prim_id[r0:r1] = cp.gbuffer.prim_id[a:b]
+        for name, values in sp.result.extra_channels.items():
+            if name not in extra:
+                extra[name] = np.zeros((height, width), np.float32)
+            extra[name][r0:r1] = np.asarray(values, np.float32)[a:b]
+        if cp.ground is not None:   # the plane's pixels of the strip's own rows
+            filled += int(np.count_nonzero(valid[r0:r1] & (prim_id[r0:r1] < 0)))
+        diagnostics = sp.diagnostics(cp)
+        n_strips += 1
+        del cp, sp, strip_rgb, s
+    # The diagnostics are the last strip's, with the whole map's ground pixels and the count.
+    diagnostics.gbuffer = {**diagnostics.gbuffer, "strips": n_strips, "strip_rows": rows}
+    if diagnostics.ground is not None:
+        from dataclasses import replace
+
+        diagnostics.ground = replace(diagnostics.ground, pixels=filled)
+    gbuffer = GBuffer(camera=camera, prim_id=prim_id, bary=None, depth=depth,
+                      stats=diagnostics.gbuffer)
+    surfaces = Surfaces(position_m=None, normal=normal, obj_id=obj_id, material=None,
+                        texture=None, uv=None, cls=None, valid=valid, prim_id=prim_id,
+                        depth=depth)
+    return Frame(camera=camera, gbuffer=gbuffer, surfaces=surfaces, lit=lit, rgb=rgb, sun=sun,
+                 t_days=t_days, technique=technique, timings_s=timings,
+                 diagnostics=diagnostics, warnings=warnings, extra_channels=extra)
 
 
 def shadow_mask(frame: Frame) -> np.ndarray:

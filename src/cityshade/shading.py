@@ -32,8 +32,8 @@ from numba import njit, prange
 
 from cityshade.errors import CityshadeError
 from cityshade.trace.bricks import dynamic_bricks
-from cityshade.textures import (TextureSet, load_texture_set,
-                                lod_from_uv_neighbours, sample_trilinear, srgb_to_linear)
+from cityshade.textures import (TextureSet, composite_textures, load_texture_set,
+                                lod_from_uv_neighbours, srgb_to_linear)
 
 __all__ = ["ShadingError", "ShadingSettings", "DEFAULT_PALETTE_SRGB8", "shade", "to_srgb8",
            "albedo_of_surfaces"]
@@ -205,6 +205,33 @@ def _base_albedo_kernel(valid, material, klass, mat_colours, mat_usable, palette
                     out[r, c, k] = palette[code, k]
 
 
+@njit(cache=True, parallel=True)
+def _texture_inputs_kernel(valid, texture, prim, polygon, mode, n_tex, tex_ids, group, used):
+    """Per pixel: ``tex_ids`` the texture (-1: no surface or none of the ``n_tex``), ``group``
+    its uv patch (mode 0: 0 everywhere; 1: the triangle ``prim``; 2: its ``polygon``; -1
+    without a triangle); ``used[k]`` set for every texture seen. Returns the textured count."""
+    height, width = valid.shape
+    count = 0
+    for r in prange(height):
+        for c in range(width):
+            k = texture[r, c]
+            if valid[r, c] and 0 <= k < n_tex:
+                tex_ids[r, c] = k
+                used[k] = True          # every thread writes the same True
+                count += 1
+            else:
+                tex_ids[r, c] = -1
+            if mode == 0:
+                group[r, c] = 0
+            elif mode == 1:
+                group[r, c] = prim[r, c]
+            elif prim[r, c] < 0:
+                group[r, c] = -1
+            else:
+                group[r, c] = polygon[prim[r, c]]
+    return count
+
+
 def albedo_of_surfaces(scene, surfaces, *, settings: ShadingSettings | None = None,
                        prim_id: np.ndarray | None = None,
                        report: dict | None = None) -> np.ndarray:
@@ -243,33 +270,33 @@ def albedo_of_surfaces(scene, surfaces, *, settings: ShadingSettings | None = No
     textures = list(getattr(scene, "textures", []) or [])
     if not (settings.textures and textures):
         return albedo
-    texture = np.asarray(_field(surfaces, "texture"), np.int64)
-    textured = valid & (texture >= 0) & (texture < len(textures))
-    if not textured.any():
+    texture = _field(surfaces, "texture")
+    n_tex = len(textures)
+    polygon = getattr(scene, "tri_polygon", None)
+    if prim_id is None:
+        prim_id = _field(surfaces, "prim_id", required=False)
+    # One parallel pass: texture id per pixel (-1 where none is used), the uv patch (polygon
+    # of the triangle, else the triangle; no ids: one patch) and which textures are seen.
+    prim = np.zeros((1, 1), np.int32) if prim_id is None else np.ascontiguousarray(prim_id)
+    mode = 0 if prim_id is None else (1 if polygon is None else 2)
+    tex_ids = np.empty((height, width), np.int64)
+    group = np.empty((height, width), np.int64)
+    used = np.zeros(n_tex, bool)
+    n_textured = _texture_inputs_kernel(
+        valid, np.ascontiguousarray(texture), prim,
+        np.zeros(1, np.int32) if polygon is None else np.asarray(polygon), mode, n_tex,
+        tex_ids, group, used)
+    if n_textured == 0:
         return albedo  # no texture work when no visible pixel needs it (DESIGN §2)
-    used = np.zeros(len(textures), bool)
-    used[np.unique(texture[textured])] = True
     tex_set = _texture_set(textures, used)
     if report is not None:
         report["texture_warnings"] = list(tex_set.warnings)
         report["texture_counts"] = dict(tex_set.counters)
     uv = _field(surfaces, "uv")
     normal = _field(surfaces, "normal")
-    if prim_id is None:
-        prim_id = _field(surfaces, "prim_id", required=False)
-    if prim_id is not None and getattr(scene, "tri_polygon", None) is not None:
-        prim = np.asarray(prim_id, np.int64)
-        group = np.where(prim >= 0, np.asarray(scene.tri_polygon)[np.maximum(prim, 0)], -1)
-    elif prim_id is not None:
-        group = np.asarray(prim_id, np.int64)
-    else:
-        group = np.zeros((height, width), np.int64)
-    tex_ids = np.where(textured, texture, -1)
     lod = lod_from_uv_neighbours(uv, tex_ids, group, normal, tex_set, bias=settings.mip_bias)
-    rows, cols = np.nonzero(textured)
-    rgba = sample_trilinear(tex_set, tex_ids[rows, cols], uv[rows, cols], lod[rows, cols])
-    # Composite the premultiplied texel over the material/palette colour.
-    albedo[rows, cols] = rgba[:, :3] + (1.0 - rgba[:, 3:4]) * albedo[rows, cols]
+    # The premultiplied texel over the material/palette colour.
+    composite_textures(tex_set, tex_ids, uv, lod, albedo)
     return albedo
 
 

@@ -36,7 +36,7 @@ from numba import njit, prange
 __all__ = [
     "WRAP_MODES", "MipPyramid", "TextureSet", "srgb_to_linear", "linear_to_srgb",
     "texels_from_image", "build_mip_levels", "load_mip_pyramid", "load_texture_set",
-    "sample_trilinear", "lod_from_uv_neighbours", "clear_texture_cache",
+    "sample_trilinear", "composite_textures", "lod_from_uv_neighbours", "clear_texture_cache",
 ]
 
 #: CityGML wrap modes → kernel codes (the order is the codes).
@@ -527,6 +527,53 @@ def sample_trilinear(texture_set: TextureSet, tex_id: np.ndarray, uv: np.ndarray
     _sample_kernel(ts.texels, ts.level_offset, ts.level_width, ts.level_height,
                    ts.first_level, ts.wrap, ts.border, tex_id, uv, lod, out)
     return out
+
+
+@njit(cache=True, parallel=True)
+def _composite_kernel(texels, level_offset, level_width, level_height, first_level, wrap, border,
+                      tex_id, uv, lod, albedo):
+    height, width = tex_id.shape
+    one = np.float32(1.0)
+    for r in prange(height):
+        acc = np.zeros(4, np.float64)
+        for c in range(width):
+            k = tex_id[r, c]
+            if k < 0:
+                continue
+            _sample_one(texels, level_offset, level_width, level_height, first_level, wrap,
+                        border, k, np.float64(uv[r, c, 0]), np.float64(uv[r, c, 1]),
+                        np.float64(lod[r, c]), acc)
+            # float32 throughout, as numpy's (N, 4) float32 samples composite.
+            keep = one - np.float32(acc[3])
+            for i in range(3):
+                albedo[r, c, i] = np.float32(acc[i]) + keep * albedo[r, c, i]
+
+
+def composite_textures(texture_set: TextureSet, tex_id: np.ndarray, uv: np.ndarray,
+                       lod: np.ndarray, albedo: np.ndarray) -> None:
+    """Composite the premultiplied trilinear sample (:func:`sample_trilinear`) of every pixel
+    with a texture over ``albedo`` in place: ``rgb + (1 - alpha) * albedo``, float32.
+
+    One parallel pass over the picture instead of gathering the textured pixels, sampling and
+    scattering back (serial numpy, most of a 1080p frame's shading time).
+
+    Parameters
+    ----------
+    tex_id : (H, W) int
+        Texture per pixel; -1: none (the pixel is left as it is).
+    uv : (H, W, 2) float; lod : (H, W) float
+    albedo : (H, W, 3) float32
+    """
+    tex_id = _native(tex_id, "iu", np.int64)
+    uv = _native(uv, "f", np.float64)
+    lod = _native(lod, "f", np.float64)
+    if uv.shape != tex_id.shape + (2,) or lod.shape != tex_id.shape \
+            or albedo.shape != tex_id.shape + (3,) or albedo.dtype != np.float32:
+        raise ValueError("tex_id (H, W), uv (H, W, 2), lod (H, W) and float32 albedo (H, W, 3) "
+                         "must describe the same pixels")
+    ts = texture_set
+    _composite_kernel(ts.texels, ts.level_offset, ts.level_width, ts.level_height,
+                      ts.first_level, ts.wrap, ts.border, tex_id, uv, lod, albedo)
 
 
 # --- level of detail -------------------------------------------------------------------------

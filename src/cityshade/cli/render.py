@@ -32,11 +32,14 @@ from cityshade.cli.options import (camera_options, ground_option, make_camera, p
 @click.option("--geotiff", type=click.Path(dir_okay=False, path_type=Path),
               help="Map view: georeferenced mask (TIFF + world file + .prj) for QGIS/GDAL.")
 @ground_option
+@click.option("--strip-rows", type=int, help="Map view, raytrace or izb: render in strips of N "
+              "rows (the same pixels in less memory; a map too large for memory as one frame "
+              "goes in strips without it).")
 @click.option("--no-sky", is_flag=True, help="Black background instead of the sky gradient.")
 @click.option("-v", "--verbose", is_flag=True, help="Stage timings and technique diagnostics.")
 def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_elevation, camera,
            eye, target, fov, size, pixel_size, cameras_file, settings, output, png, mask,
-           geotiff, ground, no_sky, verbose):
+           geotiff, ground, strip_rows, no_sky, verbose):
     """Render FILE (a .cityshade scene) as the city stood on --date, lit by the sun at
     --sun-azimuth/--sun-elevation or, for a --date with a time, by the sun computed for the
     model's place (NREL SPA), from a perspective camera or as a top-down map."""
@@ -47,7 +50,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     from cityshade.citygml.temporal import parse_user_date
     from cityshade.cli.options import reparse_solar_date, solar_placeholder
     from cityshade.errors import UsageError
-    from cityshade.render import check_frame_outputs, render_frame, write_frame
+    from cityshade.render import check_frame_outputs, render_frame, strip_rows_for, write_frame
     from cityshade.scenefile import open_scene, scene_for_camera
     from cityshade.shadows import get_technique
     from cityshade.sun import sun_from_angles
@@ -77,6 +80,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
         click.echo(f"cityshade: warning: {warning}", err=True)
     cam = make_camera(scene, camera, eye, target, fov, size, pixel_size, cameras_file)
     check_frame_outputs(cam.kind, exr=output, png=png, mask=mask, georef=geotiff)  # the view
+    strip_rows_for(cam, technique, settings.shadows, strip_rows)  # refused before any work
     scene = scene_for_camera(scene, cam, technique)
     if sun_azimuth is not None:
         sun = sun_from_angles(sun_azimuth, sun_elevation, scene.crs, scene.origin_m)
@@ -89,7 +93,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
             spa = dataclasses.replace(spa, refraction=False)
         sun = sun_from_instant(user_date.instant_utc, scene.crs, scene.origin_m, spa)
     frame = render_frame(scene, cam, user_date.city_days, sun, technique, settings.shadows,
-                         sky=not no_sky, ground=ground, measure=verbose)
+                         sky=not no_sky, ground=ground, measure=verbose, strip_rows=strip_rows)
     for warning in frame.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
     t1 = time.perf_counter()

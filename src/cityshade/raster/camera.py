@@ -13,11 +13,15 @@ Conventions
   ``x = x_left_m + (col + 0.5) px``, ``y = y_top_m - (row + 0.5) px``; rays point straight
   down from the camera plane ``z = eye_m[2]``. The grid corners are aligned to multiples of the
   pixel size in the scene CRS, so maps of one model at one pixel size always share a grid.
+  A strip of a map (:meth:`Camera.strip`) keeps the whole map's ``y_top_m`` and counts its
+  rows from ``row0_px``: ``y = y_top_m - (row0_px + row + 0.5) px``, so its pixel centres are
+  the whole map's, bit for bit.
 * ``near_m``/``far_m`` bound the view depth (perspective: distance along ``forward``; map:
   distance below the camera plane). The rasterizer clips at them.
 """
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -65,6 +69,9 @@ class Camera:
         View-depth range (metres).
     pixel_size_m, x_left_m, y_top_m : float
         Map only: pixel size and the render-space x of the left edge / y of the top edge.
+    row0_px : int
+        Map only: the first row of this camera in the whole map (a strip, :meth:`strip`); 0
+        for a whole map.
     """
 
     kind: str
@@ -80,6 +87,7 @@ class Camera:
     x_left_m: float = 0.0
     y_top_m: float = 0.0
     name: str = field(default="", compare=False)
+    row0_px: int = 0
 
     def __post_init__(self) -> None:
         if self.kind not in ("perspective", "map"):
@@ -108,6 +116,10 @@ class Camera:
                 raise UsageError("camera eye and target coincide")
         elif not (math.isfinite(self.pixel_size_m) and self.pixel_size_m > 0.0):
             raise UsageError(f"map pixel size must be > 0 metres, not {self.pixel_size_m}")
+        if not (isinstance(self.row0_px, (int, np.integer)) and self.row0_px >= 0):
+            raise UsageError(f"camera row0_px must be an integer >= 0, not {self.row0_px!r}")
+        if self.row0_px and self.kind != "map":
+            raise UsageError("only a map camera has strips (row0_px)")
 
     # -- frame -----------------------------------------------------------------------------
     @property
@@ -135,7 +147,7 @@ class Camera:
         same way everywhere.
         """
         col = np.arange(self.width_px, dtype=np.float64) + 0.5
-        row = np.arange(self.height_px, dtype=np.float64) + 0.5
+        row = np.arange(self.row0_px, self.row0_px + self.height_px, dtype=np.float64) + 0.5
         if self.kind == "map":
             return self.x_left_m + col * self.pixel_size_m, self.y_top_m - row * self.pixel_size_m
         p = self.pitch
@@ -186,7 +198,7 @@ class Camera:
             h, w = self.shape
             left = self.x_left_m - self.eye_m[0]
             right = left + w * self.pixel_size_m
-            top = self.y_top_m - self.eye_m[1]
+            top = self.y_top_m - self.row0_px * self.pixel_size_m - self.eye_m[1]
             bottom = top - h * self.pixel_size_m
             proj[0, 0] = 2.0 / (right - left)
             proj[0, 3] = -(right + left) / (right - left)
@@ -203,6 +215,15 @@ class Camera:
             proj[2, 3] = 2.0 * f * n / (n - f)
             proj[3, 2] = -1.0
         return proj @ self.view_from_world()
+
+    def strip(self, row0: int, row1: int) -> "Camera":
+        """Map: the camera of rows ``[row0, row1)`` of this one, whose pixel centres are this
+        camera's bit for bit (same ``y_top_m``, rows counted from ``row0_px``)."""
+        self._require_map("strip")
+        row0, row1 = int(row0), int(row1)
+        if not 0 <= row0 < row1 <= self.height_px:
+            raise UsageError(f"strip rows [{row0}, {row1}) outside the map's {self.height_px}")
+        return dataclasses.replace(self, height_px=row1 - row0, row0_px=self.row0_px + row0)
 
     # -- georeference (maps) ---------------------------------------------------------------
     def _require_map(self, what: str) -> None:
@@ -224,8 +245,8 @@ class Camera:
         self._require_map("geotransform")
         origin = np.asarray(origin_m, dtype=np.float64)
         px = float(self.pixel_size_m)
-        return (float(origin[0] + self.x_left_m), px, 0.0, float(origin[1] + self.y_top_m),
-                0.0, -px)
+        return (float(origin[0] + self.x_left_m), px, 0.0,
+                float(origin[1] + self.y_top_m - self.row0_px * px), 0.0, -px)
 
     def pixel_of_world(self, xy_crs, origin_m) -> np.ndarray:
         """Map: (N, 2) int (col, row) of the pixels containing CRS points (N, 2)."""
@@ -233,7 +254,7 @@ class Camera:
         xy = np.atleast_2d(np.asarray(xy_crs, dtype=np.float64))
         origin = np.asarray(origin_m, dtype=np.float64)
         col = np.floor((xy[:, 0] - origin[0] - self.x_left_m) / self.pixel_size_m)
-        row = np.floor((self.y_top_m - (xy[:, 1] - origin[1])) / self.pixel_size_m)
+        row = np.floor((self.y_top_m - (xy[:, 1] - origin[1])) / self.pixel_size_m) - self.row0_px
         return np.column_stack([col, row]).astype(np.int64)
 
 

@@ -65,7 +65,7 @@ def camera_params(camera: Camera) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     if camera.kind == "map":
         px = camera.pixel_size_m
         cam[16], cam[17] = 1.0 / px, -camera.x_left_m / px - 0.5
-        cam[18], cam[19] = -1.0 / px, camera.y_top_m / px - 0.5
+        cam[18], cam[19] = -1.0 / px, camera.y_top_m / px - 0.5 - camera.row0_px
     else:
         p = camera.pitch
         cam[16], cam[17] = 1.0 / p, w / 2.0 - 0.5
