@@ -330,17 +330,19 @@ def _sweep_axis(lo, hi, axis, ord_lo, ord_hi, blo, bhi, t0, t1, ct, ci, bonus, b
         if a_lo < p < a_hi and norm > 0.0:
             pl, pr = _probabilities_at(is_time, p, start, end, cap, side, norm)
             c_left = _split_cost(pl, pr, n_left + p_planar, n_right, ct, ci, bonus)
-            c_right = _split_cost(pl, pr, n_left, n_right + p_planar, ct, ci, bonus)
             if c_left < best[0]:
                 best[0] = c_left
                 best[1] = axis
                 best[2] = p
                 best[3] = 1.0
-            if c_right < best[0]:
-                best[0] = c_right
-                best[1] = axis
-                best[2] = p
-                best[3] = 0.0
+            # Without planar events both sides cost the same: only the left one can win.
+            if p_planar:
+                c_right = _split_cost(pl, pr, n_left, n_right + p_planar, ct, ci, bonus)
+                if c_right < best[0]:
+                    best[0] = c_right
+                    best[1] = axis
+                    best[2] = p
+                    best[3] = 0.0
         n_left += p_start + p_planar
 
 
