@@ -574,6 +574,22 @@ def _grow_2d(a, n, columns):
     return b
 
 
+@njit(cache=True, inline="always")
+def _add_task(task_ids, task_lo, task_hi, task_blo, task_bhi, task_depth, k, ids, lo, hi, blo,
+              bhi, depth):
+    """Make task ``k`` of a subtree (its references, boxes, node box copied, depth) in the
+    five lists; returns ``task_depth``, grown if needed. (The lists go one by one: Numba does
+    not infer a typed list's item type through a tuple.)"""
+    task_ids.append(ids)
+    task_lo.append(lo)
+    task_hi.append(hi)
+    task_blo.append(blo.copy())
+    task_bhi.append(bhi.copy())
+    task_depth = _grow(task_depth, k + 1)
+    task_depth[k] = depth
+    return task_depth
+
+
 @njit(cache=True, nogil=True)
 def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t0, t1,
                   ct, ci, bonus, max_depth, min_leaf, sweep_threshold, nbins, depth0,
@@ -641,6 +657,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
     st_n = np.empty(n_stack, np.int64)       # reference count
     st_ord = np.empty(n_stack, np.int64)     # first order-pool column
     st_sorted = np.empty(n_stack, np.bool_)  # event orders present (exact sweep)
+    st_task = np.empty(n_stack, np.int64)    # deferred: its task index, else -1
     st_blo = np.empty((n_stack, 4))
     st_bhi = np.empty((n_stack, 4))
     st_depth = np.empty(n_stack, np.int64)
@@ -653,6 +670,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
     st_bhi[0] = root_hi
     st_depth[0] = depth0
     st_parent[0] = -1
+    st_task[0] = -1
     sp = 1
 
     task_ids = List()
@@ -681,6 +699,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
             bhi[c] = st_bhi[sp, c]
         depth = st_depth[sp]
         parent = st_parent[sp]
+        task = st_task[sp]
         ids = p_ids[s0:s0 + n]
         lo = p_lo[s0:s0 + n]
         hi = p_hi[s0:s0 + n]
@@ -694,19 +713,21 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
             node_split = _grow(node_split, n_nodes)
         if parent >= 0:
             node_child[parent] = node
-        if defer_n > 0 and n <= defer_n:
+        if task >= 0:
+            # A child deferred when its parent split (its references went to the task).
+            node_axis[node] = DEFERRED
+            node_child[node] = 0
+            node_first[node] = task
+            node_split[node] = 0.0
+            continue
+        if defer_n > 0 and n <= defer_n:  # the root of this call only
             # Defer: built later as an independent subtree and stitched in at this node.
             node_axis[node] = DEFERRED
             node_child[node] = 0
             node_first[node] = n_tasks
             node_split[node] = 0.0
-            task_ids.append(ids.copy())
-            task_lo.append(lo.copy())
-            task_hi.append(hi.copy())
-            task_blo.append(blo.copy())
-            task_bhi.append(bhi.copy())
-            task_depth = _grow(task_depth, n_tasks + 1)
-            task_depth[n_tasks] = depth
+            task_depth = _add_task(task_ids, task_lo, task_hi, task_blo, task_bhi, task_depth,
+                                   n_tasks, ids.copy(), lo.copy(), hi.copy(), blo, bhi, depth)
             n_tasks += 1
             continue
         surf = _surface(blo, bhi, has_time, t0, t1) / root_surface
@@ -802,12 +823,27 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         bhi_l[axis] = p
         blo_r[axis] = p
         # The left child is written behind the node (rows l0 ..), the right child over the
-        # node itself (its row ir <= r, so no row is overwritten before it is read).
+        # node itself (its row ir <= r, so no row is overwritten before it is read). A child
+        # small enough to be deferred goes straight into its own task arrays instead.
+        defer_l = defer_n > 0 and n_l <= defer_n
+        defer_r = defer_n > 0 and n_r <= defer_n
         l0 = s0 + n
         if l0 + n_l > p_ids.shape[0]:
             p_ids = _grow(p_ids, l0 + n_l)
             p_lo = _grow_2d(p_lo, l0 + n_l, False)
             p_hi = _grow_2d(p_hi, l0 + n_l, False)
+        d_ids_l, d_lo_l, d_hi_l, bl = p_ids, p_lo, p_hi, l0
+        d_ids_r, d_lo_r, d_hi_r, br = p_ids, p_lo, p_hi, s0
+        if defer_l:
+            d_ids_l = np.empty(n_l, p_ids.dtype)
+            d_lo_l = np.empty((n_l, 4), p_lo.dtype)
+            d_hi_l = np.empty((n_l, 4), p_hi.dtype)
+            bl = 0
+        if defer_r:
+            d_ids_r = np.empty(n_r, p_ids.dtype)
+            d_lo_r = np.empty((n_r, 4), p_lo.dtype)
+            d_hi_r = np.empty((n_r, 4), p_hi.dtype)
+            br = 0
         il = 0
         ir = 0
         for r in range(n):
@@ -815,45 +851,62 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
             if s & 1:
                 # Written out for each side: a shared helper taking the 17 arguments costs
                 # 40 % of the whole build (1M-triangle city, 10.1 s against 7.2 s), even inlined.
-                w = l0 + il
-                p_ids[w] = ids[r]
+                w = bl + il
+                d_ids_l[w] = ids[r]
                 for c in range(4):
-                    p_lo[w, c] = lo[r, c]
-                    p_hi[w, c] = hi[r, c]
+                    d_lo_l[w, c] = lo[r, c]
+                    d_hi_l[w, c] = hi[r, c]
                 if s == 3 and axis != TIME_AXIS:
                     # Perfect split: the true extent of the triangle inside the child box.
                     if _clipped_box(tri_v, ids[r], blo_l, bhi_l, clo, chi, scratch):
                         for c in range(3):
-                            p_lo[w, c] = max(lo[r, c], max(blo_l[c], _f32_down(clo[c])))
-                            p_hi[w, c] = min(hi[r, c], min(bhi_l[c], _f32_up(chi[c])))
+                            d_lo_l[w, c] = max(lo[r, c], max(blo_l[c], _f32_down(clo[c])))
+                            d_hi_l[w, c] = min(hi[r, c], min(bhi_l[c], _f32_up(chi[c])))
                     else:
-                        p_hi[w, axis] = p
+                        d_hi_l[w, axis] = p
                 il += 1
             if s & 2:
-                w = s0 + ir
-                p_ids[w] = ids[r]
+                w = br + ir
+                d_ids_r[w] = ids[r]
                 for c in range(4):
-                    p_lo[w, c] = lo[r, c]
-                    p_hi[w, c] = hi[r, c]
+                    d_lo_r[w, c] = lo[r, c]
+                    d_hi_r[w, c] = hi[r, c]
                 if s == 3 and axis != TIME_AXIS:
                     if _clipped_box(tri_v, ids[r], blo_r, bhi_r, clo, chi, scratch):
                         for c in range(3):
-                            p_lo[w, c] = max(p_lo[w, c], max(blo_r[c], _f32_down(clo[c])))
-                            p_hi[w, c] = min(p_hi[w, c], min(bhi_r[c], _f32_up(chi[c])))
+                            d_lo_r[w, c] = max(d_lo_r[w, c], max(blo_r[c], _f32_down(clo[c])))
+                            d_hi_r[w, c] = min(d_hi_r[w, c], min(bhi_r[c], _f32_up(chi[c])))
                     else:
-                        p_lo[w, axis] = p
+                        d_lo_r[w, axis] = p
                 ir += 1
         # Left child down next to the right one (destination below the source).
-        for i in range(n_l):
-            p_ids[s0 + n_r + i] = p_ids[l0 + i]
-            for c in range(4):
-                p_lo[s0 + n_r + i, c] = p_lo[l0 + i, c]
-                p_hi[s0 + n_r + i, c] = p_hi[l0 + i, c]
+        n_r_pool = 0 if defer_r else n_r
+        if not defer_l:
+            for i in range(n_l):
+                p_ids[s0 + n_r_pool + i] = p_ids[l0 + i]
+                for c in range(4):
+                    p_lo[s0 + n_r_pool + i, c] = p_lo[l0 + i, c]
+                    p_hi[s0 + n_r_pool + i, c] = p_hi[l0 + i, c]
+        task_l = -1
+        task_r = -1
+        # Tasks are numbered as they are made; the stitch finds each by its placeholder's
+        # node_first, so the numbering never shows in the tree.
+        if defer_l:
+            task_l = n_tasks
+            task_depth = _add_task(task_ids, task_lo, task_hi, task_blo, task_bhi, task_depth,
+                                   n_tasks, d_ids_l, d_lo_l, d_hi_l, blo_l, bhi_l, depth + 1)
+            n_tasks += 1
+        if defer_r:
+            task_r = n_tasks
+            task_depth = _add_task(task_ids, task_lo, task_hi, task_blo, task_bhi, task_depth,
+                                   n_tasks, d_ids_r, d_lo_r, d_hi_r, blo_r, bhi_r, depth + 1)
+            n_tasks += 1
 
         node_axis[node] = axis
         node_split[node] = p
         node_first[node] = 0
-        child_orders = sweep and depth + 1 < max_depth and (n_l > min_leaf or n_r > min_leaf)
+        child_orders = (sweep and depth + 1 < max_depth and (n_l > min_leaf or n_r > min_leaf)
+                        and not (defer_l or defer_r))  # a task sorts anew, so does its sibling
         if child_orders:
             p_ord = _grow_2d(p_ord, o + n + n_l, True)
             _child_orders(p_ord, o, n, side, work, p_lo[s0 + n_r:s0 + n_r + n_l],
@@ -869,8 +922,9 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
             st_bhi[sp, c] = bhi_r[c]
         st_depth[sp] = depth + 1
         st_parent[sp] = node
+        st_task[sp] = task_r
         sp += 1
-        st_start[sp] = s0 + n_r
+        st_start[sp] = s0 + n_r_pool
         st_n[sp] = n_l
         st_ord[sp] = o + n_r if child_orders else o
         st_sorted[sp] = child_orders
@@ -879,6 +933,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
             st_bhi[sp, c] = bhi_l[c]
         st_depth[sp] = depth + 1
         st_parent[sp] = -1
+        st_task[sp] = task_l
         sp += 1
 
     stats = np.array([float(n_leaves), float(n_empty), float(depth_max), float(depth_sum),
