@@ -422,8 +422,9 @@ def techniques_main(argv=None) -> dict:
     """The overview at --size and the top-down map at --map-side² of the 1M-triangle city:
     the full exact frames of ``raytrace`` and ``izb`` (G-buffer + resolve + shadows + shading,
     ms; for izb also with the EXR written, as ``cityshade render -o`` does), and for
-    every technique its shadow-stage time (median of --repeat runs after a warm-up) and its
-    misclassified pixels against ``raytrace`` on the same pixels (false-lit, false-shadow)."""
+    every technique its shadow-stage time (median of --repeat runs after a warm-up), the
+    whole frame's CPU time of all threads (user and kernel apart) and its misclassified
+    pixels against ``raytrace`` on the same pixels (false-lit, false-shadow)."""
     ap = argparse.ArgumentParser(description=techniques_main.__doc__.split("\n")[0])
     ap.add_argument("--size", default="1920x1080")
     ap.add_argument("--map-side", type=int, default=2048)
@@ -483,11 +484,17 @@ def techniques_main(argv=None) -> dict:
         truth = ref.lit >= 0.5
         rows = {}
         for name in args.techniques.split(","):
-            times, stages, frame = [], {}, None
+            times, stages, frame, user, system = [], {}, None, [], []
             for k in range(args.repeat + 1):
+                c0 = os.times()
                 frame = render_frame(scene, cam, args.date_days, sun, name)
+                c1 = os.times()
                 times.append(frame.timings_s["shadow_s"])
                 if k:
+                    # CPU of all threads over the whole frame, user and kernel apart: kernel
+                    # time is mostly the zeroing of freshly faulted pages.
+                    user.append(c1.user - c0.user)
+                    system.append(c1.system - c0.system)
                     for stage, s in _stages(frame.diagnostics.shadow).items():
                         stages.setdefault(stage, []).append(s)
             got = frame.lit >= 0.5
@@ -499,6 +506,8 @@ def techniques_main(argv=None) -> dict:
                 "false_lit_pct": 100 * float((got & ~truth & valid).sum() / valid.sum()),
                 "false_shadow_pct": 100 * float((~got & truth & valid).sum() / valid.sum()),
                 "stages_ms": {k: 1000 * statistics.median(v) for k, v in stages.items()},
+                "frame_user_cpu_ms": 1000 * statistics.median(user),
+                "frame_system_cpu_ms": 1000 * statistics.median(system),
                 "traced_share": d.get("traced_share"),
                 "aliasing_m": d.get("aliasing_m"), "texel_m": d.get("texel_m"),
                 "map_px": d.get("map_px")}
@@ -522,13 +531,15 @@ def techniques_main(argv=None) -> dict:
               f"all threads: frame {v['izb_frame_cpu_ms_median']:.0f} ms, EXR "
               f"{v['izb_exr_cpu_ms_median']:.0f} ms")
         print(f"{'technique':<18} {'shadow ms':>10} {'wrong %':>9} {'false-lit %':>12} "
-              f"{'false-shadow %':>15} {'traced %':>9}  stages ms (median)")
+              f"{'false-shadow %':>15} {'traced %':>9} {'cpu user/sys ms':>16}  "
+              f"stages ms (median)")
         for name, r in v["techniques"].items():
             traced = "" if r["traced_share"] is None else f"{100 * r['traced_share']:.1f}"
             stages = " ".join(f"{k}={ms:.0f}" for k, ms in r["stages_ms"].items())
+            cpu = f"{r['frame_user_cpu_ms']:.0f}/{r['frame_system_cpu_ms']:.0f}"
             print(f"{name:<18} {r['shadow_ms_median']:>10.0f} {r['wrong_pct']:>9.4f} "
-                  f"{r['false_lit_pct']:>12.4f} {r['false_shadow_pct']:>15.4f} {traced:>9}  "
-                  f"{stages}")
+                  f"{r['false_lit_pct']:>12.4f} {r['false_shadow_pct']:>15.4f} {traced:>9} "
+                  f"{cpu:>16}  {stages}")
     if args.json:
         args.json.write_text(json.dumps(report, indent=2, default=float))
     return report

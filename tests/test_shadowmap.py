@@ -450,3 +450,77 @@ def test_depth_map_reuse_draws_each_map_once(one_box):
         assert sm.render_depth_map(one_box, view, 0.0) is not first
     outside = sm.render_depth_map(one_box, view, 0.0)
     assert outside is not first and np.array_equal(outside.depth, first.depth)
+
+
+def test_scratch_hands_out_kept_arrays_one_holder_at_a_time():
+    """util.Scratch: the same memory on the next take, a private one while it is held, and
+    buffers that grow when asked for more."""
+    from cityshade.util import Scratch
+
+    ws = Scratch()
+    first = ws.take()
+    assert first is ws
+    a = first.get("x", (4, 3))
+    assert a.shape == (4, 3) and a.dtype == np.float64 and a.flags.c_contiguous
+    other = ws.take()            # held: a private Scratch, never the same memory
+    assert other is not ws and not np.shares_memory(other.get("x", (4, 3)), a)
+    first.give_back()
+    again = ws.take()
+    assert again is ws and np.shares_memory(again.get("x", 12), a)
+    bigger = again.get("x", (5, 3))
+    assert bigger.shape == (5, 3) and not np.shares_memory(bigger, a)
+    assert again.get("i", 7, np.int32).dtype == np.int32
+    again.give_back()
+
+
+def test_lookups_on_kept_temporaries_equal_the_fresh_twin(sample):
+    """shadow_lookup's receivers and VSM moments live in kept arrays: every mode, at map sizes
+    that grow and shrink between calls, is bit-identical to the same steps on fresh arrays."""
+    from cityshade.pipeline import camera_pass
+    from cityshade.shadows import filtering as flt
+
+    cam = cams.overview(sample, 160, 100)
+    sun = sun_from_angles(135.0, 30.0, sample.crs, sample.origin_m)
+    ctx = camera_pass(sample, cam, T_1990).context(sun)
+    points, normals = ctx.facing_points, ctx.facing_normals
+    settings = ShadowSettings()
+    vsm = settings.vsm
+    for px in (256, 512, 128):
+        dm = sm.render_depth_map(sample, sm.fit_uniform(sample, ctx, px), T_1990)
+        for mode, radius in (("hard", 0), ("pcf", settings.pcf.kernel // 2),
+                             ("vsm", vsm.blur_px)):
+            got = sm.shadow_lookup(dm, points, normals, sun.direction, settings, mode)
+            u, v, z = sm.lookup_receivers(dm.view, points, normals, sun.direction, settings,
+                                          radius)
+            if mode == "vsm":
+                scale = sm.metres_per_ndc(dm.view)
+                moments = flt.vsm_moments(dm.depth, scale,
+                                          flt.gaussian_weights(vsm.blur_px / 2.0, vsm.blur_px)
+                                          if vsm.filter == "gaussian"
+                                          else flt.box_weights(vsm.blur_px))
+                want = flt.vsm_lookup(moments, u, v, (z + 1.0) * scale, vsm.min_variance_m2,
+                                      vsm.bleed_reduction)
+            else:
+                want = flt.pcf_lookup(dm.depth, u, v, z, 2 * radius + 1)
+            assert len(got) == len(points) > 1000
+            assert got.tobytes() == want.tobytes(), (px, mode)
+            assert 0.0 < got.mean() < 1.0
+
+
+def test_context_gathers_the_facing_receivers_once_per_sun(sample):
+    """The contexts of one camera pass and sun share the facing mask and gathered receivers
+    (evaluate runs every technique on them); another sun gets its own, equal to a fresh
+    gather."""
+    from cityshade.pipeline import camera_pass
+    from cityshade.shadows import facing_mask, gather_pixels
+
+    cp = camera_pass(sample, cams.overview(sample, 96, 60), T_1990)
+    sun_a = sun_from_angles(135.0, 30.0, sample.crs, sample.origin_m)
+    sun_b = sun_from_angles(240.0, 20.0, sample.crs, sample.origin_m)
+    a1, a2 = cp.context(sun_a), cp.context(sun_a)
+    assert a1.facing_points is a2.facing_points and a1.faces is a2.faces
+    b = cp.context(sun_b)
+    faces_b = facing_mask(cp.normal, cp.surfaces.valid, sun_b.direction)
+    assert b.faces.tobytes() == faces_b.tobytes() and faces_b.sum() != a1.faces.sum()
+    assert b.facing_points.tobytes() == gather_pixels(cp.surfaces.position_m, faces_b).tobytes()
+    assert b.facing_normals.tobytes() == gather_pixels(cp.normal, faces_b).tobytes()

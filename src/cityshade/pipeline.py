@@ -64,6 +64,9 @@ class CameraPass:
     normal: np.ndarray
     ground: GroundInfo | None = None
     timings_s: dict[str, float] = field(default_factory=dict)
+    #: (sun direction, the shared arrays of :class:`ShadowContext`) of the last sun: the
+    #: facing mask and gathered receivers, made once for every technique on that sun.
+    per_sun: tuple = field(default=(None, None), repr=False)
 
     @property
     def valid(self) -> np.ndarray:
@@ -76,10 +79,13 @@ class CameraPass:
         and aliasing measures too)."""
         from cityshade.shadows import ShadowContext
 
+        key = np.asarray(sun.direction, np.float64).tobytes()
+        if self.per_sun[0] != key:
+            self.per_sun = (key, {})   # only the last sun's: a batch steps through many
         return ShadowContext(scene=self.scene, surfaces=self.surfaces, camera=self.camera,
                              sun=sun, t_days=float(self.t_days),
                              settings=settings or ShadowSettings(), oriented_normal=self.normal,
-                             measure=bool(measure))
+                             measure=bool(measure), shared=self.per_sun[1])
 
 
 #: Peak bytes per pixel of a frame, by technique family, measured with

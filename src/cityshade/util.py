@@ -8,6 +8,7 @@ import contextlib
 import math
 import os
 import sys
+import threading
 import tomllib
 import uuid
 from pathlib import Path
@@ -318,3 +319,44 @@ def release_freed_memory() -> None:
         ctypes.CDLL("libc.so.6").malloc_trim(0)
     except (OSError, AttributeError):  # not glibc (musl has no malloc_trim)
         pass
+
+
+class Scratch:
+    """Grow-only work arrays kept between calls, for per-frame temporaries of the same sizes.
+
+    A fresh large array is page-faulted in on first touch, and the kernel zeroes every page:
+    under load that cost tens to hundreds of ms per frame, and it depended on what ran before
+    (which frees left pages the allocator could hand out again). Arrays taken from here are
+    touched once and reused. One caller at a time holds a Scratch (:meth:`take`); a concurrent
+    call gets a fresh private one, so results never depend on who else runs. The arrays are
+    uninitialised and only valid until the holder gives the Scratch back.
+    """
+
+    def __init__(self):
+        self._arrays: dict = {}
+        self._lock = threading.Lock()
+
+    def take(self) -> "Scratch":
+        """``self`` when free (release with :meth:`give_back`), else a fresh private one."""
+        return self if self._lock.acquire(blocking=False) else Scratch()
+
+    def give_back(self) -> None:
+        if self._lock.locked():
+            self._lock.release()
+
+    def get(self, name: str, shape, dtype=None):
+        """An uninitialised C-contiguous array of ``shape`` (default dtype float64): the first
+        ``prod(shape)`` items of a kept buffer that only grows."""
+        import numpy as np
+
+        dtype = np.dtype(np.float64 if dtype is None else dtype)
+        shape = tuple(int(x) for x in (shape if isinstance(shape, tuple) else (shape,)))
+        size = math.prod(shape)
+        buf = self._arrays.get(name)
+        if buf is None or buf.dtype != dtype or buf.size < size:
+            buf = self._arrays[name] = np.empty(max(size, 1), dtype)
+        return buf[:size].reshape(shape)
+
+    def clear(self) -> None:
+        """Drop the kept arrays (their memory)."""
+        self._arrays.clear()

@@ -1,9 +1,10 @@
 """The frame loop of ``cityshade evaluate``: every technique on the pipeline's frames.
 
-For each view (camera), sun position, technique and shadow-map size, the camera pass
-(:func:`cityshade.pipeline.camera_pass`, ground plane included) runs once and the shadow pass
-``repeat + 1`` times on it: the first run is reported separately as the warm-up (Numba compile
-or cache load, first-touch allocations), the median of the others as the run time. The error
+For each view (camera), the camera pass (:func:`cityshade.pipeline.camera_pass`, ground plane
+included) is timed ``repeat + 1`` times and serves every sun; for each sun position, technique
+and shadow-map size the shadow pass runs ``repeat + 1`` times on it: the first run is reported
+separately as the warm-up (Numba compile or cache load, first-touch allocations), the median
+of the others as the run time. The error
 against the exact reference, ``raytrace``, on the same pixels is :mod:`.metrics`'s; for map
 techniques the rows also hold the aliasing measure m (screen extent of one shadow-map texel,
 max and mean; Lloyd et al. 2008) that the techniques report, and for ``hybrid`` the share of
@@ -28,7 +29,8 @@ if TYPE_CHECKING:
     from cityshade.sun import SunPosition
 
 __all__ = ["EvaluateSettings", "Case", "Evaluation", "expand_techniques", "uses_map",
-           "evaluate_frame", "run_evaluation", "sun_label", "make_camera", "open_scene",
+           "evaluate_frame", "TimedCameraPass", "timed_camera_pass", "run_evaluation",
+           "sun_label", "make_camera", "open_scene",
            "parse_suns", "suns_of_day"]
 
 
@@ -132,11 +134,13 @@ def evaluate_frame(scene: "Scene", camera: "Camera", view: str, sun: "SunPositio
                    evaluation: Evaluation, shadows: ShadowSettings | None = None,
                    progress: Callable[[str], None] | None = None,
                    reference_lit: np.ndarray | None = None,
-                   ground: str | None = None) -> dict[str, Any]:
+                   ground: str | None = None,
+                   camera_runs: "TimedCameraPass | None" = None) -> dict[str, Any]:
     """Evaluate every technique and size on one view and sun; rows go into ``evaluation``.
 
     The frame is the pipeline's (:func:`cityshade.pipeline.camera_pass`, with ``ground`` like
-    ``render --ground``), timed ``repeat + 1`` times; each technique runs through
+    ``render --ground``), timed ``repeat + 1`` times (or ``camera_runs``, the view's camera pass
+    timed once for all its suns); each technique runs through
     :func:`cityshade.pipeline.shadow_pass` on the same camera pass.
 
     Returns a dict with the frame's G-buffer, surfaces, reference lit fraction and the
@@ -144,18 +148,15 @@ def evaluate_frame(scene: "Scene", camera: "Camera", view: str, sun: "SunPositio
     set) that check more.
     """
     from cityshade.diagnostics import skipped_work
-    from cityshade.pipeline import camera_pass, shadow_pass
+    from cityshade.pipeline import shadow_pass
     from cityshade.shadows import get_technique
 
     runs = settings.repeat + 1
     shadows = shadows or ShadowSettings()
-    g_times, r_times = [], []
-    for _ in range(runs):
-        cp = camera_pass(scene, camera, t_days, ground=ground)
-        g_times.append(cp.timings_s["gbuffer_s"])
-        r_times.append(cp.timings_s["resolve_s"])
+    if camera_runs is None:
+        camera_runs = timed_camera_pass(scene, camera, t_days, settings.repeat, ground)
+    cp, gbuffer_s, resolve_s = camera_runs.cp, camera_runs.gbuffer_s, camera_runs.resolve_s
     gbuf, surfaces = cp.gbuffer, cp.surfaces
-    gbuffer_s, resolve_s = median_s(g_times[1:]), median_s(r_times[1:])
     label = sun_label(sun)
     common = {"view": view, "view_px": f"{camera.width_px}x{camera.height_px}",
               "camera": camera.kind, "sun": label,
@@ -254,6 +255,30 @@ def evaluate_frame(scene: "Scene", camera: "Camera", view: str, sun: "SunPositio
     return {"gbuffer": gbuf, "surfaces": surfaces, "reference": ref, "results": results}
 
 
+@dataclass
+class TimedCameraPass:
+    """A view's camera pass and the medians of its timed runs (it does not depend on the sun,
+    so one serves every sun of the view)."""
+
+    cp: Any                     # cityshade.pipeline.CameraPass
+    gbuffer_s: float
+    resolve_s: float
+
+
+def timed_camera_pass(scene, camera, t_days: float, repeat: int, ground: str | None = None
+                      ) -> TimedCameraPass:
+    """The camera pass run ``repeat + 1`` times: the last one, and the medians of all runs
+    but the first (the warm-up)."""
+    from cityshade.pipeline import camera_pass
+
+    g_times, r_times = [], []
+    for _ in range(repeat + 1):
+        cp = camera_pass(scene, camera, t_days, ground=ground)
+        g_times.append(cp.timings_s["gbuffer_s"])
+        r_times.append(cp.timings_s["resolve_s"])
+    return TimedCameraPass(cp, median_s(g_times[1:]), median_s(r_times[1:]))
+
+
 def _fmt_stages(stages: dict[str, float]) -> str:
     return " ".join(f"{k[:-2] if k.endswith('_s') else k}={v * 1000:.2f}ms"
                     for k, v in stages.items())
@@ -343,9 +368,13 @@ def run_evaluation(scene: "Scene", views: Sequence[tuple[str, Any]], suns: Seque
                                   "techniques": list(techniques),
                                   "sizes": list(settings.sizes), "repeat": settings.repeat})
     for view, camera in views:
+        # The camera pass is the same for every sun: timed once per view.
+        camera_runs = timed_camera_pass(scene, camera, t_days, settings.repeat, ground)
         for sun in suns:
             evaluate_frame(scene, camera, view, sun, t_days, techniques, settings.sizes,
-                           settings, evaluation, shadows, step, ground=ground)
+                           settings, evaluation, shadows, step, ground=ground,
+                           camera_runs=camera_runs)
+        del camera_runs   # its frame's memory, before the next view
     for row in evaluation.rows:
         row["model"] = model
     if progress:

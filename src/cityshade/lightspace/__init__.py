@@ -17,7 +17,6 @@ days since 1970-01-01 UTC, a triangle present when ``begin <= t_days < end``, sh
 from __future__ import annotations
 
 import math
-import threading
 import time
 import weakref
 
@@ -26,6 +25,7 @@ import numpy as np
 
 from cityshade.accel.kdtree_layout import REC_ID, KdTree
 from cityshade.lightspace import kernels as K
+from cityshade.util import Scratch
 from cityshade.trace import (UNIT_LENGTH_TOL, TraceInputError, tree_of, shadow_offset_m,
                              shadow_rays_from_surface)
 
@@ -74,7 +74,9 @@ class Casters:
         self.records = np.ascontiguousarray(recs[np.sort(first)])
         self._axis = None
         self._sorted = None
-        self.scratch = _Scratch()
+        # Grow-only work arrays (~300 MB on the 1M-triangle map, faulted in anew every sun
+        # step of a batch without them).
+        self.scratch = Scratch()
 
     def sorted_for(self, kz: int, sgn: float):
         """(records, keys) sorted by depth key descending for shear axis ``kz`` and sign."""
@@ -86,35 +88,6 @@ class Casters:
                             np.ascontiguousarray(keys[order]))
             self._axis = (kz, sgn)
         return self._sorted
-
-
-class _Scratch:
-    """Grow-only work arrays of the engine, kept between calls on one tree: a batch calls it
-    per sun step with the same sizes, and fresh arrays (~300 MB on the 1M-triangle map) would
-    be page-faulted in anew every step (tens of ms of kernel time). One caller at a time holds
-    them (:meth:`take`); a concurrent call on the same tree gets fresh arrays."""
-
-    def __init__(self):
-        self._arrays: dict = {}
-        self._lock = threading.Lock()
-
-    def take(self):
-        """``self`` when free (release with :meth:`give_back`), else a fresh private one."""
-        return self if self._lock.acquire(blocking=False) else _Scratch()
-
-    def give_back(self):
-        if self._lock.locked():
-            self._lock.release()
-
-    def get(self, name: str, shape, dtype=np.float64) -> np.ndarray:
-        """An uninitialised C-contiguous array of ``shape`` (the first ``prod(shape)`` items of
-        a kept buffer that only grows)."""
-        shape = tuple(int(x) for x in (shape if isinstance(shape, tuple) else (shape,)))
-        size = math.prod(shape)
-        buf = self._arrays.get(name)
-        if buf is None or buf.dtype != np.dtype(dtype) or buf.size < size:
-            buf = self._arrays[name] = np.empty(max(size, 1), dtype)
-        return buf[:size].reshape(shape)
 
 
 _CASTERS: "weakref.WeakKeyDictionary[KdTree, Casters]" = weakref.WeakKeyDictionary()

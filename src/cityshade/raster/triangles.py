@@ -46,6 +46,7 @@ from numba import njit, prange
 from cityshade.accel.kdtree_layout import KdTree, KdViews, record_id
 from cityshade.errors import UsageError
 from cityshade.raster import culling as cull
+from cityshade.util import Scratch
 
 #: Tile side in pixels: 64² pixels × (4 + 4 + 8 bytes) = 64 KiB of G-buffer per tile fits the
 #: L2 cache, and 1080p gives 510 tiles, plenty to balance two cores (a 4096² depth map: 4096).
@@ -476,6 +477,10 @@ def kernel_tree(scene) -> KdViews:
                    _NO_RECORDS.view(np.float64), _NO_RECORDS.view(np.int32))
 
 
+#: The batch arrays of the passes (one pass at a time holds them; see :class:`Batcher`).
+_BATCH_SCRATCH = Scratch()
+
+
 class Batcher:
     """Set up, bin and rasterize batches of triangles into one target.
 
@@ -500,7 +505,6 @@ class Batcher:
         self.batches = 0
         self.drawn = 0
         self.tile_triangles = 0
-        self.scratch = None
 
     def draw(self, items: np.ndarray, from_records: bool) -> None:
         """Draw triangle ids, or kd-tree record indices when ``from_records``."""
@@ -508,19 +512,26 @@ class Batcher:
         if n == 0:
             return
         t0 = time.perf_counter()
-        if self.scratch is None or self.scratch[0].shape[0] < n:
-            # Kept for the later batches: fresh pages cost a fault each on first touch (about
-            # a third of the setup's time when every batch allocated its own).
-            self.scratch = (np.empty(n, np.int32), np.empty((n, EDGE_WORDS)),
-                            np.empty((n, self.words)), np.empty((n, 4), np.int32))
-        ids, coef, vals, bbox = (a[:n] for a in self.scratch)
-        setup_triangles(self.vertices, self.triangles, self.tree, from_records, items, self.view,
-                        self.depth_pass, ids, coef, vals, bbox)
-        t1 = time.perf_counter()
-        start, binned = bin_triangles(bbox, self.tile_px, self.tiles_x, self.tiles_y)
-        t2 = time.perf_counter()
-        self.raster(start, binned, ids, coef, vals, bbox)
-        t3 = time.perf_counter()
+        # The batch arrays are kept for the later batches and passes (util.Scratch): fresh
+        # pages cost a fault and a zeroing each on first touch (about a third of the setup's
+        # time when every batch allocated its own, and 100-200 ms of a 1M-triangle depth pass
+        # on a loaded machine, depending on what ran before, when every pass did).
+        ws = _BATCH_SCRATCH.take()
+        try:
+            kind = "depth" if self.depth_pass else "gbuffer"
+            ids = ws.get(f"{kind}.ids", n, np.int32)
+            coef = ws.get(f"{kind}.coef", (n, EDGE_WORDS))
+            vals = ws.get(f"{kind}.vals", (n, self.words))
+            bbox = ws.get(f"{kind}.bbox", (n, 4), np.int32)
+            setup_triangles(self.vertices, self.triangles, self.tree, from_records, items,
+                            self.view, self.depth_pass, ids, coef, vals, bbox)
+            t1 = time.perf_counter()
+            start, binned = bin_triangles(bbox, self.tile_px, self.tiles_x, self.tiles_y)
+            t2 = time.perf_counter()
+            self.raster(start, binned, ids, coef, vals, bbox)
+            t3 = time.perf_counter()
+        finally:
+            ws.give_back()
         self.timings["setup_s"] += t1 - t0
         self.timings["bin_s"] += t2 - t1
         self.timings["raster_s"] += t3 - t2

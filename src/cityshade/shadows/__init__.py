@@ -76,6 +76,18 @@ class ShadowContext:
     settings: ShadowSettings = field(default_factory=ShadowSettings)
     oriented_normal: np.ndarray | None = None
     measure: bool = False
+    #: The sun-dependent arrays below (``faces``, ``facing_points``, ``facing_normals``) kept
+    #: across the contexts of one camera pass and sun (:meth:`CameraPass.context`), so the
+    #: techniques of ``evaluate`` and their timed runs gather them once.
+    shared: dict | None = field(default=None, repr=False)
+
+    def _shared(self, name: str, make):
+        if self.shared is None:
+            return make()
+        value = self.shared.get(name)
+        if value is None:
+            value = self.shared[name] = make()
+        return value
 
     @functools.cached_property
     def normal(self) -> np.ndarray:
@@ -87,18 +99,20 @@ class ShadowContext:
     @functools.cached_property
     def faces(self) -> np.ndarray:
         """(H, W) bool: surface pixels facing the sun (the shared rule)."""
-        return facing_mask(self.normal, self.surfaces.valid, self.sun.direction)
+        return self._shared("faces", lambda: facing_mask(self.normal, self.surfaces.valid,
+                                                         self.sun.direction))
 
     @functools.cached_property
     def facing_points(self) -> np.ndarray:
         """(N, 3) float64 surface points of the :attr:`faces` pixels (row-major order),
         gathered once for the planner, the lookup and the rays."""
-        return gather_pixels(self.surfaces.position_m, self.faces)
+        return self._shared("facing_points",
+                            lambda: gather_pixels(self.surfaces.position_m, self.faces))
 
     @functools.cached_property
     def facing_normals(self) -> np.ndarray:
         """(N, 3) float64 oriented normals of the :attr:`faces` pixels."""
-        return gather_pixels(self.normal, self.faces)
+        return self._shared("facing_normals", lambda: gather_pixels(self.normal, self.faces))
 
     def receivers(self, pixels: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(points, oriented normals) of the pixels of mask ``pixels`` (the gathered facing

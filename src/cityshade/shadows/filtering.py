@@ -147,13 +147,14 @@ def separable_filter(image, weights) -> np.ndarray:
 
 # --- variance shadow maps ---------------------------------------------------------------------
 
-def vsm_moments(depth, metres_per_ndc: float, filter_weights=None) -> np.ndarray:
+def vsm_moments(depth, metres_per_ndc: float, filter_weights=None, work=None) -> np.ndarray:
     """(H, W, 2) float64 moments ``(E[d], E[d²])`` of the depth in metres, filtered.
 
     Depth is ``(z_ndc + 1) · metres_per_ndc``, i.e. metres from the near plane, so the moments
     stay small; texels without caster count as the far plane (z = 1). float64 because
     ``E[d²] - E[d]²`` cancels: in float32 a 1 km depth range would leave a variance noise of
-    0.1 m².
+    0.1 m². ``work`` (a :class:`cityshade.util.Scratch`) holds the result and its temporary
+    instead of fresh arrays (valid while the caller holds it).
     """
     z = np.asarray(depth)
     if z.ndim != 2:
@@ -166,11 +167,12 @@ def vsm_moments(depth, metres_per_ndc: float, filter_weights=None) -> np.ndarray
         wts = np.ones(1)        # a one-tap kernel leaves the moments unfiltered
     # The row pass reads the depth map itself (no (H, W, 2) moments image before filtering);
     # the arithmetic is separable_filter's on np.stack([d, d * d]), so the values are the same.
-    rows = np.empty(z.shape + (2,))
+    shape = z.shape + (2,)
+    rows = np.empty(shape) if work is None else work.get("vsm.rows", shape)
     _moment_rows(np.ascontiguousarray(z), float(metres_per_ndc), wts, rows)
     if wts.shape[0] == 1:
         return rows
-    out = np.empty_like(rows)
+    out = np.empty(shape) if work is None else work.get("vsm.moments", shape)
     _filter_axis(rows, wts, False, out)
     return out
 

@@ -28,7 +28,8 @@ from typing import Any
 
 import numpy as np
 
-from cityshade.shadows import MapUse, ShadowContext, ShadowResult, TechniqueDiagnostics
+from cityshade.shadows import (MapUse, ShadowContext, ShadowResult, TechniqueDiagnostics,
+                               gather_pixels)
 from cityshade.shadows.lookups import Lookup
 
 
@@ -137,8 +138,7 @@ class Warped:
 
         view = prepared.views[0]
         faces = ctx.faces
-        texel_m = sm.texel_footprint_m(view, np.asarray(ctx.surfaces.position_m[faces],
-                                                        np.float64), prepared.sun_direction)
+        texel_m = sm.texel_footprint_m(view, ctx.facing_points, prepared.sun_direction)
         alias = sm.aliasing_m(view, ctx.camera, ctx.surfaces, mask=faces)
         return {"texel_m": float(np.median(texel_m)),
                 "aliasing_m": {"max": alias["max"], "mean": alias["mean"]}}
@@ -230,7 +230,7 @@ class Cascaded:
         rendered = [e for e in per_cascade if "skipped" not in e]
         texel_all = []
         for entry, use in zip(rendered, prepared.maps):
-            points = np.asarray(ctx.surfaces.position_m[use.pixels], np.float64)
+            points = gather_pixels(ctx.surfaces.position_m, use.pixels)
             texel_k = sm.texel_footprint_m(use.depth_map.view, points, prepared.sun_direction)
             alias = sm.aliasing_m(use.depth_map.view, ctx.camera, ctx.surfaces, mask=use.pixels)
             entry.update({"texel_m": float(np.median(texel_k)),

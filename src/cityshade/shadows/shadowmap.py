@@ -43,6 +43,7 @@ from cityshade.errors import UsageError
 from cityshade.raster.depthpass import render_depth
 from cityshade.raster.triangles import TILE_PX
 from cityshade.shadows import ShadowContext
+from cityshade.util import Scratch
 
 #: Smallest extent (metres) of a fitted light view across or along the rays: a single visible
 #: point still gets a non-degenerate map.
@@ -466,9 +467,12 @@ def aliasing_m(view: LightView, camera, surfaces, mask=None) -> dict[str, float]
     dict
         ``max``, ``mean`` (over pixels with a finite m; 0 without any) and ``pixels``.
     """
+    from cityshade.shadows import gather_pixels
+
     valid = np.asarray(surfaces.valid, bool) if mask is None else np.asarray(mask, bool)
-    p, n = _points_normals(np.asarray(surfaces.position_m)[valid],
-                           np.asarray(surfaces.normal)[valid])
+    # The gather kernel: numpy's boolean gather of (H, W, 3) images is several times slower.
+    p, n = _points_normals(gather_pixels(surfaces.position_m, valid),
+                           gather_pixels(surfaces.normal, valid))
     if p.shape[0] == 0:
         return {"max": 0.0, "mean": 0.0, "pixels": 0}
     h, w = camera.shape
@@ -672,16 +676,18 @@ def _lookup_receivers(m, width, height, projective, points, normals, sun, consta
 
 
 def lookup_receivers(view: LightView, points_m, normals, sun_direction,
-                     settings: ShadowSettings, filter_radius_px: int = 0
+                     settings: ShadowSettings, filter_radius_px: int = 0, work=None
                      ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """(u_px, v_px, NDC depth) (N,) float64 of receivers offset by the bias and projected into
     the view, with the receiver-plane depth bias of projective views: what
     :func:`shadow_lookup` compares with the map. One kernel pass; :func:`offset_receivers`,
-    :func:`project` and :func:`receiver_plane_gradient` are its step-by-step twins."""
+    :func:`project` and :func:`receiver_plane_gradient` are its step-by-step twins. ``work``
+    (a :class:`cityshade.util.Scratch`) holds the outputs instead of fresh arrays."""
     p = np.ascontiguousarray(np.asarray(points_m, dtype=np.float64).reshape(-1, 3))
     n = np.ascontiguousarray(np.asarray(normals, dtype=np.float64).reshape(-1, 3))
     s = _unit_sun(sun_direction)
-    out = tuple(np.empty(p.shape[0]) for _ in range(3))
+    out = tuple(np.empty(p.shape[0]) if work is None else work.get(f"lookup.{k}", p.shape[0])
+                for k in "uvz")
     if p.shape[0]:
         bias = settings.bias
         _lookup_receivers(np.ascontiguousarray(view.clip_from_world.reshape(16)),
@@ -715,16 +721,29 @@ def shadow_lookup(depth_map: DepthMap, points_m, normals, sun_direction,
     # plane faces the light squarely (a flat roof under a high sun gets no slope bias): the
     # receiver plane's depth change over the texels the filter reads is subtracted
     # (receiver-plane depth bias, Isidoro 2006).
-    u, v, z = lookup_receivers(view, points_m, normals, sun_direction, settings, radius)
-    if mode == "vsm":
-        vsm = settings.vsm
-        weights = (flt.gaussian_weights(vsm.blur_px / 2.0, vsm.blur_px)
-                   if vsm.filter == "gaussian" else flt.box_weights(vsm.blur_px))
-        scale = metres_per_ndc(view)
-        moments = flt.vsm_moments(depth_map.depth, scale, weights)
-        return flt.vsm_lookup(moments, u, v, (z + 1.0) * scale, vsm.min_variance_m2,
-                              vsm.bleed_reduction)
-    return flt.pcf_lookup(depth_map.depth, u, v, z, 2 * radius + 1)
+    # The temporaries (receivers, VSM moments) live in kept arrays: fresh ones of a 2049² map
+    # view were faulted in anew every frame (kernel page zeroing: half a second and more per
+    # frame on a loaded machine, depending on what ran before).
+    work = _LOOKUP_SCRATCH.take()
+    try:
+        u, v, z = lookup_receivers(view, points_m, normals, sun_direction, settings, radius,
+                                   work)
+        if mode == "vsm":
+            vsm = settings.vsm
+            weights = (flt.gaussian_weights(vsm.blur_px / 2.0, vsm.blur_px)
+                       if vsm.filter == "gaussian" else flt.box_weights(vsm.blur_px))
+            scale = metres_per_ndc(view)
+            moments = flt.vsm_moments(depth_map.depth, scale, weights, work)
+            np.add(z, 1.0, out=z)
+            np.multiply(z, scale, out=z)
+            return flt.vsm_lookup(moments, u, v, z, vsm.min_variance_m2, vsm.bleed_reduction)
+        return flt.pcf_lookup(depth_map.depth, u, v, z, 2 * radius + 1)
+    finally:
+        work.give_back()
+
+
+#: The lookups' kept temporaries (:func:`shadow_lookup`).
+_LOOKUP_SCRATCH = Scratch()
 
 
 def map_diagnostics(views, ctx: ShadowContext, points_m, normals, faces) -> dict[str, Any]:
