@@ -750,3 +750,14 @@ def reference_thin_caster_map(scene, view, t_days, thin_texels=2.0):
         if len(ranked) > 1:
             out[2][row, col], out[3][row, col] = ranked[1][1], ranked[1][0]
     return out
+
+
+def reference_accumulate(sums, slots, weights_h, lit):
+    """A tiled run's sums after one sun position, numpy's way: for each row with a weight,
+    ``sums[row, slots] += weight · lit`` (the fancy-indexed add that
+    :func:`cityshade.tiles.add_lit` does in one pass)."""
+    sums = np.array(sums, dtype=np.float64)
+    lit64 = np.asarray(lit).astype(np.float64)
+    for row in np.flatnonzero(np.asarray(weights_h) > 0.0):
+        sums[row, slots] += weights_h[row] * lit64
+    return sums
