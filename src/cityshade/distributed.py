@@ -150,6 +150,7 @@ class DaskExecutor:
         self._starting: threading.Thread | None = None
         self._start_error: BaseException | None = None
         self._scene = None
+        self._closing = False
         self.ready = threading.Event()
 
     def connect(self) -> None:
@@ -173,6 +174,8 @@ class DaskExecutor:
         def up():
             try:
                 self.connect()
+                if self._closing:  # the driver ran every task: no worker needs warming
+                    return
                 self.client.run(_warm_worker, self.scene_path, self.scene_sha,
                                 None if direction is None else [float(v) for v in direction],
                                 float(t_days), engine)
@@ -199,9 +202,11 @@ class DaskExecutor:
         self.connect()
 
     def close(self) -> None:
+        self._closing = True
         if self._starting is not None:
             self._starting.join()
             self._starting = None
+        self._closing = False
         self._start_error = None
         client, cluster, self.client, self.cluster = self.client, self.cluster, None, None
         if client is not None:
