@@ -14,14 +14,16 @@ checked byte for byte):
 * ``plain-1t`` / ``plain-2t``: the untiled run without Dask, Numba on 1 / 2 threads;
 * ``tiled-1t``: ``--tile-px`` without Dask, 1 thread (the same tasks, run in order here);
 * ``local:1`` / ``local:2``: ``--scheduler local:N`` with ``--tile-px``, N worker processes of
-  one Numba thread each (worker start-up included, as a user pays it).
+  one Numba thread each (worker start-up included, as a user pays it; the driver runs the
+  first tasks itself while the cluster starts, and the count is printed).
 
 Reported: wall seconds of each (median), Dask's overhead (local:1 against tiled-1t and
 against plain-1t; goal ≤ 5 %), the scaling from one to two workers (goal ≥ 1.8×), the
 driver's serial share (adding the results: ``accumulate_s``), and the projected wall time of
 a whole year at 10-minute steps at 1 m on 1, 10 and 100 such machines from the measured
-per-worker cost (pixel·steps per second of one worker) and the driver's serial cost per
-pixel·step (which bounds the speed-up of many machines, Amdahl's law).
+per-worker cost (pixel·steps per second of one process running the tasks: the tiled run
+without Dask) and the driver's serial cost per pixel·step (which bounds the speed-up of many
+machines, Amdahl's law).
 
 Usage: python benchmarks/scale_batch.py [--scene FILE] [--pixel-size 2] [--tile-px 512]
        [--repeat 1] [--runs plain-1t,plain-2t,tiled-1t,local:1,local:2] [--json out.json]
@@ -136,10 +138,13 @@ def main(argv=None) -> dict:
                 r = _one(name, scene, scene_path, cam, steps, args.tile_px,
                          Path(tmp) / f"{name.replace(':', '_')}_{k}")
                 results[name].append(r)
+                on_driver = (r["tiles"] or {}).get("tasks_on_driver")
                 print(f"  {name:<9} {r['wall_s']:8.2f} s  cpu {r['cpu_s']:8.2f} s (workers "
                       f"{r['workers_cpu_s']:7.2f} s)  shadow {r['timings_s']['shadow_s']:7.2f}"
-                      f" s  accumulate {r['timings_s'].get('accumulate_s', 0.0):6.2f} s",
-                      flush=True)
+                      f" s  accumulate {r['timings_s'].get('accumulate_s', 0.0):6.2f} s"
+                      + ("" if on_driver is None else
+                         f"  tasks run by the driver while the cluster started {on_driver} of "
+                         f"{r['tiles']['tasks']}"), flush=True)
     digests = {r["digest"] for rs in results.values() for r in rs}
     med = {n: statistics.median(r["wall_s"] for r in rs) for n, rs in results.items()}
     med_cpu = {n: statistics.median(r["cpu_s"] for r in rs) for n, rs in results.items()}
@@ -171,7 +176,10 @@ def main(argv=None) -> dict:
     year_units = sum(1 for s in suns if s.above_horizon)
     px_1m = any_run["pixels"] * args.pixel_size ** 2
     year_px_steps = px_1m * year_units
-    base = "local:1" if "local:1" in results else runs[0]
+    # One worker's rate: the tiled run without Dask is the same tasks in one process (a
+    # ``local:N`` run also has the first tasks run by the driver while its cluster starts).
+    base = "tiled-1t" if "tiled-1t" in results else ("local:1" if "local:1" in results
+                                                     else runs[0])
     worker = statistics.median(r["timings_s"]["shadow_s"] - r["timings_s"].get(
         "accumulate_s", 0.0) for r in results[base])
     per_worker = px_steps / max(worker, 1e-9)  # pixel·steps/s of one worker process

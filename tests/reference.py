@@ -800,3 +800,16 @@ def reference_albedo(scene, surfaces, prim_id=None, settings=None):
                             lod[rows, cols])
     albedo[rows, cols] = rgba[:, :3] + (1.0 - rgba[:, 3:4]) * albedo[rows, cols]
     return albedo
+
+
+# --- tiles: the driver's sums ---------------------------------------------------------------
+
+def reference_accumulate(sums, slots, weights_h, lit):
+    """A tiled run's sums after one sun position, numpy's way: for each row with a weight,
+    ``sums[row, slots] += weight · lit`` (the fancy-indexed add that
+    :func:`cityshade.tiles.add_lit` does in one pass)."""
+    sums = np.array(sums, dtype=np.float64)
+    lit64 = np.asarray(lit).astype(np.float64)
+    for row in np.flatnonzero(np.asarray(weights_h) > 0.0):
+        sums[row, slots] += weights_h[row] * lit64
+    return sums

@@ -103,6 +103,27 @@ def test_plan_tiles_splits_receivers_into_disjoint_squares():
         plan_tiles(valid, pts, nrm, None, None, tile_px=0, sample_tile_m=1.0)
 
 
+def test_accumulate_equals_numpy_fancy_add_bit_for_bit():
+    from reference import reference_accumulate
+
+    from cityshade.tiles import accumulate
+
+    rng = np.random.default_rng(11)
+    sums = rng.random((3, 500)) * 40.0
+    slots = rng.permutation(500)[:321]
+    # Weights of odd sizes (a short last step, sums of steps), one row without weight.
+    weights = np.array([0.1666666666666667, 0.0, 0.07500000000000001])
+    before = sums.copy()
+    expected = sums.copy()
+    for _ in range(4):
+        lit = rng.random(321) < 0.5
+        expected = reference_accumulate(expected, slots, weights, lit)
+        accumulate(sums, slots, weights, lit)
+    assert sums.tobytes() == expected.tobytes()
+    changed = (sums != before).any(axis=1)
+    assert changed.tolist() == [True, False, True]  # the row without weight stays as it was
+
+
 @pytest.mark.parametrize("technique", ["izb", "raytrace"])
 def test_tiled_run_equals_untiled_bit_for_bit(files, tmp_path, technique):
     boxes, _ = files
@@ -300,7 +321,8 @@ def _logged_executor(sample, log_holder):
                 self.cluster.scheduler.add_plugin(log, name=TaskLog.name)
                 log_holder.append(log)
 
-    return Logged("local:2", sample, sha, threads_per_worker=1)
+    # Every task on the cluster (the driver runs none while it starts): the logs count them all.
+    return Logged("local:2", sample, sha, threads_per_worker=1, driver_tasks=False)
 
 
 def _scheduler_call(executor, fn):
@@ -333,8 +355,14 @@ def test_local_cluster_survives_a_killed_worker(files, sample_plain, tmp_path, m
             return
         client = executor.client
         seen["threads"] = set(client.run(lambda: os.environ.get("NUMBA_NUM_THREADS")).values())
-        # Kill the worker holding the most finished results the driver has not taken yet.
+        # Kill the worker holding the most finished results the driver has not taken yet,
+        # once the scheduler has heard that the driver let go of the taken ones (the client
+        # tells it in the background).
         taken = tuple(executor.fetched)
+        deadline = time.monotonic() + 20
+        while time.monotonic() < deadline and _scheduler_call(executor, lambda s: any(
+                str(k).startswith(taken) for k in s.tasks)):
+            time.sleep(0.05)
         held = _scheduler_call(executor, lambda s: {
             a: sorted(str(ts.key) for ts in ws.has_what) for a, ws in s.workers.items()})
         held = {a: [k for k in ks if not k.startswith(taken)] for a, ks in held.items()}
@@ -407,3 +435,49 @@ def test_stopped_distributed_run_resumes_to_the_plain_result(files, sample_plain
     assert plain.result.hours.tobytes() == resumed.result.hours.tobytes()
     assert plain.result.sample_hours.tobytes() == resumed.result.sample_hours.tobytes()
     _same_stretches(plain, resumed)
+
+
+def test_driver_runs_tasks_while_the_cluster_starts(files, sample_plain, tmp_path):
+    """A LocalCluster that takes a while to come up: the driver runs the first tasks itself
+    meanwhile, the cluster the rest; the numbers are the plain run's, bit for bit, and every
+    task is run and counted once."""
+    pytest.importorskip("dask.distributed")
+    import threading
+
+    from cityshade.distributed import DaskExecutor
+    from cityshade.scenefile import load_scene
+
+    _, sample = files
+    steps = _steps(every_s=5400)
+    sha = (load_scene(sample).header or {}).get("source", {}).get("sha256", "")
+    go = threading.Event()
+    logs: list[TaskLog] = []
+
+    class Slow(DaskExecutor):
+        def connect(self):
+            fresh = self.client is None
+            go.wait(60)  # the cluster starts once the driver has added 3 tasks
+            super().connect()
+            if fresh:
+                logs.append(TaskLog())
+                self.cluster.scheduler.add_plugin(logs[-1], name=TaskLog.name)
+
+    executor = Slow("local:1", sample, sha, threads_per_worker=1)
+    progress = []
+
+    def hook(done, total, unit):
+        progress.append((done, total))
+        if done == 3:
+            go.set()
+            executor.ready.wait(60)  # and then hands the rest over
+
+    dask = _run(sample, tmp_path / "dask", steps=steps, tile_px=24, scheduler=executor,
+                on_step=hook)
+    total = dask.result.diagnostics["tiles"]["tasks"]
+    assert dask.result.diagnostics["tiles"]["tasks_on_driver"] == 3
+    assert len(logs[0].arrived) == total - 3 and set(logs[0].arrived.values()) == {1}
+    assert progress == [(k, total) for k in range(1, total + 1)]
+    assert sample_plain.result.hours.tobytes() == dask.result.hours.tobytes()
+    assert sample_plain.result.sample_hours.tobytes() == dask.result.sample_hours.tobytes()
+    _same_stretches(sample_plain, dask)
+    assert dask.manifest["status"] == "finished" and dask.manifest["tasks_done"] == total

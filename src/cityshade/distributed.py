@@ -16,7 +16,10 @@ and a run stopped part-way resumes from its saved state with only the missing ta
 """
 from __future__ import annotations
 
+import contextlib
 import os
+import threading
+import time
 from pathlib import Path
 from typing import Any, Callable, Sequence
 
@@ -29,6 +32,10 @@ __all__ = ["run_tiled", "DaskExecutor", "parse_scheduler", "write_tiled_extras"]
 
 #: Environment of a local worker process (replaces Dask's ``pre-spawn-environ``).
 WORKER_ENVIRON = {"OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1"}
+
+
+#: Seconds between two writes of the manifest's progress in a tiled run.
+MANIFEST_EVERY_S = 1.0
 
 
 class DistributedError(CityshadeError):
@@ -91,6 +98,25 @@ def _worker_task(scene_path: str, scene_sha: str, receivers_path: str, lo: int, 
     return task_lit(scene, data, lo, hi, directions, t_days, engine)
 
 
+def _warm_worker(scene_path: str, scene_sha: str, direction, t_days: float,
+                 engine: str) -> None:
+    """Run on every worker as it joins (:meth:`DaskExecutor.start`): import the engine, map
+    the scene, load the Numba kernels and sort the casters for the first sun, so that the
+    first task costs what the others do (a cold worker: about 2 s of CPU)."""
+    from cityshade.scenefile import load_scene
+    from cityshade.tiles import task_lit
+
+    scene = _opened(scene_path, lambda p: load_scene(p, verify=False))
+    if (scene.header or {}).get("source", {}).get("sha256", "") != scene_sha:
+        return  # the first task says so in its own words
+    kd = scene.kdtree
+    if direction is None or kd is None:
+        return
+    lo, hi = kd.box_scale_m()[:2]
+    top = [(lo[0] + hi[0]) / 2.0, (lo[1] + hi[1]) / 2.0, hi[2], 0.0, 0.0, 1.0]
+    task_lit(scene, np.array([top]), 0, 1, np.array([direction], np.float64), t_days, engine)
+
+
 # --- driver side ------------------------------------------------------------------------------
 
 class DaskExecutor:
@@ -109,15 +135,23 @@ class DaskExecutor:
     """
 
     def __init__(self, scheduler: str, scene_path, scene_sha: str,
-                 threads_per_worker: int | None = None):
+                 threads_per_worker: int | None = None, driver_tasks: bool = True):
         self.spec = str(scheduler)
         self.kind, self.target = parse_scheduler(scheduler)
         self.scene_path = str(Path(scene_path).resolve())
         self.scene_sha = scene_sha
         self.threads = threads_per_worker
+        #: While a local cluster starts, the driver runs the first tasks itself.
+        self.driver_tasks = bool(driver_tasks)
+        self.tasks_on_driver = 0
         self.workers = 0
         self.client = self.cluster = None
         self._environ: dict[str, str] = {}
+        self._starting: threading.Thread | None = None
+        self._start_error: BaseException | None = None
+        self._scene = None
+        self._closing = False
+        self.ready = threading.Event()
 
     def connect(self) -> None:
         """Start the LocalCluster or reach the scheduler (before any work, so that an
@@ -126,7 +160,54 @@ class DaskExecutor:
             self.client, self.cluster = self._client()
             self.workers = len(self.client.scheduler_info().get("workers", {}))
 
+    def start(self, scene=None, direction=None, t_days: float = 0.0,
+              engine: str = "izb") -> None:
+        """Connect, and warm every worker up for ``direction`` (:func:`_warm_worker`). A local
+        cluster starts in the background: its worker processes take seconds to import and
+        load, which the driver spends on its own work and, with ``scene``, on the first tasks
+        (:meth:`run`). An address is reached at once, so that a wrong one fails at once."""
+        if self.client is not None or self._starting is not None:
+            return
+        self._scene = scene
+        self.ready.clear()
+
+        def up():
+            try:
+                self.connect()
+                if self._closing:  # the driver ran every task: no worker needs warming
+                    return
+                self.client.run(_warm_worker, self.scene_path, self.scene_sha,
+                                None if direction is None else [float(v) for v in direction],
+                                float(t_days), engine)
+            except BaseException as exc:  # raised in the driver's thread by _started()
+                self._start_error = exc
+            finally:
+                self.ready.set()
+
+        if self.kind != "local":
+            up()
+            self._started()
+            return
+        self._starting = threading.Thread(target=up, name="cityshade-dask-start", daemon=True)
+        self._starting.start()
+
+    def _started(self) -> None:
+        """Wait for :meth:`start` and raise what it met."""
+        if self._starting is not None:
+            self._starting.join()
+            self._starting = None
+        error, self._start_error = self._start_error, None
+        if error is not None:
+            raise error
+        self.connect()
+
     def close(self) -> None:
+        self._closing = True
+        if self._starting is not None:
+            self._starting.join()
+            self._starting = None
+        self._closing = False
+        self._start_error = None
         client, cluster, self.client, self.cluster = self.client, self.cluster, None, None
         if client is not None:
             client.close()
@@ -182,13 +263,27 @@ class DaskExecutor:
         with atomic_path(recv, keep_suffix=True, what="the receivers") as tmp:
             np.save(tmp, plan.data)
         try:
-            self.connect()
+            first = 0
+            if self.driver_tasks and self._scene is not None and self._starting is not None:
+                from cityshade.tiles import task_lit
+
+                # The cluster is still starting: run tasks here, in order, meanwhile.
+                while first < len(tasks) and not self.ready.is_set():
+                    t, lo, hi = tasks[first]
+                    a, b = int(plan.start[t]), int(plan.start[t + 1])
+                    finished(t, lo, task_lit(self._scene, plan.data, a, b, directions[lo:hi],
+                                             t_days, engine))
+                    first += 1
+                self.tasks_on_driver = first
+                if first == len(tasks):
+                    return
+            self._started()
             client = self.client
             from dask.distributed import as_completed
             from distributed.scheduler import KilledWorker
 
             futures = {}
-            for t, lo, hi in tasks:
+            for t, lo, hi in tasks[first:]:
                 a, b = int(plan.start[t]), int(plan.start[t + 1])
                 fut = client.submit(_worker_task, self.scene_path, self.scene_sha,
                                     str(recv.resolve()), a, b,
@@ -199,7 +294,11 @@ class DaskExecutor:
             try:
                 for fut in as_completed(futures):
                     t, lo = futures.pop(fut)
-                    finished(t, lo, fut.result())
+                    bits = fut.result()
+                    # Let go of the result before adding it: a worker lost from here on does
+                    # not make Dask compute it again.
+                    fut.release()
+                    finished(t, lo, bits)
             except KilledWorker as exc:
                 raise DistributedError(f"Dask workers died while running a task ({exc}); "
                                        f"the finished tasks are saved, run the command "
@@ -231,6 +330,8 @@ def run_tiled(scene, camera, instants, t_days: float, *, weights_h, suns, units,
         sha = (scene.header or {}).get("source", {}).get("sha256", "")
         executor = DaskExecutor(scheduler, scene_path, sha)
 
+    last_write = [time.perf_counter()]
+
     def on_task(done, total, newly):
         for u in newly:
             finished.extend(units[u].steps)
@@ -241,11 +342,19 @@ def run_tiled(scene, camera, instants, t_days: float, *, weights_h, suns, units,
         manifest["tasks_total"] = total
         if checkpoint is not None and checkpoint.sha256 is not None:
             manifest["state_sha256"] = [checkpoint.sha256]
-        write_manifest()
+        # Written every MANIFEST_EVERY_S, at the end and when the run stops (below): the
+        # driver adds every task's result, and the indented JSON of a day's steps costs
+        # 25-30 ms, a year's far more; resuming reads the state, not this progress.
+        if done == total or time.perf_counter() - last_write[0] >= MANIFEST_EVERY_S:
+            write_manifest()
+            last_write[0] = time.perf_counter()
         if on_step is not None:
             on_step(done, total, None)
 
-    if hasattr(executor, "connect"):
+    if hasattr(executor, "start"):
+        first = units[0].sun.direction if units else None
+        executor.start(scene, first, float(t_days), technique)
+    elif hasattr(executor, "connect"):
         executor.connect()
     try:
         result, run = tiled_sun_hours(scene, camera, instants, t_days, weights_h=weights_h,
@@ -254,12 +363,17 @@ def run_tiled(scene, camera, instants, t_days: float, *, weights_h, suns, units,
                                       tile_px=tile_px, step_month=step_month,
                                       workdir=workdir, executor=executor, on_task=on_task,
                                       stretches=stretches)
+    except BaseException:
+        with contextlib.suppress(OSError, CityshadeError):  # the first error is the one told
+            write_manifest()  # the progress of a stopped run, as far as it got
+        raise
     finally:
         if hasattr(executor, "close"):
             executor.close()
     if executor is not None:
         result.diagnostics["tiles"]["scheduler"] = scheduler
         result.diagnostics["tiles"]["workers"] = getattr(executor, "workers", 0)
+        result.diagnostics["tiles"]["tasks_on_driver"] = getattr(executor, "tasks_on_driver", 0)
     return result, run
 
 

@@ -30,10 +30,11 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, Sequence
 
 import numpy as np
+from numba import njit
 
 from cityshade.errors import UsageError
 
-__all__ = ["TilePlan", "plan_tiles", "receiver_lit", "task_lit", "accumulate", "halo_m",
+__all__ = ["TilePlan", "plan_tiles", "receiver_lit", "task_lit", "accumulate", "add_lit", "halo_m",
            "tiled_sun_hours", "RECEIVERS_NAME", "EXACT_ENGINES"]
 
 RECEIVERS_NAME = "receivers.npy"
@@ -153,16 +154,21 @@ def plan_tiles(valid: np.ndarray | None, points_px: np.ndarray | None,
 
 
 def receiver_lit(scene, points: np.ndarray, normals: np.ndarray, direction: np.ndarray,
-                 t_days: float, engine: str) -> np.ndarray:
+                 t_days: float, engine: str, receivers=None) -> np.ndarray:
     """(N,) bool: the receiver faces the sun (N·L > 0, the shared rule) and its shadow ray
-    (:func:`cityshade.trace.shadow_rays_from_surface`) is free; the untiled batch's rule."""
+    (:func:`cityshade.trace.shadow_rays_from_surface`) is free; the untiled batch's rule.
+    ``receivers``: the same points as a :class:`cityshade.lightspace.SurfaceReceivers`, whose
+    one pass gives the same origins bit for bit (as the untiled run makes them)."""
     from cityshade.shadows import facing_mask
     from cityshade.trace import shadow_rays_from_surface
 
     faces = facing_mask(normals, True, direction)
     lit = np.zeros(points.shape[0], bool)
     if faces.any():
-        origins = shadow_rays_from_surface(points[faces], normals[faces], direction)
+        if receivers is not None:
+            origins = receivers.origins(direction, faces)
+        else:
+            origins = shadow_rays_from_surface(points[faces], normals[faces], direction)
         if engine == "izb":
             from cityshade import lightspace
 
@@ -181,14 +187,31 @@ def task_lit(scene, data: np.ndarray, lo: int, hi: int, directions: np.ndarray,
              t_days: float, engine: str) -> np.ndarray:
     """One task: (K, ceil((hi − lo) / 8)) uint8, the packed lit bits of receivers ``lo:hi`` of
     ``data`` for each of the K sun directions."""
+    from cityshade.lightspace import SurfaceReceivers
+
     block = np.asarray(data[lo:hi], dtype=np.float64)
     points = np.ascontiguousarray(block[:, :3])
     normals = np.ascontiguousarray(block[:, 3:])
+    # Checked and offset once per task; per sun one pass makes the facing receivers' origins.
+    receivers = SurfaceReceivers(points, normals) if hi > lo else None
     out = np.zeros((directions.shape[0], (hi - lo + 7) // 8), np.uint8)
     for k in range(directions.shape[0]):
         direction = np.ascontiguousarray(directions[k], dtype=np.float64)
-        out[k] = np.packbits(receiver_lit(scene, points, normals, direction, t_days, engine))
+        out[k] = np.packbits(receiver_lit(scene, points, normals, direction, t_days, engine,
+                                          receivers))
     return out
+
+
+@njit(cache=True)
+def add_lit(sums, slots, weights_h, lit):
+    """``sums[row, slots[i]] += weights_h[row] * (1.0 if lit[i] else 0.0)`` for each row with a
+    weight: numpy's fancy-indexed ``+=`` of :func:`accumulate` as one pass (the same float64
+    product and sum per element, so bit for bit the same)."""
+    for row in range(weights_h.shape[0]):
+        w = weights_h[row]
+        if w > 0.0:
+            for i in range(slots.shape[0]):
+                sums[row, slots[i]] += w * (1.0 if lit[i] else 0.0)
 
 
 def accumulate(sums: np.ndarray, slots: np.ndarray, weights_h: np.ndarray,
@@ -197,10 +220,9 @@ def accumulate(sums: np.ndarray, slots: np.ndarray, weights_h: np.ndarray,
     row (the total and, with ``--monthly``, the month) with a weight.
 
     The same float64 products as the untiled run (weight · 1.0 or weight · 0.0), added in the
-    order of the sun positions."""
-    lit64 = lit.astype(np.float64)
-    for row in np.flatnonzero(weights_h > 0.0):
-        sums[row, slots] += weights_h[row] * lit64
+    order of the sun positions (:func:`add_lit`; its numpy twin is in ``tests/reference.py``)."""
+    add_lit(sums, np.ascontiguousarray(slots, np.int64),
+            np.ascontiguousarray(weights_h, np.float64), np.ascontiguousarray(lit, np.bool_))
 
 
 def halo_m(scene, lowest_receiver_z_m: float, elevations_deg: Sequence[float]) -> float:
@@ -387,9 +409,12 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
             if state.tile_done[t]:
                 part.restore(state.stretches.get(t, {}))
     blocks = [(b, min(b + block, n_units)) for b in range(0, n_units, block)]
-    # Tasks of a tile whose first sun positions are saved resume at the saved count.
-    tasks = [(t, max(lo, int(state.tile_done[t])), hi) for t in range(n_tiles)
-             for lo, hi in blocks if hi > state.tile_done[t]]
+    # Tasks of a tile whose first sun positions are saved resume at the saved count. Block by
+    # block over the tiles: the light-space engine re-sorts its casters when the sun's dominant
+    # axis changes, i.e. a few times a day in sun order, but that many times per tile if each
+    # tile ran through the day alone (12 sorts instead of 3 for 4 tiles of the 1M city).
+    tasks = [(t, max(lo, int(state.tile_done[t])), hi) for lo, hi in blocks
+             for t in range(n_tiles) if hi > state.tile_done[t]]
     total = sum(1 for t in range(n_tiles) for lo, hi in blocks)
     resumed_tasks = total - len(tasks)
     if on_plan is not None:
@@ -410,7 +435,7 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
         a, b = int(plan.start[t]), int(plan.start[t + 1])
         slots = plan.slot[a:b]
         for k in range(bits.shape[0]):
-            lit = np.unpackbits(bits[k], count=b - a).astype(bool)
+            lit = np.unpackbits(bits[k], count=b - a).view(np.bool_)
             consistent = False
             accumulate(state.sums, slots, unit_w[lo + k], lit)
             if parts is not None:

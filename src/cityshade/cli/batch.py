@@ -165,7 +165,8 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
                        f"{tiles['tasks']} tasks of {tiles['sun_positions_per_task']} sun "
                        f"positions, {tiles['receivers']:,} receivers, shadow reach "
                        f"{tiles['halo_m']:.0f} m"
-                       + (f", {tiles['workers']} Dask workers ({tiles['scheduler']})"
+                       + (f", {tiles['workers']} Dask workers ({tiles['scheduler']}), "
+                          f"{tiles.get('tasks_on_driver', 0)} tasks run here while they started"
                           if tiles.get("scheduler") else ""), err=True)
         up = [s for s in run.suns if s.above_horizon] or run.suns
         for label, s in (("first", up[0]), ("last", up[-1])):
