@@ -34,7 +34,7 @@ __all__ = ["run_tiled", "DaskExecutor", "parse_scheduler", "write_tiled_extras"]
 WORKER_ENVIRON = {"OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1"}
 
 
-#: Seconds between two writes of the manifest's progress in a tiled run.
+#: Seconds between two writes of the manifest's progress in a batch (plain or tiled).
 MANIFEST_EVERY_S = 1.0
 
 
