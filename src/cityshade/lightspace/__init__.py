@@ -25,6 +25,7 @@ import numba
 import numpy as np
 
 from cityshade.accel.kdtree_layout import REC_ID, KdTree
+from cityshade.trace.bricks import one_thread_when_small
 from cityshade.lightspace import kernels as K
 from cityshade.trace import (UNIT_LENGTH_TOL, TraceInputError, tree_of, shadow_offset_m,
                              shadow_rays_from_surface)
@@ -167,21 +168,18 @@ def _choose_cell_m(boxes, xs, ys, box, ext_x, ext_y, n_max_cells):
     r_c = r_c[keep]
     m_frac = m_c[keep] / max(boxes.shape[0], 1)
     area_c = 1.0 / (inv_c * inv_c)
-    best = None
-    for size, r in zip(sizes, refs):
-        cells = math.ceil(ext_x / size) * math.ceil(ext_y / size)
-        if cells > n_max_cells:
-            continue
-        per_cell = r * m_frac * (size * size / area_c)        # list length per coarse cell
-        occupied = -np.expm1(-r_c * (size * size / area_c))   # fraction of its cells in use
-        refs_used = float((per_cell * occupied).sum() * area_c / (size * size))
-        scans = float((r_c * per_cell).sum())
-        cost = COST_REF_NS * refs_used + COST_SCAN_NS * scans + COST_CELL_NS * cells
-        if best is None or cost < best[0]:
-            best = (cost, float(size))
-    if best is None:
+    cells = np.ceil(ext_x / sizes) * np.ceil(ext_y / sizes)
+    fits = cells <= n_max_cells
+    if not fits.any():
         return float(max(ext_x, ext_y) / math.sqrt(n_max_cells)) * 1.01
-    return best[1]
+    sizes, refs, cells = sizes[fits], refs[fits], cells[fits]
+    share = (sizes * sizes / area_c)[:, None]                  # (K, 1): cell area / coarse area
+    per_cell = refs[:, None] * m_frac[None, :] * share          # list length per coarse cell
+    occupied = -np.expm1(-r_c[None, :] * share)                 # fraction of its cells in use
+    refs_used = (per_cell * occupied).sum(axis=1) / share[:, 0]
+    scans = (per_cell * r_c[None, :]).sum(axis=1)
+    cost = COST_REF_NS * refs_used + COST_SCAN_NS * scans + COST_CELL_NS * cells
+    return float(sizes[int(np.argmin(cost))])
 
 
 def _unit_sun(sun_direction) -> np.ndarray:
@@ -245,13 +243,10 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
         return out
     casters = casters_of(kd)
     ws = casters.scratch.take()
-    threads = numba.get_num_threads()
     try:
-        if threads > 1 and n + kd.tri_records.shape[0] < SINGLE_THREAD_WORK:
-            numba.set_num_threads(1)
-        return _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m)
+        with one_thread_when_small(n + kd.tri_records.shape[0], SINGLE_THREAD_WORK):
+            return _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m)
     finally:
-        numba.set_num_threads(threads)
         ws.give_back()
 
 
