@@ -24,6 +24,7 @@ import numba
 import numpy as np
 
 from cityshade.accel.kdtree_layout import REC_ID, KdTree
+from cityshade.trace.bricks import one_thread_when_small
 from cityshade.lightspace import kernels as K
 from cityshade.util import Scratch
 from cityshade.trace import (UNIT_LENGTH_TOL, TraceInputError, tree_of, shadow_offset_m,
@@ -45,14 +46,21 @@ DEPTH_MARGIN_M = 2.0 ** -16
 DEPTH_MARGIN_REL = 2.0 ** -22
 #: Candidate cell sizes, as multiples of the size that holds one receiver per cell on average;
 #: the one with the lowest estimated cost is used (:func:`_choose_cell_m`).
-CELL_FACTORS = (0.35, 0.5, 0.7, 1.0, 1.4, 2.0, 2.8, 4.0, 5.6, 8.0, 11.0, 16.0)
-#: Cost model of one sun, nanoseconds per unit, fitted to CPU times of the 1M-triangle city on
-#: one thread (map 2048² at sun 30° and 3°, cells 1.4-12 m): a cell reference costs ~10 ns to
-#: count and fill; a receiver scans its cell's list at ~0.5 ns per entry (the depth order stops
-#: most scans early, the box check rejects most entries); a cell ~1.5 ns to clear and sum.
-COST_REF_NS = 10.0
-COST_SCAN_NS = 0.5
+CELL_FACTORS = (0.35, 0.5, 0.7, 1.0, 1.4, 2.0, 2.8, 4.0, 5.6, 8.0, 11.0, 16.0, 22.0, 32.0, 45.0,
+                64.0)
+#: Cost model of one sun, nanoseconds per unit, fitted to CPU times on one thread (the 1M
+#: city's camera and map workloads of benchmarks/raytrace.py, cells 2-13 m): a reference of a
+#: caster in an occupied cell costs ~40 ns (count, fill, and the query's per-caster setup of a
+#: cell's receivers, mostly a cache miss on the caster); a receiver tests each entry of its
+#: cell's list at ~1.5 ns (one lane of the caster-major mask); a cell ~1.5 ns to clear and sum.
+#: Receivers are not spread evenly (a perspective camera crowds them near the eye), so the
+#: list lengths and the occupied cells come from a coarse grid of receiver and caster counts.
+COST_REF_NS = 40.0
+COST_SCAN_NS = 1.5
 COST_CELL_NS = 1.5
+#: Cells of the coarse density grid of the model, and receivers sampled for it.
+DENSITY_CELLS = 4096
+DENSITY_SAMPLE = 1 << 18
 #: Receivers + casters below which a call runs on one thread: a call is a dozen short parallel
 #: passes, and each waits for every worker thread; on a busy machine a descheduled worker costs
 #: a scheduler time slice (milliseconds) per pass, more than the whole small call. The answer
@@ -102,24 +110,49 @@ def casters_of(tree) -> Casters:
     return c
 
 
-def _choose_cell_m(boxes, n_receivers, ext_x, ext_y, n_max_cells):
-    """Cell size (light-plane metres) of lowest estimated cost among :data:`CELL_FACTORS`."""
-    base = math.sqrt(ext_x * ext_y / max(n_receivers, 1))
+def _choose_cell_m(boxes, xs, ys, box, ext_x, ext_y, n_max_cells):
+    """Cell size (light-plane metres) of lowest estimated cost among :data:`CELL_FACTORS`.
+
+    Per cell of a coarse grid over the receivers' box (``box`` x0, x1, y0, y1): its receivers
+    R and casters M (by box centre). A candidate size s gives each caster (w/s + 1)(h/s + 1)
+    references (:func:`~cityshade.lightspace.kernels.estimate_refs`, summed: ``refs``); a
+    coarse cell of area A then holds lists of refs * (M / M_all) * s^2 / A entries, scanned by
+    each of its R receivers, and R spread at random over its A / s^2 cells occupy a fraction
+    1 - exp(-R s^2 / A) of them (only occupied cells get references).
+    """
+    n = xs.shape[0]
+    base = math.sqrt(ext_x * ext_y / max(n, 1))
     if base <= 0.0:
-        base = max(ext_x, ext_y) / max(n_receivers, 1)
+        base = max(ext_x, ext_y) / max(n, 1)
     sizes = np.array([base * f for f in CELL_FACTORS])
     refs = K.estimate_refs(boxes, sizes)
-    best = None
-    for size, r in zip(sizes, refs):
-        cells = math.ceil(ext_x / size) * math.ceil(ext_y / size)
-        if cells > n_max_cells:
-            continue
-        cost = COST_REF_NS * r + COST_SCAN_NS * n_receivers * r / cells + COST_CELL_NS * cells
-        if best is None or cost < best[0]:
-            best = (cost, float(size))
-    if best is None:
+    coarse = math.sqrt(ext_x * ext_y / DENSITY_CELLS)
+    cnx = max(1, min(DENSITY_CELLS, math.ceil(ext_x / coarse)))
+    cny = max(1, min(DENSITY_CELLS, math.ceil(ext_y / coarse)))
+    inv_c = 1.0 / max(ext_x / cnx, ext_y / cny)
+    n_chunks = 4
+    r_c = np.empty((n_chunks, cnx * cny))
+    m_c = np.empty((n_chunks, cnx * cny))
+    K.density_grid(xs, ys, max(1, n // DENSITY_SAMPLE), boxes, box[0], box[2], inv_c, cnx, cny,
+                   r_c, m_c)
+    r_c = r_c.sum(axis=0)
+    m_c = m_c.sum(axis=0)
+    keep = (r_c > 0) & (m_c > 0)
+    r_c = r_c[keep]
+    m_frac = m_c[keep] / max(boxes.shape[0], 1)
+    area_c = 1.0 / (inv_c * inv_c)
+    cells = np.ceil(ext_x / sizes) * np.ceil(ext_y / sizes)
+    fits = cells <= n_max_cells
+    if not fits.any():
         return float(max(ext_x, ext_y) / math.sqrt(n_max_cells)) * 1.01
-    return best[1]
+    sizes, refs, cells = sizes[fits], refs[fits], cells[fits]
+    share = (sizes * sizes / area_c)[:, None]                  # (K, 1): cell area / coarse area
+    per_cell = refs[:, None] * m_frac[None, :] * share          # list length per coarse cell
+    occupied = -np.expm1(-r_c[None, :] * share)                 # fraction of its cells in use
+    refs_used = (per_cell * occupied).sum(axis=1) / share[:, 0]
+    scans = (per_cell * r_c[None, :]).sum(axis=1)
+    cost = COST_REF_NS * refs_used + COST_SCAN_NS * scans + COST_CELL_NS * cells
+    return float(sizes[int(np.argmin(cost))])
 
 
 def _unit_sun(sun_direction) -> np.ndarray:
@@ -183,13 +216,10 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
         return out
     casters = casters_of(kd)
     ws = casters.scratch.take()
-    threads = numba.get_num_threads()
     try:
-        if threads > 1 and n + kd.tri_records.shape[0] < SINGLE_THREAD_WORK:
-            numba.set_num_threads(1)
-        return _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m)
+        with one_thread_when_small(n + kd.tri_records.shape[0], SINGLE_THREAD_WORK):
+            return _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m)
     finally:
-        numba.set_num_threads(threads)
         ws.give_back()
 
 
@@ -224,7 +254,8 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     kept = np.flatnonzero(~np.isnan(boxes[:, 0]))
     packed = ws.get("packed", (kept.size, K.PACK_WORDS), np.float32)
     kept_boxes = ws.get("kept_boxes", (kept.size, 4))
-    K.pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, packed, kept_boxes)
+    K.pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, scale, packed,
+                   kept_boxes)
     boxes = kept_boxes
     timing["project_s"] = time.perf_counter() - t0
 
@@ -234,7 +265,8 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     ext_x = max(box[1] - box[0], floor_m)
     ext_y = max(box[3] - box[2], floor_m)
     max_cells = max(MAX_CELLS_PER_RECEIVER * n, 1024)
-    size = float(cell_m) if cell_m else _choose_cell_m(boxes, n, ext_x, ext_y, max_cells)
+    size = (float(cell_m) if cell_m else
+            _choose_cell_m(boxes, xs, ys, box, ext_x, ext_y, max_cells))
     nx = max(1, math.ceil(ext_x / size))
     ny = max(1, math.ceil(ext_y / size))
     inv = 1.0 / size

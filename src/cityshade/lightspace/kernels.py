@@ -156,7 +156,8 @@ def cull_casters(recs, recs_f64, keys, t_days, kx, ky, kz, sx, sy, margin_m, box
 PACK_KEY = 9
 PACK_BOX = 10
 PACK_PLANE = 14
-PACK_WORDS = 17
+PACK_EDGE = 17
+PACK_WORDS = 26
 #: Relative widening when the float64 box is stored as float32 (rounding is 2^-24 relative).
 _F32_WIDEN = 2.0 ** -22
 #: The depth plane is used only for casters of decent shape in the light plane: box
@@ -166,10 +167,16 @@ _PLANE_MAX_ASPECT = 2.0 ** 20
 #: Each plane is moved sunward by this fraction of its own terms' magnitudes, which bounds the
 #: float32 rounding of its coefficients (2^-24 each) with a wide margin.
 _PLANE_WIDEN = 2.0 ** -21
+#: Each edge half-plane (:func:`pack_casters`) is moved outward by this fraction of the scene
+#: scale plus the caster's box diagonal: far above hit_record's own rounding of its edge
+#: functions for casters of decent shape (at most ~2^-27 of the scale, see pack_casters) and
+#: of the float32 storage (2^-23 of the diagonal), far below a cell (1 mm at 1 km).
+_EDGE_WIDEN = 2.0 ** -20
 
 
 @njit(cache=True, parallel=True)
-def pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, out, out_boxes):
+def pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, scale_m, out,
+                 out_boxes):
     """(len(kept), PACK_WORDS) float32 records of the kept casters, in key order: columns 0-8
     the vertices (as in the tree's records), ``PACK_KEY`` the key (float32 values, exact),
     ``PACK_BOX`` .. +3 the light-plane box rounded outward to float32, ``PACK_PLANE`` .. +2 the
@@ -214,6 +221,43 @@ def pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, out, out_boxe
         out[q, PACK_PLANE] = pa
         out[q, PACK_PLANE + 1] = pb
         out[q, PACK_PLANE + 2] = pc
+        # Edge half-planes a (x - box x0) + b (y - box y0) + c >= 0 holding the triangle, with
+        # (a, b) the inward unit normal (float32) and c moved outward (see _EDGE_WIDEN), or
+        # (0, 0, +inf) (never rejects) where the plane is not trusted. Why they are safe: a
+        # receiver in the box is within diag of every vertex, hit_record's sheared
+        # coordinates are exact to ~2^-50 of the scale, so its edge function (|edge| times
+        # the distance to the edge's line) is exact to ~2^-48 scale diag + 2^-51 diag^2; with
+        # |edge| >= |det| / diag >= diag 2^-20 (the trust condition) a receiver more than
+        # 2^-27 (scale + diag) outside an edge's line gets that edge's sign from hit_record.
+        diag = np.sqrt(bw * bw + bh * bh)
+        bx0 = np.float64(out[q, PACK_BOX])
+        by0 = np.float64(out[q, PACK_BOX + 2])
+        for e in range(3):
+            out[q, PACK_EDGE + 3 * e] = 0.0
+            out[q, PACK_EDGE + 3 * e + 1] = 0.0
+            out[q, PACK_EDGE + 3 * e + 2] = np.inf
+        if pc < np.inf:
+            widen = _EDGE_WIDEN * (scale_m + diag)
+            sign = 1.0 if det > 0.0 else -1.0
+            for e in range(3):
+                # Edge from vertex e to vertex e + 1, relative to vertex 0's projection.
+                if e == 0:
+                    ex0, ey0, ex1, ey1 = 0.0, 0.0, x1, y1
+                elif e == 1:
+                    ex0, ey0, ex1, ey1 = x1, y1, x2, y2
+                else:
+                    ex0, ey0, ex1, ey1 = x2, y2, 0.0, 0.0
+                na = -(ey1 - ey0) * sign
+                nb = (ex1 - ex0) * sign
+                ln = np.sqrt(na * na + nb * nb)
+                a32 = np.float32(na / ln)
+                b32 = np.float32(nb / ln)
+                # c: minus the normal's value at the edge's start, in box-corner coordinates.
+                c = -(np.float64(a32) * (ex0 + x0 - bx0) + np.float64(b32) * (ey0 + y0 - by0))
+                c += widen + abs(c) * 2.0 ** -22
+                out[q, PACK_EDGE + 3 * e] = a32
+                out[q, PACK_EDGE + 3 * e + 1] = b32
+                out[q, PACK_EDGE + 3 * e + 2] = c
 
 
 @njit(cache=True, parallel=True)
@@ -233,6 +277,29 @@ def estimate_refs(boxes, cell_sizes_m):
             for k in range(n_k):
                 part[c, k] += (w / cell_sizes_m[k] + 1.0) * (h / cell_sizes_m[k] + 1.0)
     return part.sum(axis=0)
+
+
+@njit(cache=True, parallel=True)
+def density_grid(xs, ys, stride, boxes, x0, y0, inv, nx, ny, out_receivers, out_casters):
+    """Receivers (every ``stride``-th, counted ``stride`` times) and casters (by box centre) per
+    cell of a coarse grid (``nx`` by ``ny``, cell ``1 / inv`` wide from ``(x0, y0)``), for the
+    cell-size model: ``out_receivers``, ``out_casters`` (n_chunks, nx * ny) float64, any
+    content, each chunk's counts in its own row."""
+    n_chunks = out_receivers.shape[0]
+    n = (xs.shape[0] + stride - 1) // stride
+    m = boxes.shape[0]
+    per_r = (n + n_chunks - 1) // n_chunks
+    per_m = (m + n_chunks - 1) // n_chunks
+    for c in prange(n_chunks):
+        out_receivers[c, :] = 0.0
+        out_casters[c, :] = 0.0
+        for q in range(c * per_r, min(n, (c + 1) * per_r)):
+            i = q * stride
+            out_receivers[c, _cell(ys[i], y0, inv, ny) * nx + _cell(xs[i], x0, inv, nx)] += stride
+        for j in range(c * per_m, min(m, (c + 1) * per_m)):
+            cx = 0.5 * (boxes[j, 0] + boxes[j, 1])
+            cy = 0.5 * (boxes[j, 2] + boxes[j, 3])
+            out_casters[c, _cell(cy, y0, inv, ny) * nx + _cell(cx, x0, inv, nx)] += 1.0
 
 
 @njit(cache=True, inline="always")
@@ -350,8 +417,9 @@ def scatter_back(order, sorted_values, out):
 @njit(cache=True, inline="always")
 def _may_hit(packed, j, rx, ry, rkey, depth_margin_m):
     """False only when caster ``j`` cannot hit the receiver at light-plane ``(rx, ry)`` with key
-    ``rkey``: outside its widened box (the binning argument), behind its own key, or behind
-    its depth plane by more than ``depth_margin_m`` (see :func:`pack_casters`): t < 0."""
+    ``rkey``: outside its widened box (the binning argument), behind its own key, behind
+    its depth plane by more than ``depth_margin_m`` (see :func:`pack_casters`): t < 0, or
+    outside one of its widened edge half-planes (outside the triangle)."""
     if np.float64(packed[j, PACK_KEY]) < rkey:
         return False
     if (rx < packed[j, PACK_BOX] or rx > packed[j, PACK_BOX + 1]
@@ -360,7 +428,23 @@ def _may_hit(packed, j, rx, ry, rkey, depth_margin_m):
     zp = (np.float64(packed[j, PACK_KEY]) + np.float64(packed[j, PACK_PLANE + 2])
           + np.float64(packed[j, PACK_PLANE]) * (rx - packed[j, PACK_BOX])
           + np.float64(packed[j, PACK_PLANE + 1]) * (ry - packed[j, PACK_BOX + 2]))
-    return zp >= rkey - depth_margin_m
+    if zp < rkey - depth_margin_m:
+        return False
+    return _inside_edges(packed, j, rx, ry)
+
+
+@njit(cache=True, inline="always")
+def _inside_edges(packed, j, rx, ry):
+    """False only when the light-plane point lies outside one of caster ``j``'s widened edge
+    half-planes (:func:`pack_casters`): hit_record would find it outside the triangle."""
+    dx = rx - packed[j, PACK_BOX]
+    dy = ry - packed[j, PACK_BOX + 2]
+    for e in range(3):
+        if (np.float64(packed[j, PACK_EDGE + 3 * e]) * dx
+                + np.float64(packed[j, PACK_EDGE + 3 * e + 1]) * dy
+                + np.float64(packed[j, PACK_EDGE + 3 * e + 2])) < 0.0:
+            return False
+    return True
 
 
 #: Cells per parallel work item of the query: neighbouring cells share casters, so a block
@@ -374,12 +458,13 @@ QUERY_STRIPES = 8
 
 
 #: A cell whose list holds at most this many casters is queried caster by caster over chunks of
-#: :data:`QUERY_CHUNK` receivers (a branch-free pass over the chunk per caster: box and depth
-#: plane as one mask, then the exact test where it is set), a longer one receiver by receiver
-#: (the key order stops each scan early). Measured on the 1M-triangle city (CPU time, one
-#: thread): the caster-major pass is 20-35 % faster on the 30° workloads and on summer batch
-#: steps, and 30 % slower than the receiver-major one on low-sun maps with ~80 casters a cell.
-QUERY_SHORT_LIST = 40
+#: :data:`QUERY_CHUNK` receivers (a branch-free pass over the chunk per caster: box, depth
+#: plane and edge half-planes as one mask, then the exact test where it is set, which is almost
+#: only where it hits), a longer one receiver by receiver (the key order stops each scan early).
+#: Measured on the 1M-triangle city (query CPU time, one thread, lists of 40 / 60 / 80 / any
+#: length caster-major): camera 30 deg 25.0 / 27.1 / 23.0 / 22.7 ms, map 30 deg 340 / 327 / 310
+#: / 311 ms, map at a 3 deg sun 202 / 208 / 248 / 329 ms.
+QUERY_SHORT_LIST = 60
 QUERY_CHUNK = 64
 
 
@@ -427,7 +512,8 @@ def _query_caster_major(packed, refs, p0, p1, origins, c0, m, kx, ky, kz, sx, sy
     """Receivers c0..c0+m of one cell (m <= QUERY_CHUNK; ``rx .. cand`` scratch of that size)
     against the last occluder, then the cell's list in key order: per caster one branch-free
     mask over the receivers still lit (the skips of :func:`_may_hit`, the same float
-    operations), then :func:`hit_record` where it is set; stops when every receiver is
+    operations; ``rx - x0 >= 0`` is ``rx >= x0`` exactly), then :func:`hit_record` where it
+    is set; stops when every receiver is
     shadowed or the casters lie behind the lowest one. Returns (tests, last occluder)."""
     tests = 0
     k_low = np.inf
@@ -462,11 +548,24 @@ def _query_caster_major(packed, refs, p0, p1, origins, c0, m, kx, ky, kz, sx, sy
         pa = np.float64(packed[j, PACK_PLANE])
         pb = np.float64(packed[j, PACK_PLANE + 1])
         kc = key + np.float64(packed[j, PACK_PLANE + 2])
+        ea0 = np.float64(packed[j, PACK_EDGE])
+        eb0 = np.float64(packed[j, PACK_EDGE + 1])
+        ec0 = np.float64(packed[j, PACK_EDGE + 2])
+        ea1 = np.float64(packed[j, PACK_EDGE + 3])
+        eb1 = np.float64(packed[j, PACK_EDGE + 4])
+        ec1 = np.float64(packed[j, PACK_EDGE + 5])
+        ea2 = np.float64(packed[j, PACK_EDGE + 6])
+        eb2 = np.float64(packed[j, PACK_EDGE + 7])
+        ec2 = np.float64(packed[j, PACK_EDGE + 8])
         n_cand = 0
         for q in range(m):
-            zp = kc + pa * (rx[q] - x0) + pb * (ry[q] - y0)
-            ok = (alive[q] & (rk[q] <= key) & (rx[q] >= x0) & (rx[q] <= x1) & (ry[q] >= y0)
-                  & (ry[q] <= y1) & (zp >= rk[q] - depth_margin_m))
+            dx = rx[q] - x0
+            dy = ry[q] - y0
+            zp = kc + pa * dx + pb * dy
+            ok = (alive[q] & (rk[q] <= key) & (dx >= 0.0) & (rx[q] <= x1) & (dy >= 0.0)
+                  & (ry[q] <= y1) & (zp >= rk[q] - depth_margin_m)
+                  & (ea0 * dx + eb0 * dy + ec0 >= 0.0) & (ea1 * dx + eb1 * dy + ec1 >= 0.0)
+                  & (ea2 * dx + eb2 * dy + ec2 >= 0.0))
             cand[q] = ok
             n_cand += ok
         if n_cand == 0:
@@ -493,7 +592,7 @@ def query(packed, ref_start, refs, rec_start, origins, kx, ky, kz, sx, sy, sz, s
     """``out[q]`` (every entry written) True when the shadow ray of receiver q (in cell order)
     hits a caster of its cell.
 
-    ``packed`` (M, 17) float32 caster records of :func:`pack_casters` sorted by key
+    ``packed`` (M, PACK_WORDS) float32 caster records of :func:`pack_casters` sorted by key
     (descending), ``refs`` the cells' caster lists (``ref_start`` (n_cells + 1,)),
     ``origins`` the receivers' origins grouped by cell (``rec_start``). A receiver outside a
     caster's widened box is outside the triangle (the binning argument), so the box check only

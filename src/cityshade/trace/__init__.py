@@ -233,9 +233,10 @@ def shadow_rays_from_surface(points, normals, sun_dir) -> np.ndarray:
         raise TraceInputError("sun_dir must be unit length")
     out = np.empty((points.shape[0], 3))
     # One parallel pass: the checks and the offset (the numpy twin: tests/reference.py).
-    code = bricks.shadow_origins(points, normals, np.ascontiguousarray(sun.reshape(-1, 3)),
-                                 SHADOW_OFFSET_REL, SHADOW_OFFSET_MIN_SCALE_M, UNIT_LENGTH_TOL,
-                                 out)
+    with bricks.one_thread_when_small(points.shape[0]):
+        code = bricks.shadow_origins(points, normals, np.ascontiguousarray(sun.reshape(-1, 3)),
+                                     SHADOW_OFFSET_REL, SHADOW_OFFSET_MIN_SCALE_M,
+                                     UNIT_LENGTH_TOL, out)
     if code & bricks.BAD_POINT:
         raise TraceInputError("points contain NaN or infinite values")
     if code & bricks.BAD_NORMAL:

@@ -63,6 +63,27 @@ def _n_iter(n, brick_size):
     return STRIPES * (((n + brick_size - 1) // brick_size + STRIPES - 1) // STRIPES)
 
 
+#: Items (rays, points) below which a call of a short parallel kernel runs on one thread: with
+#: Numba's OpenMP layer each parallel region wakes the other thread and lets it spin a while,
+#: which costs more than ~0.1 ms of work (shadow origins of a 128² batch tile: 0.12 ms of CPU
+#: on one thread, 0.5-4.9 ms of CPU on two on a loaded machine). The answer does not depend on
+#: the thread count.
+SMALL_CALL_ITEMS = 65_536
+
+
+@contextlib.contextmanager
+def one_thread_when_small(items: int, limit: int = SMALL_CALL_ITEMS):
+    """Run the block on one Numba thread when ``items < limit`` (the calling thread's setting
+    is restored after)."""
+    threads = numba.get_num_threads()
+    if threads > 1 and items < limit:
+        numba.set_num_threads(1)
+    try:
+        yield
+    finally:
+        numba.set_num_threads(threads)
+
+
 @contextlib.contextmanager
 def dynamic_bricks():
     """Hand prange iterations (bricks) out ``BRICKS_PER_CHUNK`` at a time to whichever thread
