@@ -123,6 +123,13 @@ def pack_strings(values: list[str]) -> tuple[np.ndarray, np.ndarray]:
     return blob, offsets
 
 
+def unpack_strings(blob: np.ndarray, offsets: np.ndarray) -> list[str]:
+    """The strings of a :func:`pack_strings` blob, all decoded at once (a tiled build's
+    spilled records); :class:`PackedStrings` decodes on access instead."""
+    data = bytes(blob)
+    return [data[offsets[i]:offsets[i + 1]].decode("utf-8") for i in range(len(offsets) - 1)]
+
+
 class PackedStrings(Sequence):
     """A read-only list of strings over a :func:`pack_strings` blob, decoded on access.
 
