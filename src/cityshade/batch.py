@@ -1076,6 +1076,8 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
         manifest["state_sha256"] = [state.sha256]
     write_manifest(outdir, manifest)
 
+    from cityshade.distributed import MANIFEST_EVERY_S
+
     progress = {"done": None, "written_s": time.perf_counter()}
 
     def note_progress():
@@ -1108,8 +1110,6 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
         on_plan(len(units) - done_before)
 
     def step_done(done, total, unit):
-        from cityshade.distributed import MANIFEST_EVERY_S
-
         finished.extend(unit.steps)
         progress["done"] = done
         # Written every MANIFEST_EVERY_S, with every state save and at the end: the indented

@@ -179,7 +179,7 @@ class DaskExecutor:
                 self.client.run(_warm_worker, self.scene_path, self.scene_sha,
                                 None if direction is None else [float(v) for v in direction],
                                 float(t_days), engine)
-            except BaseException as exc:  # raised in the driver's thread by _started()
+            except Exception as exc:  # raised in the driver's thread by _started()
                 self._start_error = exc
             finally:
                 self.ready.set()
