@@ -253,8 +253,8 @@ def test_numba_on_stack_sees_numba_code_called_from_a_kernel_wrapper():
 
 
 #: ``python -m cityshade`` (runpy imports the package with argv[0] "-m") and the console
-#: script, each sent a Ctrl-C right after ``import cityshade``; and a program that imports
-#: the library, whose Ctrl-C stays Python's.
+#: script, each sent a Ctrl-C (or a SIGTERM) right after ``import cityshade``; and a program
+#: that imports the library, whose handlers stay Python's.
 START_CHILD = """
 import os, signal, sys, time
 kind = sys.argv[1]
@@ -264,30 +264,62 @@ if kind == "-m":
 elif kind == "script":
     sys.argv[0] = os.path.join(os.path.dirname(sys.executable), "cityshade")
 import cityshade
-os.kill(os.getpid(), signal.SIGINT)
+os.kill(os.getpid(), int(sys.argv[2]))
 time.sleep(2)
 print("still running")
 """
 
 
+@pytest.mark.parametrize("sig", [signal.SIGINT, signal.SIGTERM], ids=["SIGINT", "SIGTERM"])
 @pytest.mark.parametrize("kind", ["-m", "script", "library"])
-def test_sigint_while_the_package_is_imported(tmp_path, kind):
+def test_signal_while_the_package_is_imported(tmp_path, kind, sig):
     """Ctrl-C while the command's process imports the package (the Numba cache folder is
     keyed by a hash of the sources there, then numba, lxml, pyproj): one line and 130. The
     handler used to be installed by ``cityshade.__main__``, after the package's import: 8 of
     300 Ctrl-Cs 0.1-0.5 s into ``python -m cityshade build`` on a loaded machine gave
-    Python's traceback and status -2."""
+    Python's traceback and status -2. A SIGTERM there ended the process by the signal
+    (status -15, no line: a CI run's tiled-build test met it); it is now 143 and one line."""
     script = tmp_path / "child.py"
     script.write_text(START_CHILD)
     # As from a terminal: a test run started in the background inherits an ignored SIGINT,
     # which the command leaves ignored.
-    done = subprocess.run([sys.executable, str(script), kind], capture_output=True, text=True,
-                          timeout=60, cwd=tmp_path,
+    done = subprocess.run([sys.executable, str(script), kind, str(int(sig))],
+                          capture_output=True, text=True, timeout=60, cwd=tmp_path,
                           preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
-    if kind == "library":
+    if kind == "library" and sig == signal.SIGINT:
         assert done.returncode == -signal.SIGINT and "KeyboardInterrupt" in done.stderr
+    elif kind == "library":
+        assert (done.returncode, done.stdout) == (-signal.SIGTERM, "")
     else:
-        assert (done.returncode, done.stderr, done.stdout) == (130, "cityshade: interrupted\n", "")
+        word, status = ("interrupted", 130) if sig == signal.SIGINT else ("terminated", 143)
+        assert (done.returncode, done.stderr, done.stdout) == (status, f"cityshade: {word}\n",
+                                                               "")
+
+
+#: A SIGTERM in the last moments of a finished command: at ``sys.exit``, then at shutdown.
+END_CHILD = """
+import atexit, os, signal, sys
+from cityshade.cli.main import main
+atexit.register(lambda: os.kill(os.getpid(), signal.SIGTERM))
+real_exit = sys.exit
+def exit_now(status):
+    os.kill(os.getpid(), signal.SIGTERM)
+    real_exit(status)
+sys.exit = exit_now
+main(["--version"], own_process=True)
+"""
+
+
+def test_sigterm_after_the_command_ended_keeps_its_status(tmp_path):
+    """A SIGTERM after the command's work (its status known): Python's shutdown resets the
+    handlers to the default, and the process used to end by the signal (status -15, a CI run's
+    tiled-build test met it); the command's own status stands."""
+    script = tmp_path / "child.py"
+    script.write_text(END_CHILD)
+    done = subprocess.run([sys.executable, str(script)], capture_output=True, text=True,
+                          timeout=60, cwd=tmp_path)
+    assert (done.returncode, done.stderr) == (0, ""), done.stderr
+    assert done.stdout.startswith("cityshade, version")
 
 
 def test_numba_systemerror_from_an_interrupt_is_an_interrupt():

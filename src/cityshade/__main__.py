@@ -10,7 +10,7 @@ def run() -> None:
     install_start_handler()
     from cityshade.cli.main import main
 
-    main()
+    main(own_process=True)
 
 
 if __name__ == "__main__":

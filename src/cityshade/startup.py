@@ -23,6 +23,14 @@ def interrupted_while_starting(signum, frame) -> None:
     os._exit(130)
 
 
+def terminated_while_starting(signum, frame) -> None:
+    """A SIGTERM (a job scheduler's, ``kill``'s) during the imports: as a Ctrl-C, status 143
+    (the default action would end the process by the signal, status -15)."""
+    sys.stderr.write("cityshade: terminated\n")
+    sys.stderr.flush()
+    os._exit(143)
+
+
 def command_is_starting() -> bool:
     """Whether this process is the ``cityshade`` command on its way to ``main()``."""
     argv0 = sys.argv[0] if sys.argv else ""
@@ -48,9 +56,12 @@ def hold_ctrl_c_while_starting() -> None:
 
 def install_start_handler() -> None:
     """With Python's own Ctrl-C handler still in place (not an ignored SIGINT, not a handler
-    of the caller), install :func:`interrupted_while_starting`."""
+    of the caller), install :func:`interrupted_while_starting`; with SIGTERM's default action,
+    :func:`terminated_while_starting`."""
     try:
         if _signal.getsignal(_signal.SIGINT) is _signal.default_int_handler:
             _signal.signal(_signal.SIGINT, interrupted_while_starting)
+        if _signal.getsignal(_signal.SIGTERM) == _signal.SIG_DFL:
+            _signal.signal(_signal.SIGTERM, terminated_while_starting)
     except ValueError:  # not the main thread: not the command's start
         pass

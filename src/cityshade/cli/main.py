@@ -82,20 +82,57 @@ def cli() -> None:
     """
 
 
-def main(argv: list[str] | None = None) -> None:
-    """Console-script entry point (``cityshade`` and ``python -m cityshade``).
+def main(argv: list[str] | None = None, *, own_process: bool = False) -> None:
+    """Console-script entry point (``cityshade`` and ``python -m cityshade``, which pass
+    ``own_process``: the process ends with the command).
 
     Ctrl-C at any moment ends with one line, ``cityshade: interrupted``, and exit status 130:
     inside a command :func:`~cityshade.cli.options.translate_errors` says so; while click
-    parses the arguments its own "Aborted!" is replaced here.
+    parses the arguments its own "Aborted!" is replaced here. A signal after the command has
+    ended is ignored: the status is the command's.
     """
     import signal
     import sys
 
-    from cityshade.cli.options import (Interrupted, install_sigint_handler, interrupt_seen,
+    from cityshade.cli.options import (Interrupted, command_done, install_sigint_handler,
                                        terminate_is_ours)
 
     install_sigint_handler()
+    try:
+        status = _command(argv)
+        command_done()
+    except KeyboardInterrupt:
+        # The signal came in the last moments of the command, in its own error report.
+        command_done()
+        stop = Interrupted()
+        stop.show()
+        status = stop.exit_code
+    finally:
+        command_done()
+        # The interpreter's shutdown resets handlers to the default, which would kill the
+        # process on a late Ctrl-C (status -2 instead of ours); an ignored SIGINT stays ignored.
+        signal.signal(signal.SIGINT, signal.SIG_IGN)
+        if terminate_is_ours():
+            # The same for a late SIGTERM (status -15) when the process ends here. Called
+            # in-process, it is given back instead: an ignored SIGTERM would be inherited by
+            # every process the caller starts later (a test run's Dask workers would not stop).
+            signal.signal(signal.SIGTERM, signal.SIG_IGN if own_process else signal.SIG_DFL)
+    if status in (130, 143):
+        # After a KeyboardInterrupt inside code that a C library ran through PyRun_* the
+        # interpreter's epilogue kills itself with SIGINT (status -2, not 130) whatever
+        # sys.exit says; everything is written and closed here, so leave without it.
+        import os
+
+        sys.stdout.flush()
+        sys.stderr.flush()
+        os._exit(status)
+    sys.exit(status)
+
+
+def _command(argv: list[str] | None) -> int:
+    """Run the command; its exit status, every failure reported in one line."""
+    from cityshade.cli.options import Interrupted, interrupt_seen
+
     try:
         status = cli.main(args=argv, prog_name="cityshade", standalone_mode=False)
         # Without standalone mode click returns the status of --help, --version, ctx.exit().
@@ -121,21 +158,4 @@ def main(argv: list[str] | None = None) -> None:
         status = exc.exit_code
     except click.exceptions.Exit as exc:
         status = exc.exit_code
-    finally:
-        # The interpreter's shutdown resets handlers to the default, which would kill the
-        # process on a late Ctrl-C (status -2 instead of ours); an ignored SIGINT stays ignored.
-        signal.signal(signal.SIGINT, signal.SIG_IGN)
-        # Not ignored, but given back: an ignored SIGTERM would be inherited by every process
-        # the caller starts later (a test run's Dask workers would not stop).
-        if terminate_is_ours():
-            signal.signal(signal.SIGTERM, signal.SIG_DFL)
-    if status in (130, 143):
-        # After a KeyboardInterrupt inside code that a C library ran through PyRun_* the
-        # interpreter's epilogue kills itself with SIGINT (status -2, not 130) whatever
-        # sys.exit says; everything is written and closed here, so leave without it.
-        import os
-
-        sys.stdout.flush()
-        sys.stderr.flush()
-        os._exit(status)
-    sys.exit(status)
+    return status

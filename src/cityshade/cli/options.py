@@ -39,7 +39,7 @@ class Interrupted(LibraryFailure):
 #: ``raised``: the KeyboardInterrupt is on its way; ``again``: the thread that delivers a
 #: Ctrl-C held outside a compile once more (:func:`_deliver_again`) is running.
 _interrupt = {"seen": False, "held": False, "listening": False, "raised": False,
-              "again": False, "terminated": False, "sigterm_ours": False}
+              "again": False, "terminated": False, "sigterm_ours": False, "done": False}
 #: Seconds between deliveries of a held Ctrl-C: short against a user's patience, long
 #: against the few microseconds Numba's wrappers spend in Python code.
 REDELIVER_S = 0.005
@@ -58,8 +58,8 @@ def on_sigint(signum, frame) -> None:
     compile until the compiler's current pass ends (:func:`_raise_after_compile`; llvmlite's
     objects are whole then), otherwise it is delivered again every :data:`REDELIVER_S`
     until it lands in code that is not Numba's (:func:`_deliver_again`)."""
-    if _interrupt["raised"]:
-        return
+    if _interrupt["raised"] or _interrupt["done"]:
+        return  # one KeyboardInterrupt; none once the command has ended (:func:`command_done`)
     _interrupt["seen"] = True
     if _numba_compiling():
         signal.signal(signal.SIGINT, signal.SIG_IGN)
@@ -77,9 +77,15 @@ def on_sigterm(signum, frame) -> None:
     """SIGTERM handler of the command: the clean-up of a Ctrl-C (temporary files and folders
     removed), by way of :func:`on_sigint`; ends with status 143."""
     signal.signal(signal.SIGTERM, signal.SIG_IGN)
-    if not _interrupt["seen"]:
+    if not _interrupt["seen"] and not _interrupt["done"]:
         _interrupt["terminated"] = True
     on_sigint(signal.SIGINT, frame)
+
+
+def command_done() -> None:
+    """The command has ended and its status is known: a signal from here on is ignored (it
+    would raise where nothing catches it, in ``main``'s last lines)."""
+    _interrupt["done"] = True
 
 
 def terminate_is_ours() -> bool:
@@ -166,8 +172,11 @@ def install_sigint_handler() -> None:
     import threading
 
     if threading.current_thread() is threading.main_thread():
+        _interrupt["done"] = False
         signal.signal(signal.SIGINT, on_sigint)
-        if signal.getsignal(signal.SIGTERM) is signal.SIG_DFL:
+        from cityshade.startup import terminated_while_starting
+
+        if signal.getsignal(signal.SIGTERM) in (signal.SIG_DFL, terminated_while_starting):
             signal.signal(signal.SIGTERM, on_sigterm)
             _interrupt["sigterm_ours"] = True
         previous = sys.unraisablehook
