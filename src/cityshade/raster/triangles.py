@@ -32,7 +32,7 @@ Determinism
   drawing order, so it is the same for any thread count, tile size, batch split or culling.
 
 Parallelism: triangles are set up in parallel, binned into square tiles in drawing order
-(chunks counted and filled in parallel), and the passes rasterize tiles in parallel
+(one thread: see :func:`bin_triangles`), and the passes rasterize tiles in parallel
 (``prange``); each tile owns its pixels.
 """
 from __future__ import annotations
@@ -66,9 +66,6 @@ DEPTH_BATCH = 131072
 #: are float64 (errors ~1e-12 px), so a centre the edge functions find inside is never outside
 #: the box; the edge functions alone decide coverage inside it.
 BOX_SLACK_PX = 1e-6
-#: Chunks of the parallel binning (several per thread for balance; any value gives the same
-#: lists).
-BIN_CHUNKS = 16
 #: Smallest W of the part of a triangle that gives its screen box, relative to the largest |W|
 #: of its vertices (a triangle crossing W = 0 projects to infinity there; the box is clamped to
 #: the image, so a tiny value only widens the box, never the coverage).
@@ -423,54 +420,46 @@ def _tile_of(px, tile_px, shift):
     return px >> shift if shift >= 0 else px // tile_px
 
 
-@njit(cache=True, parallel=True)
-def _bin_chunks(bbox, tile_px, tiles_x, acc, items, write):
-    """One binning pass over the ``BIN_CHUNKS`` consecutive chunks of triangles in parallel:
-    ``acc[chunk, tile] += 1`` for every tile a triangle's box meets, and first, when ``write``,
-    ``items[acc[chunk, tile]] = triangle`` (``acc`` then holds the fill positions)."""
-    n = bbox.shape[0]
+@njit(cache=True)
+def _bin_pass(bbox, tile_px, tiles_x, acc, items, write):
+    """One binning pass over the triangles in drawing order: ``acc[tile] += 1`` for every tile
+    a triangle's box meets, and first, when ``write``, ``items[acc[tile]] = triangle`` (``acc``
+    then holds the fill positions)."""
     shift = -1
     if tile_px & (tile_px - 1) == 0:
         shift = 0
         while (1 << shift) < tile_px:
             shift += 1
-    for ch in prange(BIN_CHUNKS):
-        for j in range(ch * n // BIN_CHUNKS, (ch + 1) * n // BIN_CHUNKS):
-            if bbox[j, 0] > bbox[j, 1]:
-                continue
-            for ty in range(_tile_of(bbox[j, 2], tile_px, shift),
-                            _tile_of(bbox[j, 3], tile_px, shift) + 1):
-                for tx in range(_tile_of(bbox[j, 0], tile_px, shift),
-                                _tile_of(bbox[j, 1], tile_px, shift) + 1):
-                    t = ty * tiles_x + tx
-                    if write:
-                        items[acc[ch, t]] = j
-                    acc[ch, t] += 1
+    for j in range(bbox.shape[0]):
+        if bbox[j, 0] > bbox[j, 1]:
+            continue
+        for ty in range(_tile_of(bbox[j, 2], tile_px, shift),
+                        _tile_of(bbox[j, 3], tile_px, shift) + 1):
+            for tx in range(_tile_of(bbox[j, 0], tile_px, shift),
+                            _tile_of(bbox[j, 1], tile_px, shift) + 1):
+                t = ty * tiles_x + tx
+                if write:
+                    items[acc[t]] = j
+                acc[t] += 1
 
 
 @njit(cache=True)
 def bin_triangles(bbox, tile_px, tiles_x, tiles_y):
     """Tile lists in drawing order: ``(start (tiles + 1,) int64, items (M,) int32)``.
 
-    The triangles are split into ``BIN_CHUNKS`` consecutive chunks counted and filled in
-    parallel; each tile's list is its chunks' lists in chunk order, i.e. drawing order, for any
-    number of threads.
+    One thread: the two passes took 10 ms for the 4096² map of the 1M-triangle city, and the
+    earlier parallel passes over 16 chunks of triangles took 40-100 ms at 2 threads on this
+    2-core machine, dynamic scheduling or not (cause not pinned down: the counting pass, whose
+    chunks write apart, was as slow as the filling one).
     """
     n_tiles = tiles_x * tiles_y
-    counts = np.zeros((BIN_CHUNKS, n_tiles), np.int64)
-    _bin_chunks(bbox, tile_px, tiles_x, counts, np.empty(0, np.int32), False)
-    # Offsets: tile by tile, chunk by chunk.
+    counts = np.zeros(n_tiles, np.int64)
+    _bin_pass(bbox, tile_px, tiles_x, counts, np.empty(0, np.int32), False)
     start = np.zeros(n_tiles + 1, np.int64)
-    fill = np.empty((BIN_CHUNKS, n_tiles), np.int64)
-    running = 0
-    for t in range(n_tiles):
-        start[t] = running
-        for ch in range(BIN_CHUNKS):
-            fill[ch, t] = running
-            running += counts[ch, t]
-    start[n_tiles] = running
-    items = np.empty(running, np.int32)
-    _bin_chunks(bbox, tile_px, tiles_x, fill, items, True)
+    start[1:] = np.cumsum(counts)
+    fill = start[:n_tiles].copy()
+    items = np.empty(start[n_tiles], np.int32)
+    _bin_pass(bbox, tile_px, tiles_x, fill, items, True)
     return start, items
 
 
