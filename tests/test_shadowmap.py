@@ -351,7 +351,7 @@ def test_depth_map_same_for_any_thread_count_and_tile_size(sample):
     before = numba.get_num_threads()
     try:
         maps = []
-        for threads, tile in ((1, 64), (2, 64), (2, 16)):
+        for threads, tile in ((1, 64), (2, 64), (2, 16), (1, 24)):
             numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
             maps.append(sm.render_depth_map(sample, view, T_1990, tile_px=tile))
     finally:

@@ -94,10 +94,9 @@ def projection_centre(clip_from_world) -> np.ndarray:
     return np.r_[d, 0.0]
 
 
-#: Boxes at most this many columns wide (clipped to the tile) are tested texel by texel without
-#: the per-row column bounds: for them the bounds cost more than the texels they skip (most
-#: casters of a 4096² map of the 1M-triangle city; 14 % less raster time there, one thread).
-NARROW_COLS = 4
+#: See :data:`cityshade.raster.triangles.NARROW_COLS` (the setup leaves the column bounds of
+#: such boxes out).
+NARROW_COLS = tc.NARROW_COLS
 
 
 @njit(cache=True, inline="always")
