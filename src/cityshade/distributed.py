@@ -119,6 +119,26 @@ def _warm_worker(scene_path: str, scene_sha: str, direction, t_days: float,
 
 # --- driver side ------------------------------------------------------------------------------
 
+def _stop_local_workers(cluster) -> None:
+    """End a LocalCluster's worker processes at once, before ``cluster.close()``.
+
+    The results are in by then (or the run has failed) and a worker holds nothing to save,
+    whereas Dask's own close retires each worker gracefully: 0.7 s (1 worker) and 1.7 s
+    (2 workers) of wall time at the end of the 1M city's day here, more under load. Each
+    nanny is told first that its worker's exit is no failure, so that it does not restart
+    it; ``cluster.close()`` then joins the processes (their CPU stays counted)."""
+    import signal
+
+    for nanny in list(getattr(cluster, "workers", {}).values()):
+        pid = getattr(nanny, "pid", None)
+        graceful = getattr(nanny, "close_gracefully", None)
+        if not pid or graceful is None:
+            continue
+        graceful()
+        with contextlib.suppress(OSError):  # it has gone already
+            os.kill(pid, signal.SIGKILL)
+
+
 class DaskExecutor:
     """Runs tasks on a Dask cluster: a LocalCluster of N worker processes or an existing one.
 
@@ -212,6 +232,7 @@ class DaskExecutor:
         if client is not None:
             client.close()
         if cluster is not None:
+            _stop_local_workers(cluster)
             cluster.close()
             _restore_environ(self._environ)
 
