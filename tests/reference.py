@@ -813,3 +813,13 @@ def reference_accumulate(sums, slots, weights_h, lit):
     for row in np.flatnonzero(np.asarray(weights_h) > 0.0):
         sums[row, slots] += weights_h[row] * lit64
     return sums
+
+
+def reference_boxes_holding_a_point(boxes, xs, ys):
+    """Twin of :func:`cityshade.lightspace.kernels.cull_unoccupied`: for each box (x0, x1, y0,
+    y1; NaN x0: already culled) whether some point (xs, ys) lies in it, tested one by one."""
+    out = np.zeros(len(boxes), bool)
+    for j, (x0, x1, y0, y1) in enumerate(boxes):
+        if not np.isnan(x0):
+            out[j] = bool(np.any((xs >= x0) & (xs <= x1) & (ys >= y0) & (ys <= y1)))
+    return out
