@@ -356,3 +356,14 @@ def test_casters_gathered_in_chunks_are_the_tree_records_once_each_in_key_order(
         got_recs, got_keys = lightspace.Casters(mapped).sorted_for(kz, sgn)
         np.testing.assert_array_equal(got_recs, once[order])
         np.testing.assert_array_equal(got_keys, keys[order])
+
+
+def test_forget_casters_drops_what_the_tree_kept():
+    tree = build_kdtree(*box_city(10, seed=2, extent_m=60.0))
+    origins = np.random.default_rng(3).uniform(-5, 70, (50, 3))
+    d = unit([0.3, -0.4, 0.6])
+    first = lightspace.occluded(tree, origins, d)
+    assert tree in lightspace._CASTERS
+    lightspace.forget_casters(tree)
+    assert tree not in lightspace._CASTERS
+    np.testing.assert_array_equal(lightspace.occluded(tree, origins, d), first)
