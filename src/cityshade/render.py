@@ -248,6 +248,10 @@ def _render_strips(scene, camera, t_days, sun, technique, tech, settings, sky, g
     for r0 in range(0, height, rows):
         r1 = min(height, r0 + rows)
         h0, h1 = max(0, r0 - STRIP_HALO_ROWS), min(height, r1 + STRIP_HALO_ROWS)
+        # Each strip maps back what it reads: the file pages of a whole city (and those the
+        # ground height read) would otherwise stay resident (1.8 of the 10^7-triangle city's
+        # 6.5 GB 20 Mpx map).
+        release_scene_pages(scene)
         cp = camera_pass(scene, camera.strip(h0, h1), t_days, ground=ground,
                          ground_z_m=ground_z, ground_box_m=ground_box)
         sp = shadow_pass(cp, sun, tech, settings, measure)
@@ -277,9 +281,6 @@ def _render_strips(scene, camera, t_days, sun, technique, tech, settings, sky, g
         diagnostics = sp.diagnostics(cp)
         n_strips += 1
         del cp, sp, strip_rgb, s
-        # The next strip maps back what it reads: the file pages of a whole city would
-        # otherwise stay resident (1.8 of 6.5 GB of the 10^7-triangle city's 20 Mpx map).
-        release_scene_pages(scene)
     # The diagnostics are the last strip's, with the whole map's ground pixels and the count.
     diagnostics.gbuffer = {**diagnostics.gbuffer, "strips": n_strips, "strip_rows": rows}
     if diagnostics.ground is not None:
