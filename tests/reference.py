@@ -819,3 +819,13 @@ def reference_event_order(values):
     """Stable increasing order of float32 ``values`` (-0.0 ties with 0.0): the comparison
     twin of ``kdtree_build._radix_order``."""
     return np.argsort(np.asarray(values, np.float32), kind="stable").astype(np.int32)
+
+
+def reference_boxes_holding_a_point(boxes, xs, ys):
+    """Twin of :func:`cityshade.lightspace.kernels.cull_unoccupied`: for each box (x0, x1, y0,
+    y1; NaN x0: already culled) whether some point (xs, ys) lies in it, tested one by one."""
+    out = np.zeros(len(boxes), bool)
+    for j, (x0, x1, y0, y1) in enumerate(boxes):
+        if not np.isnan(x0):
+            out[j] = bool(np.any((xs >= x0) & (xs <= x1) & (ys >= y0) & (ys <= y1)))
+    return out

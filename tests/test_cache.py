@@ -41,6 +41,21 @@ def test_round_trip_is_bit_identical(built):
             assert a.tobytes() == loaded.kdtree.to_arrays()[name].tobytes(), name
 
 
+def test_released_pages_of_a_loaded_scene_read_back_the_same(built):
+    """release_scene_pages drops the mapped pages of a loaded scene (and nothing of arrays in
+    memory); the arrays read afterwards are the same bytes."""
+    from cityshade.cache import release_pages
+    from cityshade.scenefile import release_scene_pages
+
+    out, scene, _ = built
+    loaded = load_scene(out)
+    before = {name: getattr(loaded, name).tobytes() for name in Scene.ARRAY_FIELDS}
+    assert release_scene_pages(loaded) >= loaded.vertices.nbytes
+    assert release_scene_pages(scene) == 0 and release_pages(np.ones(9), None) == 0
+    for name in Scene.ARRAY_FIELDS:
+        assert getattr(loaded, name).tobytes() == before[name], name
+
+
 def test_arrays_are_aligned(built):
     cache = open_cache(built[0])
     for name in cache.names():

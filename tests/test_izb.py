@@ -281,3 +281,89 @@ print(json.dumps([lightspace.occluded(tree, o, d, 0.0).tolist(),
     results = run_with_and_without_jit(script)
     assert results[0] == results[1]
     assert any(results[0][0]) and not all(results[0][0])
+
+
+def test_occupancy_cull_drops_only_casters_whose_box_holds_no_receiver():
+    """cull_unoccupied against the one-by-one twin: every box holding a receiver point is
+    kept, and boxes far from the receivers' band are dropped."""
+    from reference import reference_boxes_holding_a_point
+    from cityshade.lightspace import kernels as K
+
+    rng = np.random.default_rng(4)
+    t = rng.uniform(0.0, 100.0, 3000)
+    xs, ys = t, 0.5 * t + rng.uniform(-1.0, 1.0, t.size)        # a thin slanted band
+    x0 = rng.uniform(-5.0, 105.0, 5000)
+    y0 = rng.uniform(-5.0, 55.0, 5000)
+    w = rng.uniform(0.0, 3.0, (2, 5000))
+    boxes = np.column_stack([x0, x0 + w[0], y0, y0 + w[1]])
+    boxes[::97, 0] = np.nan
+    holds = reference_boxes_holding_a_point(boxes, xs, ys)
+    for nx, ny in ((1, 1), (37, 19), (400, 200)):
+        inv = 1.0 / max((xs.max() - xs.min()) / nx, (ys.max() - ys.min()) / ny)
+        table = np.empty((ny + 1, nx + 1), np.int32)
+        K.occupancy_table(xs, ys, xs.min(), ys.min(), inv, nx, ny, table)
+        assert table[-1, -1] == len({(K._cell(y, ys.min(), inv, ny), K._cell(x, xs.min(), inv, nx))
+                                     for x, y in zip(xs, ys)})
+        got = boxes.copy()
+        K.cull_unoccupied(got, xs.min(), ys.min(), inv, nx, ny, table)
+        kept = ~np.isnan(got[:, 0])
+        assert not (holds & ~kept).any()
+        if nx == 400:
+            assert kept.sum() < 0.5 * (~np.isnan(boxes[:, 0])).sum()
+
+
+def test_a_thin_band_of_receivers_equals_raytrace_with_and_without_the_occupancy_cull(
+        monkeypatch):
+    """A map strip's receivers (a thin band, slanted in the light plane): the answer is
+    trace.occluded's with the occupancy cull and without it (one cell), and the cull keeps
+    fewer casters; the casters culled a few rows at a time give the same answer."""
+    city = box_city(200, seed=9, extent_m=300.0)
+    tree = build_kdtree(*city)
+    rng = np.random.default_rng(2)
+    origins = np.column_stack([rng.uniform(0, 300, 5000), rng.uniform(140, 146, 5000),
+                               rng.uniform(0.0, 20.0, 5000)])
+    d = np.asarray(sun_from_angles(135.0, 30.0).direction, np.float64)
+    ref = occluded(tree, origins, np.broadcast_to(d, origins.shape).copy())
+    kept = {}
+    for cells, rows in ((1, lightspace.CULL_ROWS), (lightspace.OCCUPANCY_CELLS, 97)):
+        monkeypatch.setattr(lightspace, "OCCUPANCY_CELLS", cells)
+        monkeypatch.setattr(lightspace, "CULL_ROWS", rows)
+        stats: dict = {}
+        np.testing.assert_array_equal(lightspace.occluded(tree, origins, d, stats=stats), ref)
+        kept[cells] = stats["casters"]
+    assert 0 < ref.mean() < 1
+    assert kept[lightspace.OCCUPANCY_CELLS] < 0.5 * kept[1]
+
+
+def test_casters_gathered_in_chunks_are_the_tree_records_once_each_in_key_order(
+        tmp_path, monkeypatch):
+    """Casters read from a memory-mapped tree a few rows at a time: one row per triangle (its
+    first record), sorted by depth key descending, stable, as one gather of all would be."""
+    from cityshade.accel import KdTree
+
+    monkeypatch.setattr(lightspace, "GATHER_ROWS", 13)
+    tree = build_kdtree(*box_city(40, seed=3, extent_m=100.0))
+    for name, arr in tree.to_arrays().items():
+        np.save(tmp_path / f"{name}.npy", arr)
+    mapped = KdTree.from_arrays({name: np.load(tmp_path / f"{name}.npy", mmap_mode="r")
+                                 for name in tree.to_arrays()})
+    recs = tree.tri_records
+    _, first = np.unique(recs.view(np.int32)[:, lightspace.REC_ID], return_index=True)
+    once = recs[np.sort(first)]
+    for kz, sgn in ((2, 1.0), (0, -1.0), (2, 1.0)):
+        keys = (sgn * once[:, [kz, 3 + kz, 6 + kz]].astype(np.float64)).max(axis=1)
+        order = np.argsort(-keys, kind="stable")
+        got_recs, got_keys = lightspace.Casters(mapped).sorted_for(kz, sgn)
+        np.testing.assert_array_equal(got_recs, once[order])
+        np.testing.assert_array_equal(got_keys, keys[order])
+
+
+def test_forget_casters_drops_what_the_tree_kept():
+    tree = build_kdtree(*box_city(10, seed=2, extent_m=60.0))
+    origins = np.random.default_rng(3).uniform(-5, 70, (50, 3))
+    d = unit([0.3, -0.4, 0.6])
+    first = lightspace.occluded(tree, origins, d)
+    assert tree in lightspace._CASTERS
+    lightspace.forget_casters(tree)
+    assert tree not in lightspace._CASTERS
+    np.testing.assert_array_equal(lightspace.occluded(tree, origins, d), first)

@@ -169,7 +169,7 @@ def check_frame_memory(camera: "Camera", available_bytes: int | None = None, *,
 
 
 def camera_pass(scene: "Scene", camera: "Camera", t_days: float, *, ground: str | None = None,
-                ground_z_m: float | None = None) -> CameraPass:
+                ground_z_m: float | None = None, ground_box_m=None) -> CameraPass:
     """Rasterize, resolve, add the ground plane: the camera pass of a frame.
 
     Parameters
@@ -185,6 +185,8 @@ def camera_pass(scene: "Scene", camera: "Camera", t_days: float, *, ground: str 
     ground_z_m : float, optional
         The render-space height of ``ground``'s plane when already known
         (:func:`cityshade.ground.ground_height_m`; the strips of one frame compute it once).
+    ground_box_m : (lo, hi), optional
+        :func:`cityshade.ground.ground_box_m` when already known (likewise).
 
     Raises
     ------
@@ -210,7 +212,7 @@ def camera_pass(scene: "Scene", camera: "Camera", t_days: float, *, ground: str 
         from cityshade.ground import add_ground_plane, ground_height_m
 
         z = ground_height_m(scene, ground) if ground_z_m is None else float(ground_z_m)
-        surfaces, filled = add_ground_plane(scene, camera, surfaces, z)
+        surfaces, filled = add_ground_plane(scene, camera, surfaces, z, ground_box_m)
         ground_info = GroundInfo(mode=str(ground), z_crs_m=z + float(scene.origin_m[2]),
                                  pixels=int(filled))
     normal = oriented_normals(surfaces, camera)

@@ -104,6 +104,18 @@ def scene_from_cache(cache, with_kdtree: bool = True) -> Scene:
     return scene
 
 
+def release_scene_pages(scene) -> int:
+    """:func:`cityshade.cache.release_pages` of a scene's arrays and its kd-tree's: the bytes of
+    the memory-mapped cache this process stops holding (0 for a scene built in memory)."""
+    from cityshade.cache import release_pages
+
+    arrays = [getattr(scene, name, None) for name in Scene.ARRAY_FIELDS]
+    tree = getattr(scene, "kdtree", None)
+    if tree is not None and hasattr(tree, "to_arrays"):
+        arrays += list(tree.to_arrays().values())
+    return release_pages(*arrays)
+
+
 def read_header(path: str | os.PathLike) -> dict[str, Any]:
     """The JSON header of a scene file (no array is read or verified)."""
     return open_cache(Path(path), verify=False).header

@@ -96,6 +96,9 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
                          sky=not no_sky, ground=ground, measure=verbose, strip_rows=strip_rows)
     for warning in frame.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
+    from cityshade.lightspace import forget_casters
+
+    forget_casters(scene)  # this process renders one frame: the writers need the memory
     t1 = time.perf_counter()
     written = write_frame(frame, scene, date_text, exr=output, png=png, mask=mask, georef=geotiff)
     if geotiff is not None:

@@ -24,13 +24,15 @@ import numba
 import numpy as np
 
 from cityshade.accel.kdtree_layout import REC_ID, KdTree
+from cityshade.cache import release_pages
 from cityshade.trace.bricks import one_thread_when_small
 from cityshade.lightspace import kernels as K
 from cityshade.util import Scratch
 from cityshade.trace import (UNIT_LENGTH_TOL, TraceInputError, tree_of, shadow_offset_m,
                              shadow_rays_from_surface)
 
-__all__ = ["occluded", "sunlit", "Casters", "casters_of", "SurfaceReceivers", "MARGIN_REL"]
+__all__ = ["occluded", "sunlit", "Casters", "casters_of", "forget_casters", "SurfaceReceivers",
+           "MARGIN_REL"]
 
 #: Widening of every caster's light-plane box per metre of coordinate magnitude. The binning
 #: projection and the kernel's per-ray differences round differently by a few float64 ulps
@@ -68,32 +70,68 @@ DENSITY_SAMPLE = 1 << 18
 SINGLE_THREAD_WORK = 300_000
 #: Upper bound on grid cells per receiver (memory: two int32 counts per cell and thread).
 MAX_CELLS_PER_RECEIVER = 8
+#: Casters culled per pass (bounds the float64 box work array: 32 MB) and tree records read
+#: per chunk when the casters are gathered.
+CULL_ROWS = 1 << 20
+GATHER_ROWS = 1 << 20
+#: Cells of the receiver occupancy grid that drops casters whose box holds no receiver (at
+#: most one per receiver): a map strip's receivers are a thin slanted band in the light plane
+#: and their box holds most of the city (4.6 M of 10 M casters kept for a strip of 94 rows).
+OCCUPANCY_CELLS = 1 << 20
 
 
 class Casters:
     """The triangles of a kd-tree as one record each (the tree repeats a triangle in every leaf
     it straddles), with the key order of the last sun used, so a batch sorts once per change
-    of the shear axis instead of once per step."""
+    of the shear axis instead of once per step.
+
+    Only the sorted copy is kept (``first`` indexes the tree's records, one row per triangle):
+    the tree's records are read a chunk at a time in file order and their memory-mapped pages
+    released, so the 10^7-triangle city holds one 640 MB copy instead of two plus its 1.2 GB of
+    mapped records.
+    """
 
     def __init__(self, tree: KdTree):
-        recs = tree.tri_records
-        ids = np.asarray(recs.view(np.int32)[:, REC_ID])
+        self._tree_records = recs = tree.tri_records
+        ids = np.empty(recs.shape[0], np.int32)
+        for c0 in range(0, recs.shape[0], GATHER_ROWS):
+            part = recs[c0:c0 + GATHER_ROWS]
+            ids[c0:c0 + part.shape[0]] = part.view(np.int32)[:, REC_ID]
+            release_pages(part)
         _, first = np.unique(ids, return_index=True)
-        self.records = np.ascontiguousarray(recs[np.sort(first)])
+        del ids
+        self.first = np.sort(first)
         self._axis = None
         self._sorted = None
         # Grow-only work arrays (~300 MB on the 1M-triangle map, faulted in anew every sun
         # step of a batch without them).
         self.scratch = Scratch()
 
+    def _chunks(self):
+        """(row range of ``first``, the tree's records of it), in file order, each chunk's
+        mapped pages released once the caller is done with it."""
+        recs, first = self._tree_records, self.first
+        for c0 in range(0, first.size, GATHER_ROWS):
+            c1 = min(first.size, c0 + GATHER_ROWS)
+            yield c0, c1, recs[first[c0:c1]]
+            release_pages(recs[first[c0]:first[c1 - 1] + 1])
+
     def sorted_for(self, kz: int, sgn: float):
         """(records, keys) sorted by depth key descending for shear axis ``kz`` and sign."""
         if self._axis != (kz, sgn):
-            keys = np.empty(self.records.shape[0])
-            K.caster_keys(self.records, kz, sgn, keys)
+            self._sorted = self._axis = None
+            n = self.first.size
+            keys = np.empty(n)
+            for c0, c1, rows in self._chunks():
+                K.caster_keys(rows, kz, sgn, keys[c0:c1])
             order = np.argsort(-keys, kind="stable")
-            self._sorted = (np.ascontiguousarray(self.records[order]),
-                            np.ascontiguousarray(keys[order]))
+            rank = np.empty(n, np.int64)
+            rank[order] = np.arange(n)
+            # Scattered to their sorted rows while the tree's records are read in file order.
+            records = np.empty((n, self._tree_records.shape[1]), self._tree_records.dtype)
+            for c0, c1, rows in self._chunks():
+                records[rank[c0:c1]] = rows
+            self._sorted = (records, np.ascontiguousarray(keys[order]))
             self._axis = (kz, sgn)
         return self._sorted
 
@@ -223,6 +261,14 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
         ws.give_back()
 
 
+def forget_casters(tree) -> None:
+    """Drop the :class:`Casters` (sorted copy and work arrays) kept with a tree or scene, for
+    a caller done with its suns (a one-frame render before it writes: 0.7 GB at 10^7)."""
+    kd = getattr(tree, "kdtree", tree)
+    if isinstance(kd, KdTree):
+        _CASTERS.pop(kd, None)
+
+
 def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     """The engine behind :func:`occluded` on validated inputs, work arrays from ``ws``; fills and
     returns ``out``."""
@@ -248,14 +294,39 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     min_key = float(part[:, 4].min())
     scale = max(float(np.abs(kd.bounds[:, :3]).max()), float(np.abs(box).max()), 1.0)
     margin_m = MARGIN_REL * scale
-    boxes = ws.get("boxes", (recs.shape[0], 4))
-    K.cull_casters(recs, recs.view(np.float64), keys, t, kx, ky, kz, sx, sy, margin_m, box,
-                   min_key, boxes)
-    kept = np.flatnonzero(~np.isnan(boxes[:, 0]))
-    packed = ws.get("packed", (kept.size, K.PACK_WORDS), np.float32)
-    kept_boxes = ws.get("kept_boxes", (kept.size, 4))
-    K.pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, scale, packed,
-                   kept_boxes)
+    # Receiver occupancy: a caster whose (widened) box holds no receiver point cannot shade
+    # one, and the box's coarse cells then hold none either (cells are monotone in x, y).
+    occ = math.sqrt(max(box[1] - box[0], 1e-9 * scale) * max(box[3] - box[2], 1e-9 * scale)
+                    / max(1, min(n, OCCUPANCY_CELLS)))
+    onx = max(1, min(OCCUPANCY_CELLS, math.ceil((box[1] - box[0]) / occ)))
+    ony = max(1, min(OCCUPANCY_CELLS // onx, math.ceil((box[3] - box[2]) / occ)))
+    occ_inv = 1.0 / max((box[1] - box[0]) / onx, (box[3] - box[2]) / ony, 1e-9 * scale)
+    occupied = ws.get("occupied", (ony + 1, onx + 1), np.int32)
+    K.occupancy_table(xs, ys, box[0], box[2], occ_inv, onx, ony, occupied)
+    # The casters a chunk at a time: the box work array stays small.
+    n_recs = recs.shape[0]
+    chunk_boxes = ws.get("boxes", (max(1, min(n_recs, CULL_ROWS)), 4))
+    parts = []
+    for c0 in range(0, n_recs, CULL_ROWS):
+        c1 = min(n_recs, c0 + CULL_ROWS)
+        b = chunk_boxes[:c1 - c0]
+        K.cull_casters(recs[c0:c1], recs[c0:c1].view(np.float64), keys[c0:c1], t, kx, ky, kz,
+                       sx, sy, margin_m, box, min_key, b)
+        K.cull_unoccupied(b, box[0], box[2], occ_inv, onx, ony, occupied)
+        local = np.flatnonzero(~np.isnan(b[:, 0]))
+        if local.size:
+            parts.append((c0, c1, local, b[local]))
+    kept_size = sum(p[2].size for p in parts)
+    packed = ws.get("packed", (kept_size, K.PACK_WORDS), np.float32)
+    kept_boxes = ws.get("kept_boxes", (kept_size, 4))
+    q = 0
+    for c0, c1, local, local_boxes in parts:   # in key order, as one pass would
+        b = chunk_boxes[:c1 - c0]
+        b[local] = local_boxes
+        K.pack_casters(recs[c0:c1], keys[c0:c1], b, local, kx, ky, kz, sx, sy, sgn, scale,
+                       packed[q:q + local.size], kept_boxes[q:q + local.size])
+        q += local.size
+    del parts
     boxes = kept_boxes
     timing["project_s"] = time.perf_counter() - t0
 
@@ -280,7 +351,7 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     rec_order = ws.get("rec_order", n, np.int32)
     rec_origins = ws.get("rec_origins", (n, 3))
     K.fill_receivers(cells, counts, origins, rec_order, rec_origins)
-    ranges = ws.get("ranges", (kept.size, 4), np.int64)
+    ranges = ws.get("ranges", (kept_size, 4), np.int64)
     K.caster_ranges(boxes, box[0], box[2], inv, inv, nx, ny, ranges)
     refs = np.empty(0, np.int32)
     K.scatter_casters(ranges, rec_start, nx, counts, refs, False)
@@ -301,7 +372,7 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     timing["query_s"] = time.perf_counter() - t0
     if stats is not None:
         stats.update(timing)
-        stats.update(receivers=n, casters=int(kept.size),
+        stats.update(receivers=n, casters=int(kept_size),
                      grid=(nx, ny), cell_m=size, references=int(n_refs),
                      tests=int(tests.sum()), occluded=int(out.sum()))
     return out

@@ -313,6 +313,37 @@ def _cell(v, v0, inv, n):
     return np.int64(c)
 
 
+@njit(cache=True)
+def occupancy_table(xs, ys, x0, y0, inv, nx, ny, out_table):
+    """``out_table`` (ny + 1, nx + 1) int32 (any content): the summed-area table of the cells
+    of a grid (``nx`` by ``ny``, cell ``1 / inv`` from ``(x0, y0)``, :func:`_cell`) that hold
+    a receiver, ``out_table[iy, ix]`` the occupied cells below row iy and left of column ix."""
+    out_table[:, :] = 0
+    for i in range(xs.shape[0]):
+        out_table[_cell(ys[i], y0, inv, ny) + 1, _cell(xs[i], x0, inv, nx) + 1] = 1
+    for iy in range(1, ny + 1):
+        row = 0
+        for ix in range(1, nx + 1):
+            row += out_table[iy, ix]
+            out_table[iy, ix] = out_table[iy - 1, ix] + row
+
+
+@njit(cache=True, parallel=True)
+def cull_unoccupied(boxes, x0, y0, inv, nx, ny, table):
+    """NaN in ``boxes[j, 0]`` for each kept caster whose box (x0, x1, y0, y1) covers no cell of
+    :func:`occupancy_table`'s grid that holds a receiver: no receiver point lies in its box
+    (:func:`_cell` is monotone), so by the binning argument it can shade none."""
+    for j in prange(boxes.shape[0]):
+        if np.isnan(boxes[j, 0]):
+            continue
+        ix0 = _cell(boxes[j, 0], x0, inv, nx)
+        ix1 = _cell(boxes[j, 1], x0, inv, nx) + 1
+        iy0 = _cell(boxes[j, 2], y0, inv, ny)
+        iy1 = _cell(boxes[j, 3], y0, inv, ny) + 1
+        if table[iy1, ix1] - table[iy0, ix1] - table[iy1, ix0] + table[iy0, ix0] == 0:
+            boxes[j, 0] = np.nan
+
+
 @njit(cache=True, parallel=True)
 def receiver_cells(xs, ys, x0, y0, inv_x, inv_y, nx, ny, out_cell):
     """Grid cell of each receiver (row-major, ``iy * nx + ix``)."""
