@@ -124,6 +124,8 @@ def release_pages(*arrays) -> int:
     import mmap
 
     released = 0
+    if not hasattr(mmap, "MADV_DONTNEED"):  # not Linux/BSD: the pages stay, as before
+        return released
     for a in arrays:
         if not isinstance(a, np.ndarray) or a.nbytes == 0:
             continue
