@@ -77,7 +77,9 @@ GATHER_ROWS = 1 << 20
 #: Cells of the receiver occupancy grid that drops casters whose box holds no receiver (at
 #: most one per receiver): a map strip's receivers are a thin slanted band in the light plane
 #: and their box holds most of the city (4.6 M of 10 M casters kept for a strip of 94 rows).
-OCCUPANCY_CELLS = 1 << 20
+#: 2^16 cells (256 KB, cache-resident) still resolve such a band (cells of ~15 m against its
+#: ~90 m width) where 2^20 (4 MB) missed the cache on every receiver.
+OCCUPANCY_CELLS = 1 << 16
 
 
 class Casters:
@@ -315,14 +317,17 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
         K.cull_unoccupied(b, box[0], box[2], occ_inv, onx, ony, occupied)
         local = np.flatnonzero(~np.isnan(b[:, 0]))
         if local.size:
-            parts.append((c0, c1, local, b[local]))
+            # One chunk (up to 10^6 casters) packs from its boxes in place; more chunks keep
+            # their kept boxes, since the next chunk reuses the work array.
+            parts.append((c0, c1, local, None if n_recs <= CULL_ROWS else b[local]))
     kept_size = sum(p[2].size for p in parts)
     packed = ws.get("packed", (kept_size, K.PACK_WORDS), np.float32)
     kept_boxes = ws.get("kept_boxes", (kept_size, 4))
     q = 0
     for c0, c1, local, local_boxes in parts:   # in key order, as one pass would
         b = chunk_boxes[:c1 - c0]
-        b[local] = local_boxes
+        if local_boxes is not None:
+            b[local] = local_boxes
         K.pack_casters(recs[c0:c1], keys[c0:c1], b, local, kx, ky, kz, sx, sy, sgn, scale,
                        packed[q:q + local.size], kept_boxes[q:q + local.size])
         q += local.size

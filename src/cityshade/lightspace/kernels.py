@@ -313,13 +313,14 @@ def _cell(v, v0, inv, n):
     return np.int64(c)
 
 
-@njit(cache=True)
+@njit(cache=True, parallel=True)
 def occupancy_table(xs, ys, x0, y0, inv, nx, ny, out_table):
     """``out_table`` (ny + 1, nx + 1) int32 (any content): the summed-area table of the cells
     of a grid (``nx`` by ``ny``, cell ``1 / inv`` from ``(x0, y0)``, :func:`_cell`) that hold
     a receiver, ``out_table[iy, ix]`` the occupied cells below row iy and left of column ix."""
     out_table[:, :] = 0
-    for i in range(xs.shape[0]):
+    # Threads may mark one cell together: every store writes the same 1.
+    for i in prange(xs.shape[0]):
         out_table[_cell(ys[i], y0, inv, ny) + 1, _cell(xs[i], x0, inv, nx) + 1] = 1
     for iy in range(1, ny + 1):
         row = 0
