@@ -13,7 +13,10 @@ plots and worst-case difference images under ``docs/accuracy/``:
 
 Usage, from the repository root (about 15–25 minutes on 2 cores)::
 
-    python benchmarks/accuracy.py [--skip-1m] [--skip-stress] [--out docs]
+    python benchmarks/accuracy.py [--skip-1m] [--city-1m PATH] [--skip-stress] [--out docs]
+
+``--city-1m`` takes the 1M city from elsewhere: a ``.cityshade`` cache is opened as it is, a
+CityGML file is built into ``bench_out/city_1M.cityshade`` first.
 """
 from __future__ import annotations
 
@@ -94,6 +97,9 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--out", type=Path, default=REPO / "docs")
     parser.add_argument("--skip-1m", action="store_true")
+    parser.add_argument("--city-1m", type=Path, default=None,
+                        help="the 1M city's cache or GML (default: bench_out/city_1M.cityshade, "
+                             "built from bench_out/city_1000000_s7.gml when missing)")
     parser.add_argument("--skip-stress", action="store_true")
     args = parser.parse_args(argv)
     from cityshade.evaluate import report_markdown, summary
@@ -123,12 +129,22 @@ def main(argv=None) -> int:
     else:
         closing.append(f"- TUM campus model not found at `{TUM}`: skipped.")
     if not args.skip_1m:
-        if not CITY_1M.exists() and CITY_1M_GML.exists():
+        city_1m, city_1m_gml = CITY_1M, CITY_1M_GML
+        if args.city_1m is not None:
+            if not args.city_1m.exists():
+                parser.error(f"--city-1m: {args.city_1m} does not exist")
+            if args.city_1m.suffix == ".cityshade":
+                city_1m = args.city_1m
+            else:
+                city_1m_gml = args.city_1m
+                CITY_1M.unlink(missing_ok=True)
+        if not city_1m.exists() and city_1m_gml.exists():
             from cityshade.build import build_file
 
-            build_file(CITY_1M_GML, CITY_1M)
-        if CITY_1M.exists():
-            models.append(("city_1M", CITY_1M, "izb,shadowmap,pcf,vsm,lispsm,csm,pcf+smooth,"
+            city_1m.parent.mkdir(parents=True, exist_ok=True)
+            build_file(city_1m_gml, city_1m)
+        if city_1m.exists():
+            models.append(("city_1M", city_1m, "izb,shadowmap,pcf,vsm,lispsm,csm,pcf+smooth,"
                            "hybrid:shadowmap,hybrid:vsm", (2048, 4096), 1, (1280, 720)))
         else:
             closing.append("- 1M-triangle city not found: skipped.")
