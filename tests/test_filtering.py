@@ -76,6 +76,30 @@ def test_vsm_matches_twin_and_bounds():
         fast = flt.vsm_lookup(moments, u, v, d, 1e-3, bleed)
         slow = reference_vsm_lookup(moments, u, v, d, 1e-3, bleed)
         np.testing.assert_allclose(fast, slow, atol=1e-6)
+
+
+def test_smooth_of_a_binary_picture_matches_twin():
+    # Shadow-map output is mostly exactly 0 or 1: the kernel skips the taps where a line holds
+    # one value within its radius, so the twin is checked on such pictures too (blocks of 0
+    # and 1, a few fractional pixels, invalid pixels and depth steps), and pixels whose whole
+    # neighbourhood holds one value keep it exactly.
+    rng = np.random.default_rng(11)
+    h, w = 80, 100
+    lit = np.kron(rng.integers(0, 2, (4, 5)), np.ones((20, 20))).astype(np.float64)
+    lit[3:5, 30:33] = 0.5
+    lit[20, 7] = 0.25
+    depth = np.where(np.arange(w)[None, :] < 47, 10.0, 10.8) * np.ones((h, 1))
+    valid = rng.random((h, w)) > 0.03
+    for sigma in (0.7, 1.5):
+        fast = flt.smooth_lit(lit, _surfaces(depth, valid), MAP, sigma, 0.02)
+        slow = reference_smooth_lit(lit, depth, valid, np.where(valid, sigma, 0.0), 0.02)
+        np.testing.assert_allclose(fast, slow, atol=1e-6)
+        r = int(np.ceil(3.0 * sigma))
+        padded = np.pad(lit, r, mode="edge")
+        windows = np.lib.stride_tricks.sliding_window_view(padded, (2 * r + 1, 2 * r + 1))
+        uniform = (windows.min(axis=(2, 3)) == windows.max(axis=(2, 3))) & np.isin(lit, (0, 1))
+        assert uniform.sum() > h * w // 4
+        np.testing.assert_array_equal(fast[uniform], lit[uniform].astype(np.float32))
         assert fast.min() >= 0.0 and fast.max() <= 1.0
 
 

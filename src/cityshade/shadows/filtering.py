@@ -281,8 +281,25 @@ def _smooth_pass(values, depth, ok, sigma, thr_rel, horizontal, out):
                 continue
             s = sigma[y, x]
             r = int(math.ceil(GAUSS_CUT_SIGMA * s))
+            v0 = values[y, x]
+            if v0 == 0.0 or v0 == 1.0:
+                # Fully lit or fully shadowed with only the same value within r on its line
+                # (most pixels): whatever stops the walk, the sum is v0 * wsum, which is
+                # exactly v0 for 0 and 1, so the taps (an exp each) are skipped.
+                same = True
+                dy = 0 if horizontal else 1
+                dx = 1 if horizontal else 0
+                for j in range(-r, r + 1):
+                    yq = y + dy * j
+                    xq = x + dx * j
+                    if 0 <= yq < h and 0 <= xq < w and values[yq, xq] != v0:
+                        same = False
+                        break
+                if same:
+                    out[y, x] = v0
+                    continue
             inv2 = 0.5 / (s * s)
-            acc = values[y, x]
+            acc = v0
             wsum = 1.0
             for side in range(2):
                 step = 2 * side - 1
