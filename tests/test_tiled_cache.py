@@ -177,6 +177,11 @@ def test_bad_input_one_line(built, tmp_path):
         assert r.exit_code != 0 and "not a tiled cache (no index.json" in r.output, cmd
         assert len(r.output.strip().splitlines()) == 1 and "Traceback" not in r.output
     assert not (tmp_path / "e").exists() and not (tmp_path / "c").exists()
+    # --crs cannot change a tiled cache's CRS: refused, not ignored.
+    r = runner.invoke(cli, ["evaluate", str(tiled), "--crs", "EPSG:25832", "-o",
+                            str(tmp_path / "e")])
+    assert r.exit_code != 0 and "is a tiled scene folder built with its CRS" in r.output
+    assert len(r.output.strip().splitlines()) == 1 and not (tmp_path / "e").exists()
     damaged = tmp_path / "damaged.cityshade"
     shutil.copytree(tiled, damaged)
     (damaged / "index.json").write_text("{not json")

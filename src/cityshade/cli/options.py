@@ -5,6 +5,7 @@ import contextlib
 import signal
 import sys
 import time
+from pathlib import Path
 
 import click
 
@@ -302,8 +303,9 @@ def settings_for_source(path, crs: str | None, settings=None):
 
     if crs is None:
         return settings
-    if is_cache_file(path):
-        raise UsageError(f"--crs applies to a CityGML file; {path} is a scene file built with "
+    if is_cache_file(path) or Path(path).is_dir():
+        kind = "tiled scene folder" if Path(path).is_dir() else "scene file"
+        raise UsageError(f"--crs applies to a CityGML file; {path} is a {kind} built with "
                          f"its CRS: rebuild it with cityshade build --crs")
     settings = settings or Settings()
     return dataclasses.replace(settings, build=dataclasses.replace(settings.build, crs=crs))
