@@ -261,7 +261,10 @@ class DaskExecutor:
                 with dask.config.set({"distributed.nanny.pre-spawn-environ": WORKER_ENVIRON}):
                     cluster = LocalCluster(n_workers=n, threads_per_worker=1, processes=True,
                                            dashboard_address=None, silence_logs=logging.ERROR,
-                                           env={"NUMBA_NUM_THREADS": str(threads)})
+                                           env={"NUMBA_NUM_THREADS": str(threads)},
+                                           # No dashboard; the scheduler's HTTP routes on a
+                                           # free port, not 8787 (taken by another cluster)
+                                           scheduler_kwargs={"dashboard_address": ":0"})
             finally:
                 _restore_environ(self._environ)
             return Client(cluster), cluster
