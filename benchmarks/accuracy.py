@@ -24,10 +24,11 @@ import argparse
 import datetime as dt
 import os
 import platform
-import subprocess
 import sys
 import time
 from pathlib import Path
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from provenance import commit  # noqa: E402  (the benchmarks' shared provenance)
 
 REPO = Path(__file__).resolve().parents[1]
 TUM = REPO.parent / "shared" / "data" / "citygml" / "munich-tum-campus-lod2" / "TUM Munich.gml"
@@ -53,15 +54,6 @@ def _machine() -> str:
             f"{platform.system()} {platform.release()}")
 
 
-def _commit() -> str:
-    try:
-        out = subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=REPO,
-                             capture_output=True, text=True, check=True).stdout.strip()
-        dirty = subprocess.run(["git", "status", "--porcelain", "--", "src"], cwd=REPO,
-                               capture_output=True, text=True).stdout.strip()
-        return out + (" (with uncommitted changes under src/)" if dirty else "")
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
 
 
 def _progress(done: int, total: int, label: str) -> None:
@@ -113,7 +105,7 @@ def main(argv=None) -> int:
         "-o DIR` and `cityshade evaluate sample_data/sample_city.gml --stress`). Do not edit by "
         "hand: run it again.",
         "",
-        f"- commit: `{_commit()}`; run {dt.datetime.now().strftime('%Y-%m-%d %H:%M')}",
+        f"- commit: `{commit()}`; run {dt.datetime.now().strftime('%Y-%m-%d %H:%M')}",
         f"- machine: {_machine()} (shared with other jobs while it ran: times are indicative)",
         "- error = share of surface pixels whose sun/shadow class differs from `raytrace` on "
         "the same pixels; edge = distance from a wrong pixel's surface point to the nearest "

@@ -35,7 +35,6 @@ import json
 import os
 import platform
 import statistics
-import subprocess
 import sys
 import tempfile
 import time
@@ -45,17 +44,12 @@ from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(Path(__file__).resolve().parent))
+from provenance import commit  # noqa: E402  (the benchmarks' shared provenance)
 from render import ensure_scene  # noqa: E402  (same input city as the render benchmark)
 
 DAY_2000 = 10957.0  # 2000-01-01 in days since 1970-01-01
 
 
-def _commit() -> str:
-    try:
-        return subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=REPO, text=True,
-                              capture_output=True, check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
 
 
 def main(argv=None) -> dict:
@@ -129,7 +123,7 @@ def main(argv=None) -> dict:
                     "differing_px": int((other.hours != r0.hours).sum())}
     result = {
         "benchmark": "batch",
-        "commit": _commit(),
+        "commit": commit(),
         "machine": {"cpu_count": os.cpu_count(), "platform": platform.platform(),
                     "python": platform.python_version(), "numba_threads": numba.get_num_threads()},
         "scene": {"triangles": scene.n_triangles, "city_date": "2000-01-01"},

@@ -41,6 +41,8 @@ import sys
 import time
 from dataclasses import asdict
 from pathlib import Path
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from provenance import commit  # noqa: E402  (the benchmarks' shared provenance)
 
 import numpy as np
 from lxml import etree
@@ -68,12 +70,6 @@ print(json.dumps({"returncode": proc.returncode, "seconds": seconds,
 """
 
 
-def _git_commit() -> str:
-    try:
-        return subprocess.run(["git", "rev-parse", "HEAD"], cwd=REPO, capture_output=True,
-                              text=True, check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
 
 
 def _generator_digest() -> str:
@@ -211,7 +207,7 @@ def main_cityjson(args) -> int:
                        memory_goal_met=bool(peak <= budget),
                        first_run_s=round(first[key]["seconds"], 3))
         rows[key] = row
-    result = {"benchmark": "build_throughput", "format": "cityjson", "commit": _git_commit(),
+    result = {"benchmark": "build_throughput", "format": "cityjson", "commit": commit(full=True),
               "machine": {"python": platform.python_version(), "platform": platform.platform(),
                           "cpus": os.cpu_count(), "numpy": np.__version__},
               "city": {fmt: meta for fmt, (_, meta) in cities.items()}, "triangles": triangles,
@@ -326,7 +322,7 @@ def main(argv: list[str] | None = None) -> int:
 
     result = {
         "benchmark": "build_throughput",
-        "commit": _git_commit(),
+        "commit": commit(full=True),
         "machine": {"python": platform.python_version(), "platform": platform.platform(),
                     "cpus": os.cpu_count(), "lxml": ".".join(map(str, etree.LXML_VERSION)),
                     "numpy": np.__version__},

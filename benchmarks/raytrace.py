@@ -37,6 +37,8 @@ import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from provenance import commit  # noqa: E402  (the benchmarks' shared provenance)
 
 import numba
 import numpy as np
@@ -300,14 +302,6 @@ def core_probe(threads_list, runs):
     return out
 
 
-def _commit() -> str:
-    import subprocess
-    try:
-        return subprocess.run(["git", "rev-parse", "--short", "HEAD"], text=True,
-                              capture_output=True, check=True,
-                              cwd=Path(__file__).resolve().parents[1]).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
 
 
 def timed(fn, runs, clock=time.perf_counter):
@@ -412,7 +406,7 @@ def run(args):
     numba_threads = numba.get_num_threads()
     verts, tris, t_begin, t_end, material = synthetic_city(args.triangles, seed=1)
     n_tri = tris.shape[0]
-    result = {"commit": _commit(), "triangles": int(n_tri), "city_time_days": CITY_TIME_DAYS,
+    result = {"commit": commit(), "triangles": int(n_tri), "city_time_days": CITY_TIME_DAYS,
               "sun": {"elevation_deg": SUN_ELEVATION_DEG, "azimuth_deg": SUN_AZIMUTH_DEG},
               "runs": args.runs, "workloads": {}}
     # Warm the kernels (compile or load the cache) on a tiny scene before timing the build.

@@ -34,6 +34,8 @@ import subprocess
 import sys
 import time
 from pathlib import Path
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from provenance import commit  # noqa: E402  (the benchmarks' shared provenance)
 
 from lxml import etree
 
@@ -95,12 +97,6 @@ def read_and_build(path: Path) -> tuple[float, float, int]:
     return t1 - t0, t2 - t1, int(len(scene.triangles))
 
 
-def _git_commit() -> str:
-    try:
-        return subprocess.run(["git", "rev-parse", "HEAD"], cwd=REPO, capture_output=True,
-                              text=True, check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
 
 
 def _summary(seconds: list[float], size: int) -> dict:
@@ -152,7 +148,7 @@ def main(argv: list[str] | None = None) -> int:
 
     result = {
         "benchmark": "reader_profile",
-        "commit": _git_commit(),
+        "commit": commit(full=True),
         "city": {"path": str(path), "size_bytes": size, "triangles": triangles},
         "repeat": args.repeat,
         "anchor_iterparse": _summary(times_anchor, size),

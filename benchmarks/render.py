@@ -42,6 +42,8 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from provenance import commit  # noqa: E402  (the benchmarks' shared provenance)
 
 import numpy as np
 
@@ -50,12 +52,6 @@ DAY_2000 = 10957.0          # 2000-01-01 in days since 1970-01-01
 ANCHOR_DESIGN_MS = {1: 264.0, 2: 165.0}   # DESIGN §12, llvmpipe 1080p depth+colour
 
 
-def _commit() -> str:
-    try:
-        return subprocess.run(["git", "rev-parse", "--short", "HEAD"], cwd=REPO, text=True,
-                              capture_output=True, check=True).stdout.strip()
-    except (OSError, subprocess.CalledProcessError):
-        return "unknown"
 
 
 def _machine() -> dict:
@@ -197,7 +193,7 @@ def main(argv=None) -> dict:
     }
     present = int(((np.asarray(scene.tri_t_begin_days) <= t_days)
                    & (t_days < np.asarray(scene.tri_t_end_days))).sum())
-    report: dict = {"commit": _commit(), "machine": _machine(), "scene": str(path),
+    report: dict = {"commit": commit(), "machine": _machine(), "scene": str(path),
                     "triangles": scene.n_triangles, "present_at_date": present,
                     "kdtree_references": int(scene.kdtree.prim_indices.shape[0]),
                     "size": [width, height], "t_days": t_days, "views": {}}
@@ -346,7 +342,7 @@ def shadow_map_main(argv=None) -> dict:
     lo, hi = light.min(axis=0), light.max(axis=0)
     view = sm.ortho_view(sun.direction, (lo[0], hi[0]), (lo[1], hi[1]), (lo[2] - 1, hi[2] + 1),
                          args.size, args.size)
-    report = {"benchmark": "shadow-map depth pass", "commit": _commit(), "machine": _machine(),
+    report = {"benchmark": "shadow-map depth pass", "commit": commit(), "machine": _machine(),
               "size": args.size, "sun_deg": [az, el], "triangles": int(scene.triangles.shape[0]),
               "ours": {}, "llvmpipe": {}}
     for n in threads:
@@ -457,7 +453,7 @@ def techniques_main(argv=None) -> dict:
     views = {"overview": overview(scene, w, h),
              "map": map_view(scene, px, bbox=(cx - side_m / 2, cy - side_m / 2,
                                               cx + side_m / 2, cy + side_m / 2))}
-    report = {"benchmark": "render-techniques", "commit": _commit(), "machine": _machine(),
+    report = {"benchmark": "render-techniques", "commit": commit(), "machine": _machine(),
               "triangles": scene.n_triangles, "sun": [az, el], "views": {}}
     for view_name, cam in views.items():
         t_frame = []

@@ -42,7 +42,8 @@ from pathlib import Path
 
 REPO = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from render import _commit, _machine  # noqa: E402  (the benchmarks' shared provenance)
+from provenance import commit  # noqa: E402  (the benchmarks' shared provenance)
+from render import _machine  # noqa: E402
 
 BENCH = Path("/work/bench_data")
 DAY_2000 = 10957.0  # 2000-01-01 in days since 1970-01-01
@@ -150,7 +151,7 @@ def main(argv=None) -> dict:
     med_cpu = {n: statistics.median(r["cpu_s"] for r in rs) for n, rs in results.items()}
     any_run = next(iter(results.values()))[0]
     px_steps = any_run["pixels"] * any_run["units"]
-    out = {"commit": _commit(), "scene": str(scene_path),
+    out = {"commit": commit(), "scene": str(scene_path),
            "triangles": scene.n_triangles, "pixel_size_m": args.pixel_size,
            "map_px": [cam.width_px, cam.height_px], "surface_px": any_run["pixels"],
            "sun_positions": any_run["units"], "tile_px": args.tile_px,

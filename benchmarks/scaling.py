@@ -34,7 +34,8 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from render import DAY_2000, REPO, _commit, _machine, ensure_scene  # noqa: E402
+from provenance import commit  # noqa: E402
+from render import DAY_2000, REPO, _machine, ensure_scene  # noqa: E402
 
 STAGES = ["gbuffer", "resolve", "raytrace", "izb", "raytrace_map", "izb_map", "shade",
           "depth_pass", "kdtree_build", "sun_hours"]
@@ -141,7 +142,7 @@ def main(argv=None) -> dict:
                 times[name][n].append(runners[name]())
     probe_after = core_probe([1, 2], 5)
     numba.set_num_threads(2)
-    report = {"benchmark": "two-core scaling", "commit": _commit(), "machine": _machine(),
+    report = {"benchmark": "two-core scaling", "commit": commit(), "machine": _machine(),
               "triangles": int(scene.triangles.shape[0]), "repeat": args.repeat,
               "probe_scaling": {"before": probe_before[1] / probe_before[2],
                                 "after": probe_after[1] / probe_after[2]},
