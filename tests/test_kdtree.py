@@ -335,3 +335,42 @@ def test_radix_event_order_is_the_stable_comparison_order(n):
     for q in range(8):
         column = hi[:, q >> 1] if q & 1 else lo[:, q >> 1]
         np.testing.assert_array_equal(orders[q], reference_event_order(column))
+
+
+def test_an_interrupted_subtree_build_starts_no_queued_subtree(city, monkeypatch):
+    """Ctrl-C (or a failure) during the parallel subtree builds ends the build once the
+    running subtrees return: the queued ones are cancelled, not all built first (what
+    ``Executor.map``'s iterator does when an exception leaves it)."""
+    import threading
+    import time
+
+    import numba
+
+    from cityshade.accel import kdtree_build as kb
+
+    if min(2, numba.config.NUMBA_NUM_THREADS) < 2:
+        pytest.skip("needs 2 Numba threads")
+    real = kb._build_kernel
+    calls = []
+    lock = threading.Lock()
+
+    def kernel(*args):
+        with lock:
+            calls.append(args[2].shape[0])
+            first = len(calls) == 1
+        if first:
+            raise KeyboardInterrupt
+        time.sleep(0.05)
+        return real(*args)
+
+    before = numba.get_num_threads()
+    numba.set_num_threads(2)
+    try:
+        monkeypatch.setattr(kb, "_build_kernel", lambda *a: kernel(*a) if a[-1] == 0 else
+                            real(*a))
+        with pytest.raises(KeyboardInterrupt):
+            build_kdtree(*city, settings=KdTreeSettings(subtree_refs=30))
+    finally:
+        numba.set_num_threads(before)
+    # subtree_refs=30 defers dozens of subtrees; one thread was busy for 50 ms at most.
+    assert 1 <= len(calls) <= 4, len(calls)
