@@ -269,10 +269,42 @@ def vsm_lookup(moments, u_px, v_px, depth_m, min_variance_m2: float,
 # --- screen-space smoothing -------------------------------------------------------------------
 
 @njit(cache=True, parallel=True)
-def _smooth_pass(values, depth, ok, sigma, thr_rel, horizontal, out):
+def _equal_runs(values, horizontal, before, after):
+    """Per pixel, how many pixels in a row along the line (a row when ``horizontal``, else a
+    column), itself included, hold exactly its value, counted backwards (``before``) and
+    forwards (``after``)."""
+    h, w = values.shape
+    if horizontal:
+        for y in prange(h):
+            before[y, 0] = 1
+            for x in range(1, w):
+                before[y, x] = before[y, x - 1] + 1 if values[y, x] == values[y, x - 1] else 1
+            after[y, w - 1] = 1
+            for x in range(w - 2, -1, -1):
+                after[y, x] = after[y, x + 1] + 1 if values[y, x] == values[y, x + 1] else 1
+    else:
+        # Blocks of columns, row after row inside each (a row reads the previous one): the
+        # inner loop runs along a row, contiguous in memory.
+        for b in prange((w + 63) // 64):
+            x0, x1 = 64 * b, min(w, 64 * b + 64)
+            for x in range(x0, x1):
+                before[0, x] = 1
+                after[h - 1, x] = 1
+            for y in range(1, h):
+                for x in range(x0, x1):
+                    before[y, x] = (before[y - 1, x] + 1 if values[y, x] == values[y - 1, x]
+                                    else 1)
+            for y in range(h - 2, -1, -1):
+                for x in range(x0, x1):
+                    after[y, x] = after[y + 1, x] + 1 if values[y, x] == values[y + 1, x] else 1
+
+
+@njit(cache=True, parallel=True)
+def _smooth_pass(values, depth, ok, sigma, thr_rel, horizontal, before, after, out):
     """One depth-aware 1-D Gaussian pass. From each pixel the kernel walks outward on each
     side and stops at the first pixel that is not ``ok`` or whose depth differs from its
-    predecessor's by more than ``thr_rel`` times the predecessor's depth."""
+    predecessor's by more than ``thr_rel`` times the predecessor's depth. ``before`` and
+    ``after`` are :func:`_equal_runs` of ``values`` along the pass."""
     h, w = values.shape
     for y in prange(h):
         for x in range(w):
@@ -286,16 +318,9 @@ def _smooth_pass(values, depth, ok, sigma, thr_rel, horizontal, out):
                 # Fully lit or fully shadowed with only the same value within r on its line
                 # (most pixels): whatever stops the walk, the sum is v0 * wsum, which is
                 # exactly v0 for 0 and 1, so the taps (an exp each) are skipped.
-                same = True
-                dy = 0 if horizontal else 1
-                dx = 1 if horizontal else 0
-                for j in range(-r, r + 1):
-                    yq = y + dy * j
-                    xq = x + dx * j
-                    if 0 <= yq < h and 0 <= xq < w and values[yq, xq] != v0:
-                        same = False
-                        break
-                if same:
+                pos = x if horizontal else y
+                end = w if horizontal else h
+                if (before[y, x] > min(r, pos) and after[y, x] > min(r, end - 1 - pos)):
                     out[y, x] = v0
                     continue
             inv2 = 0.5 / (s * s)
@@ -372,10 +397,15 @@ def smooth_lit(lit, surfaces, camera, sigma_px: float, depth_threshold_rel: floa
     else:
         d = np.maximum(depth[ok], 1e-9)
         sig[ok] = np.clip(sigma * float(np.median(d)) / d, sigma / max_gain, sigma * max_gain)
+    values = np.ascontiguousarray(values)
     tmp = np.empty_like(values)
     out = np.empty_like(values)
-    _smooth_pass(np.ascontiguousarray(values), depth, ok, sig, thr, True, tmp)
-    _smooth_pass(tmp, depth, ok, sig, thr, False, out)
+    before = np.empty(values.shape, np.int32)
+    after = np.empty(values.shape, np.int32)
+    _equal_runs(values, True, before, after)
+    _smooth_pass(values, depth, ok, sig, thr, True, before, after, tmp)
+    _equal_runs(tmp, False, before, after)
+    _smooth_pass(tmp, depth, ok, sig, thr, False, before, after, out)
     return np.clip(out, 0.0, 1.0).astype(np.float32)
 
 
