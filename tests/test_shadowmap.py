@@ -175,6 +175,26 @@ def test_aliasing_measure_analytic(one_box):
         assert a["max"] == pytest.approx(m, rel=1e-6) and a["mean"] == pytest.approx(m, rel=1e-6)
 
 
+def test_aliasing_measure_of_gathered_seen_side_normals_is_the_same(sample):
+    """The techniques hand ``aliasing_m`` their gathered receivers, whose normals are turned to
+    the seen side: m is the same, bit for bit, as from the G-buffer's own normals, for any
+    normal turned (here all of them, and those the seen side turns)."""
+    from cityshade.shadows import gather_pixels, oriented_normals
+
+    for cam in (cams.overview(sample, 200, 120), cams.map_view(sample, 2.0)):
+        sun = sun_from_angles(240.0, 15.0)
+        ctx = _context(sample, cam, sun)
+        view = sm.fit_uniform(sample, ctx, 256)
+        valid = np.asarray(ctx.surfaces.valid)
+        points = gather_pixels(ctx.surfaces.position_m, valid)
+        normals = gather_pixels(ctx.surfaces.normal, valid)
+        a = sm.aliasing_m(view, cam, ctx.surfaces)
+        assert a["pixels"] > 1000
+        for turned in (-normals, gather_pixels(oriented_normals(ctx.surfaces, cam), valid)):
+            assert sm.aliasing_m(view, cam, ctx.surfaces, points_m=points,
+                                 normals=turned) == a
+
+
 @pytest.mark.parametrize("kind", ["overview", "map"])
 @pytest.mark.parametrize("el", [5.0, 30.0, 70.0])
 def test_techniques_agree_with_raytrace(sample, kind, el):

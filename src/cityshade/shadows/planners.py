@@ -28,8 +28,7 @@ from typing import Any
 
 import numpy as np
 
-from cityshade.shadows import (MapUse, ShadowContext, ShadowResult, TechniqueDiagnostics,
-                               gather_pixels)
+from cityshade.shadows import MapUse, ShadowContext, ShadowResult, TechniqueDiagnostics
 from cityshade.shadows.lookups import Lookup
 
 
@@ -139,7 +138,8 @@ class Warped:
         view = prepared.views[0]
         faces = ctx.faces
         texel_m = sm.texel_footprint_m(view, ctx.facing_points, prepared.sun_direction)
-        alias = sm.aliasing_m(view, ctx.camera, ctx.surfaces, mask=faces)
+        alias = sm.aliasing_m(view, ctx.camera, ctx.surfaces, mask=faces,
+                              points_m=ctx.facing_points, normals=ctx.facing_normals)
         return {"texel_m": float(np.median(texel_m)),
                 "aliasing_m": {"max": alias["max"], "mean": alias["mean"]}}
 
@@ -230,9 +230,10 @@ class Cascaded:
         rendered = [e for e in per_cascade if "skipped" not in e]
         texel_all = []
         for entry, use in zip(rendered, prepared.maps):
-            points = gather_pixels(ctx.surfaces.position_m, use.pixels)
+            points, normals = ctx.receivers(use.pixels)
             texel_k = sm.texel_footprint_m(use.depth_map.view, points, prepared.sun_direction)
-            alias = sm.aliasing_m(use.depth_map.view, ctx.camera, ctx.surfaces, mask=use.pixels)
+            alias = sm.aliasing_m(use.depth_map.view, ctx.camera, ctx.surfaces, mask=use.pixels,
+                                  points_m=points, normals=normals)
             entry.update({"texel_m": float(np.median(texel_k)),
                           "aliasing_m": {"max": alias["max"], "mean": alias["mean"]}})
             texel_all.append(texel_k)

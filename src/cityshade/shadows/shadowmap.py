@@ -453,7 +453,8 @@ def texel_footprint_m(view: LightView, points_m, normals) -> np.ndarray:
     return out
 
 
-def aliasing_m(view: LightView, camera, surfaces, mask=None) -> dict[str, float]:
+def aliasing_m(view: LightView, camera, surfaces, mask=None, points_m=None, normals=None
+               ) -> dict[str, float]:
     """Aliasing measure m (Lloyd et al. 2008): screen extent of one shadow-map texel.
 
     At each visible pixel (``mask``, default: all valid pixels), the two edges of the texel
@@ -462,6 +463,11 @@ def aliasing_m(view: LightView, camera, surfaces, mask=None) -> dict[str, float]
     of the two, in pixels. m > 1: one texel covers several pixels (undersampling, blocky shadow
     edges); m < 1: several texels per pixel.
 
+    ``points_m`` and ``normals`` (N, 3), when given, are those pixels' points and normals
+    already gathered (row-major, as :func:`~cityshade.shadows.gather_pixels`); a normal turned
+    to the seen side gives the same m, bit for bit (the tangent frame's first axis and both
+    Jacobians' first columns change sign exactly, and their product does not).
+
     Returns
     -------
     dict
@@ -469,10 +475,13 @@ def aliasing_m(view: LightView, camera, surfaces, mask=None) -> dict[str, float]
     """
     from cityshade.shadows import gather_pixels
 
-    valid = np.asarray(surfaces.valid, bool) if mask is None else np.asarray(mask, bool)
-    # The gather kernel: numpy's boolean gather of (H, W, 3) images is several times slower.
-    p, n = _points_normals(gather_pixels(surfaces.position_m, valid),
-                           gather_pixels(surfaces.normal, valid))
+    if points_m is None or normals is None:
+        valid = np.asarray(surfaces.valid, bool) if mask is None else np.asarray(mask, bool)
+        # The gather kernel: numpy's boolean gather of (H, W, 3) images is several times
+        # slower.
+        points_m = gather_pixels(surfaces.position_m, valid)
+        normals = gather_pixels(surfaces.normal, valid)
+    p, n = _points_normals(points_m, normals)
     if p.shape[0] == 0:
         return {"max": 0.0, "mean": 0.0, "pixels": 0}
     h, w = camera.shape
@@ -763,5 +772,6 @@ def map_diagnostics(views, ctx: ShadowContext, points_m, normals, faces) -> dict
     light = np.min([texel_footprint_m(v, p, s) for v in views], axis=0)
     out["texel_m"] = float(np.median(surf[np.isfinite(surf)])) if np.isfinite(surf).any() else 0.0
     out["texel_light_m"] = float(np.median(light))
-    out["aliasing_m"] = aliasing_m(views[0], ctx.camera, ctx.surfaces, mask=faces)
+    out["aliasing_m"] = aliasing_m(views[0], ctx.camera, ctx.surfaces, mask=faces, points_m=p,
+                                   normals=normals)
     return out
