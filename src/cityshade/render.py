@@ -7,6 +7,7 @@ parses options into these calls.
 from __future__ import annotations
 
 import math
+import os
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -79,8 +80,13 @@ STRIP_BYTES = 128 * 1024 ** 2
 #: at the strip's edge they must be the whole map's.
 STRIP_HALO_ROWS = 1
 #: Bytes per pixel that a strip-wise frame keeps for the whole map: lit 4, RGB 12, valid 1,
-#: depth 4, normal 12, object and triangle ids 4 + 4.
+#: depth 4, normal 12, object and triangle ids 4 + 4. They go to a temporary file
+#: (:func:`_spool`), not to memory: 0.82 GB of a 20 Mpx map beside the strips' work.
 STRIP_KEPT_BYTES_PER_PX = 41
+#: The whole-map arrays of a strip-wise frame: name, dtype, values per pixel.
+_STRIP_KEPT = (("lit", np.float32, 1), ("rgb", np.float32, 3), ("valid", np.bool_, 1),
+               ("depth", np.float32, 1), ("normal", np.float32, 3), ("obj_id", np.int32, 1),
+               ("prim_id", np.int32, 1))
 
 
 def strip_rows_for(camera: "Camera", technique: str = "raytrace",
@@ -150,7 +156,9 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
         when a large map goes in strips without it). The pixels are the whole frame's, bit for
         bit; the frame then keeps only what :func:`write_frame` writes
         (:data:`STRIP_KEPT_BYTES_PER_PX`): ``surfaces`` has ``valid``, ``normal``, ``depth``,
-        ``obj_id`` and ``prim_id`` (the rest None), ``gbuffer`` ``prim_id`` and ``depth``.
+        ``obj_id`` and ``prim_id`` (the rest None), ``gbuffer`` ``prim_id`` and ``depth``;
+        these, ``lit`` and ``rgb`` are read-only memory maps of a temporary file (in
+        :func:`tempfile.gettempdir`, ``TMPDIR``), not memory.
     """
     from cityshade.pipeline import camera_pass, check_frame_memory, shadow_pass
     from cityshade.shading import shade
@@ -196,44 +204,94 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
 
 def check_strip_memory(camera: "Camera", rows: int, technique: str,
                        settings: ShadowSettings | None = None) -> int:
-    """The estimated peak bytes of a strip-wise frame (the kept whole-map arrays plus one
-    strip's work); refuse one that does not fit in the available memory.
+    """The estimated peak bytes of a strip-wise frame (one strip's work: the whole-map arrays
+    go to a temporary file); refuse one that does not fit in the available memory, or whose
+    file does not fit in the temporary folder.
 
     Raises
     ------
     UsageError
-        The estimate exceeds the available memory.
+        The estimate exceeds the available memory, or the file the free disk space.
     """
     from cityshade.pipeline import available_memory_bytes, frame_bytes
 
+    import shutil
+    import tempfile
+
     height, width = camera.shape
     strip = camera.strip(0, min(height, rows + 2 * STRIP_HALO_ROWS))
-    need = height * width * STRIP_KEPT_BYTES_PER_PX + frame_bytes(strip, technique, settings)[0]
+    need = frame_bytes(strip, technique, settings)[0]
     have = available_memory_bytes()
     if have is not None and need > have:
         raise UsageError(f"the picture of {width} × {height} pixels in strips of {rows} rows "
                          f"needs about {need / 1e9:.1f} GB but {have / 1e9:.1f} GB are "
                          f"available: use a larger --pixel-size")
+    spool = height * width * STRIP_KEPT_BYTES_PER_PX
+    folder = tempfile.gettempdir()
+    free = shutil.disk_usage(folder).free
+    if spool > free:
+        raise UsageError(f"the picture of {width} × {height} pixels in strips keeps "
+                         f"{spool / 1e9:.1f} GB in a temporary file but {folder} has "
+                         f"{free / 1e9:.1f} GB free: set TMPDIR to a larger disk or use a "
+                         f"larger --pixel-size")
     return need
+
+
+class _Spool:
+    """The whole-map arrays of a strip-wise frame (:data:`_STRIP_KEPT`) in an unlinked
+    temporary file: each strip's rows are written with ``os.pwrite`` (no page of them stays
+    resident), and :meth:`arrays` maps the complete file read-only, so the writers' reads are
+    clean file pages (:func:`cityshade.cache.release_pages` drops them, the OS page cache
+    keeps them). Nothing is left on disk however the process ends."""
+
+    def __init__(self, height: int, width: int):
+        import mmap
+        import tempfile
+
+        self.shape = (height, width)
+        self.offsets: dict[str, int] = {}
+        end = 0
+        for name, dtype, per_px in _STRIP_KEPT:
+            self.offsets[name] = end
+            end += height * width * per_px * np.dtype(dtype).itemsize
+            end += -end % mmap.ALLOCATIONGRANULARITY     # each array on a page of its own
+        self.file = tempfile.TemporaryFile(prefix="cityshade-strips-")
+        self.file.truncate(end)     # sparse: the strips fill it
+        self.size = end
+
+    def write_rows(self, name: str, row0: int, values: np.ndarray) -> None:
+        """Rows ``row0 …`` of array ``name`` (whole rows)."""
+        data = memoryview(np.ascontiguousarray(values)).cast("B")
+        offset = self.offsets[name] + row0 * (data.nbytes // len(values))  # bytes of a row
+        while data.nbytes:          # pwrite may write less than asked
+            done = os.pwrite(self.file.fileno(), data, offset)
+            data, offset = data[done:], offset + done
+
+    def arrays(self) -> dict[str, np.ndarray]:
+        """The complete arrays, read-only memory maps of the file (closed with them)."""
+        whole = np.memmap(self.file, dtype=np.uint8, mode="r", shape=(self.size,))
+        self.file.close()           # the map keeps the file
+        out = {}
+        for name, dtype, per_px in _STRIP_KEPT:
+            shape = self.shape + ((per_px,) if per_px > 1 else ())
+            n = int(np.prod(shape)) * np.dtype(dtype).itemsize
+            start = self.offsets[name]
+            out[name] = whole[start:start + n].view(dtype).reshape(shape)
+        return out
 
 
 def _render_strips(scene, camera, t_days, sun, technique, tech, settings, sky, ground, measure,
                    rows, warnings) -> Frame:
     """:func:`render_frame` of a map in strips of ``rows`` rows (each with
-    :data:`STRIP_HALO_ROWS` more on either side, dropped), copied into whole-map arrays."""
+    :data:`STRIP_HALO_ROWS` more on either side, dropped), written into the whole-map arrays
+    of a :class:`_Spool`."""
     from cityshade.pipeline import camera_pass, shadow_pass
     from cityshade.raster.gbuffer import GBuffer, Surfaces
     from cityshade.scenefile import release_scene_pages
     from cityshade.shading import shade
 
     height, width = camera.shape
-    lit = np.zeros((height, width), np.float32)
-    rgb = np.empty((height, width, 3), np.float32)
-    valid = np.zeros((height, width), bool)
-    depth = np.empty((height, width), np.float32)
-    normal = np.empty((height, width, 3), np.float32)
-    obj_id = np.empty((height, width), np.int32)
-    prim_id = np.empty((height, width), np.int32)
+    spool = _Spool(height, width)
     extra: dict[str, np.ndarray] = {}
     timings: dict[str, float] = {}
     ground_z = ground_box = None
@@ -265,19 +323,16 @@ def _render_strips(scene, camera, t_days, sun, technique, tech, settings, sky, g
         warnings += [w for w in shade_report.get("texture_warnings", []) if w not in warnings]
         a, b = r0 - h0, r1 - h0          # the strip's own rows in its arrays
         s = cp.surfaces
-        lit[r0:r1] = sp.lit[a:b]
-        rgb[r0:r1] = strip_rgb[a:b]
-        valid[r0:r1] = s.valid[a:b]
-        depth[r0:r1] = s.depth[a:b]
-        normal[r0:r1] = s.normal[a:b]
-        obj_id[r0:r1] = s.obj_id[a:b]
-        prim_id[r0:r1] = cp.gbuffer.prim_id[a:b]
+        for name, values in (("lit", sp.lit), ("rgb", strip_rgb), ("valid", s.valid),
+                             ("depth", s.depth), ("normal", s.normal), ("obj_id", s.obj_id),
+                             ("prim_id", cp.gbuffer.prim_id)):
+            spool.write_rows(name, r0, np.asarray(values)[a:b])
         for name, values in sp.result.extra_channels.items():
             if name not in extra:
                 extra[name] = np.zeros((height, width), np.float32)
             extra[name][r0:r1] = np.asarray(values, np.float32)[a:b]
         if cp.ground is not None:   # the plane's pixels of the strip's own rows
-            filled += int(np.count_nonzero(valid[r0:r1] & (prim_id[r0:r1] < 0)))
+            filled += int(np.count_nonzero(s.valid[a:b] & (cp.gbuffer.prim_id[a:b] < 0)))
         diagnostics = sp.diagnostics(cp)
         n_strips += 1
         del cp, sp, strip_rgb, s
@@ -287,12 +342,14 @@ def _render_strips(scene, camera, t_days, sun, technique, tech, settings, sky, g
         from dataclasses import replace
 
         diagnostics.ground = replace(diagnostics.ground, pixels=filled)
-    gbuffer = GBuffer(camera=camera, prim_id=prim_id, bary=None, depth=depth,
+    kept = spool.arrays()
+    gbuffer = GBuffer(camera=camera, prim_id=kept["prim_id"], bary=None, depth=kept["depth"],
                       stats=diagnostics.gbuffer)
-    surfaces = Surfaces(position_m=None, normal=normal, obj_id=obj_id, material=None,
-                        texture=None, uv=None, cls=None, valid=valid, prim_id=prim_id,
-                        depth=depth)
-    return Frame(camera=camera, gbuffer=gbuffer, surfaces=surfaces, lit=lit, rgb=rgb, sun=sun,
+    surfaces = Surfaces(position_m=None, normal=kept["normal"], obj_id=kept["obj_id"],
+                        material=None, texture=None, uv=None, cls=None, valid=kept["valid"],
+                        prim_id=kept["prim_id"], depth=kept["depth"])
+    return Frame(camera=camera, gbuffer=gbuffer, surfaces=surfaces, lit=kept["lit"],
+                 rgb=kept["rgb"], sun=sun,
                  t_days=t_days, technique=technique, timings_s=timings,
                  diagnostics=diagnostics, warnings=warnings, extra_channels=extra)
 
