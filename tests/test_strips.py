@@ -158,6 +158,7 @@ def test_strip_arrays_live_in_a_temporary_file(sample_city_scene, tmp_path, monk
     for a in kept:
         assert not a.flags.writeable
     assert release_pages(*kept) >= sum(a.nbytes for a in kept)   # file pages, not memory
+    assert release_pages(strips.rgb[..., 1]) >= strips.rgb.nbytes - 8   # a channel: its rows
     for a, b in zip(kept, (whole.lit, whole.rgb, whole.surfaces.valid, whole.surfaces.depth,
                            whole.surfaces.normal, whole.surfaces.obj_id,
                            whole.gbuffer.prim_id)):

@@ -432,6 +432,8 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
 def _interleaver(planes, ids: bool) -> Callable[[int, int], np.ndarray]:
     """``rows(y0, y1)``: rows ``[y0, y1)`` of the planes interleaved as one (rows, W, C)
     float32 strip, or uint32 with -1 as ``_UINT32_NONE`` when ``ids``."""
+    from cityshade.cache import release_pages
+
     width = planes[0].shape[1]
 
     def rows(y0: int, y1: int) -> np.ndarray:
@@ -444,6 +446,8 @@ def _interleaver(planes, ids: bool) -> Callable[[int, int], np.ndarray]:
                 strip[..., index] = np.where(wide < 0, _UINT32_NONE, wide)
             else:
                 strip[..., index] = plane[y0:y1]
+        # A read-only map's rows (a strip-wise frame's) leave the resident set once read.
+        release_pages(*(p[y0:y1] for p in planes if not isinstance(p, LazyChannel)))
         return strip
 
     return rows

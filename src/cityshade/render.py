@@ -432,6 +432,7 @@ def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
 
 def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef) -> list[Path]:
     from cityshade import imageio
+    from cityshade.cache import release_pages
     from cityshade.shading import to_srgb8
 
     meta = frame_metadata(frame, scene, date_text)
@@ -440,17 +441,22 @@ def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef) ->
     if exr is not None:
         shape = s.valid.shape
 
-        def normal(axis):       # computed per strip of the EXR: no full-size temporaries
-            return imageio.LazyChannel(shape, lambda y0, y1: np.where(
-                s.valid[y0:y1], s.normal[y0:y1, :, axis], 0.0).astype(np.float32))
+        def lazy(values, fill, *read):
+            """Computed per strip of the EXR (no full-size temporaries); the rows of ``read``
+            leave the resident set once read (a strip-wise frame's mapped arrays)."""
+            def rows(y0, y1):
+                out = np.where(s.valid[y0:y1], values[y0:y1], fill).astype(np.float32)
+                release_pages(*(a[y0:y1] for a in read))
+                return out
+            return imageio.LazyChannel(shape, rows)
 
         channels = {
             "R": frame.rgb[..., 0], "G": frame.rgb[..., 1], "B": frame.rgb[..., 2],
             "shadow": frame.lit,
             # The resolved depth: the ground plane's pixels carry the plane's.
-            "Z": imageio.LazyChannel(shape, lambda y0, y1: np.where(
-                s.valid[y0:y1], s.depth[y0:y1], np.inf).astype(np.float32)),
-            "N.x": normal(0), "N.y": normal(1), "N.z": normal(2),
+            "Z": lazy(s.depth, np.inf, s.depth),
+            "N.x": lazy(s.normal[..., 0], 0.0), "N.y": lazy(s.normal[..., 1], 0.0),
+            "N.z": lazy(s.normal[..., 2], 0.0, s.normal, s.valid),   # the last reader
             "primid": frame.gbuffer.prim_id, "objid": s.obj_id,
         }
         if getattr(scene, "tiled", None) is not None:  # a tiled cache's view: the global ids
@@ -466,6 +472,7 @@ def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef) ->
         imageio.write_png_rgb(png, to_srgb8(frame.rgb), attributes=meta)
         written.append(Path(png))
     mask_px = shadow_mask(frame)
+    release_pages(frame.lit, s.valid)
     if mask is not None:
         imageio.write_mask_png(mask, mask_px, attributes=meta)
         written.append(Path(mask))
