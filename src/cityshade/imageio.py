@@ -351,6 +351,8 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
         Wrong extension, no channels, shapes that differ or are not 2-D, unsupported types,
         integers outside -1 … 2**32 - 2, bad names or attributes, or a write failure.
     """
+    from cityshade.cache import release_pages
+
     path = Path(path)
     if path.suffix.lower() != ".exr":
         raise ImageIOError(f"write_exr needs a .exr path, not {path.suffix or '(none)'!r}",
@@ -391,6 +393,7 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
             float_planes.append(values)
         elif kind in "biu":
             lo, hi = int(values.min()), int(values.max())
+            release_pages(values)   # a mapped array's pages read for the range (a strip-wise frame)
             if lo >= -_FLOAT32_EXACT_INT and hi <= _FLOAT32_EXACT_INT:
                 float_names.append(name)
                 float_planes.append(values)

@@ -83,6 +83,9 @@ STRIP_HALO_ROWS = 1
 #: depth 4, normal 12, object and triangle ids 4 + 4. They go to a temporary file
 #: (:func:`_spool`), not to memory: 0.82 GB of a 20 Mpx map beside the strips' work.
 STRIP_KEPT_BYTES_PER_PX = 41
+#: Bytes per pixel of the whole map that the writers of a strip-wise frame hold in memory: the
+#: shadow mask (1) and its temporaries (3, :func:`cityshade.imageio.mask_from_lit`).
+STRIP_WRITE_BYTES_PER_PX = 4
 #: The whole-map arrays of a strip-wise frame: name, dtype, values per pixel.
 _STRIP_KEPT = (("lit", np.float32, 1), ("rgb", np.float32, 3), ("valid", np.bool_, 1),
                ("depth", np.float32, 1), ("normal", np.float32, 3), ("obj_id", np.int32, 1),
@@ -204,8 +207,8 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
 
 def check_strip_memory(camera: "Camera", rows: int, technique: str,
                        settings: ShadowSettings | None = None) -> int:
-    """The estimated peak bytes of a strip-wise frame (one strip's work: the whole-map arrays
-    go to a temporary file); refuse one that does not fit in the available memory, or whose
+    """The estimated peak bytes of a strip-wise frame (one strip's work, or the writers' whole
+    mask: the whole-map arrays go to a temporary file); refuse one that does not fit in the available memory, or whose
     file does not fit in the temporary folder.
 
     Raises
@@ -220,7 +223,7 @@ def check_strip_memory(camera: "Camera", rows: int, technique: str,
 
     height, width = camera.shape
     strip = camera.strip(0, min(height, rows + 2 * STRIP_HALO_ROWS))
-    need = frame_bytes(strip, technique, settings)[0]
+    need = height * width * STRIP_WRITE_BYTES_PER_PX + frame_bytes(strip, technique, settings)[0]
     have = available_memory_bytes()
     if have is not None and need > have:
         raise UsageError(f"the picture of {width} × {height} pixels in strips of {rows} rows "
