@@ -829,3 +829,11 @@ def reference_boxes_holding_a_point(boxes, xs, ys):
         if not np.isnan(x0):
             out[j] = bool(np.any((xs >= x0) & (xs <= x1) & (ys >= y0) & (ys <= y1)))
     return out
+
+
+def reference_used_vertex_box(vertices, triangles):
+    """Twin of :func:`cityshade.raster.culling.used_vertex_box`: (2, 3) float64 min and max of
+    the vertices the triangles use, through the sorted set of used indices."""
+    used = np.unique(np.asarray(triangles).reshape(-1))
+    pts = np.asarray(vertices)[used].astype(np.float64)
+    return np.stack([pts.min(axis=0), pts.max(axis=0)])

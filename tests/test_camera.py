@@ -183,3 +183,26 @@ def test_camera_validation():
                    {"eye_m": (0, 0, np.nan)}):
         with pytest.raises(UsageError):
             Camera(**{**good, **change})
+
+
+def test_scene_box_is_the_used_vertices_box(sample_city_scene):
+    """scene_box's one-pass kernel against its twin: the sample city (all triangles, and those
+    standing at a date), a vertex no triangle uses (ignored) and a NaN vertex (NaN, as numpy)."""
+    from reference import reference_used_vertex_box
+
+    scene = sample_city_scene
+    box = cams.scene_box(scene)
+    assert box.dtype == np.float64 and box.shape == (2, 3)
+    assert box.tobytes() == reference_used_vertex_box(scene.vertices, scene.triangles).tobytes()
+    t = 0.0
+    present = (scene.tri_t_begin_days <= t) & (t < scene.tri_t_end_days)
+    assert cams.scene_box(scene, t).tobytes() == reference_used_vertex_box(
+        scene.vertices, np.asarray(scene.triangles)[present]).tobytes()
+    s = box_scene()
+    s.vertices = np.vstack([s.vertices, [[1e6, -1e6, 7.0]]]).astype(np.float32)
+    assert cams.scene_box(s).tobytes() == reference_used_vertex_box(
+        s.vertices, s.triangles).tobytes()
+    assert cams.scene_box(s)[1, 0] == 70.0
+    s.vertices[4, 1] = np.nan
+    got, want = cams.scene_box(s), reference_used_vertex_box(s.vertices, s.triangles)
+    assert np.isnan(got[:, 1]).all() and got.tobytes() == want.tobytes()

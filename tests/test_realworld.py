@@ -686,7 +686,7 @@ def test_a_frame_that_does_not_fit_in_memory_is_refused_before_allocating(tmp_pa
     assert check_frame_memory(cam, huge, technique="izb+smooth") == 2_000_000 * 290
     scene_path = _two_boxes_without_terrain(tmp_path)
     import cityshade.pipeline
-    monkeypatch.setattr(cityshade.pipeline, "available_memory_bytes", lambda: 8_000_000_000)
+    monkeypatch.setattr(cityshade.pipeline, "available_memory_bytes", lambda: 800_000_000)
     result = CliRunner().invoke(cli, [
         "render", str(scene_path), "--date", "2000", "--sun-azimuth", "135",
         "--sun-elevation", "30", "--camera", "map", "--pixel-size", "0.003", "-o",
@@ -694,16 +694,17 @@ def test_a_frame_that_does_not_fit_in_memory_is_refused_before_allocating(tmp_pa
     lines = result.output.strip().splitlines()
     assert result.exit_code == 2 and len(lines) == 1, result.output
     import re
-    # A map this large goes in strips of rows (56.8 GB whole at 290 B/px): what is kept for the
-    # whole map (41 B/px) plus one strip and its two halo rows at 290 B/px still does not fit.
+    # A map this large goes in strips of rows (56.8 GB whole at 290 B/px): the writers' whole
+    # mask (4 B/px; the 41 B/px kept for the outputs go to a temporary file) plus one strip and
+    # its two halo rows at 290 B/px still does not fit.
     found = re.fullmatch(r"cityshade: error: the picture of (\d+) × (\d+) pixels in strips of "
-                         r"(\d+) rows needs about ([\d.]+) GB but 8.0 GB are available: use a "
+                         r"(\d+) rows needs about ([\d.]+) GB but 0.8 GB are available: use a "
                          r"larger --pixel-size", lines[0])
     assert found, lines[0]
     w, h, rows, gb = int(found[1]), int(found[2]), int(found[3]), float(found[4])
     assert 14_000 <= w <= 14_002 and 14_000 <= h <= 14_002  # 42 m at 3 mm
     assert rows == 128 * 1024 ** 2 // (w * 290)
-    assert gb == pytest.approx((w * h * 41 + (rows + 2) * w * 290) / 1e9, abs=0.051)
+    assert gb == pytest.approx((w * h * 4 + (rows + 2) * w * 290) / 1e9, abs=0.051)
     assert not (tmp_path / "huge.exr").exists()
 
 

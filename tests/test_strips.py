@@ -133,3 +133,36 @@ def test_cli_strip_rows(sample_city_scene, tmp_path):
                                      "--shadows", "shadowmap"])
     assert res.exit_code != 0 and "exact technique" in res.output
     assert not (tmp_path / "x.exr").exists()
+
+
+def test_strip_arrays_live_in_a_temporary_file(sample_city_scene, tmp_path, monkeypatch):
+    """A strip-wise frame's whole-map arrays are read-only maps of an unlinked temporary file
+    in TMPDIR (nothing named is left there, in use or after), equal to the whole frame's; a
+    temporary folder without room for them is refused before any work."""
+    import shutil
+    import tempfile
+
+    from cityshade.cache import release_pages
+
+    scene = sample_city_scene
+    cam = map_view(scene, 2.0)
+    sun = sun_from_angles(200.0, 25.0, scene.crs, scene.origin_m)
+    spool = tmp_path / "tmp"
+    spool.mkdir()
+    monkeypatch.setattr(tempfile, "tempdir", str(spool))
+    whole = render_frame(scene, cam, 0.0, sun, "izb")
+    strips = render_frame(scene, cam, 0.0, sun, "izb", strip_rows=4)
+    assert list(spool.iterdir()) == []
+    kept = (strips.lit, strips.rgb, strips.surfaces.valid, strips.surfaces.depth,
+            strips.surfaces.normal, strips.surfaces.obj_id, strips.gbuffer.prim_id)
+    for a in kept:
+        assert not a.flags.writeable
+    assert release_pages(*kept) >= sum(a.nbytes for a in kept)   # file pages, not memory
+    assert release_pages(strips.rgb[..., 1]) >= strips.rgb.nbytes - 8   # a channel: its rows
+    for a, b in zip(kept, (whole.lit, whole.rgb, whole.surfaces.valid, whole.surfaces.depth,
+                           whole.surfaces.normal, whole.surfaces.obj_id,
+                           whole.gbuffer.prim_id)):
+        assert a.tobytes() == np.asarray(b).tobytes()
+    monkeypatch.setattr(shutil, "disk_usage", lambda folder: shutil._ntuple_diskusage(1, 1, 0))
+    with pytest.raises(UsageError, match="TMPDIR"):
+        render_frame(scene, cam, 0.0, sun, "izb", strip_rows=4)

@@ -137,8 +137,11 @@ def release_pages(*arrays) -> int:
             continue
         mm = root.base
         base = root.ctypes.data - (root.offset % mmap.ALLOCATIONGRANULARITY)
-        lo = a.ctypes.data - base
-        hi = lo + a.nbytes  # a view's span (the cache's arrays are contiguous)
+        # A view's span: strided too (a channel of an (H, W, 3) map spans its whole rows).
+        lo = hi = a.ctypes.data - base
+        for n, step in zip(a.shape, a.strides):
+            lo, hi = (lo + (n - 1) * step, hi) if step < 0 else (lo, hi + (n - 1) * step)
+        hi += a.itemsize
         lo -= lo % mmap.PAGESIZE
         hi = min(len(mm), hi + (-hi) % mmap.PAGESIZE)
         if hi > lo:

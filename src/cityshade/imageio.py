@@ -351,6 +351,8 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
         Wrong extension, no channels, shapes that differ or are not 2-D, unsupported types,
         integers outside -1 … 2**32 - 2, bad names or attributes, or a write failure.
     """
+    from cityshade.cache import release_pages
+
     path = Path(path)
     if path.suffix.lower() != ".exr":
         raise ImageIOError(f"write_exr needs a .exr path, not {path.suffix or '(none)'!r}",
@@ -391,6 +393,7 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
             float_planes.append(values)
         elif kind in "biu":
             lo, hi = int(values.min()), int(values.max())
+            release_pages(values)   # a mapped array's pages read for the range (a strip-wise frame)
             if lo >= -_FLOAT32_EXACT_INT and hi <= _FLOAT32_EXACT_INT:
                 float_names.append(name)
                 float_planes.append(values)
@@ -432,6 +435,8 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
 def _interleaver(planes, ids: bool) -> Callable[[int, int], np.ndarray]:
     """``rows(y0, y1)``: rows ``[y0, y1)`` of the planes interleaved as one (rows, W, C)
     float32 strip, or uint32 with -1 as ``_UINT32_NONE`` when ``ids``."""
+    from cityshade.cache import release_pages
+
     width = planes[0].shape[1]
 
     def rows(y0: int, y1: int) -> np.ndarray:
@@ -444,6 +449,8 @@ def _interleaver(planes, ids: bool) -> Callable[[int, int], np.ndarray]:
                 strip[..., index] = np.where(wide < 0, _UINT32_NONE, wide)
             else:
                 strip[..., index] = plane[y0:y1]
+        # A read-only map's rows (a strip-wise frame's) leave the resident set once read.
+        release_pages(*(p[y0:y1] for p in planes if not isinstance(p, LazyChannel)))
         return strip
 
     return rows

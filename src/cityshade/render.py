@@ -7,6 +7,7 @@ parses options into these calls.
 from __future__ import annotations
 
 import math
+import os
 import time
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -79,8 +80,16 @@ STRIP_BYTES = 128 * 1024 ** 2
 #: at the strip's edge they must be the whole map's.
 STRIP_HALO_ROWS = 1
 #: Bytes per pixel that a strip-wise frame keeps for the whole map: lit 4, RGB 12, valid 1,
-#: depth 4, normal 12, object and triangle ids 4 + 4.
+#: depth 4, normal 12, object and triangle ids 4 + 4. They go to a temporary file
+#: (:func:`_spool`), not to memory: 0.82 GB of a 20 Mpx map beside the strips' work.
 STRIP_KEPT_BYTES_PER_PX = 41
+#: Bytes per pixel of the whole map that the writers of a strip-wise frame hold in memory: the
+#: shadow mask (1) and its temporaries (3, :func:`cityshade.imageio.mask_from_lit`).
+STRIP_WRITE_BYTES_PER_PX = 4
+#: The whole-map arrays of a strip-wise frame: name, dtype, values per pixel.
+_STRIP_KEPT = (("lit", np.float32, 1), ("rgb", np.float32, 3), ("valid", np.bool_, 1),
+               ("depth", np.float32, 1), ("normal", np.float32, 3), ("obj_id", np.int32, 1),
+               ("prim_id", np.int32, 1))
 
 
 def strip_rows_for(camera: "Camera", technique: str = "raytrace",
@@ -150,7 +159,9 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
         when a large map goes in strips without it). The pixels are the whole frame's, bit for
         bit; the frame then keeps only what :func:`write_frame` writes
         (:data:`STRIP_KEPT_BYTES_PER_PX`): ``surfaces`` has ``valid``, ``normal``, ``depth``,
-        ``obj_id`` and ``prim_id`` (the rest None), ``gbuffer`` ``prim_id`` and ``depth``.
+        ``obj_id`` and ``prim_id`` (the rest None), ``gbuffer`` ``prim_id`` and ``depth``;
+        these, ``lit`` and ``rgb`` are read-only memory maps of a temporary file (in
+        :func:`tempfile.gettempdir`, ``TMPDIR``), not memory.
     """
     from cityshade.pipeline import camera_pass, check_frame_memory, shadow_pass
     from cityshade.shading import shade
@@ -196,44 +207,94 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
 
 def check_strip_memory(camera: "Camera", rows: int, technique: str,
                        settings: ShadowSettings | None = None) -> int:
-    """The estimated peak bytes of a strip-wise frame (the kept whole-map arrays plus one
-    strip's work); refuse one that does not fit in the available memory.
+    """The estimated peak bytes of a strip-wise frame (one strip's work, or the writers' whole
+    mask: the whole-map arrays go to a temporary file); refuse one that does not fit in the available memory, or whose
+    file does not fit in the temporary folder.
 
     Raises
     ------
     UsageError
-        The estimate exceeds the available memory.
+        The estimate exceeds the available memory, or the file the free disk space.
     """
     from cityshade.pipeline import available_memory_bytes, frame_bytes
 
+    import shutil
+    import tempfile
+
     height, width = camera.shape
     strip = camera.strip(0, min(height, rows + 2 * STRIP_HALO_ROWS))
-    need = height * width * STRIP_KEPT_BYTES_PER_PX + frame_bytes(strip, technique, settings)[0]
+    need = height * width * STRIP_WRITE_BYTES_PER_PX + frame_bytes(strip, technique, settings)[0]
     have = available_memory_bytes()
     if have is not None and need > have:
         raise UsageError(f"the picture of {width} × {height} pixels in strips of {rows} rows "
                          f"needs about {need / 1e9:.1f} GB but {have / 1e9:.1f} GB are "
                          f"available: use a larger --pixel-size")
+    spool = height * width * STRIP_KEPT_BYTES_PER_PX
+    folder = tempfile.gettempdir()
+    free = shutil.disk_usage(folder).free
+    if spool > free:
+        raise UsageError(f"the picture of {width} × {height} pixels in strips keeps "
+                         f"{spool / 1e9:.1f} GB in a temporary file but {folder} has "
+                         f"{free / 1e9:.1f} GB free: set TMPDIR to a larger disk or use a "
+                         f"larger --pixel-size")
     return need
+
+
+class _Spool:
+    """The whole-map arrays of a strip-wise frame (:data:`_STRIP_KEPT`) in an unlinked
+    temporary file: each strip's rows are written with ``os.pwrite`` (no page of them stays
+    resident), and :meth:`arrays` maps the complete file read-only, so the writers' reads are
+    clean file pages (:func:`cityshade.cache.release_pages` drops them, the OS page cache
+    keeps them). Nothing is left on disk however the process ends."""
+
+    def __init__(self, height: int, width: int):
+        import mmap
+        import tempfile
+
+        self.shape = (height, width)
+        self.offsets: dict[str, int] = {}
+        end = 0
+        for name, dtype, per_px in _STRIP_KEPT:
+            self.offsets[name] = end
+            end += height * width * per_px * np.dtype(dtype).itemsize
+            end += -end % mmap.ALLOCATIONGRANULARITY     # each array on a page of its own
+        self.file = tempfile.TemporaryFile(prefix="cityshade-strips-")
+        self.file.truncate(end)     # sparse: the strips fill it
+        self.size = end
+
+    def write_rows(self, name: str, row0: int, values: np.ndarray) -> None:
+        """Rows ``row0 …`` of array ``name`` (whole rows)."""
+        data = memoryview(np.ascontiguousarray(values)).cast("B")
+        offset = self.offsets[name] + row0 * (data.nbytes // len(values))  # bytes of a row
+        while data.nbytes:          # pwrite may write less than asked
+            done = os.pwrite(self.file.fileno(), data, offset)
+            data, offset = data[done:], offset + done
+
+    def arrays(self) -> dict[str, np.ndarray]:
+        """The complete arrays, read-only memory maps of the file (closed with them)."""
+        whole = np.memmap(self.file, dtype=np.uint8, mode="r", shape=(self.size,))
+        self.file.close()           # the map keeps the file
+        out = {}
+        for name, dtype, per_px in _STRIP_KEPT:
+            shape = self.shape + ((per_px,) if per_px > 1 else ())
+            n = int(np.prod(shape)) * np.dtype(dtype).itemsize
+            start = self.offsets[name]
+            out[name] = whole[start:start + n].view(dtype).reshape(shape)
+        return out
 
 
 def _render_strips(scene, camera, t_days, sun, technique, tech, settings, sky, ground, measure,
                    rows, warnings) -> Frame:
     """:func:`render_frame` of a map in strips of ``rows`` rows (each with
-    :data:`STRIP_HALO_ROWS` more on either side, dropped), copied into whole-map arrays."""
+    :data:`STRIP_HALO_ROWS` more on either side, dropped), written into the whole-map arrays
+    of a :class:`_Spool`."""
     from cityshade.pipeline import camera_pass, shadow_pass
     from cityshade.raster.gbuffer import GBuffer, Surfaces
     from cityshade.scenefile import release_scene_pages
     from cityshade.shading import shade
 
     height, width = camera.shape
-    lit = np.zeros((height, width), np.float32)
-    rgb = np.empty((height, width, 3), np.float32)
-    valid = np.zeros((height, width), bool)
-    depth = np.empty((height, width), np.float32)
-    normal = np.empty((height, width, 3), np.float32)
-    obj_id = np.empty((height, width), np.int32)
-    prim_id = np.empty((height, width), np.int32)
+    spool = _Spool(height, width)
     extra: dict[str, np.ndarray] = {}
     timings: dict[str, float] = {}
     ground_z = ground_box = None
@@ -265,19 +326,16 @@ def _render_strips(scene, camera, t_days, sun, technique, tech, settings, sky, g
         warnings += [w for w in shade_report.get("texture_warnings", []) if w not in warnings]
         a, b = r0 - h0, r1 - h0          # the strip's own rows in its arrays
         s = cp.surfaces
-        lit[r0:r1] = sp.lit[a:b]
-        rgb[r0:r1] = strip_rgb[a:b]
-        valid[r0:r1] = s.valid[a:b]
-        depth[r0:r1] = s.depth[a:b]
-        normal[r0:r1] = s.normal[a:b]
-        obj_id[r0:r1] = s.obj_id[a:b]
-        prim_id[r0:r1] = cp.gbuffer.prim_id[a:b]
+        for name, values in (("lit", sp.lit), ("rgb", strip_rgb), ("valid", s.valid),
+                             ("depth", s.depth), ("normal", s.normal), ("obj_id", s.obj_id),
+                             ("prim_id", cp.gbuffer.prim_id)):
+            spool.write_rows(name, r0, np.asarray(values)[a:b])
         for name, values in sp.result.extra_channels.items():
             if name not in extra:
                 extra[name] = np.zeros((height, width), np.float32)
             extra[name][r0:r1] = np.asarray(values, np.float32)[a:b]
         if cp.ground is not None:   # the plane's pixels of the strip's own rows
-            filled += int(np.count_nonzero(valid[r0:r1] & (prim_id[r0:r1] < 0)))
+            filled += int(np.count_nonzero(s.valid[a:b] & (cp.gbuffer.prim_id[a:b] < 0)))
         diagnostics = sp.diagnostics(cp)
         n_strips += 1
         del cp, sp, strip_rgb, s
@@ -287,12 +345,14 @@ def _render_strips(scene, camera, t_days, sun, technique, tech, settings, sky, g
         from dataclasses import replace
 
         diagnostics.ground = replace(diagnostics.ground, pixels=filled)
-    gbuffer = GBuffer(camera=camera, prim_id=prim_id, bary=None, depth=depth,
+    kept = spool.arrays()
+    gbuffer = GBuffer(camera=camera, prim_id=kept["prim_id"], bary=None, depth=kept["depth"],
                       stats=diagnostics.gbuffer)
-    surfaces = Surfaces(position_m=None, normal=normal, obj_id=obj_id, material=None,
-                        texture=None, uv=None, cls=None, valid=valid, prim_id=prim_id,
-                        depth=depth)
-    return Frame(camera=camera, gbuffer=gbuffer, surfaces=surfaces, lit=lit, rgb=rgb, sun=sun,
+    surfaces = Surfaces(position_m=None, normal=kept["normal"], obj_id=kept["obj_id"],
+                        material=None, texture=None, uv=None, cls=None, valid=kept["valid"],
+                        prim_id=kept["prim_id"], depth=kept["depth"])
+    return Frame(camera=camera, gbuffer=gbuffer, surfaces=surfaces, lit=kept["lit"],
+                 rgb=kept["rgb"], sun=sun,
                  t_days=t_days, technique=technique, timings_s=timings,
                  diagnostics=diagnostics, warnings=warnings, extra_channels=extra)
 
@@ -375,6 +435,7 @@ def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
 
 def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef) -> list[Path]:
     from cityshade import imageio
+    from cityshade.cache import release_pages
     from cityshade.shading import to_srgb8
 
     meta = frame_metadata(frame, scene, date_text)
@@ -383,17 +444,22 @@ def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef) ->
     if exr is not None:
         shape = s.valid.shape
 
-        def normal(axis):       # computed per strip of the EXR: no full-size temporaries
-            return imageio.LazyChannel(shape, lambda y0, y1: np.where(
-                s.valid[y0:y1], s.normal[y0:y1, :, axis], 0.0).astype(np.float32))
+        def lazy(values, fill, *read):
+            """Computed per strip of the EXR (no full-size temporaries); the rows of ``read``
+            leave the resident set once read (a strip-wise frame's mapped arrays)."""
+            def rows(y0, y1):
+                out = np.where(s.valid[y0:y1], values[y0:y1], fill).astype(np.float32)
+                release_pages(*(a[y0:y1] for a in read))
+                return out
+            return imageio.LazyChannel(shape, rows)
 
         channels = {
             "R": frame.rgb[..., 0], "G": frame.rgb[..., 1], "B": frame.rgb[..., 2],
             "shadow": frame.lit,
             # The resolved depth: the ground plane's pixels carry the plane's.
-            "Z": imageio.LazyChannel(shape, lambda y0, y1: np.where(
-                s.valid[y0:y1], s.depth[y0:y1], np.inf).astype(np.float32)),
-            "N.x": normal(0), "N.y": normal(1), "N.z": normal(2),
+            "Z": lazy(s.depth, np.inf, s.depth),
+            "N.x": lazy(s.normal[..., 0], 0.0), "N.y": lazy(s.normal[..., 1], 0.0),
+            "N.z": lazy(s.normal[..., 2], 0.0, s.normal, s.valid),   # the last reader
             "primid": frame.gbuffer.prim_id, "objid": s.obj_id,
         }
         if getattr(scene, "tiled", None) is not None:  # a tiled cache's view: the global ids
@@ -409,6 +475,7 @@ def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef) ->
         imageio.write_png_rgb(png, to_srgb8(frame.rgb), attributes=meta)
         written.append(Path(png))
     mask_px = shadow_mask(frame)
+    release_pages(frame.lit, s.valid)
     if mask is not None:
         imageio.write_mask_png(mask, mask_px, attributes=meta)
         written.append(Path(mask))

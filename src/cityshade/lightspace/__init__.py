@@ -87,10 +87,11 @@ class Casters:
     it straddles), with the key order of the last sun used, so a batch sorts once per change
     of the shear axis instead of once per step.
 
-    Only the sorted copy is kept (``first`` indexes the tree's records, one row per triangle):
-    the tree's records are read a chunk at a time in file order and their memory-mapped pages
-    released, so the 10^7-triangle city holds one 640 MB copy instead of two plus its 1.2 GB of
-    mapped records.
+    Only the sorted copy is kept (``first`` indexes the tree's records, one row per triangle),
+    with the words the kernels read (``K.CASTER_WORDS`` of 16) and float32 keys (a key is a
+    float32 vertex coordinate, exact): the tree's records are read a chunk at a time in file
+    order and their memory-mapped pages released, so the 10^7-triangle city holds one 560 MB
+    copy and 40 MB of keys instead of two full copies plus its 1.2 GB of mapped records.
     """
 
     def __init__(self, tree: KdTree):
@@ -100,9 +101,13 @@ class Casters:
             part = recs[c0:c0 + GATHER_ROWS]
             ids[c0:c0 + part.shape[0]] = part.view(np.int32)[:, REC_ID]
             release_pages(part)
-        _, first = np.unique(ids, return_index=True)
-        del ids
-        self.first = np.sort(first)
+        # Each triangle's first record in row order, as np.unique(return_index) sorted would
+        # give, without its sorted copies (0.3 GB of temporaries at 10^7 triangles).
+        seen = np.zeros(int(ids.max()) + 1 if ids.size else 0, np.bool_)
+        first = np.empty(min(ids.size, seen.size), np.int32)
+        n = K.first_records(ids, 0, seen, first, 0)
+        del ids, seen
+        self.first = first[:n].copy() if n < first.size else first
         self._axis = None
         self._sorted = None
         # Grow-only work arrays (~300 MB on the 1M-triangle map, faulted in anew every sun
@@ -126,14 +131,20 @@ class Casters:
             keys = np.empty(n)
             for c0, c1, rows in self._chunks():
                 K.caster_keys(rows, kz, sgn, keys[c0:c1])
-            order = np.argsort(-keys, kind="stable")
-            rank = np.empty(n, np.int64)
-            rank[order] = np.arange(n)
+            np.negative(keys, out=keys)     # in place: descending keys, no negated copy
+            order = np.argsort(keys, kind="stable")
+            sorted_keys = np.empty(n, np.float32)   # max of ±float32 values: exact
+            rank = np.empty(n, np.int32)
+            for c0 in range(0, n, GATHER_ROWS):
+                part = order[c0:c0 + GATHER_ROWS]
+                sorted_keys[c0:c0 + part.size] = -keys[part]
+                rank[part] = np.arange(c0, c0 + part.size, dtype=np.int32)
+            del keys, order
             # Scattered to their sorted rows while the tree's records are read in file order.
-            records = np.empty((n, self._tree_records.shape[1]), self._tree_records.dtype)
+            records = np.empty((n, K.CASTER_WORDS), self._tree_records.dtype)
             for c0, c1, rows in self._chunks():
-                records[rank[c0:c1]] = rows
-            self._sorted = (records, np.ascontiguousarray(keys[order]))
+                records[rank[c0:c1]] = rows[:, :K.CASTER_WORDS]
+            self._sorted = (records, sorted_keys)
             self._axis = (kz, sgn)
         return self._sorted
 

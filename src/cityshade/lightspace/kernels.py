@@ -101,6 +101,27 @@ def surface_origins(points, normals, offsets_m, index, sun, out):
             out[q, a] = points[i, a] + (normals[i, a] + sun[a]) * off
 
 
+#: Words of a caster record (:class:`cityshade.lightspace.Casters`): the tree record's first
+#: 14, the vertices (0-8), the id (9) and the times (float64 words ``REC_T_BEGIN64`` and
+#: ``REC_T_END64``), all the kernels read; the material and padding after them are dropped.
+CASTER_WORDS = 2 * (REC_T_END64 + 1)
+
+
+@njit(cache=True)
+def first_records(ids, row0, seen, out_rows, n_rows):
+    """Append to ``out_rows`` (from ``n_rows`` on) the rows ``row0 + i`` whose id ``ids[i]`` is
+    not yet ``seen``, marking it; returns the new count. Called on the records in file order,
+    it gives each triangle's first record, in increasing row order."""
+    m = n_rows
+    for i in range(ids.shape[0]):
+        t = ids[i]
+        if not seen[t]:
+            seen[t] = True
+            out_rows[m] = row0 + i
+            m += 1
+    return m
+
+
 @njit(cache=True, parallel=True)
 def caster_keys(recs, kz, sgn, out_key):
     """Depth key ``max_v sgn * v[kz]`` of every record (float32 vertices, exact in float64)."""

@@ -291,9 +291,11 @@ def scene_box(scene, t_days: float | None = None) -> np.ndarray:
     if tris.shape[0] == 0:
         when = "" if t_days is None else f" at t = {t_days} days"
         raise UsageError(f"the scene has no triangles{when} to frame")
-    used = np.unique(tris.reshape(-1))
-    pts = np.asarray(scene.vertices)[used].astype(np.float64)
-    return np.stack([pts.min(axis=0), pts.max(axis=0)])
+    from cityshade.raster.culling import used_vertex_box
+
+    box = np.empty((2, 3))
+    used_vertex_box(np.ascontiguousarray(tris), np.asarray(scene.vertices), box)
+    return box
 
 
 def _near_far(eye, fwd, box) -> tuple[float, float]:
