@@ -77,7 +77,7 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
     if progress:
         progress("triangulate", 0, 1)
     t1 = time.perf_counter()
-    scene = build_scene(raw, settings.build)
+    scene = build_scene(raw, settings.build, consume_raw=True)
     del raw
     release_freed_memory()
     timings["triangulate_s"] = time.perf_counter() - t1
@@ -198,7 +198,8 @@ def read_files(sources: list[Path], settings: Settings, progress, make_merger):
         t0 = time.perf_counter()
         raw = read_model(source, progress=read_progress, generic_attributes=generic)
         t1 = time.perf_counter()
-        part = build_scene(raw, build_settings, target_crs=target, render_space=False)
+        part = build_scene(raw, build_settings, target_crs=target, render_space=False,
+                           consume_raw=True)
         del raw
         merger.add(part, source)
         del part
