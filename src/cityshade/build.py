@@ -9,6 +9,7 @@ from dataclasses import asdict
 from pathlib import Path
 from typing import Callable, Iterable
 
+from cityshade.cache import PackedStrings, pack_strings
 from cityshade.config import Settings
 from cityshade.errors import ContractError
 from cityshade.util import release_freed_memory
@@ -78,6 +79,10 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
         progress("triangulate", 0, 1)
     t1 = time.perf_counter()
     scene = build_scene(raw, settings.build, consume_raw=True)
+    # The polygon ids as one blob, as a loaded scene has them: with the read model's strings
+    # gone, their heap is empty and handed back (millions of small strings would otherwise
+    # pin the read's freed dicts and lists through the kd-tree and the write).
+    scene.poly_ids = PackedStrings(*pack_strings(scene.poly_ids))
     del raw
     release_freed_memory()
     timings["triangulate_s"] = time.perf_counter() - t1
