@@ -66,6 +66,8 @@ def test_packed_strings_round_trip(values):
     assert offsets.tolist() == [0] + np.cumsum([len(v.encode()) for v in values]).tolist()
     assert unpack_strings(blob, offsets) == values
     assert list(PackedStrings(blob, offsets)) == values
+    again = pack_strings(PackedStrings(blob, offsets))  # a packed table is written as it is
+    assert bytes(again[0]) == bytes(blob) and again[1].tolist() == offsets.tolist()
 
 
 def test_arrays_are_aligned(built):

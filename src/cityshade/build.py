@@ -52,12 +52,16 @@ def read_model(source: str | os.PathLike, progress: Callable[[int, int], None] |
 
 def build_scene_from_file(source: str | os.PathLike, settings: Settings | None = None,
                           progress: Callable[[str, int, int], None] | None = None,
-                          tree: bool = True) -> Scene:
+                          tree: bool = True, pack_ids: bool = False) -> Scene:
     """Read, triangulate and (when the scene needs one) build the kd-tree of a city model file
     (CityGML, CityJSON or CityJSONSeq).
 
     Parameters
     ----------
+    pack_ids : bool
+        Give the scene its polygon ids packed (:class:`~cityshade.cache.PackedStrings`, as a
+        loaded scene has them) for a build that only writes them: less memory from the
+        kd-tree on, but each id is decoded when read.
     progress : callable(stage, done, total), optional
         Called while reading (bytes) and at the start of later stages.
     """
@@ -82,7 +86,8 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
     # The polygon ids as one blob, as a loaded scene has them: with the read model's strings
     # gone, their heap is empty and handed back (millions of small strings would otherwise
     # pin the read's freed dicts and lists through the kd-tree and the write).
-    scene.poly_ids = PackedStrings(*pack_strings(scene.poly_ids))
+    if pack_ids:
+        scene.poly_ids = PackedStrings(*pack_strings(scene.poly_ids))
     del raw
     release_freed_memory()
     timings["triangulate_s"] = time.perf_counter() - t1
@@ -282,7 +287,8 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
         return output, scene, size
     source = Path(source)
     output = Path(output) if output is not None else default_output(source)
-    scene = build_scene_from_file(source, settings, progress, tree=tile_m is None)
+    scene = build_scene_from_file(source, settings, progress, tree=tile_m is None,
+                                  pack_ids=tile_m is None)
     if progress:
         progress("write", 0, 1)
     source_info = _source_record(source)

@@ -149,6 +149,8 @@ def release_pages(*arrays) -> int:
 
 def pack_strings(values: list[str]) -> tuple[np.ndarray, np.ndarray]:
     """Strings → (UTF-8 blob uint8, offsets int64 of length n+1)."""
+    if isinstance(values, PackedStrings) and values.packed_whole():
+        return values._blob, np.asarray(values._offsets, np.int64)  # packed already
     offsets = np.zeros(len(values) + 1, np.int64)
     data = "".join(values).encode("utf-8")
     lengths = np.fromiter(map(len, values), np.int64, len(values))
@@ -180,6 +182,11 @@ class PackedStrings(Sequence):
 
     def __len__(self) -> int:
         return len(self._offsets) - 1
+
+    def packed_whole(self) -> bool:
+        """True when the blob is exactly the strings, as :func:`pack_strings` makes it."""
+        return (self._offsets.size > 0 and int(self._offsets[0]) == 0
+                and int(self._offsets[-1]) == self._blob.size)
 
     def __getitem__(self, index):
         if isinstance(index, slice):
