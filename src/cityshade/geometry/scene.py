@@ -225,6 +225,9 @@ def _resolve_references(raw: RawModel, counters: Counter):
         if not expand(targets[r], int(ref_obj[r]), int(ref_lod[r]), int(ref_flip[r]),
                       int(ref_cls[r]), 0):
             unresolved += 1
+    # The recursive closure refers to itself: break the cycle, or the read model's id tables
+    # it holds outlive the model until a garbage collection (hundreds of MB on large files).
+    expand = None
     if unresolved:
         counters["unresolved_references"] += unresolved
     if extra:
