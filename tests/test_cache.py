@@ -9,7 +9,8 @@ import pytest
 from citygml_snippets import box_polygons, building, city
 
 from cityshade.build import build_file
-from cityshade.cache import FORMAT_VERSION, open_cache, write_cache
+from cityshade.cache import (FORMAT_VERSION, PackedStrings, open_cache, pack_strings,
+                             unpack_strings, write_cache)
 from cityshade.errors import CacheCorruptError, CacheError, CacheVersionError
 from cityshade.geometry.scene import Scene
 from cityshade.scenefile import load_scene
@@ -54,6 +55,19 @@ def test_released_pages_of_a_loaded_scene_read_back_the_same(built):
     assert release_scene_pages(scene) == 0 and release_pages(np.ones(9), None) == 0
     for name in Scene.ARRAY_FIELDS:
         assert getattr(loaded, name).tobytes() == before[name], name
+
+
+@pytest.mark.parametrize("values", [[], [""], ["B1", "", "B1_p0_r0"],
+                                    ["Gebäude", "x", "建物_1", "", "\U0001f3e0"]])
+def test_packed_strings_round_trip(values):
+    """ASCII ids take the one-join path, others the per-string lengths: both the UTF-8 blob."""
+    blob, offsets = pack_strings(values)
+    assert bytes(blob) == "".join(values).encode("utf-8")
+    assert offsets.tolist() == [0] + np.cumsum([len(v.encode()) for v in values]).tolist()
+    assert unpack_strings(blob, offsets) == values
+    assert list(PackedStrings(blob, offsets)) == values
+    again = pack_strings(PackedStrings(blob, offsets))  # a packed table is written as it is
+    assert bytes(again[0]) == bytes(blob) and again[1].tolist() == offsets.tolist()
 
 
 def test_arrays_are_aligned(built):

@@ -261,3 +261,22 @@ def test_empty_or_xlinked_exterior_is_skipped(tmp_path):
     assert scene.n_triangles == 1
     assert scene.report["polygons"]["read"] == 3
     assert scene.report["skipped"] == {"too_few_points": 2}
+
+
+def test_consumed_model_builds_the_same_scene():
+    """``consume_raw`` frees the read model's coordinates on the way (the one-file build): the
+    scene is the one built from a model that is kept, array for array (textured sample city)."""
+    from pathlib import Path
+
+    from cityshade.geometry.scene import Scene
+
+    path = Path(__file__).resolve().parents[1] / "sample_data" / "sample_city.gml"
+    kept = build_scene(read_citygml(path))
+    raw = read_citygml(path)
+    consumed = build_scene(raw, consume_raw=True)
+    assert raw.xyz is None
+    for name in Scene.ARRAY_FIELDS:
+        a, b = getattr(kept, name), getattr(consumed, name)
+        assert a.dtype == b.dtype and np.array_equal(a, b), name
+    assert kept.poly_ids == consumed.poly_ids and kept.materials == consumed.materials
+    assert kept.textures == consumed.textures and kept.report == consumed.report

@@ -9,6 +9,7 @@ from dataclasses import asdict
 from pathlib import Path
 from typing import Callable, Iterable
 
+from cityshade.cache import PackedStrings, pack_strings
 from cityshade.config import Settings
 from cityshade.errors import ContractError
 from cityshade.util import release_freed_memory
@@ -51,12 +52,16 @@ def read_model(source: str | os.PathLike, progress: Callable[[int, int], None] |
 
 def build_scene_from_file(source: str | os.PathLike, settings: Settings | None = None,
                           progress: Callable[[str, int, int], None] | None = None,
-                          tree: bool = True) -> Scene:
+                          tree: bool = True, pack_ids: bool = False) -> Scene:
     """Read, triangulate and (when the scene needs one) build the kd-tree of a city model file
     (CityGML, CityJSON or CityJSONSeq).
 
     Parameters
     ----------
+    pack_ids : bool
+        Give the scene its polygon ids packed (:class:`~cityshade.cache.PackedStrings`, as a
+        loaded scene has them) for a build that only writes them: less memory from the
+        kd-tree on, but each id is decoded when read.
     progress : callable(stage, done, total), optional
         Called while reading (bytes) and at the start of later stages.
     """
@@ -77,7 +82,12 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
     if progress:
         progress("triangulate", 0, 1)
     t1 = time.perf_counter()
-    scene = build_scene(raw, settings.build)
+    scene = build_scene(raw, settings.build, consume_raw=True)
+    # The polygon ids as one blob, as a loaded scene has them: with the read model's strings
+    # gone, their heap is empty and handed back (millions of small strings would otherwise
+    # pin the read's freed dicts and lists through the kd-tree and the write).
+    if pack_ids:
+        scene.poly_ids = PackedStrings(*pack_strings(scene.poly_ids))
     del raw
     release_freed_memory()
     timings["triangulate_s"] = time.perf_counter() - t1
@@ -198,7 +208,8 @@ def read_files(sources: list[Path], settings: Settings, progress, make_merger):
         t0 = time.perf_counter()
         raw = read_model(source, progress=read_progress, generic_attributes=generic)
         t1 = time.perf_counter()
-        part = build_scene(raw, build_settings, target_crs=target, render_space=False)
+        part = build_scene(raw, build_settings, target_crs=target, render_space=False,
+                           consume_raw=True)
         del raw
         merger.add(part, source)
         del part
@@ -276,7 +287,8 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
         return output, scene, size
     source = Path(source)
     output = Path(output) if output is not None else default_output(source)
-    scene = build_scene_from_file(source, settings, progress, tree=tile_m is None)
+    scene = build_scene_from_file(source, settings, progress, tree=tile_m is None,
+                                  pack_ids=tile_m is None)
     if progress:
         progress("write", 0, 1)
     source_info = _source_record(source)

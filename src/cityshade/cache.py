@@ -152,12 +152,17 @@ def release_pages(*arrays) -> int:
 
 def pack_strings(values: list[str]) -> tuple[np.ndarray, np.ndarray]:
     """Strings → (UTF-8 blob uint8, offsets int64 of length n+1)."""
-    encoded = [v.encode("utf-8") for v in values]
-    offsets = np.zeros(len(encoded) + 1, np.int64)
-    if encoded:
-        np.cumsum([len(e) for e in encoded], out=offsets[1:])
-    blob = np.frombuffer(b"".join(encoded), dtype=np.uint8)
-    return blob, offsets
+    if isinstance(values, PackedStrings) and values.packed_whole():
+        return values._blob, np.asarray(values._offsets, np.int64)  # packed already
+    offsets = np.zeros(len(values) + 1, np.int64)
+    data = "".join(values).encode("utf-8")
+    lengths = np.fromiter(map(len, values), np.int64, len(values))
+    if len(data) != lengths.sum():
+        # Not all ASCII (a character is one byte exactly then): the byte length of each.
+        # Else one join: no bytes object per string (millions of polygon ids at write time).
+        lengths = np.fromiter((len(v.encode("utf-8")) for v in values), np.int64, len(values))
+    np.cumsum(lengths, out=offsets[1:])
+    return np.frombuffer(data, dtype=np.uint8), offsets
 
 
 def unpack_strings(blob: np.ndarray, offsets: np.ndarray) -> list[str]:
@@ -180,6 +185,11 @@ class PackedStrings(Sequence):
 
     def __len__(self) -> int:
         return len(self._offsets) - 1
+
+    def packed_whole(self) -> bool:
+        """True when the blob is exactly the strings, as :func:`pack_strings` makes it."""
+        return (self._offsets.size > 0 and int(self._offsets[0]) == 0
+                and int(self._offsets[-1]) == self._blob.size)
 
     def __getitem__(self, index):
         if isinstance(index, slice):

@@ -1237,7 +1237,11 @@ def build_kdtree(vertices, triangles, t_begin_days, t_end_days, material,
     del top, subtrees
     release_freed_memory()
     nodes = pack_nodes(node_axis, node_child, node_first, node_split)
+    n_nodes = int(node_axis.size)
+    # The wide working arrays go before the records (the tree's largest array) are made.
+    del node_axis, node_child, node_first, node_split
     prim_indices = prims.astype(np.int32)
+    del prims
     records = triangle_records(vertices32, triangles, t_begin, t_end, material, prim_indices)
 
     bounds = np.empty((2, 4))
@@ -1252,7 +1256,7 @@ def build_kdtree(vertices, triangles, t_begin_days, t_end_days, material,
         "triangles_valid": int(ids0.size),
         "references": n_ref,
         "duplication": float(n_ref / ids0.size) if ids0.size else 0.0,
-        "nodes": int(node_axis.size),
+        "nodes": n_nodes,
         "leaves": int(n_leaves),
         "empty_leaves": int(n_empty),
         "max_depth": int(depth_max),

@@ -225,6 +225,9 @@ def _resolve_references(raw: RawModel, counters: Counter):
         if not expand(targets[r], int(ref_obj[r]), int(ref_lod[r]), int(ref_flip[r]),
                       int(ref_cls[r]), 0):
             unresolved += 1
+    # The recursive closure refers to itself: break the cycle, or the read model's id tables
+    # it holds outlive the model until a garbage collection (hundreds of MB on large files).
+    expand = None
     if unresolved:
         counters["unresolved_references"] += unresolved
     if extra:
@@ -306,7 +309,8 @@ def render_origin(lo_m: np.ndarray, hi_m: np.ndarray) -> np.ndarray:
 
 
 def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
-                target_crs: CrsInfo | None = None, render_space: bool = True) -> Scene:
+                target_crs: CrsInfo | None = None, render_space: bool = True,
+                consume_raw: bool = False) -> Scene:
     """Select, triangulate and assemble the scene of a read CityGML file.
 
     Parameters
@@ -320,6 +324,9 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
         False keeps the vertices as float64 model-CRS coordinates with a zero origin, for
         :func:`cityshade.geometry.merge.merge_scenes` to choose the origin of all tiles and
         cast once (so a tiled build equals the one-file build bit for bit).
+    consume_raw : bool
+        True when the caller drops ``raw`` afterwards: its coordinates (``raw.xyz``, set to
+        None) are freed once gathered and used, not held to the end with the scene's arrays.
 
     Raises
     ------
@@ -434,6 +441,9 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
         coords = raw.xyz
     else:
         coords = raw.xyz[point_idx]
+    del point_idx
+    if consume_raw:
+        raw.xyz = None  # gathered (or the very array): freed with coords after step 9
     ring_offsets = np.concatenate([[0], np.cumsum(ring_len)]).astype(np.int64)
     poly_ring_offsets = np.concatenate([[0], np.cumsum(p_nrings)]).astype(np.int64)
 
@@ -494,23 +504,31 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
     if not ok.any():
         raise EmptyModelError(f"no polygon could be triangulated ({dict(skipped)})",
                               path=str(raw.path))
-    triangles = np.asarray(tri.triangles, np.int64).copy()
-    tri_poly_local = np.asarray(tri.tri_polygon, np.int64)
-    # OrientableSurface "-": reverse the winding.
-    flip_tri = p_flip[tri_poly_local] != 0
-    triangles[flip_tri] = triangles[flip_tri][:, ::-1]
+    # The result's arrays are ours: flipped and renumbered in place of copies (the
+    # per-triangle arrays are the largest of the build).
+    triangles, tri_poly_local = tri.triangles, tri.tri_polygon
+    tri_area_m2, tri_repairs = tri.area_m2, tri.repairs
     normals = tri.normal * np.where(p_flip != 0, -1.0, 1.0)[:, None]
+    del tri
+    # OrientableSurface "-": reverse the winding.
+    flip_tri = np.nonzero(p_flip[tri_poly_local] != 0)[0]
+    triangles[flip_tri] = triangles[flip_tri][:, ::-1]
+    del flip_tri
 
     # 8. Keep drawn polygons only and renumber; compact the vertices.
     drawn = np.nonzero(ok)[0]
-    remap_poly = np.full(len(polys), -1, np.int64)
+    # int32 renumbering tables: the per-triangle results come out in the stored dtype.
+    remap_poly = np.full(len(polys), -1, np.int32)
     remap_poly[drawn] = np.arange(len(drawn))
     tri_polygon = remap_poly[tri_poly_local]
+    del tri_poly_local
     used = np.zeros(len(coords), bool)
     used[triangles.ravel()] = True
     used_points = np.nonzero(used)[0]
-    new_index = np.cumsum(used) - 1
+    new_index = np.cumsum(used, dtype=np.int32) - 1
+    del used
     triangles = new_index[triangles]
+    del new_index
     world = coords[used_points]
     if render_space:
         origin = render_origin(world.min(axis=0), world.max(axis=0))
@@ -537,10 +555,10 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
                           materials, textures, warnings, counters)
     uv = point_uv[used_points] if theme is not None else np.zeros((len(used_points), 2),
                                                                    np.float32)
-    del point_uv
+    del point_uv, coords, used_points
 
     # 10. Tables.
-    p_obj_drawn = p_obj[drawn]
+    p_obj_drawn = p_obj[drawn].astype(np.int32)
     tri_object = p_obj_drawn[tri_polygon]
     poly_class = poly_cls[orig_poly].astype(np.uint8)
     obj_lod_code = np.where(obj_max_lod >= 0, chosen, -1)
@@ -581,8 +599,7 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
         report["openings"] = openings
     return Scene(
         origin_m=origin.astype(np.float64), crs=crs, vertices=vertices, uv=uv,
-        triangles=triangles.astype(np.int32),
-        tri_object=tri_object.astype(np.int32), tri_polygon=tri_polygon.astype(np.int32),
+        triangles=triangles, tri_object=tri_object, tri_polygon=tri_polygon,
         tri_class=poly_class[tri_polygon],
         tri_material=poly_material[tri_polygon], tri_texture=poly_texture[tri_polygon],
         tri_t_begin_days=obj_begin[tri_object], tri_t_end_days=obj_end[tri_object],
@@ -590,10 +607,10 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
         obj_parent=np.asarray(raw.obj_parent, np.int32), obj_t_begin_days=obj_begin,
         obj_t_end_days=obj_end, obj_time_source=obj_source, obj_lod=obj_lod,
         poly_ids=[raw.poly_ids[p] or "" for p in orig_poly],
-        poly_object=p_obj_drawn.astype(np.int32), poly_class=poly_class,
-        poly_area_m2=np.asarray(tri.area_m2, np.float64)[drawn],
+        poly_object=p_obj_drawn, poly_class=poly_class,
+        poly_area_m2=np.asarray(tri_area_m2, np.float64)[drawn],
         poly_normal=normals[drawn].astype(np.float32),
-        poly_repairs=np.asarray(tri.repairs, np.uint16)[drawn],
+        poly_repairs=np.asarray(tri_repairs, np.uint16)[drawn],
         materials=materials, textures=textures, report=report)
 
 

@@ -1094,6 +1094,8 @@ def triangulate_polygons(coords: np.ndarray, ring_offsets: np.ndarray,
                                 float(area_rel_tol), float(min_rel_area),
                                 float(nonplanar_rel_tol), tri_out, tri_poly, status, repairs,
                                 normal, area)
-    return TriangulationResult(triangles=tri_out[:n_tri].copy(),
-                               tri_polygon=tri_poly[:n_tri].copy(), status=status,
+    # Views, not copies: the rows past n_tri were never written, so they hold no memory, and a
+    # copy would double the largest arrays of the build at its peak.
+    return TriangulationResult(triangles=tri_out[:n_tri], tri_polygon=tri_poly[:n_tri],
+                               status=status,
                                repairs=repairs, normal=normal, area_m2=area)
