@@ -27,6 +27,7 @@ import platform
 import sys
 import time
 from pathlib import Path
+
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from provenance import commit  # noqa: E402  (the benchmarks' shared provenance)
 
@@ -52,8 +53,6 @@ def _machine() -> str:
     return (f"{cpu}, {os.cpu_count()} logical cores, Numba {numba.__version__} with "
             f"{numba.get_num_threads()} threads, Python {platform.python_version()}, "
             f"{platform.system()} {platform.release()}")
-
-
 
 
 def _progress(done: int, total: int, label: str) -> None:
@@ -121,20 +120,20 @@ def main(argv=None) -> int:
     else:
         closing.append(f"- TUM campus model not found at `{TUM}`: skipped.")
     if not args.skip_1m:
-        city_1m, city_1m_gml = CITY_1M, CITY_1M_GML
-        if args.city_1m is not None:
-            if not args.city_1m.exists():
-                parser.error(f"--city-1m: {args.city_1m} does not exist")
-            if args.city_1m.suffix == ".cityshade":
-                city_1m = args.city_1m
-            else:
-                city_1m_gml = args.city_1m
-                CITY_1M.unlink(missing_ok=True)
-        if not city_1m.exists() and city_1m_gml.exists():
-            from cityshade.build import build_file
+        from cityshade.build import build_file
 
-            city_1m.parent.mkdir(parents=True, exist_ok=True)
-            build_file(city_1m_gml, city_1m)
+        city_1m, gml = CITY_1M, None
+        if args.city_1m is not None and not args.city_1m.exists():
+            parser.error(f"--city-1m: {args.city_1m} does not exist")
+        if args.city_1m is not None and args.city_1m.suffix == ".cityshade":
+            city_1m = args.city_1m
+        elif args.city_1m is not None:
+            gml = args.city_1m                  # built anew into bench_out/
+        elif not CITY_1M.exists() and CITY_1M_GML.exists():
+            gml = CITY_1M_GML
+        if gml is not None:
+            CITY_1M.parent.mkdir(parents=True, exist_ok=True)
+            build_file(gml, CITY_1M)
         if city_1m.exists():
             models.append(("city_1M", city_1m, "izb,shadowmap,pcf,vsm,lispsm,csm,pcf+smooth,"
                            "hybrid:shadowmap,hybrid:vsm", (2048, 4096), 1, (1280, 720)))

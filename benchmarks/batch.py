@@ -50,8 +50,6 @@ from render import ensure_scene  # noqa: E402  (same input city as the render be
 DAY_2000 = 10957.0  # 2000-01-01 in days since 1970-01-01
 
 
-
-
 def main(argv=None) -> dict:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--repeat", type=int, default=3)

@@ -41,6 +41,7 @@ import sys
 import time
 from dataclasses import asdict
 from pathlib import Path
+
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from provenance import commit  # noqa: E402  (the benchmarks' shared provenance)
 
@@ -68,8 +69,6 @@ print(json.dumps({"returncode": proc.returncode, "seconds": seconds,
                   "stderr_tail": proc.stderr.strip().splitlines()[-1:] or [""],
                   "stdout_tail": proc.stdout.strip().splitlines()[-1:] or [""]}))
 """
-
-
 
 
 def _generator_digest() -> str:

@@ -37,6 +37,7 @@ import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
+
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from provenance import commit  # noqa: E402  (the benchmarks' shared provenance)
 
@@ -300,8 +301,6 @@ def core_probe(threads_list, runs):
         numba.set_num_threads(th)
         out[th], _ = timed(lambda: _probe_kernel(2_000_000), runs)
     return out
-
-
 
 
 def timed(fn, runs, clock=time.perf_counter):

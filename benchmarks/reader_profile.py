@@ -34,6 +34,7 @@ import subprocess
 import sys
 import time
 from pathlib import Path
+
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from provenance import commit  # noqa: E402  (the benchmarks' shared provenance)
 
@@ -95,8 +96,6 @@ def read_and_build(path: Path) -> tuple[float, float, int]:
     scene = build_scene(raw)
     t2 = time.perf_counter()
     return t1 - t0, t2 - t1, int(len(scene.triangles))
-
-
 
 
 def _summary(seconds: list[float], size: int) -> dict:

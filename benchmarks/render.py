@@ -42,6 +42,7 @@ import sys
 import tempfile
 import time
 from pathlib import Path
+
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from provenance import commit  # noqa: E402  (the benchmarks' shared provenance)
 
@@ -50,8 +51,6 @@ import numpy as np
 REPO = Path(__file__).resolve().parents[1]
 DAY_2000 = 10957.0          # 2000-01-01 in days since 1970-01-01
 ANCHOR_DESIGN_MS = {1: 264.0, 2: 165.0}   # DESIGN §12, llvmpipe 1080p depth+colour
-
-
 
 
 def _machine() -> dict:

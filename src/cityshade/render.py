@@ -79,17 +79,17 @@ STRIP_BYTES = 128 * 1024 ** 2
 #: comes from the pixel's neighbours (:func:`cityshade.textures.lod_from_uv_neighbours`), and
 #: at the strip's edge they must be the whole map's.
 STRIP_HALO_ROWS = 1
-#: Bytes per pixel that a strip-wise frame keeps for the whole map: lit 4, RGB 12, valid 1,
-#: depth 4, normal 12, object and triangle ids 4 + 4. They go to a temporary file
-#: (:func:`_spool`), not to memory: 0.82 GB of a 20 Mpx map beside the strips' work.
-STRIP_KEPT_BYTES_PER_PX = 41
-#: Bytes per pixel of the whole map that the writers of a strip-wise frame hold in memory: the
-#: shadow mask (1) and its temporaries (3, :func:`cityshade.imageio.mask_from_lit`).
-STRIP_WRITE_BYTES_PER_PX = 4
 #: The whole-map arrays of a strip-wise frame: name, dtype, values per pixel.
 _STRIP_KEPT = (("lit", np.float32, 1), ("rgb", np.float32, 3), ("valid", np.bool_, 1),
                ("depth", np.float32, 1), ("normal", np.float32, 3), ("obj_id", np.int32, 1),
                ("prim_id", np.int32, 1))
+#: Bytes per pixel that a strip-wise frame keeps for the whole map (41: lit 4, RGB 12, valid 1,
+#: depth 4, normal 12, object and triangle ids 4 + 4). They go to a temporary file
+#: (:class:`_Spool`), not to memory: 0.82 GB of a 20 Mpx map beside the strips' work.
+STRIP_KEPT_BYTES_PER_PX = sum(n * np.dtype(dtype).itemsize for _, dtype, n in _STRIP_KEPT)
+#: Bytes per pixel of the whole map that the writers of a strip-wise frame hold in memory: the
+#: shadow mask (1) and its temporaries (3, :func:`cityshade.imageio.mask_from_lit`).
+STRIP_WRITE_BYTES_PER_PX = 4
 
 
 def strip_rows_for(camera: "Camera", technique: str = "raytrace",
@@ -207,9 +207,9 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
 
 def check_strip_memory(camera: "Camera", rows: int, technique: str,
                        settings: ShadowSettings | None = None) -> int:
-    """The estimated peak bytes of a strip-wise frame (one strip's work, or the writers' whole
-    mask: the whole-map arrays go to a temporary file); refuse one that does not fit in the available memory, or whose
-    file does not fit in the temporary folder.
+    """The estimated peak bytes of a strip-wise frame (one strip's work plus the writers' whole
+    mask: the whole-map arrays go to a temporary file); refuse one that does not fit in the
+    available memory, or whose file does not fit in the temporary folder.
 
     Raises
     ------

@@ -303,8 +303,9 @@ def settings_for_source(path, crs: str | None, settings=None):
 
     if crs is None:
         return settings
-    if is_cache_file(path) or Path(path).is_dir():
-        kind = "tiled scene folder" if Path(path).is_dir() else "scene file"
+    folder = Path(path).is_dir()        # a tiled cache
+    if folder or is_cache_file(path):
+        kind = "tiled scene folder" if folder else "scene file"
         raise UsageError(f"--crs applies to a CityGML file; {path} is a {kind} built with "
                          f"its CRS: rebuild it with cityshade build --crs")
     settings = settings or Settings()

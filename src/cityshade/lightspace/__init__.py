@@ -105,7 +105,7 @@ class Casters:
         # give, without its sorted copies (0.3 GB of temporaries at 10^7 triangles).
         seen = np.zeros(int(ids.max()) + 1 if ids.size else 0, np.bool_)
         first = np.empty(min(ids.size, seen.size), np.int32)
-        n = K.first_records(ids, 0, seen, first, 0)
+        n = K.first_records(ids, seen, first)
         del ids, seen
         self.first = first[:n].copy() if n < first.size else first
         self._axis = None

@@ -108,16 +108,16 @@ CASTER_WORDS = 2 * (REC_T_END64 + 1)
 
 
 @njit(cache=True)
-def first_records(ids, row0, seen, out_rows, n_rows):
-    """Append to ``out_rows`` (from ``n_rows`` on) the rows ``row0 + i`` whose id ``ids[i]`` is
-    not yet ``seen``, marking it; returns the new count. Called on the records in file order,
-    it gives each triangle's first record, in increasing row order."""
-    m = n_rows
+def first_records(ids, seen, out_rows):
+    """Write to ``out_rows`` the rows ``i`` whose id ``ids[i]`` is not yet ``seen`` (a zeroed
+    bool table), marking it; returns their count. On the records in file order this is each
+    triangle's first record, in increasing row order."""
+    m = 0
     for i in range(ids.shape[0]):
         t = ids[i]
         if not seen[t]:
             seen[t] = True
-            out_rows[m] = row0 + i
+            out_rows[m] = i
             m += 1
     return m
 
