@@ -93,9 +93,9 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
     Parameters
     ----------
     pack_ids : bool
-        Give the scene its polygon and object ids packed (:class:`~cityshade.cache.PackedStrings`, as a
-        loaded scene has them) for a build that only writes them: less memory from the
-        kd-tree on, but each id is decoded when read.
+        Give the scene its polygon and object ids packed
+        (:class:`~cityshade.cache.PackedStrings`, as a loaded scene has them) for a build that
+        only writes them: less memory from the kd-tree on, but each id is decoded when read.
     progress : callable(stage, done, total), optional
         Called while reading (bytes) and at the start of later stages.
     """
