@@ -280,3 +280,50 @@ def test_consumed_model_builds_the_same_scene():
         assert a.dtype == b.dtype and np.array_equal(a, b), name
     assert kept.poly_ids == consumed.poly_ids and kept.materials == consumed.materials
     assert kept.textures == consumed.textures and kept.report == consumed.report
+
+
+@pytest.mark.parametrize("batch_chars", [1, 5_000])
+def test_batches_parsed_on_a_second_thread_give_the_same_model(tmp_path, monkeypatch, batch_chars):
+    """Coordinate batches flushed during the read parse on the ring parser's thread, in order:
+    with batches of one ring or a few hundred, the model equals the one of a single batch (the
+    sample city, whose xlinked rings are numbered across batches, and a file with bad rings)."""
+    from pathlib import Path
+
+    import cityshade.citygml.reader as reader
+
+    bad_ring = ('<bldg:Building gml:id="B2"><bldg:lod2MultiSurface><gml:MultiSurface>'
+                '<gml:surfaceMember><gml:Polygon><gml:exterior><gml:LinearRing><gml:posList>'
+                '1 2 3 4 5 x 7 8 9 1 2 3</gml:posList></gml:LinearRing></gml:exterior>'
+                '</gml:Polygon></gml:surfaceMember></gml:MultiSurface></bldg:lod2MultiSurface>'
+                '</bldg:Building>')
+    bad = city(building("B1", box_polygons(0, 0, 0, 10, 10, 5)), bad_ring,
+               building("B3", box_polygons(20, 0, 0, 5, 5, 5, prefix="q")))
+    bad_path = tmp_path / "bad.gml"
+    bad_path.write_text(bad)
+    sample = Path(__file__).resolve().parents[1] / "sample_data" / "sample_city.gml"
+    for path in (sample, bad_path):
+        whole = read_citygml(path)
+        monkeypatch.setattr(reader, "_PARSE_BATCH_CHARS", batch_chars)
+        batched = read_citygml(path)
+        monkeypatch.undo()
+        for name in ("xyz", "ring_points", "ring_bad", "poly_obj", "poly_ring0", "ref_obj"):
+            a, b = getattr(whole, name), getattr(batched, name)
+            assert a.dtype == b.dtype and np.array_equal(a, b), (path.name, name)
+        assert whole.ring_by_id == batched.ring_by_id and whole.counters == batched.counters
+    assert whole.ring_bad.sum() == 1
+
+
+def test_a_failed_read_leaves_no_parser_thread(tmp_path, monkeypatch):
+    """A file that fails after batches were flushed stops the ring parser's thread."""
+    import threading
+
+    import cityshade.citygml.reader as reader
+
+    doc = city(*(building(f"B{i}", box_polygons(10 * i, 0, 0, 5, 5, 5, prefix=f"p{i}"))
+                 for i in range(3)))
+    path = tmp_path / "cut.gml"
+    path.write_text(doc[: len(doc) - 200])
+    monkeypatch.setattr(reader, "_PARSE_BATCH_CHARS", 1)
+    with pytest.raises(XMLSyntaxError):
+        read_citygml(path)
+    assert not any(t.name == "cityshade-ring-parse" for t in threading.enumerate())

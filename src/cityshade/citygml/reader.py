@@ -35,7 +35,7 @@ import numpy as np
 
 from cityshade.citygml import namespaces as ns
 from cityshade.citygml.appearance import AppearanceCollector
-from cityshade.citygml.geometry import parse_ring_texts
+from cityshade.citygml.geometry import RingParser, parse_ring_texts
 from cityshade.citygml.namespaces import XLINK_HREF
 from cityshade.errors import EmptyModelError, InputError, NotCityGMLError, XMLSyntaxError
 
@@ -154,9 +154,8 @@ class _Walker:
         self.texts: list[str] = []
         self.dims: list[int] = []
         self.text_chars = 0
-        self.xyz_chunks: list[np.ndarray] = []
-        self.points_chunks: list[np.ndarray] = []
-        self.bad_chunks: list[np.ndarray] = []
+        # Batches flushed during the read parse on a second thread; the last one here.
+        self.parser = RingParser()
         self.gml_ns = ns.GML_NAMESPACES[0]
         self.gml_id = ns.GML_ID_ATTRS[0]
         self.other_gml_id: str | None = ns.GML_ID_ATTRS[1]
@@ -543,21 +542,22 @@ class _Walker:
     def flush(self) -> None:
         if not self.texts:
             return
-        xyz, points, bad = parse_ring_texts(self.texts, self.dims)
-        self.xyz_chunks.append(xyz)
-        self.points_chunks.append(points)
-        self.bad_chunks.append(bad)
+        self.parser.submit(self.texts, self.dims)
         self.rings_flushed += len(self.texts)
         self.texts, self.dims, self.text_chars = [], [], 0
 
     def finish(self) -> None:
-        self.flush()
+        chunks = self.parser.results()
+        if self.texts:
+            chunks.append(parse_ring_texts(self.texts, self.dims))
+            self.rings_flushed += len(self.texts)
+            self.texts, self.dims, self.text_chars = [], [], 0
         m = self.m
-        if self.xyz_chunks:
-            m.xyz = np.concatenate(self.xyz_chunks) if len(self.xyz_chunks) > 1 else self.xyz_chunks[0]
-            m.ring_points = np.concatenate(self.points_chunks)
-            m.ring_bad = np.concatenate(self.bad_chunks)
-        self.xyz_chunks = self.points_chunks = self.bad_chunks = []
+        if chunks:
+            xyz, points, bad = zip(*chunks)
+            m.xyz = np.concatenate(xyz) if len(xyz) > 1 else xyz[0]
+            m.ring_points = np.concatenate(points)
+            m.ring_bad = np.concatenate(bad)
         m.poly_obj, m.poly_cls, m.poly_lod, m.poly_flip, m.poly_ring0 = _record_columns(
             self.polys, 5)
         m.ref_obj, m.ref_cls, m.ref_lod, m.ref_flip = _record_columns(self.refs, 4)
@@ -713,6 +713,8 @@ def _read(path: Path, root_ns: str, progress, recover: bool,
             else:
                 msg = f"malformed XML: {msg}"
             raise XMLSyntaxError(msg, path=str(path), line=exc.lineno) from None
+        finally:
+            walker.parser.close()
     walker.finish()
     model.counters["members"] = members
     if members == 0 or not model.obj_ids:
