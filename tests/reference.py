@@ -837,3 +837,17 @@ def reference_used_vertex_box(vertices, triangles):
     used = np.unique(np.asarray(triangles).reshape(-1))
     pts = np.asarray(vertices)[used].astype(np.float64)
     return np.stack([pts.min(axis=0), pts.max(axis=0)])
+
+
+def reference_expand_ranges(starts, lengths):
+    """Twin of :func:`cityshade.geometry.scene._expand_ranges`: the ranges one by one."""
+    out = []
+    for s, n in zip(np.asarray(starts).tolist(), np.asarray(lengths).tolist()):
+        out.extend(range(s, s + n))
+    return np.array(out, np.int64)
+
+
+def reference_render_vertices(points, index, origin):
+    """Twin of :func:`cityshade.geometry.scene._render_vertices`: gather, subtract in float64,
+    round to float32."""
+    return (np.asarray(points, np.float64)[index] - origin).astype(np.float32)

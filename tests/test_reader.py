@@ -173,6 +173,46 @@ def test_material_theme_and_texture_paths(tmp_path):
     assert scene.report["counters"]["textures_refused"] == 2
 
 
+def test_material_targets_an_aggregate_a_polygon_and_nothing(tmp_path):
+    """A material naming a solid covers all its faces; a later one naming a face wins there;
+    one naming only unknown ids is not listed."""
+    doc = building("b", box_polygons(0, 0, 0, 4, 4, 4)).replace(
+        "<gml:Solid ", '<gml:Solid gml:id="solid_b" ')
+
+    def material(rgb, *targets):
+        return ("<app:surfaceDataMember><app:X3DMaterial>"
+                f"<app:diffuseColor>{rgb}</app:diffuseColor>"
+                + "".join(f"<app:target>#{t}</app:target>" for t in targets)
+                + "</app:X3DMaterial></app:surfaceDataMember>")
+
+    appearance = ("<app:Appearance><app:theme>t</app:theme>"
+                  + material("0.5 0.5 0.5", "solid_b") + material("1 0 0", "nope", "pr")
+                  + material("0 0 1", "nope") + "</app:Appearance>")
+    scene = scene_of(tmp_path, city(doc, appearance=appearance))
+    assert [m["diffuse"] for m in scene.materials] == [[0.5, 0.5, 0.5], [1.0, 0.0, 0.0]]
+    roof = scene.poly_ids.index("pr")
+    assert (scene.tri_material[scene.tri_polygon == roof] == 1).all()
+    assert (scene.tri_material[scene.tri_polygon != roof] == 0).sum() == 10
+
+
+def test_scene_assembly_kernels_match_their_twins():
+    from cityshade.geometry.scene import _expand_ranges, _render_vertices
+    from reference import reference_expand_ranges, reference_render_vertices
+
+    rng = np.random.default_rng(5)
+    starts = rng.integers(0, 10**9, 200)
+    lengths = rng.integers(0, 6, 200)  # empty ranges among them
+    np.testing.assert_array_equal(_expand_ranges(starts, lengths),
+                                  reference_expand_ranges(starts, lengths))
+    assert _expand_ranges(starts[:0], lengths[:0]).shape == (0,)
+    points = rng.uniform(-1, 1, (500, 3)) * 10.0 ** rng.integers(0, 8, (500, 1))
+    index = np.sort(rng.choice(500, 300, replace=False))
+    origin = np.array([1234567.0, -7654321.0, 500.0])
+    got = _render_vertices(points, index, origin)
+    assert got.dtype == np.float32
+    np.testing.assert_array_equal(got, reference_render_vertices(points, index, origin))
+
+
 def test_precision_offset_1e7(tmp_path):
     """The same building 10^7 m away gives the same local geometry to 1 mm."""
     near = scene_of(tmp_path, city(building("b", box_polygons(1234.567, 2345.678, 10.0, 12.3, 7.9, 15.1))))

@@ -14,10 +14,12 @@ from __future__ import annotations
 
 from collections import Counter
 from dataclasses import dataclass, field
+from itertools import repeat
 from pathlib import Path
 from typing import Any
 
 import numpy as np
+from numba import njit
 
 from cityshade.citygml.appearance import (georeferenced_uv, read_world_file,
                                           resolve_image_path)
@@ -28,6 +30,7 @@ from cityshade.citygml.temporal import (choose_interval, days_to_iso, has_creati
                                         parse_time_attribute)
 from cityshade.config import BuildSettings
 from cityshade.errors import EmptyModelError, UsageError
+from cityshade.raster.culling import used_vertex_box
 
 #: Time-source codes stored per object (uint8); new sources are appended (codes are stored).
 TIME_SOURCE_NAMES = ("none", "valid", "construction", "creation", "inherited", "attribute")
@@ -195,7 +198,7 @@ def _resolve_references(raw: RawModel, counters: Counter):
     targets = raw.ref_target
     # Most references name a polygon directly (solids made of boundary polygons): one dict
     # look-up each. Only the rest (aggregates, nested references) go through the slow path.
-    direct = np.fromiter((poly_by_id.get(t, -1) for t in targets), np.int64, len(targets))
+    direct = np.fromiter(map(poly_by_id.get, targets, repeat(-1)), np.int64, len(targets))
     ref_obj = np.asarray(raw.ref_obj, np.int64)
     ref_lod = np.asarray(raw.ref_lod, np.int64)
     ref_flip = np.asarray(raw.ref_flip, np.int64)
@@ -238,12 +241,34 @@ def _resolve_references(raw: RawModel, counters: Counter):
 
 
 def _expand_ranges(starts: np.ndarray, lengths: np.ndarray) -> np.ndarray:
-    """Concatenate ``arange(s, s + n)`` for every (s, n), vectorised."""
-    total = int(lengths.sum())
-    if total == 0:
-        return np.empty(0, np.int64)
-    offsets = np.repeat(starts - np.concatenate([[0], np.cumsum(lengths)[:-1]]), lengths)
-    return np.arange(total, dtype=np.int64) + offsets
+    """Concatenate ``arange(s, s + n)`` for every (s, n)."""
+    lengths = np.asarray(lengths, np.int64)
+    out = np.empty(int(lengths.sum()), np.int64)
+    _expand_ranges_kernel(np.asarray(starts, np.int64), lengths, out)
+    return out
+
+
+@njit(cache=True)
+def _expand_ranges_kernel(starts, lengths, out):
+    # One pass, no temporaries (numpy's repeat + arange took 1 s for the 10M city's points).
+    k = 0
+    for i in range(starts.shape[0]):
+        s = starts[i]
+        for j in range(lengths[i]):
+            out[k] = s + j
+            k += 1
+
+
+@njit(cache=True)
+def _render_vertices(points, index, origin):
+    """``float32(points[index] - origin)``: gathered, shifted and rounded once, in one pass
+    (no float64 copy of the gathered points and of their difference)."""
+    out = np.empty((index.shape[0], 3), np.float32)
+    for k in range(index.shape[0]):
+        i = index[k]
+        for a in range(3):
+            out[k, a] = np.float32(points[i, a] - origin[a])
+    return out
 
 
 def _polygon_targets(raw: RawModel, target: str, depth: int = 0) -> list[int]:
@@ -431,17 +456,16 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
         polys, p_obj, p_flip, p_nrings = polys[good], p_obj[good], p_flip[good], p_nrings[good]
         rings = _expand_ranges(poly_ring0[polys], p_nrings)
     ring_len = raw.ring_points[rings]
-    point_idx = _expand_ranges(ring_start[rings], ring_len)
-    if raw.point_vertex is not None:
-        point_idx = raw.point_vertex[point_idx]  # a shared vertex list (CityJSON)
-        coords = raw.xyz[point_idx]
-    elif len(point_idx) == len(raw.xyz):
-        # Every point is used: the ranges are ascending and disjoint, so this is the identity
-        # and the copy (a third of the read model's memory) is spared.
+    if raw.point_vertex is None and int(ring_len.sum()) == len(raw.xyz):
+        # Every point is used: the ranges are ascending and disjoint, so the gather is the
+        # identity and the copy (a third of the read model's memory) is spared.
         coords = raw.xyz
     else:
+        point_idx = _expand_ranges(ring_start[rings], ring_len)
+        if raw.point_vertex is not None:
+            point_idx = raw.point_vertex[point_idx]  # a shared vertex list (CityJSON)
         coords = raw.xyz[point_idx]
-    del point_idx
+        del point_idx
     if consume_raw:
         raw.xyz = None  # gathered (or the very array): freed with coords after step 9
     ring_offsets = np.concatenate([[0], np.cumsum(ring_len)]).astype(np.int64)
@@ -473,11 +497,6 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
     elif settings.axis_order is not None:
         warnings.append(f"--axis-order {settings.axis_order} ignored: {crs.name} is not a "
                         f"geographic CRS (its coordinates are read easting first)")
-    if not crs.is_geographic and len(coords):
-        # A wrong CRS (or a 10^7 m offset) puts the model somewhere else on Earth: say so.
-        area_warning = area_of_use_warning(crs, coords.min(axis=0), coords.max(axis=0))
-        if area_warning:
-            warnings.append(area_warning)
 
     # 7. Triangulate in float64.
     tri = triangulate_polygons(
@@ -522,6 +541,13 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
     remap_poly[drawn] = np.arange(len(drawn))
     tri_polygon = remap_poly[tri_poly_local]
     del tri_poly_local
+    box = np.empty((2, 3))  # of the points drawn (one pass; numpy's min/max took 1.6 s)
+    used_vertex_box(triangles, coords, box)
+    if not crs.is_geographic:
+        # A wrong CRS (or a 10^7 m offset) puts the model somewhere else on Earth: say so.
+        area_warning = area_of_use_warning(crs, box[0], box[1])
+        if area_warning:
+            warnings.append(area_warning)
     used = np.zeros(len(coords), bool)
     used[triangles.ravel()] = True
     used_points = np.nonzero(used)[0]
@@ -529,13 +555,11 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
     del used
     triangles = new_index[triangles]
     del new_index
-    world = coords[used_points]
     if render_space:
-        origin = render_origin(world.min(axis=0), world.max(axis=0))
-        vertices = (world - origin).astype(np.float32)
-        del world
+        origin = render_origin(box[0], box[1])
+        vertices = _render_vertices(coords, used_points, origin)
     else:
-        origin, vertices = np.zeros(3), world
+        origin, vertices = np.zeros(3), coords[used_points]
 
     # 9. Appearance of the chosen theme.
     theme = raw.appearance.choose_theme(settings.theme)
@@ -594,6 +618,7 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
         "counters": {k: int(v) for k, v in sorted(counters.items())},
         "warnings": warnings,
     }
+    poly_ids = raw.poly_ids
     openings = _opening_groups(getattr(raw, "openings", ()), orig_poly)
     if openings:
         report["openings"] = openings
@@ -606,7 +631,7 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
         obj_ids=[i or "" for i in raw.obj_ids], obj_types=list(raw.obj_types),
         obj_parent=np.asarray(raw.obj_parent, np.int32), obj_t_begin_days=obj_begin,
         obj_t_end_days=obj_end, obj_time_source=obj_source, obj_lod=obj_lod,
-        poly_ids=[raw.poly_ids[p] or "" for p in orig_poly],
+        poly_ids=[poly_ids[p] or "" for p in orig_poly.tolist()],
         poly_object=p_obj_drawn, poly_class=poly_class,
         poly_area_m2=np.asarray(tri_area_m2, np.float64)[drawn],
         poly_normal=normals[drawn].astype(np.float32),
@@ -647,15 +672,16 @@ def _apply_appearance(raw, theme, drawn, polys, rings, ring_offsets,
     for rec in app.materials:
         if rec.theme != theme:
             continue
-        index = len(materials)
-        hit = False
-        for target in rec.targets:
-            for p in _polygon_targets(raw, target):
-                local = local_of_orig[p]
-                if local >= 0:
-                    poly_material[local] = index
-                    hit = True
-        if hit:
+        # Most targets name a polygon: one dict look-up each, the rest (aggregates) one by one.
+        direct = np.fromiter(map(raw.poly_by_id.get, rec.targets, repeat(-1)), np.int64,
+                             len(rec.targets))
+        nested = [p for k in np.nonzero(direct < 0)[0]
+                  for p in _polygon_targets(raw, rec.targets[k])]
+        local = local_of_orig[np.concatenate([direct[direct >= 0],
+                                              np.asarray(nested, np.int64)])]
+        local = local[local >= 0]
+        if len(local):
+            poly_material[local] = len(materials)
             materials.append(rec.to_json())
     texture_index: dict[str, int] = {}
     for rec in app.textures:
