@@ -851,3 +851,13 @@ def reference_render_vertices(points, index, origin):
     """Twin of :func:`cityshade.geometry.scene._render_vertices`: gather, subtract in float64,
     round to float32."""
     return (np.asarray(points, np.float64)[index] - origin).astype(np.float32)
+
+
+def reference_model_time_range(t_begin_days, t_end_days):
+    """Twin of :func:`cityshade.accel.kdtree_build.model_time_range`: the finite values
+    gathered, their min and max, padded by 1 % (at least a day)."""
+    finite = [float(v) for v in list(t_begin_days) + list(t_end_days) if np.isfinite(v)]
+    if not finite:
+        return None
+    pad = max(1.0, 0.01 * (max(finite) - min(finite)))
+    return min(finite) - pad, max(finite) + pad

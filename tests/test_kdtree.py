@@ -374,3 +374,19 @@ def test_an_interrupted_subtree_build_starts_no_queued_subtree(city, monkeypatch
         numba.set_num_threads(before)
     # subtree_refs=30 defers dozens of subtrees; one thread was busy for 50 ms at most.
     assert 1 <= len(calls) <= 4, len(calls)
+
+
+def test_model_time_range_matches_its_twin():
+    from cityshade.accel import model_time_range
+    from reference import reference_model_time_range
+
+    rng = np.random.default_rng(11)
+    begin = np.where(rng.random(500) < 0.3, -np.inf, np.round(rng.uniform(-9e4, 2e4, 500)))
+    end = np.where(rng.random(500) < 0.5, np.inf, begin + np.round(rng.uniform(1, 9e3, 500)))
+    end[np.isinf(end) & np.isinf(begin)] = np.inf
+    valid = begin < end
+    assert model_time_range(begin, end, valid) == reference_model_time_range(begin[valid],
+                                                                             end[valid])
+    assert model_time_range(begin, end) == reference_model_time_range(begin, end)
+    assert model_time_range(np.full(3, -np.inf), np.full(3, np.inf)) is None
+    assert model_time_range(np.array([5.0]), np.array([np.inf])) == (4.0, 6.0)  # a day each side

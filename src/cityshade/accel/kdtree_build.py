@@ -1128,20 +1128,40 @@ def _stitch(top: list, subtrees: list[tuple]) -> tuple:
     return axis_out, child_out, first_out, split_out, prims_out, stats
 
 
-def model_time_range(t_begin_days: np.ndarray, t_end_days: np.ndarray) -> tuple[float, float] | None:
+def model_time_range(t_begin_days: np.ndarray, t_end_days: np.ndarray,
+                     valid: np.ndarray | None = None) -> tuple[float, float] | None:
     """Finite time range ``(t0, t1)`` in days used by the heuristic, or None for a dateless model.
 
-    The range spans every finite begin and end, padded by 1 % of its length (at least one day)
-    so that the first and last dates are strictly inside and a single date still has a duration.
+    The range spans every finite begin and end (of the triangles where ``valid`` is true, if
+    given), padded by 1 % of its length (at least one day) so that the first and last dates are
+    strictly inside and a single date still has a duration.
     """
-    finite = np.concatenate([t_begin_days[np.isfinite(t_begin_days)],
-                             t_end_days[np.isfinite(t_end_days)]])
-    if finite.size == 0:
+    t_begin_days = np.ascontiguousarray(t_begin_days, np.float64)
+    t_end_days = np.ascontiguousarray(t_end_days, np.float64)
+    if valid is None:
+        valid = np.ones(t_begin_days.shape[0], bool)
+    lo, hi, n_finite = _finite_range(t_begin_days, t_end_days, np.ascontiguousarray(valid, bool))
+    if n_finite == 0:
         return None
-    lo = float(finite.min())
-    hi = float(finite.max())
     pad = max(1.0, 0.01 * (hi - lo))
     return lo - pad, hi + pad
+
+
+@njit(cache=True)
+def _finite_range(t_begin, t_end, valid):
+    """(min, max, count) of the finite begins and ends of the valid triangles, in one pass
+    (the masked copies, isfinite and concatenation took 0.7 s for the 10M city)."""
+    lo = np.inf
+    hi = -np.inf
+    n = 0
+    for i in range(t_begin.shape[0]):
+        if valid[i]:
+            for v in (t_begin[i], t_end[i]):
+                if np.isfinite(v):
+                    lo = min(lo, v)
+                    hi = max(hi, v)
+                    n += 1
+    return lo, hi, n
 
 
 def build_kdtree(vertices, triangles, t_begin_days, t_end_days, material,
@@ -1203,7 +1223,7 @@ def build_kdtree(vertices, triangles, t_begin_days, t_end_days, material,
     triangles = np.ascontiguousarray(triangles)
     valid = t_begin < t_end
     ids0 = np.flatnonzero(valid).astype(np.int32)
-    time_range = model_time_range(t_begin[valid], t_end[valid])
+    time_range = model_time_range(t_begin, t_end, valid)
     has_time = time_range is not None
     t0, t1 = time_range if has_time else (0.0, 0.0)
 
