@@ -861,3 +861,15 @@ def reference_model_time_range(t_begin_days, t_end_days):
         return None
     pad = max(1.0, 0.01 * (max(finite) - min(finite)))
     return min(finite) - pad, max(finite) + pad
+
+
+def reference_pack_nodes(axis, child, first, split):
+    """Twin of :func:`cityshade.accel.kdtree_layout.pack_nodes`: the two words with numpy
+    (child shifted over the axis; a leaf's first index, else the split's float32 bits)."""
+    from cityshade.accel.kdtree_layout import AXIS_BITS, LEAF_CODE
+
+    axis, child = np.asarray(axis, np.int64), np.asarray(child, np.int64)
+    split_bits = np.asarray(split, np.float32).view(np.uint32)
+    return np.stack([((child << AXIS_BITS) | axis).astype(np.uint32),
+                     np.where(axis == LEAF_CODE, np.asarray(first, np.int64).astype(np.uint32),
+                              split_bits)], axis=1)

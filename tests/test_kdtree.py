@@ -390,3 +390,16 @@ def test_model_time_range_matches_its_twin():
     assert model_time_range(begin, end) == reference_model_time_range(begin, end)
     assert model_time_range(np.full(3, -np.inf), np.full(3, np.inf)) is None
     assert model_time_range(np.array([5.0]), np.array([np.inf])) == (4.0, 6.0)  # a day each side
+
+
+def test_pack_nodes_matches_its_twin():
+    from cityshade.accel.kdtree_layout import pack_nodes
+    from reference import reference_pack_nodes
+
+    rng = np.random.default_rng(2)
+    axis = rng.integers(0, 5, 1000)
+    child = rng.integers(0, 2 ** 29, 1000)
+    first = rng.integers(0, 2 ** 32, 1000)
+    split = rng.normal(0, 1e4, 1000).astype(np.float32).astype(np.float64)
+    np.testing.assert_array_equal(pack_nodes(axis, child, first, split),
+                                  reference_pack_nodes(axis, child, first, split))

@@ -137,11 +137,17 @@ def pack_nodes(axis, child, first, split):
     if child.size and child.max() >= 2 ** (32 - AXIS_BITS):
         raise KdTreeLayoutError("kd-tree too large for the 8-byte node layout")
     nodes = np.empty((axis.size, 2), np.uint32)
-    nodes[:, 0] = ((child << AXIS_BITS) | axis).astype(np.uint32)
-    split_bits = np.asarray(split, dtype=np.float32).view(np.uint32)
-    nodes[:, 1] = np.where(axis == LEAF_CODE, np.asarray(first, dtype=np.int64).astype(np.uint32),
-                           split_bits)
+    split_bits = np.ascontiguousarray(split, dtype=np.float32).view(np.uint32)
+    _pack_kernel(axis, child, np.asarray(first, dtype=np.int64), split_bits, nodes)
     return nodes
+
+
+@njit(cache=True)
+def _pack_kernel(axis, child, first, split_bits, nodes):
+    # One pass (numpy's shifted, cast and selected temporaries took 0.76 s for 10.5 M nodes).
+    for i in range(axis.shape[0]):
+        nodes[i, 0] = np.uint32((child[i] << AXIS_BITS) | axis[i])
+        nodes[i, 1] = np.uint32(first[i]) if axis[i] == LEAF_CODE else split_bits[i]
 
 
 @njit(cache=True, parallel=True)
