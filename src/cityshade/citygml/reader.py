@@ -35,7 +35,7 @@ import numpy as np
 
 from cityshade.citygml import namespaces as ns
 from cityshade.citygml.appearance import AppearanceCollector
-from cityshade.citygml.geometry import RingParser, parse_ring_texts
+from cityshade.citygml.geometry import RingParser
 from cityshade.citygml.namespaces import XLINK_HREF
 from cityshade.errors import EmptyModelError, InputError, NotCityGMLError, XMLSyntaxError
 
@@ -154,7 +154,7 @@ class _Walker:
         self.texts: list[str] = []
         self.dims: list[int] = []
         self.text_chars = 0
-        # Batches flushed during the read parse on a second thread; the last one here.
+        # Batches flushed parse on a second thread while the read goes on.
         self.parser = RingParser()
         self.gml_ns = ns.GML_NAMESPACES[0]
         self.gml_id = ns.GML_ID_ATTRS[0]
@@ -547,11 +547,8 @@ class _Walker:
         self.texts, self.dims, self.text_chars = [], [], 0
 
     def finish(self) -> None:
+        self.flush()
         chunks = self.parser.results()
-        if self.texts:
-            chunks.append(parse_ring_texts(self.texts, self.dims))
-            self.rings_flushed += len(self.texts)
-            self.texts, self.dims, self.text_chars = [], [], 0
         m = self.m
         if chunks:
             xyz, points, bad = zip(*chunks)

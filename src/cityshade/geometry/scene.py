@@ -198,7 +198,7 @@ def _resolve_references(raw: RawModel, counters: Counter):
     targets = raw.ref_target
     # Most references name a polygon directly (solids made of boundary polygons): one dict
     # look-up each. Only the rest (aggregates, nested references) go through the slow path.
-    direct = np.fromiter(map(poly_by_id.get, targets, repeat(-1)), np.int64, len(targets))
+    direct = _direct_polygons(poly_by_id, targets)
     ref_obj = np.asarray(raw.ref_obj, np.int64)
     ref_lod = np.asarray(raw.ref_lod, np.int64)
     ref_flip = np.asarray(raw.ref_flip, np.int64)
@@ -238,6 +238,11 @@ def _resolve_references(raw: RawModel, counters: Counter):
         for out, col in zip((obj, poly, lod, flip, cls), cols):
             out.append(col)
     return tuple(np.concatenate(parts) for parts in (obj, poly, lod, flip, cls))
+
+
+def _direct_polygons(poly_by_id: dict, targets: list[str]) -> np.ndarray:
+    """The polygon index each target id names, -1 where it names no polygon."""
+    return np.fromiter(map(poly_by_id.get, targets, repeat(-1)), np.int64, len(targets))
 
 
 def _expand_ranges(starts: np.ndarray, lengths: np.ndarray) -> np.ndarray:
@@ -673,8 +678,7 @@ def _apply_appearance(raw, theme, drawn, polys, rings, ring_offsets,
         if rec.theme != theme:
             continue
         # Most targets name a polygon: one dict look-up each, the rest (aggregates) one by one.
-        direct = np.fromiter(map(raw.poly_by_id.get, rec.targets, repeat(-1)), np.int64,
-                             len(rec.targets))
+        direct = _direct_polygons(raw.poly_by_id, rec.targets)
         nested = [p for k in np.nonzero(direct < 0)[0]
                   for p in _polygon_targets(raw, rec.targets[k])]
         local = local_of_orig[np.concatenate([direct[direct >= 0],
