@@ -23,6 +23,7 @@ that declares entities is refused before parsing (entity-expansion bombs never s
 """
 from __future__ import annotations
 
+import functools
 import os
 import re
 from collections import Counter
@@ -104,6 +105,9 @@ class RawModel:
     srs_names: Counter = field(default_factory=Counter)
     counters: Counter = field(default_factory=Counter)
     warnings: list[str] = field(default_factory=list)
+    #: Tags of Application Domain Extension elements met (each skipped with its subtree);
+    #: ``counters["ade_elements_skipped"]`` counts them.
+    ade_tags: set[str] = field(default_factory=set)
 
     @property
     def n_polygons(self) -> int:
@@ -147,6 +151,8 @@ class _Walker:
 
     #: Generic attribute names to keep (read_citygml's ``generic_attributes``).
     generic_attributes: frozenset = frozenset()
+    #: Whether lxml's line numbers past 65535 need correcting (:func:`_lines_skewed`).
+    lines_skewed: bool = False
 
     def __init__(self, model: RawModel):
         self.m = model
@@ -159,7 +165,6 @@ class _Walker:
         self.gml_ns = ns.GML_NAMESPACES[0]
         self.gml_id = ns.GML_ID_ATTRS[0]
         self.other_gml_id: str | None = ns.GML_ID_ATTRS[1]
-        self.ade_namespaces: Counter = Counter()
         self.rings_flushed = 0
         # Records as tuples, one append each; turned into arrays by finish().
         self.polys: list[tuple[int, int, int, int, int]] = []
@@ -214,7 +219,7 @@ class _Walker:
                 result = (K_LOD, int(match.group(1))) if match else (K_DESCEND, None)
         else:
             # An Application Domain Extension (or a foreign element): skipped with its subtree.
-            self.ade_namespaces[namespace] += 1
+            self.m.ade_tags.add(tag)
             result = (K_SKIP, None)
         self.kinds[tag] = result
         return result
@@ -273,7 +278,7 @@ class _Walker:
         m.obj_ids.append(self.element_id(el))
         m.obj_types.append(obj_type)
         m.obj_parent.append(parent)
-        m.obj_line.append(el.sourceline or 0)
+        m.obj_line.append(_start_line(el, self.lines_skewed))
         times: dict[str, str] = {}
         relief_lod = -1
         for child in el:
@@ -559,8 +564,39 @@ class _Walker:
             self.polys, 5)
         m.ref_obj, m.ref_cls, m.ref_lod, m.ref_flip = _record_columns(self.refs, 4)
         self.polys, self.refs = [], []
-        for namespace, count in sorted(self.ade_namespaces.items()):
-            m.counters["ade_elements_skipped"] += count
+        if m.ade_tags:
+            m.counters["ade_elements_skipped"] = len(m.ade_tags)
+
+
+@functools.cache
+def _lines_skewed() -> bool:
+    """Whether lxml gives an element from line 65535 on the line where its first child node
+    ends (libxml2 2.14, whose 16-bit line field saturates there: ``xmlGetLineNo`` then asks
+    the first child, a whitespace text's end line after the start tag's newline). Measured
+    once on a small document, so a libxml2 that reports the start tag's line is read as is."""
+    from lxml import etree
+
+    doc = b"<r>" + b"\n" * 65537 + b"<a>\n<b/></a></r>"  # <a> is on line 65538
+    return etree.fromstring(doc)[0].sourceline == 65539
+
+
+def _start_line(el, skewed: bool) -> int:
+    """The line of ``el``'s start tag (its end), also past line 65535 (:func:`_lines_skewed`)."""
+    line = el.sourceline or 0
+    if line < 65535 or not skewed:
+        return line
+    # libxml2 asks the first child, which then starts where this tag ends, and so on down
+    # (at most five levels, then it gives 65535): ask the first one with text directly. Where
+    # that chain ends in an empty element with no text after it, libxml2's answer stays.
+    top = line
+    while el.text is None and len(el):
+        el = el[0]
+    line = el.sourceline or 0
+    if el.text is not None:  # the text ends that many lines after the tag
+        return line - el.text.count("\n")
+    if el.tail is not None:  # no child: the text after the element is asked
+        return line - el.tail.count("\n")
+    return top
 
 
 def _record_columns(records: list[tuple[int, ...]], width: int) -> list[np.ndarray]:
@@ -667,6 +703,28 @@ def read_citygml(path: str | os.PathLike, progress: Callable[[int, int], None] |
 
 def _read(path: Path, root_ns: str, progress, recover: bool,
           generic: frozenset = frozenset()) -> RawModel:
+    total = path.stat().st_size
+    model = None
+    if not recover:
+        from cityshade.citygml import split
+
+        plan = split.plan(path, total)
+        if plan is not None:
+            model = split.read_split(path, plan, root_ns, progress, generic)
+    if model is None:
+        with path.open("rb") as fh:
+            model = read_stream(fh, total, path, root_ns, progress, recover, generic)
+    if model.counters["members"] == 0 or not model.obj_ids:
+        raise EmptyModelError("the CityGML model contains no city objects", path=str(path))
+    if progress is not None:
+        progress(total, total)
+    return model
+
+
+def read_stream(fh, total: int, path: Path, root_ns: str, progress, recover: bool,
+                generic: frozenset = frozenset()) -> RawModel:
+    """The records of a CityGML document read from ``fh`` (a binary file or stream whose
+    ``tell()`` is its offset in the file of ``total`` bytes); no check that it holds objects."""
     from lxml import etree
 
     model = RawModel(path=path, root_namespace=root_ns)
@@ -675,47 +733,42 @@ def _read(path: Path, root_ns: str, progress, recover: bool,
         model.versions.add(version)
     walker = _Walker(model)
     walker.generic_attributes = generic
-    total = path.stat().st_size
+    walker.lines_skewed = _lines_skewed()
     members = 0
-    with path.open("rb") as fh:
-        context = etree.iterparse(fh, events=("end",), tag=_member_tags(root_ns),
-                                  resolve_entities=False, no_network=True, load_dtd=False,
-                                  recover=recover, huge_tree=True, remove_comments=True)
-        try:
-            for _event, member in context:
-                if members == 0:
-                    root = member.getparent()
-                    if root is not None:
-                        walker.detect_gml(root)
-                        for child in root:
-                            if isinstance(child.tag, str) and child.tag.endswith("}boundedBy"):
-                                for env in child:
-                                    if isinstance(env.tag, str) and env.get("srsName"):
-                                        model.srs_names[env.get("srsName")] += 1
-                if member.getparent() is None or member.getparent().getparent() is not None:
-                    continue  # a nested element with a member-like name: handled by its owner
-                members += 1
-                walker.member(member)
-                # Free the member and everything before it: memory stays bounded.
-                member.clear()
-                parent = member.getparent()
-                while member.getprevious() is not None:
-                    del parent[0]
-                if progress is not None:
-                    progress(fh.tell(), total)
-        except etree.XMLSyntaxError as exc:
-            msg = exc.msg or str(exc)
-            if "Premature end" in msg or "EndTag" in msg and fh.tell() >= total:
-                msg = f"the file is truncated or malformed ({msg})"
-            else:
-                msg = f"malformed XML: {msg}"
-            raise XMLSyntaxError(msg, path=str(path), line=exc.lineno) from None
-        finally:
-            walker.parser.close()
+    context = etree.iterparse(fh, events=("end",), tag=_member_tags(root_ns),
+                              resolve_entities=False, no_network=True, load_dtd=False,
+                              recover=recover, huge_tree=True, remove_comments=True)
+    try:
+        for _event, member in context:
+            if members == 0:
+                root = member.getparent()
+                if root is not None:
+                    walker.detect_gml(root)
+                    for child in root:
+                        if isinstance(child.tag, str) and child.tag.endswith("}boundedBy"):
+                            for env in child:
+                                if isinstance(env.tag, str) and env.get("srsName"):
+                                    model.srs_names[env.get("srsName")] += 1
+            if member.getparent() is None or member.getparent().getparent() is not None:
+                continue  # a nested element with a member-like name: handled by its owner
+            members += 1
+            walker.member(member)
+            # Free the member and everything before it: memory stays bounded.
+            member.clear()
+            parent = member.getparent()
+            while member.getprevious() is not None:
+                del parent[0]
+            if progress is not None:
+                progress(fh.tell(), total)
+    except etree.XMLSyntaxError as exc:
+        msg = exc.msg or str(exc)
+        if "Premature end" in msg or "EndTag" in msg and fh.tell() >= total:
+            msg = f"the file is truncated or malformed ({msg})"
+        else:
+            msg = f"malformed XML: {msg}"
+        raise XMLSyntaxError(msg, path=str(path), line=exc.lineno) from None
+    finally:
+        walker.parser.close()
     walker.finish()
     model.counters["members"] = members
-    if members == 0 or not model.obj_ids:
-        raise EmptyModelError("the CityGML model contains no city objects", path=str(path))
-    if progress is not None:
-        progress(total, total)
     return model
