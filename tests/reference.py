@@ -873,3 +873,35 @@ def reference_pack_nodes(axis, child, first, split):
     return np.stack([((child << AXIS_BITS) | axis).astype(np.uint32),
                      np.where(axis == LEAF_CODE, np.asarray(first, np.int64).astype(np.uint32),
                               split_bits)], axis=1)
+
+
+def reference_cache_bytes(header, arrays):
+    """The bytes of a cache file, as :func:`cityshade.cache.write_cache` lays it out, written
+    the obvious way: every checksum first, then prefix, header, padding and arrays in order."""
+    import hashlib
+    import json
+
+    from cityshade.cache import _ALIGN, _PREFIX, FORMAT_VERSION, MAGIC
+
+    arrays = {k: np.ascontiguousarray(v) for k, v in arrays.items()}
+    directory, offset = {}, 0
+    for name, a in arrays.items():
+        directory[name] = {"dtype": a.dtype.str, "shape": list(a.shape), "offset": offset,
+                           "nbytes": int(a.nbytes),
+                           "blake2b": hashlib.blake2b(a.tobytes(), digest_size=16).hexdigest()}
+        offset += -(-a.nbytes // _ALIGN) * _ALIGN
+    full = dict(header, arrays=directory)
+    data_start = 0
+    while True:
+        full["data_start"], full["file_size"] = data_start, data_start + offset
+        blob = json.dumps(full, sort_keys=True, separators=(",", ":")).encode("utf-8")
+        needed = -(-(_PREFIX.size + len(blob)) // _ALIGN) * _ALIGN
+        if needed == data_start:
+            break
+        data_start = needed
+    out = bytearray(_PREFIX.pack(MAGIC, FORMAT_VERSION, 0, len(blob),
+                                 hashlib.blake2b(blob, digest_size=16).digest()) + blob)
+    out += b"\0" * (data_start - len(out))
+    for a in arrays.values():
+        out += a.tobytes() + b"\0" * (-a.nbytes % _ALIGN)
+    return bytes(out)

@@ -42,6 +42,26 @@ def test_round_trip_is_bit_identical(built):
             assert a.tobytes() == loaded.kdtree.to_arrays()[name].tobytes(), name
 
 
+def test_written_bytes_equal_the_obvious_layout(tmp_path, monkeypatch):
+    """write_cache hashes on a thread while it writes the arrays behind a header of the final
+    length: the file is the one written checksums first, byte for byte (small arrays, and
+    arrays above the two-thread hashing threshold)."""
+    from reference import reference_cache_bytes
+
+    import cityshade.cache as cache
+
+    rng = np.random.default_rng(3)
+    arrays = {"xyz": rng.random((1001, 3)), "ids": np.arange(77, dtype=np.int32),
+              "empty": np.zeros(0, np.uint8), "flags": rng.integers(0, 2, 9, dtype=np.uint8)}
+    header = {"kind": "test", "note": "ünïcode", "n": 5}
+    for threshold in (cache._PARALLEL_DIGEST_BYTES, 0):
+        monkeypatch.setattr(cache, "_PARALLEL_DIGEST_BYTES", threshold)
+        path = tmp_path / f"t{threshold}.cache"
+        size = cache.write_cache(path, header, arrays)
+        data = path.read_bytes()
+        assert size == len(data) and data == reference_cache_bytes(header, arrays)
+
+
 def test_released_pages_of_a_loaded_scene_read_back_the_same(built):
     """release_scene_pages drops the mapped pages of a loaded scene (and nothing of arrays in
     memory); the arrays read afterwards are the same bytes."""

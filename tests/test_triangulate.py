@@ -501,3 +501,53 @@ def test_qie_wrong_orientation_keeps_the_given_winding():
     coords, res = run(read_qie_polygons(shared_file("invalid-qie-unittests/i308_1.gml")))
     assert np.all(res.status == TRIANGULATED)
     assert signed_volume(coords, res.triangles) == pytest.approx(-1.0, rel=1e-9)
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_parallel_chunks_equal_the_one_thread_kernel(monkeypatch, threads):
+    """Chunks of polygons triangulated on the threads, each into its own rows, then moved
+    together: every output equals the one-thread kernel's, row for row, on a batch that mixes
+    the degenerate table's skips and repairs, holes, random stars and polygons without rings
+    (chunk edges then fall on every kind), and the bound each chunk is given holds."""
+    import numba
+
+    import cityshade.geometry.triangulate as T
+
+    rng = np.random.default_rng(11)
+    polygons = []
+    for i in range(900):
+        kind = i % 4
+        if kind == 0:
+            polygons.append(DEGENERATE[sorted(DEGENERATE)[(i // 4) % len(DEGENERATE)]][0])
+        elif kind == 1:
+            ext, holes, _area = HOLED[sorted(HOLED)[(i // 4) % len(HOLED)]]
+            polygons.append([closed(ext)] + [closed(h) for h in holes])
+        elif kind == 2:
+            polygons.append([closed(star_polygon(rng, int(rng.integers(3, 40)), convex=i % 8 == 2))])
+        else:
+            polygons.append([] if i % 12 == 3 else [closed(regular(int(rng.integers(3, 9)), 2.0))])
+    coords, ring_offsets, poly_rings = make_batch(polygons)
+    monkeypatch.setattr(T, "PARALLEL_MIN_POLYGONS", 10**9)
+    one = triangulate_polygons(coords, ring_offsets, poly_rings)
+    monkeypatch.setattr(T, "PARALLEL_MIN_POLYGONS", 0)
+    calls = []
+    real = T._triangulate_parallel
+    monkeypatch.setattr(T, "_triangulate_parallel", lambda *a: calls.append(real(*a)) or calls[-1])
+    old = numba.get_num_threads()
+    numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
+    try:
+        many = triangulate_polygons(coords, ring_offsets, poly_rings)
+    finally:
+        numba.set_num_threads(old)
+    assert calls == ([len(one.triangles)] if numba.config.NUMBA_NUM_THREADS > 1 and threads > 1
+                     else [])
+    assert 0 < len(one.triangles) and len(set(one.status.tolist())) > 5
+    for name in ("triangles", "tri_polygon", "status", "repairs", "normal", "area_m2"):
+        a, b = getattr(one, name), getattr(many, name)
+        assert a.dtype == b.dtype and np.array_equal(a, b, equal_nan=True), name
+    poly_start, out_start = T._chunk_bounds(ring_offsets, poly_rings, 16)
+    counts = np.bincount(one.tri_polygon, minlength=len(polygons))
+    for c in range(16):  # each chunk's triangles fit before the next chunk's first row
+        used = counts[poly_start[c]:poly_start[c + 1]].sum()
+        assert out_start[c] + used <= out_start[c + 1]
+    assert poly_start[0] == 0 and poly_start[-1] == len(polygons)

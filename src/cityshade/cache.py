@@ -34,6 +34,7 @@ import hashlib
 import json
 import os
 import struct
+import threading
 import time
 from pathlib import Path
 from collections.abc import Sequence
@@ -41,8 +42,8 @@ from typing import Any, Mapping
 
 import numpy as np
 
-from cityshade.errors import (CacheCorruptError, CacheError, CacheVersionError, InputError,
-                              OutputError)
+from cityshade.errors import (CacheCorruptError, CacheError, CacheVersionError, ContractError,
+                              InputError, OutputError)
 from cityshade.util import atomic_write, make_folder
 
 MAGIC = b"CITYSHD\n"
@@ -130,6 +131,28 @@ def _digests(buffers: list) -> list[str]:
         for i, digest in zip(order, pool.map(_digest, [buffers[i] for i in order])):
             out[i] = digest
     return out
+
+
+class _Hashing:
+    """:func:`_digests` of buffers on a background thread; :meth:`result` waits for them."""
+
+    def __init__(self, buffers: list):
+        self._out: list[str] | BaseException | None = None
+        self._thread = threading.Thread(target=self._run, args=(buffers,), daemon=True,
+                                        name="cityshade-cache-digests")
+        self._thread.start()
+
+    def _run(self, buffers: list) -> None:
+        try:
+            self._out = _digests(buffers)
+        except BaseException as exc:  # re-raised by result()
+            self._out = exc
+
+    def result(self) -> list[str]:
+        self._thread.join()
+        if isinstance(self._out, BaseException):
+            raise self._out
+        return self._out
 
 
 def release_pages(*arrays) -> int:
@@ -258,10 +281,13 @@ def write_cache(path: str | os.PathLike, header: Mapping[str, Any],
         if a.dtype.byteorder == ">":
             a = a.astype(a.dtype.newbyteorder("<"))
         prepared[name] = a
-    digests = _digests([memoryview(a).cast("B") for a in prepared.values()])
-    for (name, a), digest in zip(prepared.items(), digests):
+    # Digests have one length, so the header's length is known before they are: the arrays are
+    # written behind it while another thread hashes them (both release the GIL; writing a
+    # large file into new page-cache pages is the slower of the two here), then the header.
+    placeholder = _digest(b"")
+    for name, a in prepared.items():
         directory[name] = {"dtype": a.dtype.str, "shape": list(a.shape), "offset": offset,
-                           "nbytes": int(a.nbytes), "blake2b": digest}
+                           "nbytes": int(a.nbytes), "blake2b": placeholder}
         offset += -(-a.nbytes // _ALIGN) * _ALIGN
     full_header = dict(header)
     full_header["arrays"] = directory
@@ -276,21 +302,33 @@ def write_cache(path: str | os.PathLike, header: Mapping[str, Any],
         if needed == data_start:
             break
         data_start = needed
-    prefix = _PREFIX.pack(MAGIC, FORMAT_VERSION, 0, len(blob),
-                          hashlib.blake2b(blob, digest_size=16).digest())
     if path.parent.exists() and not path.parent.is_dir():
         raise OutputError(f"cannot write here: {path.parent} is not a folder", path=str(path))
     # Recorded, so that a command that fails afterwards removes the folders it made.
     make_folder(path.parent, "folder")
-    with atomic_write(path, "wb", fsync=True, what="here") as fh:
-        fh.write(prefix)
-        fh.write(blob)
-        fh.write(b"\0" * (data_start - _PREFIX.size - len(blob)))
-        for name, a in prepared.items():
-            fh.write(memoryview(a).cast("B"))
-            pad = -a.nbytes % _ALIGN
-            if pad:
-                fh.write(b"\0" * pad)
+    buffers = [memoryview(a).cast("B") for a in prepared.values()]
+    hashing = _Hashing(buffers)
+    try:
+        with atomic_write(path, "wb", fsync=True, what="here") as fh:
+            fh.seek(data_start)
+            for a in buffers:
+                fh.write(a)
+                pad = -a.nbytes % _ALIGN
+                if pad:
+                    fh.write(b"\0" * pad)
+            for entry, digest in zip(directory.values(), hashing.result()):
+                entry["blake2b"] = digest
+            final = json.dumps(full_header, sort_keys=True, separators=(",", ":")).encode("utf-8")
+            if len(final) != len(blob):
+                raise ContractError("a cache header changed its length with its digests")
+            blob = final
+            fh.seek(0)
+            fh.write(_PREFIX.pack(MAGIC, FORMAT_VERSION, 0, len(blob),
+                                  hashlib.blake2b(blob, digest_size=16).digest()))
+            fh.write(blob)
+            fh.write(b"\0" * (data_start - _PREFIX.size - len(blob)))
+    finally:
+        hashing.result()  # never leave the thread reading arrays the caller may free
     # The checksums were computed from the very arrays written (and fsynced). The rename set
     # the file's ctime just now: wait out the racy window so the stamp can be trusted.
     if data_start + offset >= STAMP_WAIT_BYTES:

@@ -39,7 +39,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit
+import numba
+from numba import njit, prange
 
 from cityshade.errors import InputError
 
@@ -784,15 +785,15 @@ def _earclip_with_holes(x2, y2, loc, idx, ring_start, n_holes, nslot, nxt, prv, 
 # The batch kernel.
 
 @njit(cache=True)
-def _triangulate_kernel(coords, ring_offsets, polygon_ring_offsets, merge_distance_m,
-                        collinear_rel_tol, area_rel_tol, min_rel_area, nonplanar_rel_tol,
-                        tri_out, tri_poly, status, repairs, normal, area_m2):
-    """Triangulate every polygon; fill the per-polygon arrays, return the triangle count."""
-    n_poly = polygon_ring_offsets.shape[0] - 1
+def _triangulate_range(coords, ring_offsets, polygon_ring_offsets, p_begin, p_end, out_begin,
+                       merge_distance_m, collinear_rel_tol, area_rel_tol, min_rel_area,
+                       nonplanar_rel_tol, tri_out, tri_poly, status, repairs, normal, area_m2):
+    """Triangulate polygons p_begin … p_end - 1, their triangles written from row out_begin
+    on; fill the per-polygon arrays, return the row after the last triangle."""
     # Size the scratch for the largest polygon: its points plus two bridge copies per hole.
     cap = 3
     max_rings = 1
-    for p in range(n_poly):
+    for p in range(p_begin, p_end):
         r0 = polygon_ring_offsets[p]
         r1 = polygon_ring_offsets[p + 1]
         if r1 > r0:
@@ -810,8 +811,8 @@ def _triangulate_kernel(coords, ring_offsets, polygon_ring_offsets, merge_distan
     hole_key = np.empty(max_rings, np.int64)
     hole_slot = np.empty(max_rings, np.int64)
     merge2_m2 = merge_distance_m * merge_distance_m
-    n_out = 0
-    for p in range(n_poly):
+    n_out = out_begin
+    for p in range(p_begin, p_end):
         status[p] = TRIANGULATED
         repairs[p] = 0
         normal[p, 0] = 0.0
@@ -1004,6 +1005,81 @@ def _triangulate_kernel(coords, ring_offsets, polygon_ring_offsets, merge_distan
     return n_out
 
 
+@njit(cache=True)
+def _triangulate_kernel(coords, ring_offsets, polygon_ring_offsets, merge_distance_m,
+                        collinear_rel_tol, area_rel_tol, min_rel_area, nonplanar_rel_tol,
+                        tri_out, tri_poly, status, repairs, normal, area_m2):
+    """Triangulate every polygon in order on one thread (the twin of
+    :func:`_triangulate_parallel`); return the triangle count."""
+    return _triangulate_range(coords, ring_offsets, polygon_ring_offsets, 0,
+                              polygon_ring_offsets.shape[0] - 1, 0, merge_distance_m,
+                              collinear_rel_tol, area_rel_tol, min_rel_area, nonplanar_rel_tol,
+                              tri_out, tri_poly, status, repairs, normal, area_m2)
+
+
+@njit(cache=True)
+def _chunk_bounds(ring_offsets, polygon_ring_offsets, n_chunks):
+    """Chunks of consecutive polygons with about equal point counts, and the row each chunk's
+    triangles may start at: the sum of the earlier polygons' bounds, n - 2 + 2h triangles for
+    n points and h holes (ear clipping after the holes' bridges; cleaning only drops points)."""
+    n_poly = polygon_ring_offsets.shape[0] - 1
+    first_point = ring_offsets[polygon_ring_offsets[0]]
+    points = ring_offsets[polygon_ring_offsets[n_poly]] - first_point
+    poly_start = np.empty(n_chunks + 1, np.int64)
+    out_start = np.empty(n_chunks + 1, np.int64)
+    poly_start[0] = 0
+    out_start[0] = 0
+    c = 1
+    rows = 0
+    for p in range(n_poly):
+        r0 = polygon_ring_offsets[p]
+        r1 = polygon_ring_offsets[p + 1]
+        if r1 > r0:
+            rows += max(0, ring_offsets[r1] - ring_offsets[r0] + 2 * (r1 - r0 - 1) - 2)
+        while c < n_chunks and (ring_offsets[r1] - first_point) * n_chunks >= c * points:
+            poly_start[c] = p + 1
+            out_start[c] = rows
+            c += 1
+    while c <= n_chunks:
+        poly_start[c] = n_poly
+        out_start[c] = rows
+        c += 1
+    return poly_start, out_start
+
+
+@njit(cache=True, parallel=True)
+def _triangulate_parallel(coords, ring_offsets, polygon_ring_offsets, poly_start, out_start,
+                          merge_distance_m, collinear_rel_tol, area_rel_tol, min_rel_area,
+                          nonplanar_rel_tol, tri_out, tri_poly, status, repairs, normal,
+                          area_m2):
+    """:func:`_triangulate_kernel` over chunks of polygons on all threads, each chunk's
+    triangles written in its own rows, then moved down behind the previous chunk's: the same
+    rows in the same order. Returns the triangle count."""
+    n_chunks = poly_start.shape[0] - 1
+    out_end = np.empty(n_chunks, np.int64)
+    for c in prange(n_chunks):
+        out_end[c] = _triangulate_range(
+            coords, ring_offsets, polygon_ring_offsets, poly_start[c], poly_start[c + 1],
+            out_start[c], merge_distance_m, collinear_rel_tol, area_rel_tol, min_rel_area,
+            nonplanar_rel_tol, tri_out, tri_poly, status, repairs, normal, area_m2)
+    for c in range(n_chunks):
+        if out_end[c] > out_start[c + 1]:
+            return -1  # a bound that did not hold (never seen): the caller redoes it serially
+    n_out = out_end[0]
+    for c in range(1, n_chunks):  # forward moves: a row never lands on one still to move
+        for i in range(out_start[c], out_end[c]):
+            tri_out[n_out, 0] = tri_out[i, 0]
+            tri_out[n_out, 1] = tri_out[i, 1]
+            tri_out[n_out, 2] = tri_out[i, 2]
+            tri_poly[n_out] = tri_poly[i]
+            n_out += 1
+    return n_out
+
+
+#: Polygons below which one thread triangulates (the threads' start costs more than it saves).
+PARALLEL_MIN_POLYGONS = 20_000
+
+
 def _as_offsets(name: str, array, upper: int) -> np.ndarray:
     """Validate an offsets array: 1-D integers, non-decreasing, within [0, upper]."""
     arr = np.asarray(array)
@@ -1089,11 +1165,24 @@ def triangulate_polygons(coords: np.ndarray, ring_offsets: np.ndarray,
     repairs = np.empty(n_poly, np.uint16)
     normal = np.empty((n_poly, 3), np.float64)
     area = np.empty(n_poly, np.float64)
-    n_tri = _triangulate_kernel(coords, ring_offsets, polygon_ring_offsets,
-                                float(merge_distance_m), float(collinear_rel_tol),
-                                float(area_rel_tol), float(min_rel_area),
-                                float(nonplanar_rel_tol), tri_out, tri_poly, status, repairs,
-                                normal, area)
+    tol = (float(merge_distance_m), float(collinear_rel_tol), float(area_rel_tol),
+           float(min_rel_area), float(nonplanar_rel_tol))
+    n_tri = -1
+    threads = numba.get_num_threads()
+    if threads > 1 and n_poly >= PARALLEL_MIN_POLYGONS:
+        # Eight chunks a thread: the polygons' costs vary, and a thread that is done early
+        # takes the next chunk.
+        poly_start, out_start = _chunk_bounds(ring_offsets, polygon_ring_offsets, 8 * threads)
+        old_chunk = numba.set_parallel_chunksize(1)  # dynamic: one chunk at a time
+        try:
+            n_tri = _triangulate_parallel(coords, ring_offsets, polygon_ring_offsets,
+                                          poly_start, out_start, *tol, tri_out, tri_poly,
+                                          status, repairs, normal, area)
+        finally:
+            numba.set_parallel_chunksize(old_chunk)
+    if n_tri < 0:
+        n_tri = _triangulate_kernel(coords, ring_offsets, polygon_ring_offsets, *tol, tri_out,
+                                    tri_poly, status, repairs, normal, area)
     # Views, not copies: the rows past n_tri were never written, so they hold no memory, and a
     # copy would double the largest arrays of the build at its peak.
     return TriangulationResult(triangles=tri_out[:n_tri], tri_polygon=tri_poly[:n_tri],
