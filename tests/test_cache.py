@@ -8,7 +8,7 @@ import pytest
 
 from citygml_snippets import box_polygons, building, city
 
-from cityshade.build import build_file
+from cityshade.build import build_file, build_scene_from_file
 from cityshade.cache import (FORMAT_VERSION, PackedStrings, open_cache, pack_strings,
                              unpack_strings, write_cache)
 from cityshade.errors import CacheCorruptError, CacheError, CacheVersionError
@@ -22,8 +22,10 @@ def built(tmp_path):
     extra = "<bldg:yearOfConstruction>1900</bldg:yearOfConstruction>"
     src = tmp_path / "city.gml"
     src.write_text(city(building("b1", faces[:6], extra=extra), building("b2", faces[6:])))
-    out, scene, size = build_file(src, tmp_path / "city.cityshade")
-    return out, scene, size
+    # build_file writes consuming its scene and returns the file's: the scene to compare
+    # with is built again, in memory.
+    out, _, size = build_file(src, tmp_path / "city.cityshade")
+    return out, build_scene_from_file(src, pack_ids=True), size
 
 
 def test_round_trip_is_bit_identical(built):
@@ -248,3 +250,37 @@ def test_large_build_stamp_is_trusted(tmp_path, monkeypatch):
     out = tmp_path / "big.cityshade"
     write_cache(out, {"kind": "x"}, {"a": np.arange(1000)})
     assert open_cache(out).verified == "stamp"
+
+
+def test_a_consuming_write_gives_the_same_bytes_and_hands_memory_back(tmp_path, monkeypatch):
+    """write_cache(consume=True) hashes and writes piece by piece on threads and drops each
+    written piece's pages: the file is the obvious layout's, byte for byte; an array it owned
+    alone reads as zeros afterwards (its pages went back), while a view sharing memory with
+    another array, a read-only array and small arrays are left as they were."""
+    from reference import reference_cache_bytes
+
+    import cityshade.cache as cache
+
+    monkeypatch.setattr(cache, "_CONSUME_PIECE_BYTES", 1 << 20)
+    rng = np.random.default_rng(5)
+    big = rng.integers(1, 9, 3_000_000, dtype=np.int64)  # 24 MB: 23 pieces
+    shared = rng.random(400_000)
+    frozen = rng.random(300_000)
+    frozen.flags.writeable = False
+    arrays = {"big": big, "shared": shared, "shared_view": shared[100_000:300_000],
+              "frozen": frozen, "small": np.arange(5, dtype=np.int16),
+              "empty": np.zeros((0, 3), np.float32)}
+    expected = reference_cache_bytes({"kind": "t"}, arrays)
+    kept = {k: v.copy() for k, v in arrays.items()}
+    path = tmp_path / "c.cache"
+    size = cache.write_cache(path, {"kind": "t"}, arrays, consume=True)
+    data = path.read_bytes()
+    assert size == len(data) and data == expected
+    if cache._page_releaser() is not None:  # every whole page inside the array: zeros
+        lo = (-(-big.ctypes.data // 4096) * 4096 - big.ctypes.data) // 8
+        hi = ((big.ctypes.data + big.nbytes) // 4096 * 4096 - big.ctypes.data) // 8
+        assert hi - lo > 2_900_000 and not big[lo:hi].any() and big[hi:].all()
+    for name in ("shared", "shared_view", "frozen", "small"):
+        assert np.array_equal(arrays[name], kept[name]), name
+    loaded = open_cache(path, verify=True)
+    assert np.array_equal(loaded.array("big"), kept["big"])

@@ -32,9 +32,11 @@ def file_sha256(path: str | os.PathLike, stop: threading.Event | None = None) ->
 
 
 class _SourceRecord:
-    """:func:`_source_record` of a file, computed in a thread while the build goes on: the
-    reader runs on one core, and hashing (1.3–4 s for the 1.74 GB GML of the 10M city) and
-    reading the file release the GIL. :meth:`result` waits for it (and re-raises its error);
+    """:func:`_source_record` of a file, computed in a thread while the build goes on, from
+    :meth:`start` on: the build starts it once the file is read, since a large file's read
+    keeps both cores busy (two processes, :mod:`cityshade.citygml.split`) and scene assembly
+    leaves one mostly free; hashing (2.3 s for the 1.74 GB GML of the 10M city) and reading
+    the file release the GIL. :meth:`result` waits for it (and re-raises its error);
     :meth:`cancel` stops it between chunks (a build that failed or was interrupted)."""
 
     def __init__(self, path: Path):
@@ -43,7 +45,10 @@ class _SourceRecord:
         self._out: dict | BaseException | None = None
         self._thread = threading.Thread(target=self._run, name="cityshade-source-hash",
                                         daemon=True)
-        self._thread.start()
+
+    def start(self) -> None:
+        if self._thread.ident is None:
+            self._thread.start()
 
     def _run(self) -> None:
         try:
@@ -52,6 +57,7 @@ class _SourceRecord:
             self._out = exc
 
     def result(self) -> dict:
+        self.start()
         self._thread.join()
         if isinstance(self._out, BaseException):
             raise self._out
@@ -59,6 +65,8 @@ class _SourceRecord:
 
     def cancel(self) -> None:
         self._stop.set()
+        if self._thread.ident is not None:
+            self._thread.join()
 
 
 def default_output(source: str | os.PathLike) -> Path:
@@ -86,7 +94,8 @@ def read_model(source: str | os.PathLike, progress: Callable[[int, int], None] |
 
 def build_scene_from_file(source: str | os.PathLike, settings: Settings | None = None,
                           progress: Callable[[str, int, int], None] | None = None,
-                          tree: bool = True, pack_ids: bool = False) -> Scene:
+                          tree: bool = True, pack_ids: bool = False,
+                          after_read: Callable[[], None] | None = None) -> Scene:
     """Read, triangulate and (when the scene needs one) build the kd-tree of a city model file
     (CityGML, CityJSON or CityJSONSeq).
 
@@ -96,6 +105,8 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
         Give the scene its polygon and object ids packed
         (:class:`~cityshade.cache.PackedStrings`, as a loaded scene has them) for a build that
         only writes them: less memory from the kd-tree on, but each id is decoded when read.
+    after_read : callable, optional
+        Called once the file is read, before the scene is assembled.
     progress : callable(stage, done, total), optional
         Called while reading (bytes) and at the start of later stages.
     """
@@ -113,6 +124,8 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
     raw = read_model(source, progress=read_progress, generic_attributes=generic)
     release_freed_memory()  # the parser's freed elements, before the scene's arrays
     timings["read_s"] = time.perf_counter() - t0
+    if after_read is not None:
+        after_read()
     if progress:
         progress("triangulate", 0, 1)
     t1 = time.perf_counter()
@@ -281,18 +294,23 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
                progress: Callable[[str, int, int], None] | None = None,
                tile_m: float | None = None) -> tuple[Path, Scene, int]:
     """Build the ``.cityshade`` file of a CityGML/CityJSON file, or of several files and
-    folders (a list: :func:`build_scene_from_files`); returns (output path, scene, bytes).
+    folders (a list: :func:`build_scene_from_files`); returns (output path, scene, bytes),
+    the scene that of the written file (memory-mapped, as :func:`~cityshade.scenefile.load_scene`
+    gives it: the built one's memory went into the file's pages).
     With ``tile_m`` the output is a tiled cache folder (:mod:`cityshade.tiledcache`): tiles of
     ``tile_m`` × ``tile_m`` CRS metres, each with its own kd-tree (the scene has none; for
     several files the city is never assembled and a :class:`~cityshade.tiledcache.TiledBuild`
     summary stands for the scene)."""
-    from cityshade.scenefile import save_scene
+    from cityshade.scenefile import load_scene, save_scene
     from cityshade.tiledcache import save_tiled
 
     def save(scene, output, source_info, options):
+        """Write the scene; returns (the scene of the file, bytes). A one-file cache is written
+        consuming the built scene (its memory becomes the file's pages) and loaded back."""
         if tile_m is None:
-            return save_scene(scene, output, source_info, options)
-        return save_tiled(scene, output, tile_m, settings, source_info, options, progress)
+            size = save_scene(scene, output, source_info, options, consume=True)
+            return load_scene(output), size
+        return scene, save_tiled(scene, output, tile_m, settings, source_info, options, progress)
 
     settings = settings or Settings()
     if isinstance(source, (list, tuple)):
@@ -321,19 +339,19 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
         scene = build_scene_from_files(sources, settings, progress)
         if progress:
             progress("write", 0, 1)
-        size = save(scene, output, source_info, asdict(settings.build))
+        scene, size = save(scene, output, source_info, asdict(settings.build))
         return output, scene, size
     source = Path(source)
     output = Path(output) if output is not None else default_output(source)
     record = _SourceRecord(source)
     try:
         scene = build_scene_from_file(source, settings, progress, tree=tile_m is None,
-                                      pack_ids=tile_m is None)
+                                      pack_ids=tile_m is None, after_read=record.start)
         source_info = record.result()
     finally:
         record.cancel()
     if progress:
         progress("write", 0, 1)
     options = asdict(settings.build)
-    size = save(scene, output, source_info, options)
+    scene, size = save(scene, output, source_info, options)
     return output, scene, size

@@ -22,7 +22,7 @@ _KDTREE_PREFIX = "kdtree/"
 
 def save_scene(scene: Scene, path: str | os.PathLike, source: dict[str, Any],
                build_options: dict[str, Any],
-               extra_arrays: dict[str, np.ndarray] | None = None) -> int:
+               extra_arrays: dict[str, np.ndarray] | None = None, consume: bool = False) -> int:
     """Write ``scene`` (and its kd-tree, when built) to ``path``; returns the file size.
 
     Parameters
@@ -34,6 +34,10 @@ def save_scene(scene: Scene, path: str | os.PathLike, source: dict[str, Any],
     extra_arrays : dict, optional
         Further arrays stored under their names (a tiled cache's global indices,
         :mod:`cityshade.tiledcache`); :func:`scene_from_cache` ignores them.
+    consume : bool
+        The scene is not used again (a build that returns the file's scene instead): its
+        large arrays' memory goes back to the OS as they are written, and they then read as
+        zeros (:func:`cityshade.cache.write_cache`).
     """
     arrays: dict[str, np.ndarray] = {name: getattr(scene, name) for name in Scene.ARRAY_FIELDS}
     type_names = sorted(set(scene.obj_types))
@@ -60,7 +64,7 @@ def save_scene(scene: Scene, path: str | os.PathLike, source: dict[str, Any],
         "report": scene.report,
         "kdtree_stats": kdtree_stats,
     }
-    return write_cache(path, header, arrays)
+    return write_cache(path, header, arrays, consume=consume)
 
 
 def load_scene(path: str | os.PathLike, verify: bool | str = "auto",

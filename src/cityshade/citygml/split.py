@@ -106,6 +106,23 @@ def plan(path: Path, total: int) -> Plan | None:
     return find_cut(path, total, SPLIT_AT)
 
 
+def _next_member(fh, start: int) -> int | None:
+    """Offset of the first top-level member start at or after ``start`` (read in 1 MB steps,
+    at most :data:`_SEARCH_BYTES`), or None."""
+    overlap = 64  # longer than any match, so one cut in two by a step is found in the next
+    pos = start
+    while pos < start + _SEARCH_BYTES:
+        fh.seek(pos)
+        window = fh.read(1 << 20)
+        found = _MEMBER_START.search(window)
+        if found is not None:
+            return pos + found.start()
+        if len(window) < 1 << 20:
+            return None
+        pos += len(window) - overlap
+    return None
+
+
 def find_cut(path: Path, total: int, share: float) -> Plan | None:
     """The first top-level member start at or after ``share`` of the file and after the first
     member (whose end is where one read looks at the root's envelope), or None (none within
@@ -115,16 +132,13 @@ def find_cut(path: Path, total: int, share: float) -> Plan | None:
         if root is None:
             return None
         root_end, qname = root
-        fh.seek(root_end)
-        first = _MEMBER_START.search(fh.read(_SEARCH_BYTES))
+        first = _next_member(fh, root_end)
         if first is None:
             return None
-        start = max(int(total * share), root_end + first.start() + 1)
-        fh.seek(start)
-        found = _MEMBER_START.search(fh.read(_SEARCH_BYTES))
-    if found is None or start + found.start() >= total:
+        cut = _next_member(fh, max(int(total * share), first + 1))
+    if cut is None or cut >= total:
         return None
-    return Plan(root_end, qname, start + found.start())
+    return Plan(root_end, qname, cut)
 
 
 class _Head:
