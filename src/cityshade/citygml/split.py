@@ -262,10 +262,11 @@ def merge(a, b) -> None:
 class _Child:
     """The child reading the second part: its progress (bytes) and its pickled model."""
 
-    def __init__(self, path: Path, plan_: Plan, generic: frozenset):
+    def __init__(self, path: Path, plan_: Plan, root_ns: str, generic: frozenset):
         self.proc = subprocess.Popen(
             [sys.executable, "-m", "cityshade.citygml.split", str(path), str(plan_.root_end),
-             str(plan_.cut), plan_.root_qname.decode("utf-8", "surrogateescape"), *sorted(generic)],
+             str(plan_.cut), plan_.root_qname.decode("utf-8", "surrogateescape"), root_ns,
+             *sorted(generic)],
             stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
         self.done_bytes = 0
         self.payload: bytearray | None = None
@@ -324,7 +325,7 @@ def read_split(path: Path, plan_: Plan, root_ns: str, progress, generic: frozens
     """The model of ``path`` read in two processes, or None (read it in one instead)."""
     from cityshade.errors import CityshadeError
 
-    child = _Child(path, plan_, generic)
+    child = _Child(path, plan_, root_ns, generic)
     try:
         part_progress = None
         if progress is not None:
@@ -367,9 +368,9 @@ def read_tail(path: Path, plan_: Plan, root_ns: str, progress, generic: frozense
 
 
 def _child_main(argv: list[str]) -> int:
-    """``python -m cityshade.citygml.split PATH ROOT_END CUT ROOT_QNAME [GENERIC…]``: read the
-    part of PATH from CUT on and write its model, pickled, to stdout (8 bytes of length
-    first); progress lines ``P BYTES`` go to stderr."""
+    """``python -m cityshade.citygml.split PATH ROOT_END CUT ROOT_QNAME ROOT_NS [GENERIC…]``:
+    read the part of PATH from CUT on and write its model, pickled, to stdout (8 bytes of
+    length first); progress lines ``P BYTES`` go to stderr."""
     signal.signal(signal.SIGINT, signal.SIG_IGN)  # the parent stops this process
     if sys.platform.startswith("linux"):  # and it ends with the parent, however that ends
         import ctypes
@@ -377,9 +378,7 @@ def _child_main(argv: list[str]) -> int:
         ctypes.CDLL(None).prctl(1, signal.SIGKILL)  # PR_SET_PDEATHSIG
     path = Path(argv[0])
     plan_ = Plan(int(argv[1]), argv[3].encode("utf-8", "surrogateescape"), int(argv[2]))
-    from cityshade.citygml.reader import _root_of
-
-    root_ns, _local = _root_of(path, recover=False)
+    root_ns = argv[4]
     err = sys.stderr.buffer
     last = [0]
 
@@ -389,7 +388,7 @@ def _child_main(argv: list[str]) -> int:
             err.write(b"P %d\n" % (done - plan_.cut))
             err.flush()
 
-    model = read_tail(path, plan_, root_ns, progress, frozenset(argv[4:]))
+    model = read_tail(path, plan_, root_ns, progress, frozenset(argv[5:]))
     payload = pickle.dumps(model, protocol=pickle.HIGHEST_PROTOCOL)
     out = sys.stdout.buffer
     out.write(struct.pack("<Q", len(payload)))
