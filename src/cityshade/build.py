@@ -306,10 +306,13 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
 
     def save(scene, output, source_info, options):
         """Write the scene; returns (the scene of the file, bytes). A one-file cache is written
-        consuming the built scene (its memory becomes the file's pages) and loaded back."""
+        consuming the built scene (its memory becomes the file's pages) and loaded back,
+        unchecked: its checksums were just computed from the arrays written, and a check
+        would read the whole file into this process (the next load checks it if its stamp
+        is not trusted yet)."""
         if tile_m is None:
             size = save_scene(scene, output, source_info, options, consume=True)
-            return load_scene(output), size
+            return load_scene(output, verify=False), size
         return scene, save_tiled(scene, output, tile_m, settings, source_info, options, progress)
 
     settings = settings or Settings()
