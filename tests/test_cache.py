@@ -45,9 +45,9 @@ def test_round_trip_is_bit_identical(built):
 
 
 def test_written_bytes_equal_the_obvious_layout(tmp_path, monkeypatch):
-    """write_cache hashes on a thread while it writes the arrays behind a header of the final
-    length: the file is the one written checksums first, byte for byte (small arrays, and
-    arrays above the two-thread hashing threshold)."""
+    """write_cache hashes on two threads while it writes the arrays behind a header of the
+    final length: the file is the one written checksums first, byte for byte (arrays in one
+    piece each, and in pieces of 64 bytes)."""
     from reference import reference_cache_bytes
 
     import cityshade.cache as cache
@@ -56,8 +56,8 @@ def test_written_bytes_equal_the_obvious_layout(tmp_path, monkeypatch):
     arrays = {"xyz": rng.random((1001, 3)), "ids": np.arange(77, dtype=np.int32),
               "empty": np.zeros(0, np.uint8), "flags": rng.integers(0, 2, 9, dtype=np.uint8)}
     header = {"kind": "test", "note": "ünïcode", "n": 5}
-    for threshold in (cache._PARALLEL_DIGEST_BYTES, 0):
-        monkeypatch.setattr(cache, "_PARALLEL_DIGEST_BYTES", threshold)
+    for threshold in (cache._CONSUME_PIECE_BYTES, 64):
+        monkeypatch.setattr(cache, "_CONSUME_PIECE_BYTES", threshold)
         path = tmp_path / f"t{threshold}.cache"
         size = cache.write_cache(path, header, arrays)
         data = path.read_bytes()

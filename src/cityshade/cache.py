@@ -30,6 +30,7 @@ waits out that window before stamping, so its first load is fast too.
 """
 from __future__ import annotations
 
+import functools
 import hashlib
 import json
 import os
@@ -121,31 +122,14 @@ def _digest(data) -> str:
     return hashlib.blake2b(data, digest_size=16).hexdigest()
 
 
-#: Bytes of arrays above which a cache's checksums are computed on two threads.
-_PARALLEL_DIGEST_BYTES = 64 << 20
-
-
-def _digests(buffers: list) -> list[str]:
-    """:func:`_digest` of each buffer, in order. Above :data:`_PARALLEL_DIGEST_BYTES` two
-    threads hash them, largest first (hashlib releases the GIL; 10M city: 2.0 s on one)."""
-    if sum(b.nbytes for b in buffers) < _PARALLEL_DIGEST_BYTES or (os.cpu_count() or 1) < 2:
-        return [_digest(b) for b in buffers]
-    from concurrent.futures import ThreadPoolExecutor
-
-    order = sorted(range(len(buffers)), key=lambda i: -buffers[i].nbytes)
-    out = [""] * len(buffers)
-    with ThreadPoolExecutor(max_workers=2) as pool:
-        for i, digest in zip(order, pool.map(_digest, [buffers[i] for i in order])):
-            out[i] = digest
-    return out
-
-
-#: Piece of an array hashed, written and handed back at a time by :func:`_write_consuming`.
+#: Piece of an array hashed, written (and, consuming, handed back) at a time by
+#: :func:`_write_pieces`.
 _CONSUME_PIECE_BYTES = 32 << 20
 
 
+@functools.cache
 def _page_releaser():
-    """``release(address, nbytes)``: drop the whole pages inside an anonymous memory range
+    """``release(start, lo, hi)``: drop the whole pages of an anonymous memory range
     (``madvise(MADV_DONTNEED)``: they read as zeros after), or None where that is not known."""
     import ctypes
     import mmap
@@ -181,20 +165,21 @@ def _anonymous(a: np.ndarray) -> bool:
         root.base is None or not isinstance(root.base, mmap.mmap))
 
 
-def _write_consuming(fh, arrays: list, buffers: list, offsets: list) -> list[str]:
-    """Hash and write ``buffers`` (of ``arrays``) at ``offsets`` of ``fh`` piece by piece,
-    handing each piece's pages back once both are done; returns the digests, in order.
+def _write_pieces(fh, arrays: list, buffers: list, offsets: list, consume: bool) -> list[str]:
+    """Hash and write ``buffers`` (of ``arrays``) at ``offsets`` of ``fh`` piece by piece;
+    returns the digests, in order. With ``consume``, each piece's pages are handed back once it
+    is hashed and written.
 
-    Writing a large file first makes the OS find new page-cache pages; on the virtual machines
-    measured here that costs about 2.5 s per GB (10M city: 5.7 s of a 2.1 GB file), while
-    pages this process has just freed are reused at memory speed. Two threads hash (the
-    arrays split into two groups of about equal bytes, each hashed piece by piece in order);
-    this thread writes each piece once it is hashed and then drops its pages. Arrays that
-    share memory with another, or are not anonymous memory, are written but not dropped.
+    Two threads hash (the arrays split into two groups of about equal bytes, each hashed piece
+    by piece in order; hashlib releases the GIL); this thread writes each piece once it is
+    hashed. Writing a large file first makes the OS find new page-cache pages; on the virtual
+    machines measured here that costs about 2.5 s per GB (10M city: 5.7 s of a 2.1 GB file),
+    while pages this process has just freed are reused at memory speed: hence ``consume``.
+    Arrays that share memory with another, or are not anonymous memory, are never dropped.
     """
     import queue
 
-    release = _page_releaser()
+    release = _page_releaser() if consume else None
     n = len(buffers)
     droppable = [release is not None and arrays[i].nbytes >= _CONSUME_PIECE_BYTES
                  and _anonymous(arrays[i])
@@ -223,8 +208,6 @@ def _write_consuming(fh, arrays: list, buffers: list, offsets: list) -> list[str
                     piece = buf[lo:lo + _CONSUME_PIECE_BYTES]
                     h.update(piece)
                     pieces.put((i, lo, piece))
-                if buf.nbytes == 0:
-                    h.update(b"")
                 digests[i] = h.hexdigest()
         except BaseException as exc:  # re-raised by the writer
             failed.append(exc)
@@ -262,28 +245,6 @@ def _write_consuming(fh, arrays: list, buffers: list, offsets: list) -> list[str
     if failed:
         raise failed[0]
     return digests
-
-
-class _Hashing:
-    """:func:`_digests` of buffers on a background thread; :meth:`result` waits for them."""
-
-    def __init__(self, buffers: list):
-        self._out: list[str] | BaseException | None = None
-        self._thread = threading.Thread(target=self._run, args=(buffers,), daemon=True,
-                                        name="cityshade-cache-digests")
-        self._thread.start()
-
-    def _run(self, buffers: list) -> None:
-        try:
-            self._out = _digests(buffers)
-        except BaseException as exc:  # re-raised by result()
-            self._out = exc
-
-    def result(self) -> list[str]:
-        self._thread.join()
-        if isinstance(self._out, BaseException):
-            raise self._out
-        return self._out
 
 
 def release_pages(*arrays) -> int:
@@ -405,7 +366,7 @@ def write_cache(path: str | os.PathLike, header: Mapping[str, Any],
     consume : bool
         The arrays are not read again: each piece's memory is handed back to the OS as soon as
         it is hashed and written (they then read as zeros), so the file's new page-cache pages
-        reuse it instead of pages the OS must first get (:func:`_write_consuming`).
+        reuse it instead of pages the OS must first get (:func:`_write_pieces`).
     """
     path = Path(path)
     directory: dict[str, dict] = {}
@@ -417,8 +378,8 @@ def write_cache(path: str | os.PathLike, header: Mapping[str, Any],
             a = a.astype(a.dtype.newbyteorder("<"))
         prepared[name] = a
     # Digests have one length, so the header's length is known before they are: the arrays are
-    # written behind it while another thread hashes them (both release the GIL; writing a
-    # large file into new page-cache pages is the slower of the two here), then the header.
+    # written behind it piece by piece as two threads hash them (_write_pieces), then the
+    # header.
     placeholder = _digest(b"")
     for name, a in prepared.items():
         directory[name] = {"dtype": a.dtype.str, "shape": list(a.shape), "offset": offset,
@@ -441,36 +402,22 @@ def write_cache(path: str | os.PathLike, header: Mapping[str, Any],
         raise OutputError(f"cannot write here: {path.parent} is not a folder", path=str(path))
     # Recorded, so that a command that fails afterwards removes the folders it made.
     make_folder(path.parent, "folder")
-    buffers = [_byte_view(a) for a in prepared.values()]
-    hashing = None if consume else _Hashing(buffers)
-    try:
-        with atomic_write(path, "wb", fsync=True, what="here") as fh:
-            if consume:
-                digests = _write_consuming(fh, list(prepared.values()), buffers,
-                                           [e["offset"] + data_start for e in directory.values()])
-                os.ftruncate(fh.fileno(), data_start + offset)  # the last padding
-            else:
-                fh.seek(data_start)
-                for a in buffers:
-                    fh.write(a)
-                    pad = -a.nbytes % _ALIGN
-                    if pad:
-                        fh.write(b"\0" * pad)
-                digests = hashing.result()
-            for entry, digest in zip(directory.values(), digests):
-                entry["blake2b"] = digest
-            final = json.dumps(full_header, sort_keys=True, separators=(",", ":")).encode("utf-8")
-            if len(final) != len(blob):
-                raise ContractError("a cache header changed its length with its digests")
-            blob = final
-            fh.seek(0)
-            fh.write(_PREFIX.pack(MAGIC, FORMAT_VERSION, 0, len(blob),
-                                  hashlib.blake2b(blob, digest_size=16).digest()))
-            fh.write(blob)
-            fh.write(b"\0" * (data_start - _PREFIX.size - len(blob)))
-    finally:
-        if hashing is not None:
-            hashing.result()  # never leave the thread reading arrays the caller may free
+    with atomic_write(path, "wb", fsync=True, what="here") as fh:
+        digests = _write_pieces(fh, list(prepared.values()),
+                                [_byte_view(a) for a in prepared.values()],
+                                [e["offset"] + data_start for e in directory.values()], consume)
+        os.ftruncate(fh.fileno(), data_start + offset)  # the last array's padding
+        for entry, digest in zip(directory.values(), digests):
+            entry["blake2b"] = digest
+        final = json.dumps(full_header, sort_keys=True, separators=(",", ":")).encode("utf-8")
+        if len(final) != len(blob):
+            raise ContractError("a cache header changed its length with its digests")
+        blob = final
+        fh.seek(0)  # the data went in by pwrite, which leaves the file position alone
+        fh.write(_PREFIX.pack(MAGIC, FORMAT_VERSION, 0, len(blob),
+                              hashlib.blake2b(blob, digest_size=16).digest()))
+        fh.write(blob)
+        fh.write(b"\0" * (data_start - _PREFIX.size - len(blob)))
     # The checksums were computed from the very arrays written (and fsynced). The rename set
     # the file's ctime just now: wait out the racy window so the stamp can be trusted.
     if data_start + offset >= STAMP_WAIT_BYTES:

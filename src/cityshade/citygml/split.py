@@ -270,7 +270,6 @@ class _Child:
             stdin=subprocess.DEVNULL, stdout=subprocess.PIPE, stderr=subprocess.PIPE)
         self.done_bytes = 0
         self.payload: bytearray | None = None
-        self.error: str = ""
         self._out = threading.Thread(target=self._read_out, daemon=True)
         self._err = threading.Thread(target=self._read_err, daemon=True)
         self._out.start()
@@ -292,11 +291,9 @@ class _Child:
         self.payload = buf
 
     def _read_err(self) -> None:
-        for line in self.proc.stderr:
+        for line in self.proc.stderr:  # other lines (a failure's) are dropped: one pass follows
             if line.startswith(b"P "):
                 self.done_bytes = int(line[2:])
-            else:
-                self.error += line.decode("utf-8", "replace")
 
     def result(self, wait) -> object | None:
         """The child's model (None if it failed); ``wait()`` is called while it runs."""
@@ -327,17 +324,15 @@ def read_split(path: Path, plan_: Plan, root_ns: str, progress, generic: frozens
 
     child = _Child(path, plan_, root_ns, generic)
     try:
-        part_progress = None
-        if progress is not None:
-            def part_progress(done: int, total: int) -> None:
-                progress(min(done, plan_.cut) + child.done_bytes, total)
-        total = path.stat().st_size
+        def both_parts(done: int, total: int) -> None:
+            progress(min(done, plan_.cut) + child.done_bytes, total)
+
         try:
-            first = read_head(path, plan_, root_ns, part_progress, generic)
+            first = read_head(path, plan_, root_ns, progress and both_parts, generic)
         except CityshadeError:
             return None  # malformed, or the cut was not between top-level members
-        second = child.result((lambda: part_progress(plan_.cut, total)) if progress else
-                              (lambda: None))
+        total = path.stat().st_size
+        second = child.result(lambda: progress and both_parts(plan_.cut, total))
         if second is None:
             return None
         merge(first, second)
@@ -402,6 +397,6 @@ if __name__ == "__main__":
         sys.exit(_child_main(sys.argv[1:]))
     except BrokenPipeError:  # the parent is gone
         sys.exit(1)
-    except Exception as exc:  # reported to the parent, which reads the file in one pass
+    except Exception as exc:  # the parent reads the file in one pass instead
         sys.stderr.write(f"{type(exc).__name__}: {exc}\n")
         sys.exit(1)
