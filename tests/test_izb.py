@@ -335,6 +335,70 @@ def test_a_thin_band_of_receivers_equals_raytrace_with_and_without_the_occupancy
     assert kept[lightspace.OCCUPANCY_CELLS] < 0.5 * kept[1]
 
 
+def _walked_tiles_equal_raytrace(scene, camera, t_days, suns, monkeypatch, crs=False):
+    """Receivers of a G-buffer cut into 3 × 3 tiles: each tile's izb answer with its casters
+    gathered by the kd-tree walk equals raytrace's, and the walk leaves casters out."""
+    surfaces = _surfaces(scene, camera, t_days, "min")
+    monkeypatch.setattr(lightspace, "NEAR_MIN_CASTERS", 0)
+    monkeypatch.setattr(lightspace, "NEAR_AREA_SHARE", 1.0)
+    from cityshade.raster.gbuffer import seen_side_normals
+
+    rows, cols = np.nonzero(surfaces.valid)
+    points = surfaces.position_m[rows, cols].astype(np.float64)
+    normals = seen_side_normals(surfaces, camera)[rows, cols].astype(np.float64)
+    tile = np.minimum(3 * rows // surfaces.valid.shape[0], 2) * 3 + np.minimum(
+        3 * cols // surfaces.valid.shape[1], 2)
+    n_casters = lightspace.casters_of(scene).first.size
+    walked = shadowed = 0
+    for el, az in suns:
+        sun = (sun_from_angles(az, el, scene.crs, scene.origin_m) if crs
+               else sun_from_angles(az, el))
+        d = np.asarray(sun.direction, np.float64)
+        facing = (normals @ d) > 0.0
+        for k in range(9):
+            sel = (tile == k) & facing
+            if not sel.any():
+                continue
+            origins = shadow_rays_from_surface(points[sel], normals[sel], d)
+            ref = occluded(scene, origins, np.broadcast_to(d, origins.shape).copy(), t_days)
+            stats: dict = {}
+            got = lightspace.occluded(scene, origins, d, t_days, stats=stats)
+            diff = int((got != ref).sum())
+            assert diff == 0, f"{diff} rays differ, tile {k}, sun {el}°/{az}°, t={t_days}"
+            shadowed += int(ref.sum())
+            if 0 <= stats["walked_casters"] < n_casters:
+                walked += 1
+    assert shadowed > 0, "no shadow at all: the comparison would prove nothing"
+    assert walked > 0, "the walk never left a caster out: it was not tested"
+
+
+@pytest.mark.parametrize("year", ["1750", "1990"])
+def test_casters_walked_from_the_tree_for_a_tile_equal_raytrace(sample_scene, year,
+                                                                 monkeypatch):
+    """A tile's casters gathered by the kd-tree walk (what a tiled batch does on a big city),
+    on the sample city at two dates (the walk's time axis), map and overview receivers."""
+    from cityshade.citygml.temporal import parse_xsd_datetime_days
+    from cityshade.raster.camera import map_view, overview
+
+    t = parse_xsd_datetime_days(year)
+    _walked_tiles_equal_raytrace(sample_scene, map_view(sample_scene, 1.0), t, SUNS,
+                                 monkeypatch)
+    _walked_tiles_equal_raytrace(sample_scene, overview(sample_scene, 320, 200), t, SUNS,
+                                 monkeypatch)
+
+
+def test_casters_walked_from_the_tree_equal_raytrace_on_real_lod2(tmp_path_factory,
+                                                                   monkeypatch):
+    from cityshade.raster.camera import map_view
+
+    scene = _built(shared_file("munich-tum-campus-lod2/TUM Munich.gml"), tmp_path_factory,
+                   "tum_walk")
+    suns = [(0.5, 100.0), (3.0, 300.0), (10.0, 135.0), (30.0, 200.0), (60.0, 250.0),
+            (90.0, 0.0)]
+    _walked_tiles_equal_raytrace(scene, map_view(scene, 2.0), 20000.0, suns, monkeypatch,
+                                 crs=True)
+
+
 def test_casters_gathered_in_chunks_are_the_tree_records_once_each_in_key_order(
         tmp_path, monkeypatch):
     """Casters read from a memory-mapped tree a few rows at a time: one row per triangle (its

@@ -152,6 +152,30 @@ def test_tiled_run_equals_untiled_bit_for_bit(files, tmp_path, technique):
     assert sorted(tiled.manifest["finished_steps"]) == list(range(len(_steps())))
 
 
+def test_tiled_run_with_each_tiles_casters_walked_from_the_tree_equals_untiled(
+        files, sample_plain, tmp_path, monkeypatch):
+    """The sample city in tiles whose casters the kd-tree walk gathers (as on a big city):
+    the plain run's numbers bit for bit, and the walk was taken."""
+    from cityshade import lightspace
+
+    monkeypatch.setattr(lightspace, "NEAR_MIN_CASTERS", 0)
+    monkeypatch.setattr(lightspace, "NEAR_AREA_SHARE", 1.0)
+    walks = []
+    near_rows = lightspace._near_rows
+
+    def spy(*args):
+        rows = near_rows(*args)
+        walks.append(rows is not None)
+        return rows
+
+    monkeypatch.setattr(lightspace, "_near_rows", spy)
+    tiled = _run(files[1], tmp_path / "tiled", tile_px=48, steps=_steps(every_s=5400))
+    assert tiled.result.diagnostics["tiles"]["tiles"] > 4 and any(walks)
+    assert tiled.result.hours.tobytes() == sample_plain.result.hours.tobytes()
+    assert tiled.result.sample_hours.tobytes() == sample_plain.result.sample_hours.tobytes()
+    _same_stretches(sample_plain, tiled)
+
+
 def test_tiled_run_resumes_bit_identical_without_redoing_tasks(files, tmp_path):
     boxes, _ = files
     from cityshade import tiles
