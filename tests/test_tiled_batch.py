@@ -176,6 +176,56 @@ def test_tiled_run_with_each_tiles_casters_walked_from_the_tree_equals_untiled(
     _same_stretches(sample_plain, tiled)
 
 
+def test_sun_blocks_keep_one_caster_order_each():
+    """Blocks cover the sun positions in order, at most ``block`` long, each with one caster
+    order, and cut only where the order changes or the block is full."""
+    from cityshade.lightspace import caster_order
+    from cityshade.sun import sun_from_angles
+    from cityshade.tiles import sun_blocks
+
+    # A day's arc: east, up, west (the key axis changes from x or y to z and back).
+    dirs = np.array([sun_from_angles(az, el).direction for az, el in
+                     zip(np.linspace(60, 300, 37), 60 * np.sin(np.linspace(0.05, 3.1, 37)))])
+    orders = [caster_order(d) for d in dirs]
+    assert len(set(orders)) >= 3
+    for block in (1, 3, 8, 100):
+        blocks = sun_blocks(dirs, block)
+        assert blocks[0][0] == 0 and blocks[-1][1] == len(dirs)
+        assert all(a[1] == b[0] for a, b in zip(blocks, blocks[1:]))
+        for lo, hi in blocks:
+            assert 0 < hi - lo <= block and len(set(orders[lo:hi])) == 1
+        for (lo, hi), (nxt, _) in zip(blocks, blocks[1:]):
+            assert hi - lo == block or orders[hi - 1] != orders[nxt]
+    assert sun_blocks(dirs[:0], 8) == []
+
+
+def test_tiled_run_sorts_the_casters_as_often_as_the_untiled_one(files, tmp_path, monkeypatch):
+    """Tasks run block by block over the tiles and no block crosses a caster-order change, so
+    the many tiles sort the casters no more often than one untiled run (a sort per change)."""
+    from cityshade import lightspace
+    from cityshade.lightspace import kernels as K
+
+    sorts = []
+    keys = K.caster_keys
+
+    def counted(*args):
+        sorts.append(args[1:3])
+        return keys(*args)
+
+    monkeypatch.setattr(K, "caster_keys", counted)
+    steps = _steps(every_s=1800)
+    counts = {}
+    for name, kw in (("plain", {}), ("tiled", {"tile_px": 24})):
+        for kd in list(lightspace._CASTERS):
+            lightspace.forget_casters(kd)
+        sorts.clear()
+        run = _run(files[1], tmp_path / name, steps=steps, **kw)
+        counts[name] = len(sorts)
+    assert run.result.diagnostics["tiles"]["tiles"] > 4
+    assert counts["plain"] >= 3, "the day never changed the caster order: nothing tested"
+    assert counts["tiled"] == counts["plain"]
+
+
 def test_tiled_run_resumes_bit_identical_without_redoing_tasks(files, tmp_path):
     boxes, _ = files
     from cityshade import tiles

@@ -32,7 +32,7 @@ from cityshade.trace import (UNIT_LENGTH_TOL, TraceInputError, tree_of, shadow_o
                              shadow_rays_from_surface)
 
 __all__ = ["occluded", "sunlit", "Casters", "casters_of", "forget_casters", "SurfaceReceivers",
-           "MARGIN_REL"]
+           "MARGIN_REL", "caster_order"]
 
 #: Widening of every caster's light-plane box per metre of coordinate magnitude. The binning
 #: projection and the kernel's per-ray differences round differently by a few float64 ulps
@@ -223,6 +223,13 @@ def _choose_cell_m(boxes, xs, ys, box, ext_x, ext_y, n_max_cells):
     return float(sizes[int(np.argmin(cost))])
 
 
+def caster_order(sun_direction) -> tuple[int, float]:
+    """``(kz, sgn)`` of a sun direction: the casters' key order (:meth:`Casters.sorted_for`),
+    which sorts them again whenever it changes from one call to the next."""
+    _, _, kz, _, _, sz = K.shear_of(np.ascontiguousarray(sun_direction, np.float64))
+    return int(kz), (1.0 if sz > 0.0 else -1.0)
+
+
 def _unit_sun(sun_direction) -> np.ndarray:
     """The sun direction as a checked float64 (3,) unit vector."""
     sun = np.ascontiguousarray(sun_direction, dtype=np.float64)
@@ -306,7 +313,7 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     timing = {}
     t0 = time.perf_counter()
     kx, ky, kz, sx, sy, sz = K.shear_of(sun)
-    sgn = 1.0 if sz > 0.0 else -1.0
+    sgn = caster_order(sun)[1]
     recs, keys = casters.sorted_for(kz, sgn)
     timing["sort_s"] = time.perf_counter() - t0
 
