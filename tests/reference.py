@@ -905,3 +905,14 @@ def reference_cache_bytes(header, arrays):
     for a in arrays.values():
         out += a.tobytes() + b"\0" * (-a.nbytes % _ALIGN)
     return bytes(out)
+
+
+def reference_ndc_bounds(matrix, points):
+    """(smallest w, lo (3,), hi (3,)) of the NDC coordinates of ``points`` (N, 3) under a (4, 4)
+    matrix, with numpy, in the kernel's sum order (``warps.ndc_bounds``' twin)."""
+    m = np.asarray(matrix, np.float64)
+    x, y, z = points[:, 0], points[:, 1], points[:, 2]
+    w = x * m[3, 0] + y * m[3, 1] + z * m[3, 2] + m[3, 3]
+    c = np.stack([(x * m[k, 0] + y * m[k, 1] + z * m[k, 2] + m[k, 3]) / w for k in range(3)],
+                 axis=1)
+    return float(w.min()), c.min(axis=0), c.max(axis=0)

@@ -310,3 +310,31 @@ def test_night_is_all_shadow(sample):
     cam = cams.overview(sample, 64, 40)
     frame = render_frame(sample, cam, 0.0, sun_from_angles(135.0, -5.0), "lispsm")
     assert (frame.lit == 0).all()
+
+
+def test_parallel_focus_bounds_equal_numpy_over_all_points():
+    """ndc_bounds (chunks in parallel, no divide where w is 1) against numpy over every point,
+    exactly, for a projective and an orthographic matrix; the focus mean against numpy's
+    ``mean(axis=0)``, bit for bit; the finite check against numpy's; point counts that leave
+    a short last chunk."""
+    rng = np.random.default_rng(11)
+    points = rng.normal(0.0, 300.0, (100_003, 3))
+    d = _sun(135.0, 30.0)
+    m, _ = W.uniform_matrix(d, points, W.extrude_to_box(points, d, np.array(
+        [points.min(axis=0), points.max(axis=0)])))
+    projective = m.copy()
+    projective[3] = [1e-4, -2e-4, 3e-5, 1.0]   # w varies from point to point
+    from reference import reference_ndc_bounds
+
+    for n in (1, 7, 64, 65, 100_003):
+        for matrix in (m, projective):
+            wmin, lo, hi = W.ndc_bounds(matrix, points[:n])
+            w_ref, lo_ref, hi_ref = reference_ndc_bounds(matrix, points[:n])
+            assert wmin == w_ref
+            assert lo.tolist() == lo_ref.tolist() and hi.tolist() == hi_ref.tolist()
+        assert W._mean_point(points[:n]).tolist() == points[:n].mean(axis=0).tolist()
+    assert W._all_finite(points)
+    for bad in (np.nan, np.inf, -np.inf):
+        p = points.copy()
+        p[77_777, 2] = bad
+        assert not W._all_finite(p)
