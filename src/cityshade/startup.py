@@ -48,6 +48,24 @@ def command_is_starting() -> bool:
                                                "cityshade-script.py")
 
 
+#: Environment variables of numpy's BLAS thread count that the command sets to 1 when unset
+#: (:func:`one_blas_thread`).
+BLAS_THREAD_VARS = ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")
+
+
+def one_blas_thread() -> None:
+    """One BLAS thread for the command's process, unless the caller's environment says.
+
+    The command's BLAS products are small ((N, 3) by (3,) for the facing test, 4 × 4 transforms)
+    and OpenBLAS's idle threads spin after each one on the core Numba's second thread needs:
+    a tiled batch of the 10^7-triangle city (4 sun steps, 2 Numba threads) took 18.8 s with
+    OpenBLAS's default 2 threads and 14.5 s with 1. Must run before numpy is imported; the
+    answers do not depend on it (each product's element is one thread's sum either way).
+    """
+    for name in BLAS_THREAD_VARS:
+        os.environ.setdefault(name, "1")
+
+
 def hold_ctrl_c_while_starting() -> None:
     """In the command's process (:func:`command_is_starting`), :func:`install_start_handler`."""
     if command_is_starting():
