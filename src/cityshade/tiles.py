@@ -225,11 +225,6 @@ def accumulate(sums: np.ndarray, slots: np.ndarray, weights_h: np.ndarray,
             np.ascontiguousarray(weights_h, np.float64), np.ascontiguousarray(lit, np.bool_))
 
 
-def directions_of(units) -> np.ndarray:
-    """(K, 3) float64 sun directions of a run's sun positions."""
-    return np.array([np.asarray(u.sun.direction, np.float64) for u in units]).reshape(-1, 3)
-
-
 def sun_blocks(directions: np.ndarray, block: int) -> list[tuple[int, int]]:
     """The sun positions cut into runs ``[lo, hi)`` of at most ``block`` that each keep one
     caster order of the light-space engine (:func:`cityshade.lightspace.caster_order`).
@@ -240,11 +235,11 @@ def sun_blocks(directions: np.ndarray, block: int) -> list[tuple[int, int]]:
     tiled day's time."""
     from cityshade.lightspace import caster_order
 
+    orders = [caster_order(d) for d in directions]
     blocks: list[tuple[int, int]] = []
     lo = 0
-    for k in range(1, directions.shape[0] + 1):
-        if (k == directions.shape[0] or k - lo == block
-                or caster_order(directions[k]) != caster_order(directions[lo])):
+    for k in range(1, len(orders) + 1):
+        if k == len(orders) or k - lo == block or orders[k] != orders[lo]:
             blocks.append((lo, k))
             lo = k
     return blocks
@@ -433,7 +428,8 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
         for t, part in enumerate(parts):
             if state.tile_done[t]:
                 part.restore(state.stretches.get(t, {}))
-    directions = directions_of(units)
+    directions = np.array([np.asarray(u.sun.direction, np.float64) for u in units]
+                          ).reshape(n_units, 3)
     blocks = sun_blocks(directions, block)
     # Tasks of a tile whose first sun positions are saved resume at the saved count. Block by
     # block over the tiles: the light-space engine re-sorts its casters when the sun's dominant

@@ -223,11 +223,16 @@ def _choose_cell_m(boxes, xs, ys, box, ext_x, ext_y, n_max_cells):
     return float(sizes[int(np.argmin(cost))])
 
 
+def _key_sign(sz: float) -> float:
+    """Sign of the casters' depth key for the shear's ``sz``: ``sgn`` of ``max_v sgn·v[kz]``."""
+    return 1.0 if sz > 0.0 else -1.0
+
+
 def caster_order(sun_direction) -> tuple[int, float]:
     """``(kz, sgn)`` of a sun direction: the casters' key order (:meth:`Casters.sorted_for`),
     which sorts them again whenever it changes from one call to the next."""
     _, _, kz, _, _, sz = K.shear_of(np.ascontiguousarray(sun_direction, np.float64))
-    return int(kz), (1.0 if sz > 0.0 else -1.0)
+    return int(kz), _key_sign(sz)
 
 
 def _unit_sun(sun_direction) -> np.ndarray:
@@ -313,7 +318,7 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     timing = {}
     t0 = time.perf_counter()
     kx, ky, kz, sx, sy, sz = K.shear_of(sun)
-    sgn = caster_order(sun)[1]
+    sgn = _key_sign(sz)
     recs, keys = casters.sorted_for(kz, sgn)
     timing["sort_s"] = time.perf_counter() - t0
 

@@ -130,7 +130,7 @@ def _extrude_kernel(p, d, box, out):
             out[i, k] = p[i, k] + t * d[k]
 
 
-#: Chunks of the parallel passes over focus points (:func:`_ndc_bounds`, :func:`_all_finite`).
+#: Chunks of :func:`_ndc_bounds`' parallel pass over the focus points.
 _CHUNKS = 64
 
 
