@@ -684,32 +684,106 @@ def reference_bracket_states(depth_map, scene, points, normals, own_poly, sun_di
     clear = np.zeros(n, np.int64)
     first = np.full(n, -2, np.int64)
     mixed = np.zeros(n, bool)
+    # A thin caster counts in the receiver's own texel, against its own depth.
+    inside = (cv >= 0) & (cv < h) & (cu >= 0) & (cu < w)
+    r, c = np.clip(cv, 0, h - 1), np.clip(cu, 0, w - 1)
+    other = np.where(thin_map[1][r, c] != own_poly, thin_map[0][r, c], thin_map[2][r, c])
+    thin_occluding += inside & (other < z - tol)
+    occluding_texels = [[] for _ in range(n)]
     for dv in range(-radius, radius + 1):
         for du in range(-radius, radius + 1):
             row, col = cv + dv, cu + du
             inside = (row >= 0) & (row < h) & (col >= 0) & (col < w)
             r, c = np.clip(row, 0, h - 1), np.clip(col, 0, w - 1)
             plane = z + gu * (col + 0.5 - u) + gv * (row + 0.5 - v) - tol
-            other = np.where(thin_map[1][r, c] != own_poly, thin_map[0][r, c], thin_map[2][r, c])
-            thin = inside & (other < plane)
             occ = inside & (depth[r, c] < plane) & (texel_poly[r, c] != own_poly)
             poly = texel_poly[r, c]
             mixed |= occ & (first != -2) & (poly != first)
             first = np.where(occ & (first == -2), poly, first)
             occluding += occ
-            thin_occluding += thin
             clear += ~occ
+            for i in np.flatnonzero(occ):
+                occluding_texels[i].append(int(prim[r[i], c[i]]))
     state = np.where((occluding == 0) & (thin_occluding == 0), 0,
                      np.where((clear == 0) & ~mixed, 1, 2)).astype(np.uint8)
     state[~ok] = 2
+    # Uncertain with occluding texels: shadow proven when the ray hits one of their triangles
+    # by the tracer's watertight rule (an edge shared with a triangle outside the window may
+    # belong to that one: Moller-Trumbore's inclusive edges would prove more).
+    tri = np.asarray(scene.triangles)
+    for i in np.flatnonzero((state == 2) & ok & (occluding > 0)):
+        ids = sorted(set(occluding_texels[i]))
+        if reference_watertight_hits(scene.vertices, tri[ids], origins[i], sun_dir).any():
+            state[i] = 3
     return state
 
 
-def reference_thin_caster_map(scene, view, t_days, thin_texels=2.0):
+def reference_watertight_hits(vertices, triangles, origin, direction):
+    """(T,) bool: whether the ray hits each triangle at t >= 0 by the watertight test (Woop,
+    Benthin and Wald 2013) in numpy float64: permute so the largest direction axis is z
+    (swapping x, y when it is negative), shear, then the signs of the 2-D edge functions."""
+    d = np.asarray(direction, np.float64)
+    ad = np.abs(d)
+    kz = 0 if ad[0] > ad[1] and ad[0] > ad[2] else (1 if ad[1] > ad[2] else 2)
+    kx, ky = (kz + 1) % 3, (kz + 2) % 3
+    if d[kz] < 0:
+        kx, ky = ky, kx
+    sx, sy, sz = d[kx] / d[kz], d[ky] / d[kz], 1.0 / d[kz]
+    v = np.asarray(vertices, np.float32)[np.asarray(triangles)].astype(np.float64)
+    o = np.asarray(origin, np.float64)
+    rel = v - o                                    # (T, 3 vertices, 3 axes)
+    z = rel[..., kz]
+    x = rel[..., kx] - sx * z
+    y = rel[..., ky] - sy * z
+    a, b, c = 0, 1, 2
+    e_u = x[:, c] * y[:, b] - y[:, c] * x[:, b]
+    e_v = x[:, a] * y[:, c] - y[:, a] * x[:, c]
+    e_w = x[:, b] * y[:, a] - y[:, b] * x[:, a]
+    e = np.stack([e_u, e_v, e_w], axis=1)
+    inside = ~((e < 0).any(axis=1) & (e > 0).any(axis=1))
+    det = e_u + e_v + e_w
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = (e_u * z[:, a] + e_v * z[:, b] + e_w * z[:, c]) * sz * (1.0 / det)
+    return inside & (det != 0) & (t >= 0)
+
+
+def _reference_square_meets_triangle(c, r, pu, pv, margin):
+    """Separating-axis test of texel square [c, c+1] x [r, r+1] and a 2-D triangle (or, when it
+    has no area, its longest edge): no edge normal separates them by more than ``margin``
+    times the edge length (the square's own axes are the caller's box)."""
+    def cross(e, p):
+        return e[0] * p[..., 1] - e[1] * p[..., 0]
+
+    corners = np.array([[c, r], [c + 1, r], [c, r + 1], [c + 1, r + 1]], np.float64)
+    pts = np.stack([pu, pv], axis=1)
+    edges = [(0, 1), (1, 2), (2, 0)]
+    area2 = cross(pts[1] - pts[0], pts[2] - pts[0])
+    flat = abs(area2) <= 1e-9 * (abs((pu[1] - pu[0]) * (pv[2] - pv[0]))
+                                 + abs((pu[2] - pu[0]) * (pv[1] - pv[0])))
+    if flat:
+        a, b = max(edges, key=lambda e: np.hypot(*(pts[e[1]] - pts[e[0]])))
+        for sign in (1.0, -1.0):
+            e = pts[b] - pts[a]
+            inner = sign * cross(e, corners - pts[a])
+            if inner.max() < -margin * np.hypot(*e):
+                return False
+        return True
+    for a, b in edges:
+        e = pts[b] - pts[a]
+        inner = np.sign(area2) * cross(e, corners - pts[a])
+        if inner.max() < -margin * np.hypot(*e):
+            return False
+    return True
+
+
+def reference_thin_caster_map(scene, view, t_days, thin_texels=2.0, margin=1e-3):
     """The hybrid's thin-caster map in plain numpy (twin of
-    ``cityshade.shadows.hybrid.thin_caster_map``): per texel, every polygon's nearest thin
-    triangle (light-space height below ``thin_texels``, box grown by one texel), then the
-    nearest polygon and the nearest of the others (lowest polygon id on ties)."""
+    ``cityshade.shadows.hybrid.thin_caster_map``): every thin triangle (light-space height
+    below ``thin_texels``) on the texels whose squares it meets (separating axes, within
+    ``margin`` texels), with a lower bound of its depth there (its depth plane, solved, at the
+    square's lowest corner, less 1 % of the slopes and 1e-6, at least its nearest vertex;
+    as float32); per texel each polygon's nearest, then the nearest polygon and
+    the nearest of the others (lowest polygon id on ties)."""
     h, w = view.height_px, view.width_px
     v = np.asarray(scene.vertices, np.float64)
     tri = np.asarray(scene.triangles)
@@ -727,21 +801,37 @@ def reference_thin_caster_map(scene, view, t_days, thin_texels=2.0):
         q = tri[i]
         if not (cw[q] > 0).all():
             continue
-        pu, pv = u[q], r[q]
+        pu, pv, pz = u[q], r[q], z[q]
         area2 = abs((pu[1] - pu[0]) * (pv[2] - pv[0]) - (pu[2] - pu[0]) * (pv[1] - pv[0]))
         longest = max(np.hypot(pu[a] - pu[b], pv[a] - pv[b]) for a, b in ((0, 1), (0, 2), (1, 2)))
         if longest > 0 and area2 / longest >= thin_texels:
             continue
-        zmin = np.float32(z[q].min())
+        zmin = pz.min()
         if not zmin <= 1.0:
             continue
-        c0, c1 = max(int(np.floor(pu.min())) - 1, 0), min(int(np.floor(pu.max())) + 1, w - 1)
-        r0, r1 = max(int(np.floor(pv.min())) - 1, 0), min(int(np.floor(pv.max())) + 1, h - 1)
+        c0 = max(int(np.floor(pu.min() - margin)), 0)
+        c1 = min(int(np.floor(pu.max() + margin)), w - 1)
+        r0 = max(int(np.floor(pv.min() - margin)), 0)
+        r1 = min(int(np.floor(pv.max() + margin)), h - 1)
+        try:
+            with np.errstate(all="ignore"):
+                za, zb, z0 = np.linalg.solve(np.stack([pu, pv, np.ones(3)], axis=1), pz)
+            plane = np.isfinite(za) and np.isfinite(zb)
+        except np.linalg.LinAlgError:
+            plane = False
         poly = int(scene.tri_polygon[i])
         for row in range(r0, r1 + 1):
             for col in range(c0, c1 + 1):
+                if not _reference_square_meets_triangle(col, row, pu, pv, margin):
+                    continue
+                d = zmin
+                if plane:
+                    lowest = (z0 + za * (col + (za < 0)) + zb * (row + (zb < 0))
+                              - 0.01 * (abs(za) + abs(zb)) - 1e-6)
+                    d = max(d, lowest)
+                d32 = np.float32(d)
                 per = best.setdefault((row, col), {})
-                per[poly] = min(per.get(poly, np.float32(np.inf)), zmin)
+                per[poly] = min(per.get(poly, np.float32(np.inf)), d32)
     out = (np.full((h, w), np.inf, np.float32), np.full((h, w), -1, np.int32),
            np.full((h, w), np.inf, np.float32), np.full((h, w), -1, np.int32))
     for (row, col), per in best.items():
@@ -916,3 +1006,22 @@ def reference_ndc_bounds(matrix, points):
     c = np.stack([(x * m[k, 0] + y * m[k, 1] + z * m[k, 2] + m[k, 3]) / w for k in range(3)],
                  axis=1)
     return float(w.min()), c.min(axis=0), c.max(axis=0)
+
+
+def reference_boundary(lit, valid, faces, refined):
+    """Twin of ``cityshade.shadows.hybrid.boundary_todo``: valid candidates with a valid
+    4-neighbour of the other class, by shifted copies (no wrap-around), then the facing and
+    not yet refined ones."""
+    binary = np.asarray(lit) >= 0.5
+    valid = np.asarray(valid, bool)
+    out = np.zeros_like(valid)
+    h, w = valid.shape
+    for dr, dc in ((1, 0), (-1, 0), (0, 1), (0, -1)):
+        nb_bin = np.zeros_like(binary)
+        nb_ok = np.zeros_like(valid)
+        rs, rd = (slice(0, h - dr), slice(dr, h)) if dr >= 0 else (slice(-dr, h), slice(0, h + dr))
+        cs, cd = (slice(0, w - dc), slice(dc, w)) if dc >= 0 else (slice(-dc, w), slice(0, w + dc))
+        nb_bin[rd, cd] = binary[rs, cs]
+        nb_ok[rd, cd] = valid[rs, cs]
+        out |= valid & nb_ok & (nb_bin != binary)
+    return out & np.asarray(faces, bool) & ~np.asarray(refined, bool)

@@ -549,3 +549,14 @@ def test_context_gathers_the_facing_receivers_once_per_sun(sample):
     assert b.faces.tobytes() == faces_b.tobytes() and faces_b.sum() != a1.faces.sum()
     assert b.facing_points.tobytes() == gather_pixels(cp.surfaces.position_m, faces_b).tobytes()
     assert b.facing_normals.tobytes() == gather_pixels(cp.normal, faces_b).tobytes()
+
+
+def test_gather_pixels_is_the_boolean_gather_in_row_major_order():
+    from cityshade.shadows import gather_pixels
+
+    rng = np.random.default_rng(3)
+    image = rng.random((23, 17, 3)).astype(np.float32)
+    for mask in (rng.random((23, 17)) < 0.3, np.zeros((23, 17), bool), np.ones((23, 17), bool)):
+        mask[5] = False             # an empty row
+        got = gather_pixels(image, mask)
+        assert got.dtype == np.float64 and np.array_equal(got, image[mask].astype(np.float64))

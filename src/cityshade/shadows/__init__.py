@@ -32,7 +32,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any, Protocol
 
 import numpy as np
-from numba import njit
+from numba import njit, prange
 
 from cityshade.config import ShadowSettings
 from cityshade.errors import ContractError, UsageError
@@ -191,8 +191,10 @@ _DIAGNOSTIC_FAMILIES: dict[str, dict[str, Any]] = {
     "cascades": dict(cascades=int, cascades_rendered=int, cascades_skipped=list,
                      splits_m=list, per_cascade=list),
     # hybrid: its base technique's diagnostics and what the rays refined
-    # (refined_with: the exact engine(s) that traced, "raytrace" and/or "izb")
-    "hybrid": dict(base=_Reported, classifier=str, uncertain_px=int, boundary_px=int,
+    # (refined_with: the exact engine(s) that traced, "raytrace" and/or "izb"; proven_px: the
+    # uncertain pixels whose ray hit a caster of the map's window, decided without a trace)
+    "hybrid": dict(base=_Reported, classifier=str, uncertain_px=int, proven_px=int,
+                   boundary_px=int,
                    boundary_passes=int, traced_px=int, traced_share=_NUMBER, facing_px=int,
                    refined_with=str),
     # +smooth: its settings and time
@@ -310,10 +312,22 @@ def oriented_normals(surfaces: "Surfaces", camera: "Camera") -> np.ndarray:
     return seen_side_normals(surfaces, camera)
 
 
-@njit(cache=True)
-def _gather_kernel(image, mask, out):
-    k = 0
-    for r in range(mask.shape[0]):
+@njit(cache=True, parallel=True)
+def _row_counts(mask, counts):
+    for r in prange(mask.shape[0]):
+        k = 0
+        for c in range(mask.shape[1]):
+            if mask[r, c]:
+                k += 1
+        counts[r + 1] = k
+
+
+@njit(cache=True, parallel=True)
+def _gather_kernel(image, mask, starts, out):
+    # Rows in parallel, each from its prefix-sum start: row-major order, the first touch of
+    # the fresh output's pages shared by the threads.
+    for r in prange(mask.shape[0]):
+        k = starts[r]
         for c in range(mask.shape[1]):
             if mask[r, c]:
                 for j in range(image.shape[2]):
@@ -326,9 +340,13 @@ def gather_pixels(image, mask) -> np.ndarray:
     row-major order (numpy's boolean gather of a 3-D image is several times slower)."""
     image = np.asarray(image)
     mask = np.ascontiguousarray(mask, bool)
-    out = np.empty((int(np.count_nonzero(mask)), image.shape[2]), np.float64)
+    starts = np.zeros(mask.shape[0] + 1, np.int64)
+    if mask.size:
+        _row_counts(mask, starts)
+    np.cumsum(starts, out=starts)
+    out = np.empty((int(starts[-1]), image.shape[2]), np.float64)
     if out.shape[0]:
-        _gather_kernel(image, mask, out)
+        _gather_kernel(image, mask, starts, out)
     return out
 
 

@@ -45,22 +45,28 @@ from numba import njit, prange
 from cityshade.errors import UsageError
 from cityshade.shadows import TECHNIQUES, ShadowContext, ShadowResult, TechniqueDiagnostics
 from cityshade.shadows.shadowmap import clip_point, plane_depth_gradient
+from cityshade.trace.kernels import hit_triangle, ray_shear
 
-#: Receiver states of the classifiers.
-SURE_LIT, SURE_SHADOW, UNCERTAIN = 0, 1, 2
+#: Receiver states of the classifiers. PROVEN_SHADOW: uncertain by the map, but its shadow ray
+#: hits one of the casters the map holds around it (the tracer's own watertight test of those
+#: few triangles): shadow, exactly as a traced ray finds it, without the traversal.
+SURE_LIT, SURE_SHADOW, UNCERTAIN, PROVEN_SHADOW = 0, 1, 2, 3
 
 
 #: Triangles whose light-space height (2·area / longest edge) is below this many texels can fall
 #: between texel centres and vanish from a point-sampled depth map: they go into the thin-caster
 #: map too (2 leaves a texel of margin over the 1-texel worst case).
 THIN_TEXELS = 2.0
+#: A thin triangle is splatted on every texel whose square comes within this many texels of
+#: it (a margin for the rounding of its projection and of the receivers').
+THIN_MARGIN_TEXELS = 1e-3
 
 
 @njit(cache=True, parallel=True)
 def _thin_boxes(vertices, triangles, present, m, width, height, box, zmin):
-    """Project every present triangle into the light view; for the thin ones, their texel
-    bounding box grown by one texel (``box`` col0, col1, row0, row1; col0 > col1 for the
-    others) and their nearest depth."""
+    """Project every present triangle into the light view; for the thin ones, the texels their
+    bounding box touches, within :data:`THIN_MARGIN_TEXELS` (``box`` col0, col1, row0, row1;
+    col0 > col1 for the others and for boxes off the map), and their nearest depth."""
     for i in prange(triangles.shape[0]):
         box[i, 0] = 1
         box[i, 1] = 0
@@ -87,10 +93,12 @@ def _thin_boxes(vertices, triangles, present, m, width, height, box, zmin):
         z = min(z0, z1, z2)
         if not z <= 1.0:
             continue
-        c0 = max(int(math.floor(min(u0, u1, u2))) - 1, 0)
-        c1 = min(int(math.floor(max(u0, u1, u2))) + 1, width - 1)
-        r0 = max(int(math.floor(min(v0, v1, v2))) - 1, 0)
-        r1 = min(int(math.floor(max(v0, v1, v2))) + 1, height - 1)
+        c0 = max(int(math.floor(min(u0, u1, u2) - THIN_MARGIN_TEXELS)), 0)
+        c1 = min(int(math.floor(max(u0, u1, u2) + THIN_MARGIN_TEXELS)), width - 1)
+        r0 = max(int(math.floor(min(v0, v1, v2) - THIN_MARGIN_TEXELS)), 0)
+        r1 = min(int(math.floor(max(v0, v1, v2) + THIN_MARGIN_TEXELS)), height - 1)
+        if c0 > c1 or r0 > r1:
+            continue
         box[i, 0], box[i, 1], box[i, 2], box[i, 3] = c0, c1, r0, r1
         zmin[i] = z
 
@@ -110,32 +118,140 @@ def _light_texel(vertices, q, m, cw, width, height):
             (m[8] * x + m[9] * y + m[10] * z + m[11]) / cw)
 
 
-@njit(cache=True)
-def _thin_splat(box, zmin, poly, d1, p1, d2, p2):
-    """Splat the thin triangles' nearest depth over their boxes, in id order (serial: the
-    splats overlap; the lowest id wins ties), keeping per texel the nearest polygon (d1, p1)
-    and the nearest of every other polygon (d2, p2)."""
-    for i in range(box.shape[0]):
-        if box[i, 0] > box[i, 1]:
-            continue
-        z32 = np.float32(zmin[i])
-        q = poly[i]
-        for r in range(box[i, 2], box[i, 3] + 1):
-            for c in range(box[i, 0], box[i, 1] + 1):
-                if q == p1[r, c]:
-                    if z32 < d1[r, c]:
-                        d1[r, c] = z32
-                elif q == p2[r, c]:
-                    if z32 < d2[r, c]:
-                        d2[r, c] = z32
+#: Row bands of the thin-caster splat: each band applies, in id order, the splats that touch
+#: it, so every texel sees the serial order and the map is the same for any thread count.
+THIN_BANDS = 64
+
+
+@njit(cache=True, parallel=True)
+def _thin_splat(vertices, triangles, m, box, zmin, poly, band_start, band_items, d1, p1, d2,
+                p2):
+    """Splat the thin triangles over the texels whose squares they touch (a conservative
+    rasterization: every edge's half-plane reaches the square, within the margin), each texel
+    getting a lower bound of the triangle's depth over its square (the depth plane's minimum
+    there less a margin that covers float32 rounding, at least the nearest vertex's depth as
+    float32, as before), in id order (the lowest id wins ties); per
+    texel the nearest polygon (d1, p1) and the nearest of every other polygon (d2, p2).
+    Parallel over row bands (:func:`_band_lists`: each band's triangles in id order)."""
+    h, w = d1.shape
+    bands = band_start.size - 1
+    for b in prange(bands):
+        b0 = b * h // bands
+        b1 = (b + 1) * h // bands
+        edges = np.empty((3, 7))
+        for j in range(band_start[b], band_start[b + 1]):
+            i = band_items[j]
+            q0, q1, q2 = triangles[i, 0], triangles[i, 1], triangles[i, 2]
+            u0, v0, z0 = _light_texel(vertices, q0, m, _clip_w(vertices, q0, m), w, h)
+            u1, v1, z1 = _light_texel(vertices, q1, m, _clip_w(vertices, q1, m), w, h)
+            u2, v2, z2 = _light_texel(vertices, q2, m, _clip_w(vertices, q2, m), w, h)
+            # Depth is affine in texel coordinates over a planar triangle (also under a
+            # perspective warp): z = z0 + a (u - u0) + b (v - v0), unless it is seen edge-on.
+            e1u, e1v, e2u, e2v = u1 - u0, v1 - v0, u2 - u0, v2 - v0
+            det = e1u * e2v - e2u * e1v
+            flat = abs(det) <= 1e-9 * (abs(e1u * e2v) + abs(e2u * e1v))
+            a = bb = 0.0
+            if not flat:
+                a = ((z1 - z0) * e2v - (z2 - z0) * e1v) / det
+                bb = ((z2 - z0) * e1u - (z1 - z0) * e2u) / det
+                flat = not (np.isfinite(a) and np.isfinite(bb))
+            _thin_edges(u0, v0, u1, v1, u2, v2, 1.0 if det > 0.0 else -1.0, flat, edges)
+            # Lowest plane depth over a square is its centre's minus half the slopes; the
+            # margin: 1 % of a texel's depth change and the float32 depth's rounding.
+            half = 0.5 * (abs(a) + abs(bb)) + 0.01 * (abs(a) + abs(bb)) + 1e-6
+            q = poly[i]
+            for r in range(max(box[i, 2], b0), min(box[i, 3] + 1, b1)):
+                for c in range(box[i, 0], box[i, 1] + 1):
+                    inside = True
+                    for k in range(3):
+                        # The inner-side edge function at the square's most inward corner.
+                        f = (edges[k, 2] * (c + edges[k, 4] - edges[k, 0])
+                             + edges[k, 3] * (r + edges[k, 5] - edges[k, 1]))
+                        if f < edges[k, 6]:
+                            inside = False
+                            break
+                    if not inside:
+                        continue
+                    z = zmin[i]
+                    if not flat:
+                        zc = z0 + a * (c + 0.5 - u0) + bb * (r + 0.5 - v0) - half
+                        if zc > z:
+                            z = zc
+                    z32 = np.float32(z)
+                    if q == p1[r, c]:
                         if z32 < d1[r, c]:
-                            d1[r, c], d2[r, c] = d2[r, c], d1[r, c]
-                            p1[r, c], p2[r, c] = p2[r, c], p1[r, c]
-                elif z32 < d1[r, c]:
-                    d2[r, c], p2[r, c] = d1[r, c], p1[r, c]
-                    d1[r, c], p1[r, c] = z32, q
-                elif z32 < d2[r, c]:
-                    d2[r, c], p2[r, c] = z32, q
+                            d1[r, c] = z32
+                    elif q == p2[r, c]:
+                        if z32 < d2[r, c]:
+                            d2[r, c] = z32
+                            if z32 < d1[r, c]:
+                                d1[r, c], d2[r, c] = d2[r, c], d1[r, c]
+                                p1[r, c], p2[r, c] = p2[r, c], p1[r, c]
+                    elif z32 < d1[r, c]:
+                        d2[r, c], p2[r, c] = d1[r, c], p1[r, c]
+                        d1[r, c], p1[r, c] = z32, q
+                    elif z32 < d2[r, c]:
+                        d2[r, c], p2[r, c] = z32, q
+
+
+@njit(cache=True)
+def _band_lists(box, h, bands):
+    """(starts (bands + 1,), items): per row band (rows b h // bands to (b + 1) h // bands) the
+    triangles whose box reaches it, in id order (a counting sort), so that each band reads
+    only its own."""
+    band_of = np.empty(h, np.int64)
+    for b in range(bands):
+        band_of[b * h // bands:(b + 1) * h // bands] = b
+    counts = np.zeros(bands + 1, np.int64)
+    for i in range(box.shape[0]):
+        if box[i, 0] <= box[i, 1]:
+            for b in range(band_of[box[i, 2]], band_of[box[i, 3]] + 1):
+                counts[b + 1] += 1
+    for b in range(bands):
+        counts[b + 1] += counts[b]
+    items = np.empty(counts[bands], np.int32)
+    fill = counts[:bands].copy()
+    for i in range(box.shape[0]):
+        if box[i, 0] <= box[i, 1]:
+            for b in range(band_of[box[i, 2]], band_of[box[i, 3]] + 1):
+                items[fill[b]] = i
+                fill[b] += 1
+    return counts, items
+
+
+@njit(cache=True, inline="always")
+def _set_edge(edges, k, pu, pv, qu, qv, sgn):
+    """Row k: edge p→q's start, inner normal (inner side ``sgn``), the offsets of the texel
+    square's corner that maximises the inner edge function, and the margin (negative)."""
+    eu, ev = qu - pu, qv - pv
+    nu, nv = -sgn * ev, sgn * eu
+    edges[k, 0], edges[k, 1], edges[k, 2], edges[k, 3] = pu, pv, nu, nv
+    edges[k, 4] = 1.0 if nu > 0.0 else 0.0
+    edges[k, 5] = 1.0 if nv > 0.0 else 0.0
+    edges[k, 6] = -THIN_MARGIN_TEXELS * math.sqrt(eu * eu + ev * ev)
+
+
+@njit(cache=True, inline="always")
+def _thin_edges(u0, v0, u1, v1, u2, v2, sgn, flat, edges):
+    """The three half-planes of a projected triangle's conservative coverage; a triangle seen
+    edge-on (``flat``) is its longest edge, a segment: both sides of its line, and no third."""
+    if flat:
+        l01 = (u1 - u0) ** 2 + (v1 - v0) ** 2
+        l02 = (u2 - u0) ** 2 + (v2 - v0) ** 2
+        l12 = (u2 - u1) ** 2 + (v2 - v1) ** 2
+        if l01 >= l02 and l01 >= l12:
+            pu, pv, qu, qv = u0, v0, u1, v1
+        elif l02 >= l12:
+            pu, pv, qu, qv = u0, v0, u2, v2
+        else:
+            pu, pv, qu, qv = u1, v1, u2, v2
+        _set_edge(edges, 0, pu, pv, qu, qv, 1.0)
+        _set_edge(edges, 1, pu, pv, qu, qv, -1.0)
+        _set_edge(edges, 2, pu, pv, pu, pv, 1.0)    # zero edge: always reached
+    else:
+        _set_edge(edges, 0, u0, v0, u1, v1, sgn)
+        _set_edge(edges, 1, u1, v1, u2, v2, sgn)
+        _set_edge(edges, 2, u2, v2, u0, v0, sgn)
 
 
 def thin_caster_map(scene, view, t_days: float) -> tuple[np.ndarray, ...]:
@@ -154,16 +270,18 @@ def thin_caster_map(scene, view, t_days: float) -> tuple[np.ndarray, ...]:
     n = scene.triangles.shape[0]
     box = np.empty((n, 4), np.int64)
     zmin = np.empty(n)
-    _thin_boxes(scene.vertices, scene.triangles, present,
-                np.ascontiguousarray(view.clip_from_world.reshape(16)), w, h, box, zmin)
-    _thin_splat(box, zmin, np.asarray(scene.tri_polygon, np.int32), *thin)
+    m = np.ascontiguousarray(view.clip_from_world.reshape(16), np.float64)
+    _thin_boxes(scene.vertices, scene.triangles, present, m, w, h, box, zmin)
+    band_start, band_items = _band_lists(box, h, min(THIN_BANDS, h))
+    _thin_splat(scene.vertices, scene.triangles, m, box, zmin,
+                np.asarray(scene.tri_polygon, np.int32), band_start, band_items, *thin)
     return thin
 
 
 @njit(cache=True, parallel=True)
-def _bracket_kernel(m, width, height, depth, prim, tri_polygon, thin_depth, thin_poly,
+def _bracket_kernel(m, width, height, depth, prim, texel_poly, thin_depth, thin_poly,
                     thin_depth2, points, normals, sun, offset_rel, min_scale_m, own_poly, radius,
-                    state):
+                    vertices, triangles, state):
     """Classify receivers from the depth-map texels around their true surface points, in one
     pass per receiver: its shadow-ray origin (:func:`cityshade.trace.shadow_rays_from_surface`'s
     offset, the arithmetic of :func:`cityshade.trace.bricks.shadow_origins`), its projection
@@ -179,8 +297,13 @@ def _bracket_kernel(m, width, height, depth, prim, tri_polygon, thin_depth, thin
     every texel within ``radius`` occludes and all come from one polygon (no gap between
     casters, however narrow, can let light through). Else uncertain. No bias is involved: the
     decision is about the exact surface point, within the map's one-texel position accuracy.
+
+    An uncertain receiver with occluding texels then tests its shadow ray (origin and
+    direction as traced) against their triangles with the tracer's watertight test: a hit
+    makes it PROVEN_SHADOW, the answer every exact engine gives (any hit occludes).
     """
     h, w = depth.shape
+    kx, ky, kz, sx, sy, sz = ray_shear(sun[0], sun[1], sun[2])
     for i in prange(points.shape[0]):
         px, py, pz = points[i, 0], points[i, 1], points[i, 2]
         nx, ny, nz = normals[i, 0], normals[i, 1], normals[i, 2]
@@ -212,7 +335,16 @@ def _bracket_kernel(m, width, height, depth, prim, tri_polygon, thin_depth, thin
         cv = int(np.floor(v_s))
         occluding = 0
         clear = 0
+        # A thin caster occludes only if it covers the receiver's light-space point, in its
+        # texel; the map holds a lower bound of its depth over that texel's square. The
+        # nearest thin caster of another polygon: the nearest one, or the nearest of the
+        # others when that is the receiver's own.
         thin_occluding = 0
+        if 0 <= cv < h and 0 <= cu < w:
+            thin_other = (thin_depth[cv, cu] if thin_poly[cv, cu] != own
+                          else thin_depth2[cv, cu])
+            if thin_other < z_s - tol:
+                thin_occluding = 1
         first_poly = -2
         mixed = False
         decided = False
@@ -233,19 +365,12 @@ def _bracket_kernel(m, width, height, depth, prim, tri_polygon, thin_depth, thin
                     continue
                 # The receiver's plane at this texel's centre.
                 plane = (z_s + dz_du * (col + 0.5 - u_s) + dz_dv * (row + 0.5 - v_s) - tol)
-                # The nearest thin caster of another polygon: the nearest one, or the nearest
-                # of the others when that is the receiver's own.
-                thin_other = (thin_depth[row, col] if thin_poly[row, col] != own
-                              else thin_depth2[row, col])
-                if thin_other < plane:
-                    thin_occluding += 1
-                t = prim[row, col]
-                texel_poly = tri_polygon[t] if t >= 0 else -1
-                if depth[row, col] < plane and texel_poly != own:
+                tp = texel_poly[row, col]
+                if depth[row, col] < plane and tp != own:
                     occluding += 1
                     if first_poly == -2:
-                        first_poly = texel_poly
-                    elif texel_poly != first_poly:
+                        first_poly = tp
+                    elif tp != first_poly:
                         mixed = True
                 else:
                     clear += 1
@@ -255,6 +380,55 @@ def _bracket_kernel(m, width, height, depth, prim, tri_polygon, thin_depth, thin
             state[i] = SURE_SHADOW
         else:
             state[i] = UNCERTAIN
+            # (The window loop may have stopped before it counted the occluding texels.)
+            if _hits_a_window_caster(
+                    depth, prim, texel_poly, vertices, triangles, cu, cv, radius, u_s, v_s,
+                    z_s, dz_du, dz_dv, tol, own, px, py, pz, kx, ky, kz, sx, sy, sz):
+                state[i] = PROVEN_SHADOW
+
+
+@njit(cache=True, inline="always")
+def _hits_a_window_caster(depth, prim, texel_poly, vertices, triangles, cu, cv, radius, u_s,
+                          v_s, z_s, dz_du, dz_dv, tol, own, ox, oy, oz, kx, ky, kz, sx, sy, sz):
+    """Whether the shadow ray from ``o`` hits (t >= 0) the triangle of an occluding texel of
+    the window (the bracket test's occluding texels; a run of texels of one triangle is tested
+    once)."""
+    h, w = depth.shape
+    okx = ox if kx == 0 else (oy if kx == 1 else oz)
+    oky = ox if ky == 0 else (oy if ky == 1 else oz)
+    okz = ox if kz == 0 else (oy if kz == 1 else oz)
+    last = -1
+    for row in range(max(cv - radius, 0), min(cv + radius + 1, h)):
+        for col in range(max(cu - radius, 0), min(cu + radius + 1, w)):
+            t = prim[row, col]
+            if t < 0 or t == last or texel_poly[row, col] == own:
+                continue
+            plane = (z_s + dz_du * (col + 0.5 - u_s) + dz_dv * (row + 0.5 - v_s) - tol)
+            if not depth[row, col] < plane:
+                continue
+            last = t
+            hit, t_hit, _, _ = hit_triangle(vertices, triangles, t, okx, oky, okz, kx, ky, kz,
+                                            sx, sy, sz)
+            if hit and t_hit >= 0.0:
+                return True
+    return False
+
+
+@njit(cache=True, parallel=True)
+def _texel_polygons_kernel(prim, tri_polygon, out):
+    for r in prange(prim.shape[0]):
+        for c in range(prim.shape[1]):
+            t = prim[r, c]
+            out[r, c] = tri_polygon[t] if t >= 0 else -1
+
+
+def texel_polygons(prim_id, tri_polygon) -> np.ndarray:
+    """(H, W) int32 polygon of each depth-map texel's triangle (-1 where empty): looked up once
+    per texel instead of once per receiver and window texel."""
+    prim = np.asarray(prim_id)
+    out = np.empty(prim.shape, np.int32)
+    _texel_polygons_kernel(prim, np.asarray(tri_polygon), out)
+    return out
 
 
 #: Depth tolerance of the coplanarity test: the float32 depth map's rounding (≈ 1.2e-7 per NDC
@@ -283,11 +457,13 @@ def bracket_states(depth_map, scene, points_m, normals, own_poly, sun_direction,
         _bracket_kernel(np.ascontiguousarray(view.clip_from_world.reshape(16), np.float64),
                         float(view.width_px), float(view.height_px),
                         np.asarray(depth_map.depth), np.asarray(depth_map.prim_id),
-                        np.asarray(scene.tri_polygon), thin_map[0], thin_map[1], thin_map[2],
+                        texel_polygons(depth_map.prim_id, scene.tri_polygon), thin_map[0],
+                        thin_map[1], thin_map[2],
                         points,
                         normals, np.ascontiguousarray(sun_direction, np.float64).reshape(3),
                         SHADOW_OFFSET_REL, SHADOW_OFFSET_MIN_SCALE_M,
-                        np.ascontiguousarray(own_poly, np.int32), int(radius_texels), state)
+                        np.ascontiguousarray(own_poly, np.int32), int(radius_texels),
+                        scene.vertices, scene.triangles, state)
     return state
 
 
@@ -314,21 +490,40 @@ def refine_engine(n_rays: int):
     return "raytrace", sunlit
 
 
-def _boundary(binary: np.ndarray, candidates: np.ndarray) -> np.ndarray:
-    """Candidates with a 4-neighbour candidate of the other class."""
-    out = np.zeros_like(candidates)
-    for axis in (0, 1):
-        for shift in (1, -1):
-            nb_bin = np.roll(binary, shift, axis=axis)
-            nb_ok = np.roll(candidates, shift, axis=axis)
-            # np.roll wraps around: discard the wrapped row/column.
-            if axis == 0:
-                edge = slice(0, 1) if shift == 1 else slice(-1, None)
-                nb_ok[edge, :] = False
-            else:
-                edge = slice(0, 1) if shift == 1 else slice(-1, None)
-                nb_ok[:, edge] = False
-            out |= candidates & nb_ok & (nb_bin != binary)
+@njit(cache=True, parallel=True)
+def _boundary_kernel(lit, valid, faces, refined, out):
+    """``out``: the untraced facing pixels with a valid 4-neighbour of the other class
+    (lit >= 0.5 or not); returns how many."""
+    h, w = lit.shape
+    counts = np.zeros(h, np.int64)
+    for r in prange(h):
+        for c in range(w):
+            out[r, c] = False
+            if not (valid[r, c] and faces[r, c]) or refined[r, c]:
+                continue
+            b = lit[r, c] >= 0.5
+            edge = False
+            if r > 0 and valid[r - 1, c] and (lit[r - 1, c] >= 0.5) != b:
+                edge = True
+            elif r + 1 < h and valid[r + 1, c] and (lit[r + 1, c] >= 0.5) != b:
+                edge = True
+            elif c > 0 and valid[r, c - 1] and (lit[r, c - 1] >= 0.5) != b:
+                edge = True
+            elif c + 1 < w and valid[r, c + 1] and (lit[r, c + 1] >= 0.5) != b:
+                edge = True
+            if edge:
+                out[r, c] = True
+                counts[r] += 1
+    return counts.sum()
+
+
+def boundary_todo(lit, valid, faces, refined) -> np.ndarray:
+    """(H, W) bool: the facing, valid, not yet refined pixels next to a valid pixel of the other
+    class (4-neighbourhood; its numpy twin is ``tests/reference.py``'s ``reference_boundary``)."""
+    out = np.empty(lit.shape, np.bool_)
+    _boundary_kernel(np.ascontiguousarray(lit), np.ascontiguousarray(valid, np.bool_),
+                     np.ascontiguousarray(faces, np.bool_),
+                     np.ascontiguousarray(refined, np.bool_), out)
     return out
 
 
@@ -409,7 +604,9 @@ class Hybrid:
             refined[mask] = True
             return len(points)
 
-        # 2. Exact rays for the uncertain pixels.
+        # 2. Exact rays for the uncertain pixels (the proven ones are decided: shadow).
+        proven = faces & (state == PROVEN_SHADOW)
+        refined |= proven
         classified_uncertain = faces & (state == UNCERTAIN)
         rays = trace(classified_uncertain)
         # 3. Follow the boundaries: trace untraced pixels next to the other class until stable.
@@ -417,8 +614,7 @@ class Hybrid:
         boundary_rays = 0
         valid = np.asarray(surfaces.valid, bool)
         while passes < settings.max_boundary_passes:
-            binary = lit >= 0.5
-            todo = _boundary(binary, valid) & faces & ~refined
+            todo = boundary_todo(lit, valid, faces, refined)
             if not todo.any():
                 break
             boundary_rays += trace(todo)
@@ -426,7 +622,8 @@ class Hybrid:
         t3 = time.perf_counter()
         n_facing = int(faces.sum())
         diagnostics.update(
-            uncertain_px=int(classified_uncertain.sum()),
+            uncertain_px=int(classified_uncertain.sum()) + int(proven.sum()),
+            proven_px=int(proven.sum()),
             boundary_px=boundary_rays, boundary_passes=passes,
             traced_px=rays + boundary_rays,
             traced_share=(rays + boundary_rays) / max(int(valid.sum()), 1),

@@ -71,16 +71,34 @@ def hit_record(recs, k, okx, oky, okz, kx, ky, kz, sx, sy, sz):
     from :func:`ray_shear`. ``t`` is the distance along the ray in units of its direction,
     ``(u, v)`` the barycentrics of v1 and v2 (hit point = (1-u-v) v0 + u v1 + v v2).
     """
+    return _watertight(recs[k, kx], recs[k, ky], recs[k, kz], recs[k, 3 + kx], recs[k, 3 + ky],
+                       recs[k, 3 + kz], recs[k, 6 + kx], recs[k, 6 + ky], recs[k, 6 + kz],
+                       okx, oky, okz, sx, sy, sz)
+
+
+@njit(cache=True, inline="always")
+def hit_triangle(vertices, triangles, t, okx, oky, okz, kx, ky, kz, sx, sy, sz):
+    """:func:`hit_record` of scene triangle ``t`` (``vertices`` (V, 3) float32, ``triangles``
+    (T, 3)): the same float32 coordinates as its records, so the same answer."""
+    q0, q1, q2 = triangles[t, 0], triangles[t, 1], triangles[t, 2]
+    return _watertight(vertices[q0, kx], vertices[q0, ky], vertices[q0, kz], vertices[q1, kx],
+                       vertices[q1, ky], vertices[q1, kz], vertices[q2, kx], vertices[q2, ky],
+                       vertices[q2, kz], okx, oky, okz, sx, sy, sz)
+
+
+@njit(cache=True, inline="always")
+def _watertight(ax_, ay_, az_, bx_, by_, bz_, cx_, cy_, cz_, okx, oky, okz, sx, sy, sz):
+    """The watertight test of one triangle given by its vertices on the permuted axes."""
     # Translate the vertices to the ray origin, then shear so the ray runs along +z.
-    a_z = recs[k, kz] - okz
-    b_z = recs[k, 3 + kz] - okz
-    c_z = recs[k, 6 + kz] - okz
-    a_x = (recs[k, kx] - okx) - sx * a_z
-    a_y = (recs[k, ky] - oky) - sy * a_z
-    b_x = (recs[k, 3 + kx] - okx) - sx * b_z
-    b_y = (recs[k, 3 + ky] - oky) - sy * b_z
-    c_x = (recs[k, 6 + kx] - okx) - sx * c_z
-    c_y = (recs[k, 6 + ky] - oky) - sy * c_z
+    a_z = az_ - okz
+    b_z = bz_ - okz
+    c_z = cz_ - okz
+    a_x = (ax_ - okx) - sx * a_z
+    a_y = (ay_ - oky) - sy * a_z
+    b_x = (bx_ - okx) - sx * b_z
+    b_y = (by_ - oky) - sy * b_z
+    c_x = (cx_ - okx) - sx * c_z
+    c_y = (cy_ - oky) - sy * c_z
     # Scaled barycentrics: 2-D edge functions of the three edges.
     e_u = c_x * b_y - c_y * b_x
     e_v = a_x * c_y - a_y * c_x
