@@ -175,10 +175,14 @@ def test_bracket_kernel_agrees_with_its_numpy_twin(scene, references):
         prim = np.asarray(ctx.surfaces.prim_id)[ctx.faces]
         own = np.where(prim >= 0, np.asarray(scene.tri_polygon)[np.maximum(prim, 0)], -1)
         thin = thin_caster_map(scene, use.depth_map.view, t)
-        got = bracket_states(use.depth_map, scene, points, normals, own, sun.direction, 1, thin)
+        got = bracket_states(use.depth_map, scene, points, normals, own, sun.direction, 1, t,
+                             thin)
         want = reference_bracket_states(use.depth_map, scene, points, normals, own,
                                         sun.direction, 1, thin)
         assert np.array_equal(got, want), f"{view}: {(got != want).sum()} of {len(got)} differ"
+        # The thin map made only where the depth map calls a receiver lit: the same states.
+        lazy = bracket_states(use.depth_map, scene, points, normals, own, sun.direction, 1, t)
+        assert np.array_equal(lazy, got)
         seen |= set(np.unique(got).tolist())
     assert seen == {0, 1, 2, 3}
 
@@ -197,6 +201,12 @@ def test_thin_caster_map_agrees_with_its_numpy_twin(scene, references):
     view = get_technique("shadowmap").prepare(ctx).views[0]
     got = thin_caster_map(scene, view, t)
     want = reference_thin_caster_map(scene, view, t)
+    # Made on some texels only: the same there, empty elsewhere.
+    needed = np.random.default_rng(1).random(got[0].shape) < 0.3
+    part = thin_caster_map(scene, view, t, needed)
+    for k, empty in ((0, np.inf), (1, -1), (2, np.inf), (3, -1)):
+        assert np.array_equal(part[k][needed], got[k][needed])
+        assert (part[k][~needed] == empty).all()
     # Depths exactly; polygons where the depth is finite (ties of equal depth may differ only
     # in which polygon is named first when both have the same depth).
     for k in (0, 2):

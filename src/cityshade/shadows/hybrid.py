@@ -63,10 +63,11 @@ THIN_MARGIN_TEXELS = 1e-3
 
 
 @njit(cache=True, parallel=True)
-def _thin_boxes(vertices, triangles, present, m, width, height, box, zmin):
+def _thin_boxes(vertices, triangles, present, m, width, height, sat, box, zmin):
     """Project every present triangle into the light view; for the thin ones, the texels their
     bounding box touches, within :data:`THIN_MARGIN_TEXELS` (``box`` col0, col1, row0, row1;
-    col0 > col1 for the others and for boxes off the map), and their nearest depth."""
+    col0 > col1 for the others, for boxes off the map and for boxes without a texel that
+    summed-area table ``sat`` counts), and their nearest depth."""
     for i in prange(triangles.shape[0]):
         box[i, 0] = 1
         box[i, 1] = 0
@@ -99,6 +100,9 @@ def _thin_boxes(vertices, triangles, present, m, width, height, box, zmin):
         r1 = min(int(math.floor(max(v0, v1, v2) + THIN_MARGIN_TEXELS)), height - 1)
         if c0 > c1 or r0 > r1:
             continue
+        # No needed texel in the box: nothing to splat.
+        if sat[r1 + 1, c1 + 1] - sat[r0, c1 + 1] - sat[r1 + 1, c0] + sat[r0, c0] == 0:
+            continue
         box[i, 0], box[i, 1], box[i, 2], box[i, 3] = c0, c1, r0, r1
         zmin[i] = z
 
@@ -124,8 +128,8 @@ THIN_BANDS = 64
 
 
 @njit(cache=True, parallel=True)
-def _thin_splat(vertices, triangles, m, box, zmin, poly, band_start, band_items, d1, p1, d2,
-                p2):
+def _thin_splat(vertices, triangles, m, box, zmin, poly, band_start, band_items, needed, d1,
+                p1, d2, p2):
     """Splat the thin triangles over the texels whose squares they touch (a conservative
     rasterization: every edge's half-plane reaches the square, within the margin), each texel
     getting a lower bound of the triangle's depth over its square (the depth plane's minimum
@@ -162,6 +166,8 @@ def _thin_splat(vertices, triangles, m, box, zmin, poly, band_start, band_items,
             q = poly[i]
             for r in range(max(box[i, 2], b0), min(box[i, 3] + 1, b1)):
                 for c in range(box[i, 0], box[i, 1] + 1):
+                    if not needed[r, c]:
+                        continue
                     inside = True
                     for k in range(3):
                         # The inner-side edge function at the square's most inward corner.
@@ -192,6 +198,19 @@ def _thin_splat(vertices, triangles, m, box, zmin, poly, band_start, band_items,
                         d1[r, c], p1[r, c] = z32, q
                     elif z32 < d2[r, c]:
                         d2[r, c], p2[r, c] = z32, q
+
+
+@njit(cache=True)
+def _summed_area(mask):
+    """(H + 1, W + 1) int64 summed-area table of a bool mask."""
+    h, w = mask.shape
+    sat = np.zeros((h + 1, w + 1), np.int64)
+    for r in range(h):
+        run = 0
+        for c in range(w):
+            run += mask[r, c]
+            sat[r + 1, c + 1] = sat[r, c + 1] + run
+    return sat
 
 
 @njit(cache=True)
@@ -254,15 +273,21 @@ def _thin_edges(u0, v0, u1, v1, u2, v2, sgn, flat, edges):
         _set_edge(edges, 2, u2, v2, u0, v0, sgn)
 
 
-def thin_caster_map(scene, view, t_days: float) -> tuple[np.ndarray, ...]:
+def thin_caster_map(scene, view, t_days: float, needed=None) -> tuple[np.ndarray, ...]:
     """(depth, polygon, second depth, second polygon), each (H, W) (float32, int32), of the
     triangles present at ``t_days`` that are thinner than :data:`THIN_TEXELS` in the light
     view — the casters a point-sampled depth map may miss entirely (walls seen edge-on by a
     low sun). Per texel: the nearest polygon, and the nearest of all other polygons (+inf,
     -1 where none), so that a receiver whose own polygon is the nearest still sees another's
     thin caster under it (a 2-cm step between two roof polygons of the Munich CityGML 3.0
-    tile, sun 240°/10°, hid behind a sliver of the receiver's own roof)."""
+    tile, sun 240°/10°, hid behind a sliver of the receiver's own roof).
+
+    ``needed`` (H, W) bool: make it only there (other texels stay empty); triangles whose box
+    holds no needed texel are skipped whole (a summed-area table answers that per box)."""
     h, w = view.height_px, view.width_px
+    needed = (np.ones((h, w), np.bool_) if needed is None
+              else np.ascontiguousarray(needed, np.bool_))
+    sat = _summed_area(needed)
     thin = (np.full((h, w), np.inf, np.float32), np.full((h, w), -1, np.int32),
             np.full((h, w), np.inf, np.float32), np.full((h, w), -1, np.int32))
     present = ((np.asarray(scene.tri_t_begin_days) <= t_days)
@@ -271,17 +296,17 @@ def thin_caster_map(scene, view, t_days: float) -> tuple[np.ndarray, ...]:
     box = np.empty((n, 4), np.int64)
     zmin = np.empty(n)
     m = np.ascontiguousarray(view.clip_from_world.reshape(16), np.float64)
-    _thin_boxes(scene.vertices, scene.triangles, present, m, w, h, box, zmin)
+    _thin_boxes(scene.vertices, scene.triangles, present, m, w, h, sat, box, zmin)
     band_start, band_items = _band_lists(box, h, min(THIN_BANDS, h))
     _thin_splat(scene.vertices, scene.triangles, m, box, zmin,
-                np.asarray(scene.tri_polygon, np.int32), band_start, band_items, *thin)
+                np.asarray(scene.tri_polygon, np.int32), band_start, band_items, needed, *thin)
     return thin
 
 
 @njit(cache=True, parallel=True)
-def _bracket_kernel(m, width, height, depth, prim, texel_poly, thin_depth, thin_poly,
-                    thin_depth2, points, normals, sun, offset_rel, min_scale_m, own_poly, radius,
-                    vertices, triangles, state):
+def _bracket_kernel(m, width, height, depth, prim, texel_poly, points, normals, sun,
+                    offset_rel, min_scale_m, own_poly, radius, vertices, triangles, state,
+                    own_texel, z_limit):
     """Classify receivers from the depth-map texels around their true surface points, in one
     pass per receiver: its shadow-ray origin (:func:`cityshade.trace.shadow_rays_from_surface`'s
     offset, the arithmetic of :func:`cityshade.trace.bricks.shadow_origins`), its projection
@@ -293,7 +318,9 @@ def _bracket_kernel(m, width, height, depth, prim, texel_poly, thin_depth, thin_
     at that texel (``z_surface + dz_du Δu + dz_dv Δv - tol``) and belongs to another polygon.
     Surfaces in the receiver's own plane (its polygon, coplanar neighbours on a roof slope)
     therefore never count, while anything rising above the plane does. Surely lit: no texel
-    within ``radius`` occludes, in the depth map nor in the thin-caster map. Surely in shadow:
+    within ``radius`` occludes (and, decided by :func:`_thin_kernel` afterwards, no thin caster
+    covers the receiver's point: ``own_texel``, its texel's flat index or -1 off the map, and
+    ``z_limit``, its depth less the tolerance, are kept for that). Surely in shadow:
     every texel within ``radius`` occludes and all come from one polygon (no gap between
     casters, however narrow, can let light through). Else uncertain. No bias is involved: the
     decision is about the exact surface point, within the map's one-texel position accuracy.
@@ -315,6 +342,7 @@ def _bracket_kernel(m, width, height, depth, prim, texel_poly, thin_depth, thin_
         # A non-finite lookup cannot be decided from the map.
         if not (np.isfinite(u_s) and np.isfinite(v_s) and np.isfinite(z_s)):
             state[i] = UNCERTAIN
+            own_texel[i] = -1
             continue
         # Two tangents of the receiver's plane, 1 cm long (receiver_plane_gradient's helper
         # axis z, or x for a nearly vertical normal).
@@ -335,16 +363,7 @@ def _bracket_kernel(m, width, height, depth, prim, texel_poly, thin_depth, thin_
         cv = int(np.floor(v_s))
         occluding = 0
         clear = 0
-        # A thin caster occludes only if it covers the receiver's light-space point, in its
-        # texel; the map holds a lower bound of its depth over that texel's square. The
-        # nearest thin caster of another polygon: the nearest one, or the nearest of the
-        # others when that is the receiver's own.
-        thin_occluding = 0
-        if 0 <= cv < h and 0 <= cu < w:
-            thin_other = (thin_depth[cv, cu] if thin_poly[cv, cu] != own
-                          else thin_depth2[cv, cu])
-            if thin_other < z_s - tol:
-                thin_occluding = 1
+        own_texel[i] = -1
         first_poly = -2
         mixed = False
         decided = False
@@ -355,7 +374,7 @@ def _bracket_kernel(m, width, height, depth, prim, texel_poly, thin_depth, thin_
             for du in range(-radius, radius + 1):
                 # Occluded somewhere and clear (or a second caster) somewhere: uncertain,
                 # whatever the other texels hold.
-                if (occluding > 0 or thin_occluding > 0) and (clear > 0 or mixed):
+                if occluding > 0 and (clear > 0 or mixed):
                     decided = True
                     break
                 col = cu + du
@@ -374,17 +393,38 @@ def _bracket_kernel(m, width, height, depth, prim, texel_poly, thin_depth, thin_
                         mixed = True
                 else:
                     clear += 1
-        if occluding == 0 and thin_occluding == 0:
+        if occluding == 0:
+            # Lit unless a thin caster covers its light-space point: the second pass reads
+            # its own texel of the thin map, against its own depth.
             state[i] = SURE_LIT
+            if 0 <= cv < h and 0 <= cu < w:
+                own_texel[i] = cv * w + cu
+                z_limit[i] = z_s - tol
         elif clear == 0 and not mixed:
             state[i] = SURE_SHADOW
         else:
             state[i] = UNCERTAIN
-            # (The window loop may have stopped before it counted the occluding texels.)
             if _hits_a_window_caster(
                     depth, prim, texel_poly, vertices, triangles, cu, cv, radius, u_s, v_s,
                     z_s, dz_du, dz_dv, tol, own, px, py, pz, kx, ky, kz, sx, sy, sz):
                 state[i] = PROVEN_SHADOW
+
+
+@njit(cache=True, parallel=True)
+def _thin_kernel(thin_depth, thin_poly, thin_depth2, own_poly, own_texel, z_limit, state):
+    """Second pass: a lit receiver becomes uncertain when a thin caster of another polygon may
+    cover its light-space point (the map's lower bound of its depth over the receiver's texel
+    lies in front of the receiver). The nearest thin caster of another polygon: the nearest
+    one, or the nearest of the others when that is the receiver's own."""
+    w = thin_depth.shape[1]
+    for i in prange(own_texel.shape[0]):
+        k = own_texel[i]
+        if k < 0:
+            continue
+        r, c = k // w, k % w
+        other = thin_depth[r, c] if thin_poly[r, c] != own_poly[i] else thin_depth2[r, c]
+        if other < z_limit[i]:
+            state[i] = UNCERTAIN
 
 
 @njit(cache=True, inline="always")
@@ -439,31 +479,41 @@ _PLANE_TOL_SLOPE = 0.01
 
 
 def bracket_states(depth_map, scene, points_m, normals, own_poly, sun_direction,
-                   radius_texels: int, thin_map) -> np.ndarray:
-    """(N,) uint8 receiver states from one depth map (one kernel pass; its numpy twin is
-    ``tests/reference.py``'s ``reference_bracket_states``).
+                   radius_texels: int, t_days: float, thin_map=None) -> np.ndarray:
+    """(N,) uint8 receiver states from one depth map (its numpy twin is ``tests/reference.py``'s
+    ``reference_bracket_states``).
 
     ``own_poly`` (N,) are the receivers' polygon indices (-1 for the ground plane); the surface
-    point is the shadow-ray origin (pushed off its surface by the tracer's tiny offset);
-    ``thin_map`` is :func:`thin_caster_map` of the same view.
+    point is the shadow-ray origin (pushed off its surface by the tracer's tiny offset). The
+    thin-caster map (:func:`thin_caster_map` of the same view at ``t_days``) is made only on
+    the texels of the receivers the depth map calls lit, the only ones it can change; or pass
+    a whole one as ``thin_map``.
     """
     from cityshade.trace import SHADOW_OFFSET_MIN_SCALE_M, SHADOW_OFFSET_REL
 
     points = np.ascontiguousarray(points_m, np.float64).reshape(-1, 3)
     normals = np.ascontiguousarray(normals, np.float64).reshape(-1, 3)
+    own_poly = np.ascontiguousarray(own_poly, np.int32)
     view = depth_map.view
-    state = np.empty(points.shape[0], np.uint8)
-    if points.shape[0]:
-        _bracket_kernel(np.ascontiguousarray(view.clip_from_world.reshape(16), np.float64),
-                        float(view.width_px), float(view.height_px),
-                        np.asarray(depth_map.depth), np.asarray(depth_map.prim_id),
-                        texel_polygons(depth_map.prim_id, scene.tri_polygon), thin_map[0],
-                        thin_map[1], thin_map[2],
-                        points,
-                        normals, np.ascontiguousarray(sun_direction, np.float64).reshape(3),
-                        SHADOW_OFFSET_REL, SHADOW_OFFSET_MIN_SCALE_M,
-                        np.ascontiguousarray(own_poly, np.int32), int(radius_texels),
-                        scene.vertices, scene.triangles, state)
+    n = points.shape[0]
+    state = np.empty(n, np.uint8)
+    if not n:
+        return state
+    own_texel = np.empty(n, np.int64)
+    z_limit = np.empty(n)
+    _bracket_kernel(np.ascontiguousarray(view.clip_from_world.reshape(16), np.float64),
+                    float(view.width_px), float(view.height_px),
+                    np.asarray(depth_map.depth), np.asarray(depth_map.prim_id),
+                    texel_polygons(depth_map.prim_id, scene.tri_polygon), points, normals,
+                    np.ascontiguousarray(sun_direction, np.float64).reshape(3),
+                    SHADOW_OFFSET_REL, SHADOW_OFFSET_MIN_SCALE_M, own_poly, int(radius_texels),
+                    scene.vertices, scene.triangles, state, own_texel, z_limit)
+    if thin_map is None:
+        needed = np.zeros(view.height_px * view.width_px, np.bool_)
+        needed[own_texel[own_texel >= 0]] = True
+        thin_map = thin_caster_map(scene, view, t_days,
+                                   needed.reshape(view.height_px, view.width_px))
+    _thin_kernel(thin_map[0], thin_map[1], thin_map[2], own_poly, own_texel, z_limit, state)
     return state
 
 
@@ -577,10 +627,9 @@ class Hybrid:
                     points, normals = ctx.receivers(mask)
                     p = prim[mask]
                     own_poly = np.where(p >= 0, tri_polygon[np.maximum(p, 0)], -1)
-                    thin = thin_caster_map(ctx.scene, use.depth_map.view, ctx.t_days)
                     state[mask] = bracket_states(
                         use.depth_map, ctx.scene, points, normals, own_poly, ctx.sun.direction,
-                        settings.extra_texels, thin)
+                        settings.extra_texels, ctx.t_days)
             classifier_used = "bracket"
         else:
             b = self.base.look_up(ctx, prepared) if base_lit is None else base_lit
