@@ -43,7 +43,8 @@ import numpy as np
 from numba import njit, prange
 
 from cityshade.errors import UsageError
-from cityshade.shadows import TECHNIQUES, ShadowContext, ShadowResult, TechniqueDiagnostics
+from cityshade.shadows import (TECHNIQUES, ShadowContext, ShadowResult, TechniqueDiagnostics,
+                               row_starts)
 from cityshade.shadows.shadowmap import clip_point, plane_depth_gradient
 from cityshade.trace.kernels import hit_triangle, ray_shear
 
@@ -577,6 +578,45 @@ def boundary_todo(lit, valid, faces, refined) -> np.ndarray:
     return out
 
 
+@njit(cache=True, parallel=True)
+def _own_polygons(prim, mask, starts, tri_polygon, out):
+    """``out``: the polygon of each mask pixel's triangle (-1 for none), in row-major order."""
+    for r in prange(mask.shape[0]):
+        k = starts[r]
+        for c in range(mask.shape[1]):
+            if mask[r, c]:
+                t = prim[r, c]
+                out[k] = tri_polygon[t] if t >= 0 else -1
+                k += 1
+
+
+@njit(cache=True, parallel=True)
+def _apply_states(mask, starts, states, lit, refined, uncertain):
+    """The mask pixels' states (row-major order) into the images: lit = 1 where surely lit,
+    refined where proven shadow, uncertain where uncertain (each pixel's three set anew)."""
+    for r in prange(mask.shape[0]):
+        k = starts[r]
+        for c in range(mask.shape[1]):
+            if mask[r, c]:
+                s = states[k]
+                lit[r, c] = 1.0 if s == SURE_LIT else 0.0
+                refined[r, c] = s == PROVEN_SHADOW
+                uncertain[r, c] = s == UNCERTAIN
+                k += 1
+
+
+@njit(cache=True, parallel=True)
+def _apply_traced(mask, starts, sunlit, lit, refined):
+    """The traced mask pixels' answers (row-major order) into ``lit``; all marked refined."""
+    for r in prange(mask.shape[0]):
+        k = starts[r]
+        for c in range(mask.shape[1]):
+            if mask[r, c]:
+                lit[r, c] = 1.0 if sunlit[k] else 0.0
+                refined[r, c] = True
+                k += 1
+
+
 class Hybrid:
     """``hybrid:BASE``: BASE's map(s) classify, exact rays decide the uncertain pixels."""
 
@@ -615,29 +655,33 @@ class Hybrid:
             return ShadowResult(lit=lit, diagnostics=diagnostics,
                                 extra_channels={"refined": refined.astype(np.float32)})
         faces = ctx.faces
-        # 1. Classify facing pixels.
-        state = np.full(shape, SURE_SHADOW, np.uint8)
+        # 1. Classify facing pixels (facing pixels no map covers stay shadow, untraced):
+        # surely lit ones get lit = 1, proven shadow ones are refined, uncertain ones traced.
+        uncertain = np.zeros(shape, bool)
         if settings.classifier == "bracket" and maps:
             prim = np.asarray(surfaces.prim_id)
-            tri_polygon = np.asarray(ctx.scene.tri_polygon)
             for use in maps:
                 # A single map serves the facing pixels themselves: their gathered receivers.
                 mask = faces if use.pixels is faces else use.pixels & faces
-                if mask.any():
+                starts = row_starts(mask)
+                if starts[-1]:
                     points, normals = ctx.receivers(mask)
-                    p = prim[mask]
-                    own_poly = np.where(p >= 0, tri_polygon[np.maximum(p, 0)], -1)
-                    state[mask] = bracket_states(
+                    own_poly = np.empty(int(starts[-1]), np.int32)
+                    _own_polygons(prim, mask, starts, np.asarray(ctx.scene.tri_polygon),
+                                  own_poly)
+                    _apply_states(mask, starts, bracket_states(
                         use.depth_map, ctx.scene, points, normals, own_poly, ctx.sun.direction,
-                        settings.extra_texels, ctx.t_days)
+                        settings.extra_texels, ctx.t_days), lit, refined, uncertain)
             classifier_used = "bracket"
         else:
             b = self.base.look_up(ctx, prepared) if base_lit is None else base_lit
-            state[faces] = np.where(b[faces] >= settings.high, SURE_LIT,
-                                    np.where(b[faces] <= settings.low, SURE_SHADOW, UNCERTAIN))
+            bf = b[faces]
+            _apply_states(faces, row_starts(faces), np.where(
+                bf >= settings.high, SURE_LIT,
+                np.where(bf <= settings.low, SURE_SHADOW, UNCERTAIN)).astype(np.uint8),
+                lit, refined, uncertain)
             classifier_used = "vsm" if settings.classifier == "vsm" else "vsm (base exposes no map)"
         diagnostics.classifier = classifier_used
-        lit[faces & (state == SURE_LIT)] = 1.0
         t2 = time.perf_counter()
 
         engines: list[str] = []
@@ -648,16 +692,15 @@ class Hybrid:
                 return 0
             engine, sunlit = refine_engine(len(points))
             engines.append(engine)
-            lit[mask] = sunlit(ctx.scene, points, normals, ctx.sun.direction,
-                               ctx.t_days).astype(np.float32)
-            refined[mask] = True
+            _apply_traced(mask, row_starts(mask), sunlit(ctx.scene, points, normals,
+                                                         ctx.sun.direction, ctx.t_days),
+                          lit, refined)
             return len(points)
 
         # 2. Exact rays for the uncertain pixels (the proven ones are decided: shadow).
-        proven = faces & (state == PROVEN_SHADOW)
-        refined |= proven
-        classified_uncertain = faces & (state == UNCERTAIN)
-        rays = trace(classified_uncertain)
+        n_proven = int(np.count_nonzero(refined))
+        n_uncertain = int(np.count_nonzero(uncertain))
+        rays = trace(uncertain)
         # 3. Follow the boundaries: trace untraced pixels next to the other class until stable.
         passes = 0
         boundary_rays = 0
@@ -671,8 +714,8 @@ class Hybrid:
         t3 = time.perf_counter()
         n_facing = int(faces.sum())
         diagnostics.update(
-            uncertain_px=int(classified_uncertain.sum()) + int(proven.sum()),
-            proven_px=int(proven.sum()),
+            uncertain_px=n_uncertain + n_proven,
+            proven_px=n_proven,
             boundary_px=boundary_rays, boundary_passes=passes,
             traced_px=rays + boundary_rays,
             traced_share=(rays + boundary_rays) / max(int(valid.sum()), 1),
