@@ -43,8 +43,7 @@ import numpy as np
 from numba import njit, prange
 
 from cityshade.errors import UsageError
-from cityshade.shadows import (TECHNIQUES, ShadowContext, ShadowResult, TechniqueDiagnostics,
-                               row_starts)
+from cityshade.shadows import TECHNIQUES, ShadowContext, ShadowResult, TechniqueDiagnostics
 from cityshade.shadows.shadowmap import clip_point, plane_depth_gradient
 from cityshade.trace.kernels import hit_triangle, ray_shear
 
@@ -578,19 +577,6 @@ def boundary_todo(lit, valid, faces, refined) -> np.ndarray:
     return out
 
 
-@njit(cache=True, parallel=True)
-def _own_polygons(prim, mask, starts, tri_polygon, out):
-    """``out``: the polygon of each mask pixel's triangle (-1 for none), in row-major order."""
-    for r in prange(mask.shape[0]):
-        k = starts[r]
-        for c in range(mask.shape[1]):
-            if mask[r, c]:
-                t = prim[r, c]
-                out[k] = tri_polygon[t] if t >= 0 else -1
-                k += 1
-
-
-@njit(cache=True, parallel=True)
 def _apply_states(mask, starts, states, lit, refined, uncertain):
     """The mask pixels' states (row-major order) into the images: lit = 1 where surely lit,
     refined where proven shadow, uncertain where uncertain (each pixel's three set anew)."""
@@ -605,16 +591,13 @@ def _apply_states(mask, starts, states, lit, refined, uncertain):
                 k += 1
 
 
-@njit(cache=True, parallel=True)
-def _apply_traced(mask, starts, sunlit, lit, refined):
-    """The traced mask pixels' answers (row-major order) into ``lit``; all marked refined."""
-    for r in prange(mask.shape[0]):
-        k = starts[r]
-        for c in range(mask.shape[1]):
-            if mask[r, c]:
-                lit[r, c] = 1.0 if sunlit[k] else 0.0
-                refined[r, c] = True
-                k += 1
+def _apply_states(mask, states, lit, refined, uncertain) -> None:
+    """The mask pixels' states (row-major order) into the images: lit = 1 where surely lit,
+    refined where proven shadow, uncertain where uncertain (each pixel's three set anew)."""
+    at = np.flatnonzero(mask)
+    lit.reshape(-1)[at] = (states == SURE_LIT).astype(np.float32)
+    refined.reshape(-1)[at] = states == PROVEN_SHADOW
+    uncertain.reshape(-1)[at] = states == UNCERTAIN
 
 
 class Hybrid:
@@ -663,20 +646,20 @@ class Hybrid:
             for use in maps:
                 # A single map serves the facing pixels themselves: their gathered receivers.
                 mask = faces if use.pixels is faces else use.pixels & faces
-                starts = row_starts(mask)
-                if starts[-1]:
+                at = np.flatnonzero(mask)
+                if at.size:
                     points, normals = ctx.receivers(mask)
-                    own_poly = np.empty(int(starts[-1]), np.int32)
-                    _own_polygons(prim, mask, starts, np.asarray(ctx.scene.tri_polygon),
-                                  own_poly)
-                    _apply_states(mask, starts, bracket_states(
+                    p = prim.reshape(-1)[at]
+                    own_poly = np.where(p >= 0, np.asarray(ctx.scene.tri_polygon)[
+                        np.maximum(p, 0)], -1).astype(np.int32)
+                    _apply_states(mask, bracket_states(
                         use.depth_map, ctx.scene, points, normals, own_poly, ctx.sun.direction,
                         settings.extra_texels, ctx.t_days), lit, refined, uncertain)
             classifier_used = "bracket"
         else:
             b = self.base.look_up(ctx, prepared) if base_lit is None else base_lit
             bf = b[faces]
-            _apply_states(faces, row_starts(faces), np.where(
+            _apply_states(faces, np.where(
                 bf >= settings.high, SURE_LIT,
                 np.where(bf <= settings.low, SURE_SHADOW, UNCERTAIN)).astype(np.uint8),
                 lit, refined, uncertain)
@@ -692,9 +675,10 @@ class Hybrid:
                 return 0
             engine, sunlit = refine_engine(len(points))
             engines.append(engine)
-            _apply_traced(mask, row_starts(mask), sunlit(ctx.scene, points, normals,
-                                                         ctx.sun.direction, ctx.t_days),
-                          lit, refined)
+            at = np.flatnonzero(mask)
+            lit.reshape(-1)[at] = sunlit(ctx.scene, points, normals, ctx.sun.direction,
+                                         ctx.t_days)
+            refined.reshape(-1)[at] = True
             return len(points)
 
         # 2. Exact rays for the uncertain pixels (the proven ones are decided: shadow).
