@@ -142,6 +142,11 @@ def _thin_splat(vertices, triangles, m, box, zmin, poly, band_start, band_items,
     for b in prange(bands):
         b0 = b * h // bands
         b1 = (b + 1) * h // bands
+        # Each band clears its own rows: the fresh map's pages are first touched in parallel.
+        d1[b0:b1] = np.inf
+        p1[b0:b1] = -1
+        d2[b0:b1] = np.inf
+        p2[b0:b1] = -1
         edges = np.empty((3, 7))
         for j in range(band_start[b], band_start[b + 1]):
             i = band_items[j]
@@ -288,8 +293,8 @@ def thin_caster_map(scene, view, t_days: float, needed=None) -> tuple[np.ndarray
     needed = (np.ones((h, w), np.bool_) if needed is None
               else np.ascontiguousarray(needed, np.bool_))
     sat = _summed_area(needed)
-    thin = (np.full((h, w), np.inf, np.float32), np.full((h, w), -1, np.int32),
-            np.full((h, w), np.inf, np.float32), np.full((h, w), -1, np.int32))
+    thin = (np.empty((h, w), np.float32), np.empty((h, w), np.int32),
+            np.empty((h, w), np.float32), np.empty((h, w), np.int32))
     present = ((np.asarray(scene.tri_t_begin_days) <= t_days)
                & (t_days < np.asarray(scene.tri_t_end_days)))
     n = scene.triangles.shape[0]
