@@ -672,7 +672,8 @@ def reference_bracket_states(depth_map, scene, points, normals, own_poly, sun_di
     gu, gv = receiver_plane_gradient(view, origins, np.asarray(normals, np.float64), u, v, z)
     tol = 1e-6 + 0.01 * (np.abs(gu) + np.abs(gv))
     prim = np.asarray(depth_map.prim_id)
-    texel_poly = np.where(prim >= 0, np.asarray(scene.tri_polygon)[np.maximum(prim, 0)], -1)
+    ids = reference_classifier_polygons(scene)
+    texel_poly = np.where(prim >= 0, ids[np.maximum(prim, 0)], -1)
     depth = np.asarray(depth_map.depth)
     h, w = depth.shape
     ok = np.isfinite(u) & np.isfinite(v) & np.isfinite(z)
@@ -776,10 +777,12 @@ def _reference_square_meets_triangle(c, r, pu, pv, margin):
     return True
 
 
-def reference_thin_caster_map(scene, view, t_days, thin_texels=2.0, margin=1e-3):
+def reference_thin_caster_map(scene, view, t_days, thin_texels=2.0, margin=1e-3,
+                              sliver_ratio=8.0):
     """The hybrid's thin-caster map in plain numpy (twin of
     ``cityshade.shadows.hybrid.thin_caster_map``): every thin triangle (light-space height
-    below ``thin_texels``) on the texels whose squares it meets (separating axes, within
+    below ``thin_texels``, or a sliver: longest edge² at least ``sliver_ratio`` times twice its
+    area) on the texels whose squares it meets (separating axes, within
     ``margin`` texels), with a lower bound of its depth there (its depth plane, solved, at the
     square's lowest corner, less 1 % of the slopes and 1e-6, at least its nearest vertex;
     as float32); per texel each polygon's nearest, then the nearest polygon and
@@ -795,6 +798,7 @@ def reference_thin_caster_map(scene, view, t_days, thin_texels=2.0, margin=1e-3)
         r = (1.0 - clip[:, 1] / cw) * 0.5 * h
         z = clip[:, 2] / cw
     best = {}    # (row, col) -> {polygon: nearest depth}
+    ids = reference_classifier_polygons(scene)
     present = ((np.asarray(scene.tri_t_begin_days) <= t_days)
                & (t_days < np.asarray(scene.tri_t_end_days)))
     for i in np.nonzero(present)[0]:
@@ -804,7 +808,7 @@ def reference_thin_caster_map(scene, view, t_days, thin_texels=2.0, margin=1e-3)
         pu, pv, pz = u[q], r[q], z[q]
         area2 = abs((pu[1] - pu[0]) * (pv[2] - pv[0]) - (pu[2] - pu[0]) * (pv[1] - pv[0]))
         longest = max(np.hypot(pu[a] - pu[b], pv[a] - pv[b]) for a, b in ((0, 1), (0, 2), (1, 2)))
-        if longest > 0 and area2 / longest >= thin_texels:
+        if longest > 0 and area2 / longest >= thin_texels and longest ** 2 < sliver_ratio * area2:
             continue
         zmin = pz.min()
         if not zmin <= 1.0:
@@ -819,7 +823,7 @@ def reference_thin_caster_map(scene, view, t_days, thin_texels=2.0, margin=1e-3)
             plane = np.isfinite(za) and np.isfinite(zb)
         except np.linalg.LinAlgError:
             plane = False
-        poly = int(scene.tri_polygon[i])
+        poly = int(ids[i])
         for row in range(r0, r1 + 1):
             for col in range(c0, c1 + 1):
                 if not _reference_square_meets_triangle(col, row, pu, pv, margin):
@@ -1025,3 +1029,19 @@ def reference_boundary(lit, valid, faces, refined):
         nb_ok[rd, cd] = valid[rs, cs]
         out |= valid & nb_ok & (nb_bin != binary)
     return out & np.asarray(faces, bool) & ~np.asarray(refined, bool)
+
+
+def reference_classifier_polygons(scene, fold_rad=1e-3, min_area_m2=1e-4):
+    """Twin of ``cityshade.shadows.hybrid.classifier_polygons``: a polygon is folded when one
+    of its triangles of at least ``min_area_m2`` has a normal more than ``fold_rad`` off the
+    polygon's; triangles of folded polygons get ids of their own (polygon count + index)."""
+    v = np.asarray(scene.vertices, np.float64)
+    tri = np.asarray(scene.triangles)
+    poly = np.asarray(scene.tri_polygon)
+    n = np.cross(v[tri[:, 1]] - v[tri[:, 0]], v[tri[:, 2]] - v[tri[:, 0]])
+    length = np.linalg.norm(n, axis=1)
+    pn = np.asarray(scene.poly_normal, np.float64)[poly]
+    off = np.abs((n * pn).sum(axis=1)) < np.cos(fold_rad) * length
+    folded = np.zeros(len(scene.poly_normal), bool)
+    folded[poly[(length >= 2 * min_area_m2) & off]] = True
+    return np.where(folded[poly], len(scene.poly_normal) + np.arange(len(tri)), poly)

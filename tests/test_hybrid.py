@@ -163,7 +163,7 @@ def test_bracket_kernel_agrees_with_its_numpy_twin(scene, references):
     from reference import reference_bracket_states
 
     from cityshade.pipeline import camera_pass
-    from cityshade.shadows.hybrid import bracket_states, thin_caster_map
+    from cityshade.shadows.hybrid import bracket_states, classifier_polygons, thin_caster_map
 
     t, refs = references
     seen = set()
@@ -173,7 +173,7 @@ def test_bracket_kernel_agrees_with_its_numpy_twin(scene, references):
         use = get_technique("vsm").prepare(ctx).maps[0]
         points, normals = ctx.receivers(ctx.faces)
         prim = np.asarray(ctx.surfaces.prim_id)[ctx.faces]
-        own = np.where(prim >= 0, np.asarray(scene.tri_polygon)[np.maximum(prim, 0)], -1)
+        own = np.where(prim >= 0, classifier_polygons(scene)[np.maximum(prim, 0)], -1)
         thin = thin_caster_map(scene, use.depth_map.view, t)
         got = bracket_states(use.depth_map, scene, points, normals, own, sun.direction, 1, t,
                              thin)
@@ -221,14 +221,19 @@ REAL_FILES = {
     "tum": "munich-tum-campus-lod2/TUM Munich.gml",
     "munich3": "munich-lod2-citygml3-tile/"
                "Buildings_CityGML3.0_LOD2_with_PointClouds_external_one_laz_file.gml",
+    # road polygons draped over the terrain: folded, not planar
+    "plateau_roads": "plateau-ota-53392642-textured/udx/tran/533925_tran_6697_op.gml",
+    "opera_lyon": "ogc-citygml3-building-examples/building/"
+                  "Opera-Lyon_CityGML3.0_LOD2_with_xAL3_FullyStructured.gml",
 }
 
 
 @pytest.mark.parametrize("name", sorted(REAL_FILES))
 def test_hybrid_misses_no_pixel_on_real_lod2(name, tmp_path_factory):
-    """Real LoD2 models (the TUM campus, the Munich CityGML 3.0 tile), map and overview, the
-    suns where thin lit channels once slipped through (135°/30°, 240°/10°, 90°/3°): hybrid's
-    lit equals raytrace's on every pixel, and the map proved some shadow without a trace."""
+    """Real LoD2 models (the TUM campus, the Munich CityGML 3.0 tile, PLATEAU's folded road
+    polygons, the Lyon opera), two maps and an overview, the suns where thin lit channels
+    once slipped through (135°/30°, 240°/10°, 90°/3°): hybrid's lit equals raytrace's on
+    every pixel, and the map proved some shadow without a trace."""
     from conftest import shared_file
 
     from cityshade.build import build_file
@@ -238,7 +243,9 @@ def test_hybrid_misses_no_pixel_on_real_lod2(name, tmp_path_factory):
     out, _, _ = build_file(path, tmp_path_factory.mktemp(name) / f"{name}.cityshade")
     scene = load_scene(out)
     proven = 0
-    for cam in (map_view(scene, 1.0), overview(scene, 480, 300)):
+    lo, hi = scene.vertices.min(axis=0), scene.vertices.max(axis=0)
+    fine = float(max(hi[0] - lo[0], hi[1] - lo[1])) / 400     # the map of the sliver case
+    for cam in (map_view(scene, 1.0), map_view(scene, fine), overview(scene, 480, 300)):
         for az, el in ((135.0, 30.0), (240.0, 10.0), (90.0, 3.0)):
             sun = sun_from_angles(az, el, scene.crs, scene.origin_m)
             ref = render_frame(scene, cam, 20000.0, sun, "raytrace")
@@ -266,3 +273,27 @@ def test_boundary_kernel_agrees_with_its_numpy_twin():
         want = reference_boundary(lit, valid, faces, refined)
         assert np.array_equal(got, want)
     assert want.any() and not want.all()
+
+
+def test_classifier_polygons_agree_with_their_twin_and_split_folded_polygons(scene):
+    """The fold test against its numpy twin on the sample city (planar: the polygons kept)
+    and on PLATEAU's road tile (every road polygon folded: each triangle its own id)."""
+    from conftest import shared_file
+    from reference import reference_classifier_polygons
+
+    from cityshade.build import build_file
+    from cityshade.scenefile import load_scene
+    from cityshade.shadows.hybrid import classifier_polygons
+
+    got = classifier_polygons(scene)
+    assert np.array_equal(got, reference_classifier_polygons(scene))
+    assert (got < len(scene.poly_normal)).mean() > 0.99
+    import tempfile
+    from pathlib import Path
+
+    with tempfile.TemporaryDirectory() as tmp:
+        out, _, _ = build_file(shared_file(REAL_FILES["plateau_roads"]), Path(tmp) / "r.cityshade")
+        roads = load_scene(out)
+        got = classifier_polygons(roads)
+        assert np.array_equal(got, reference_classifier_polygons(roads))
+        assert (got >= len(roads.poly_normal)).mean() > 0.9
