@@ -335,9 +335,9 @@ def _gather_kernel(image, mask, starts, out):
                 k += 1
 
 
-def row_starts(mask) -> np.ndarray:
+def _row_starts(mask) -> np.ndarray:
     """(H + 1,) int64: where each row's pixels of an (H, W) bool mask start in its row-major
-    gather (the last entry is the count), for kernels that walk the rows in parallel."""
+    gather (the last entry is the count), for the gather's rows in parallel."""
     starts = np.zeros(mask.shape[0] + 1, np.int64)
     if mask.size:
         _row_counts(mask, starts)
@@ -350,7 +350,7 @@ def gather_pixels(image, mask) -> np.ndarray:
     row-major order (numpy's boolean gather of a 3-D image is several times slower)."""
     image = np.asarray(image)
     mask = np.ascontiguousarray(mask, bool)
-    starts = row_starts(mask)
+    starts = _row_starts(mask)
     out = np.empty((int(starts[-1]), image.shape[2]), np.float64)
     if out.shape[0]:
         _gather_kernel(image, mask, starts, out)

@@ -45,7 +45,7 @@ from numba import njit, prange
 from cityshade.errors import UsageError
 from cityshade.shadows import TECHNIQUES, ShadowContext, ShadowResult, TechniqueDiagnostics
 from cityshade.shadows.shadowmap import clip_point, plane_depth_gradient
-from cityshade.trace.kernels import hit_triangle, ray_shear
+from cityshade.trace.kernels import hit_triangle, on_axes, ray_shear
 
 #: Receiver states of the classifiers. PROVEN_SHADOW: uncertain by the map, but its shadow ray
 #: hits one of the casters the map holds around it (the tracer's own watertight test of those
@@ -142,7 +142,7 @@ def _thin_splat(vertices, triangles, m, box, zmin, poly, band_start, band_items,
     rasterization: every edge's half-plane reaches the square, within the margin), each texel
     getting a lower bound of the triangle's depth over its square (the depth plane's minimum
     there less a margin that covers float32 rounding, at least the nearest vertex's depth as
-    float32, as before), in id order (the lowest id wins ties); per
+    float32), in id order (the lowest id wins ties); per
     texel the nearest polygon (d1, p1) and the nearest of every other polygon (d2, p2).
     Parallel over row bands (:func:`_band_lists`: each band's triangles in id order)."""
     h, w = d1.shape
@@ -289,7 +289,7 @@ def _thin_edges(u0, v0, u1, v1, u2, v2, sgn, flat, edges):
 def thin_caster_map(scene, view, t_days: float, needed=None) -> tuple[np.ndarray, ...]:
     """(depth, polygon, second depth, second polygon), each (H, W) (float32, int32), of the
     triangles present at ``t_days`` that are thinner than :data:`THIN_TEXELS` in the light
-    view — the casters a point-sampled depth map may miss entirely (walls seen edge-on by a
+    view or slivers (:data:`SLIVER_RATIO`) — the casters a point-sampled depth map may miss entirely (walls seen edge-on by a
     low sun). Per texel: the nearest polygon, and the nearest of all other polygons (+inf,
     -1 where none), so that a receiver whose own polygon is the nearest still sees another's
     thin caster under it (a 2-cm step between two roof polygons of the Munich CityGML 3.0
@@ -353,9 +353,9 @@ def _bracket_kernel(m, width, height, depth, prim, texel_poly, points, normals, 
         pz = pz + (nz + sun[2]) * offset
         u_s, v_s, z_s = clip_point(m, px, py, pz, width, height)
         # A non-finite lookup cannot be decided from the map.
+        own_texel[i] = -1
         if not (np.isfinite(u_s) and np.isfinite(v_s) and np.isfinite(z_s)):
             state[i] = UNCERTAIN
-            own_texel[i] = -1
             continue
         # Two tangents of the receiver's plane, 1 cm long (receiver_plane_gradient's helper
         # axis z, or x for a nearly vertical normal).
@@ -376,7 +376,6 @@ def _bracket_kernel(m, width, height, depth, prim, texel_poly, points, normals, 
         cv = int(np.floor(v_s))
         occluding = 0
         clear = 0
-        own_texel[i] = -1
         first_poly = -2
         mixed = False
         decided = False
@@ -447,9 +446,7 @@ def _hits_a_window_caster(depth, prim, texel_poly, vertices, triangles, cu, cv, 
     the window (the bracket test's occluding texels; a run of texels of one triangle is tested
     once)."""
     h, w = depth.shape
-    okx = ox if kx == 0 else (oy if kx == 1 else oz)
-    oky = ox if ky == 0 else (oy if ky == 1 else oz)
-    okz = ox if kz == 0 else (oy if kz == 1 else oz)
+    okx, oky, okz = on_axes(ox, oy, oz, kx, ky, kz)
     last = -1
     for row in range(max(cv - radius, 0), min(cv + radius + 1, h)):
         for col in range(max(cu - radius, 0), min(cu + radius + 1, w)):
@@ -616,9 +613,8 @@ def refine_engine(n_rays: int):
 @njit(cache=True, parallel=True)
 def _boundary_kernel(lit, valid, faces, refined, out):
     """``out``: the untraced facing pixels with a valid 4-neighbour of the other class
-    (lit >= 0.5 or not); returns how many."""
+    (lit >= 0.5 or not)."""
     h, w = lit.shape
-    counts = np.zeros(h, np.int64)
     for r in prange(h):
         for c in range(w):
             out[r, c] = False
@@ -634,10 +630,7 @@ def _boundary_kernel(lit, valid, faces, refined, out):
                 edge = True
             elif c + 1 < w and valid[r, c + 1] and (lit[r, c + 1] >= 0.5) != b:
                 edge = True
-            if edge:
-                out[r, c] = True
-                counts[r] += 1
-    return counts.sum()
+            out[r, c] = edge
 
 
 def boundary_todo(lit, valid, faces, refined) -> np.ndarray:
@@ -650,24 +643,9 @@ def boundary_todo(lit, valid, faces, refined) -> np.ndarray:
     return out
 
 
-def _apply_states(mask, starts, states, lit, refined, uncertain):
-    """The mask pixels' states (row-major order) into the images: lit = 1 where surely lit,
-    refined where proven shadow, uncertain where uncertain (each pixel's three set anew)."""
-    for r in prange(mask.shape[0]):
-        k = starts[r]
-        for c in range(mask.shape[1]):
-            if mask[r, c]:
-                s = states[k]
-                lit[r, c] = 1.0 if s == SURE_LIT else 0.0
-                refined[r, c] = s == PROVEN_SHADOW
-                uncertain[r, c] = s == UNCERTAIN
-                k += 1
-
-
-def _apply_states(mask, states, lit, refined, uncertain) -> None:
-    """The mask pixels' states (row-major order) into the images: lit = 1 where surely lit,
-    refined where proven shadow, uncertain where uncertain (each pixel's three set anew)."""
-    at = np.flatnonzero(mask)
+def _apply_states(at, states, lit, refined, uncertain) -> None:
+    """The states of the pixels at flat indices ``at`` into the images: lit = 1 where surely
+    lit, refined where proven shadow, uncertain where uncertain (each pixel's three set anew)."""
     lit.reshape(-1)[at] = (states == SURE_LIT).astype(np.float32)
     refined.reshape(-1)[at] = states == PROVEN_SHADOW
     uncertain.reshape(-1)[at] = states == UNCERTAIN
@@ -725,14 +703,14 @@ class Hybrid:
                     p = prim.reshape(-1)[at]
                     own_poly = np.where(p >= 0, classifier_polygons(ctx.scene)[
                         np.maximum(p, 0)], -1).astype(np.int32)
-                    _apply_states(mask, bracket_states(
+                    _apply_states(at, bracket_states(
                         use.depth_map, ctx.scene, points, normals, own_poly, ctx.sun.direction,
                         settings.extra_texels, ctx.t_days), lit, refined, uncertain)
             classifier_used = "bracket"
         else:
             b = self.base.look_up(ctx, prepared) if base_lit is None else base_lit
             bf = b[faces]
-            _apply_states(faces, np.where(
+            _apply_states(np.flatnonzero(faces), np.where(
                 bf >= settings.high, SURE_LIT,
                 np.where(bf <= settings.low, SURE_SHADOW, UNCERTAIN)).astype(np.uint8),
                 lit, refined, uncertain)

@@ -144,12 +144,19 @@ def clip_to_box(box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax):
 
 
 @njit(cache=True, inline="always")
+def on_axes(ox, oy, oz, kx, ky, kz):
+    """A point's coordinates on the permuted axes ``kx, ky, kz`` of :func:`ray_shear`."""
+    return (ox if kx == 0 else (oy if kx == 1 else oz), ox if ky == 0 else (oy if ky == 1 else oz),
+            ox if kz == 0 else (oy if kz == 1 else oz))
+
+
+@njit(cache=True, inline="always")
 def _sheared(ox, oy, oz, dx, dy, dz):
     """The ray as :func:`hit_record` takes it: ``(okx, oky, okz, kx, ky, kz, sx, sy, sz)``,
     the origin on the permuted axes and the shear of :func:`ray_shear`."""
     kx, ky, kz, sx, sy, sz = ray_shear(dx, dy, dz)
-    return (ox if kx == 0 else (oy if kx == 1 else oz), ox if ky == 0 else (oy if ky == 1 else oz),
-            ox if kz == 0 else (oy if kz == 1 else oz), kx, ky, kz, sx, sy, sz)
+    okx, oky, okz = on_axes(ox, oy, oz, kx, ky, kz)
+    return okx, oky, okz, kx, ky, kz, sx, sy, sz
 
 
 @njit(cache=True, inline="always")
@@ -330,8 +337,8 @@ def any_hit_dir(tree, box_lo, box_hi, ox, oy, oz, terms, tmin, tmax, t_days, cac
     """:func:`any_hit` with the direction given by its :func:`direction_terms` (the same
     values, so the same answer)."""
     dx, dy, dz, inv_x, inv_y, inv_z, kx, ky, kz, sx, sy, sz = terms
-    ray = (ox if kx == 0 else (oy if kx == 1 else oz), ox if ky == 0 else (oy if ky == 1 else oz),
-           ox if kz == 0 else (oy if kz == 1 else oz), kx, ky, kz, sx, sy, sz)
+    okx, oky, okz = on_axes(ox, oy, oz, kx, ky, kz)
+    ray = (okx, oky, okz, kx, ky, kz, sx, sy, sz)
     if cache_k >= 0 and _hit_at(tree, cache_k, t_days, tmin, tmax, ray)[0]:
         return cache_k
     seg0, seg1 = clip_to_box(box_lo, box_hi, ox, oy, oz, dx, dy, dz, tmin, tmax)
