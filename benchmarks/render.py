@@ -354,7 +354,7 @@ def shadow_map_main(argv=None) -> dict:
                              "stages_ms": {k: 1000 * v for k, v in
                                            dm.stats["timings_s"].items()},
                              "casters_drawn": dm.stats["casters_drawn"],
-                             "texels_covered": dm.stats["texels_covered"]}
+                             "texels_covered": int((dm.prim_id >= 0).sum())}
     if not args.no_llvmpipe:
         import tempfile
 

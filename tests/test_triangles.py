@@ -145,3 +145,36 @@ def test_depth_pass_narrow_and_wide_boxes_agree_with_the_ray_cast_twin():
     drawn = set(dm.prim_id[dm.prim_id >= 0].tolist())
     assert any(width[i] < NARROW_COLS - 1 for i in drawn)
     assert any(width[i] > 3 * NARROW_COLS for i in drawn)
+
+
+def test_covered_span_is_exactly_the_columns_covers_admits():
+    # Edge functions through texel centres (exact zeros on both sides of shared edges) and
+    # random ones: the span found from both ends holds every admitted column and no other.
+    rng = np.random.default_rng(5)
+    xs = 2.0 * (np.arange(64) + 0.5) / 64 - 1.0
+    checked = 0
+    for _ in range(3000):
+        pts = rng.choice(xs, size=(3, 2)) if rng.random() < 0.5 else rng.uniform(-1.2, 1.2, (3, 2))
+        x0, y0 = pts[0]
+        x1, y1 = pts[1]
+        x2, y2 = pts[2]
+        coef = []
+        for (ax, ay), (bx, by) in (((x1, y1), (x2, y2)), ((x2, y2), (x0, y0)),
+                                   ((x0, y0), (x1, y1))):
+            coef.append((ay - by, bx - ax, ax * by - ay * bx))
+        det = x0 * coef[0][0] + y0 * coef[0][1] + coef[0][2]
+        if det == 0.0:
+            continue
+        s = 1.0 if det > 0 else -1.0
+        e = [(s * a, s * b, s * c, bool(s * a > 0 or (s * a == 0 and s * b < 0)))
+             for a, b, c in coef]
+        for y in rng.choice(xs, size=4):
+            rows = [b * y + c for _, b, c, _ in e]
+            args = (e[0][0], rows[0], e[0][3], e[1][0], rows[1], e[1][3], e[2][0], rows[2],
+                    e[2][3])
+            c_lo, c_hi = sorted(rng.integers(0, 64, 2))
+            want = [c for c in range(c_lo, c_hi + 1) if tc.covers(xs[c], *args)[0]]
+            first, last = tc.covered_span(xs, int(c_lo), int(c_hi), *args)
+            assert list(range(first, last + 1)) == want
+            checked += len(want) > 0
+    assert checked > 1000

@@ -160,10 +160,10 @@ def _raster_depth_tiles(start, items, ids, coef, vals, bbox, xs, ys, tile_px, ti
                     y = ys[r]
                     row0, row1, row2 = b0 * y + k0, b1 * y + k1, b2 * y + k2
                     ypart = qz * y + rz
-                    for c in range(cb0, cb1 + 1):
-                        x = xs[c]
-                        if tc.covers(x, a0, row0, own0, a1, row1, own1, a2, row2, own2)[0]:
-                            _keep(depth, prim, r, c, pz * x + ypart, tri)
+                    c0, c1 = tc.covered_span(xs, cb0, cb1, a0, row0, own0, a1, row1, own1, a2,
+                                             row2, own2)
+                    for c in range(c0, c1 + 1):
+                        _keep(depth, prim, r, c, pz * xs[c] + ypart, tri)
                 continue
             sw = tc.SPAN_WORD
             sa0, sb0, sk0 = vals[j, sw], vals[j, sw + 1], vals[j, sw + 2]
@@ -179,10 +179,10 @@ def _raster_depth_tiles(start, items, ids, coef, vals, bbox, xs, ys, tile_px, ti
                     continue
                 row0, row1, row2 = b0 * y + k0, b1 * y + k1, b2 * y + k2
                 ypart = qz * y + rz
-                for c in range(int(math.ceil(c_lo)), int(math.floor(c_hi)) + 1):
-                    x = xs[c]
-                    if tc.covers(x, a0, row0, own0, a1, row1, own1, a2, row2, own2)[0]:
-                        _keep(depth, prim, r, c, pz * x + ypart, tri)
+                c0, c1 = tc.covered_span(xs, int(math.ceil(c_lo)), int(math.floor(c_hi)), a0,
+                                         row0, own0, a1, row1, own1, a2, row2, own2)
+                for c in range(c0, c1 + 1):
+                    _keep(depth, prim, r, c, pz * xs[c] + ypart, tri)
 
 
 @njit(cache=True)
@@ -223,17 +223,6 @@ def _clear(depth, prim):
         for c in range(depth.shape[1]):
             depth[r, c] = np.inf
             prim[r, c] = -1
-
-
-@njit(cache=True, parallel=True)
-def _covered(prim):
-    """Texels with a caster (``prim >= 0``), rows in parallel."""
-    n = 0
-    for r in prange(prim.shape[0]):
-        for c in range(prim.shape[1]):
-            if prim[r, c] >= 0:
-                n += 1
-    return n
 
 
 def render_depth(scene, clip_from_world, width_px: int, height_px: int, t_days: float, *,
@@ -320,7 +309,6 @@ def render_depth(scene, clip_from_world, width_px: int, height_px: int, t_days: 
             stats["culling"] = "off"
         stats["time_refs_removed"], walk_s = batcher.draw_present(scene, t)
     timings = {"walk_s": walk_s, **batcher.timings, "total_s": time.perf_counter() - started}
-    stats.update({"casters_drawn": batcher.drawn, "texels": int(w * h),
-                  "texels_covered": int(_covered(prim)), "tile_px": tile,
+    stats.update({"casters_drawn": batcher.drawn, "texels": int(w * h), "tile_px": tile,
                   "threads": int(numba.get_num_threads()), "timings_s": timings})
     return depth, prim, stats

@@ -119,15 +119,19 @@ def _raster_tiles(start, items, ids, coef, vals, bbox, xs, ys, near, far, ortho,
             a0, b0, k0, a1, b1, k1, a2, b2, k2, own0, own1, own2 = tc.edges(coef, j)
             tri = ids[j]
             z0, dz1, dz2 = tc.vertex_words(vals, j, tc.Z_WORD)
+            cb0 = max(bbox[j, 0], tc0)
+            cb1 = min(bbox[j, 1], tc1)
             for r in range(max(bbox[j, 2], tr0), min(bbox[j, 3], tr1) + 1):
                 y = ys[r]
                 row0, row1, row2 = b0 * y + k0, b1 * y + k1, b2 * y + k2
-                for c in range(max(bbox[j, 0], tc0), min(bbox[j, 1], tc1) + 1):
+                c0, c1 = tc.covered_span(xs, cb0, cb1, a0, row0, own0, a1, row1, own1, a2, row2,
+                                         own2)
+                for c in range(c0, c1 + 1):
                     x = xs[c]
-                    inside, e0, e1, e2 = tc.covers(x, a0, row0, own0, a1, row1, own1, a2, row2,
-                                                   own2)
-                    if not inside:
-                        continue
+                    # The edge values exactly as covers() computed them.
+                    e0 = a0 * x + row0
+                    e1 = a1 * x + row1
+                    e2 = a2 * x + row2
                     # Exact barycentrics of the ray/plane point; its view depth.
                     ok, u, v = tc.barycentrics(e0, e1, e2)
                     if not ok:

@@ -111,8 +111,9 @@ class DepthMap:
         Triangle id of that caster, -1 where none.
     stats : dict
         ``casters_drawn``, ``frustum_refs_removed``, ``time_refs_removed``, ``texels``,
-        ``texels_covered``, ``culling``, ``threads`` and ``timings_s`` (walk, setup, bin,
-        raster, total).
+        ``culling``, ``threads`` and ``timings_s`` (walk, setup, bin, raster, total). The
+        covered texels are ``(prim_id >= 0).sum()``, counted by who needs them (a pass over the
+        map: 2-3 ms at 4096²).
     """
 
     view: LightView
