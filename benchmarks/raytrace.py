@@ -303,6 +303,27 @@ def core_probe(threads_list, runs):
     return out
 
 
+@numba.njit(parallel=True, cache=True)
+def _triad_kernel(a, b, c, s):
+    """STREAM's triad ``a = b + s c``: 24 bytes of memory traffic per item, no reuse."""
+    for i in numba.prange(a.shape[0]):
+        a[i] = b[i] + s * c[i]
+
+
+def memory_probe(threads_list, runs, mb: int = 256):
+    """GB/s of the triad over three ``mb`` MB arrays per thread count: what the machine's memory
+    gives 1 and 2 threads (a kernel that streams from memory cannot scale past its ratio)."""
+    n = (mb << 20) // 8
+    a, b, c = np.zeros(n), np.ones(n), np.ones(n)
+    _triad_kernel(a, b, c, 2.0)
+    out = {}
+    for th in threads_list:
+        numba.set_num_threads(th)
+        sec, _ = timed(lambda: _triad_kernel(a, b, c, 2.0), runs)
+        out[th] = 24.0 * n / sec / 1e9
+    return out
+
+
 def timed(fn, runs, clock=time.perf_counter):
     """Median seconds of ``runs`` calls of ``fn`` and its last result."""
     times = []

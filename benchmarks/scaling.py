@@ -15,9 +15,11 @@ interleaved within every repeat (median of ``--repeat``; one warm-up run first):
 * ``kdtree_build`` the kd-tree of the city's first ``--build-triangles`` triangles;
 * ``sun_hours`` ``batch.sun_hours`` (izb) of the map over ``--steps`` sun positions.
 
-Control: the trivial ``prange`` loop of ``benchmarks/raytrace.py`` before and after (about
+Controls, before and after: the trivial ``prange`` loop of ``benchmarks/raytrace.py`` (about
 2.0× when both cores were free during the run; a kernel's ratio means little when the probe's
-is low). Prints one JSON object and a table (ms at 1 and 2 threads, ratio).
+is low) and STREAM's triad over three 256 MB arrays (GB/s at 1 and 2 threads: the most a
+kernel streaming from memory can scale on the machine). Prints one JSON object and a table (ms
+at 1 and 2 threads, ratio).
 
 Usage: python benchmarks/scaling.py [--repeat 5] [--stages gbuffer,resolve,...]
        [--workdir bench_out] [--json out.json]
@@ -119,7 +121,7 @@ def main(argv=None) -> dict:
     import numba
 
     from cityshade.scenefile import load_scene
-    from raytrace import core_probe
+    from raytrace import core_probe, memory_probe
 
     if numba.config.NUMBA_NUM_THREADS < 2:
         raise SystemExit("needs 2 Numba threads (NUMBA_NUM_THREADS unset or >= 2)")
@@ -130,6 +132,7 @@ def main(argv=None) -> dict:
     scene = load_scene(ensure_scene(args.workdir, args.triangles, args.seed), verify=False)
     runners = stage_runners(scene, args)
     probe_before = core_probe([1, 2], 5)
+    memory_before = memory_probe([1, 2], 7)
     times: dict = {name: {1: [], 2: []} for name in names}
     for name in names:
         for n in (1, 2):                    # warm-up: kernels loaded, work arrays made
@@ -141,11 +144,13 @@ def main(argv=None) -> dict:
                 numba.set_num_threads(n)
                 times[name][n].append(runners[name]())
     probe_after = core_probe([1, 2], 5)
+    memory_after = memory_probe([1, 2], 7)
     numba.set_num_threads(2)
     report = {"benchmark": "two-core scaling", "commit": commit(), "machine": _machine(),
               "triangles": int(scene.triangles.shape[0]), "repeat": args.repeat,
               "probe_scaling": {"before": probe_before[1] / probe_before[2],
                                 "after": probe_after[1] / probe_after[2]},
+              "memory_triad_gb_s": {"before": memory_before, "after": memory_after},
               "stages": {}}
     for name in names:
         m1 = 1000 * statistics.median(times[name][1])
@@ -163,6 +168,9 @@ def main(argv=None) -> dict:
     ps = report["probe_scaling"]
     print(f"trivial prange probe, 2 threads / 1 thread: {ps['before']:.2f}x before, "
           f"{ps['after']:.2f}x after (about 2 when both cores were free)")
+    for when, mem in report["memory_triad_gb_s"].items():
+        print(f"memory probe (triad) {when}: {mem[1]:.1f} GB/s at 1 thread, {mem[2]:.1f} at 2 "
+              f"({mem[2] / mem[1]:.2f}x: the most a kernel streaming from memory can scale)")
     return report
 
 

@@ -357,6 +357,15 @@ def gather_pixels(image, mask) -> np.ndarray:
     return out
 
 
+def take_pixels(image, at) -> np.ndarray:
+    """(N, C) float64 rows of an (H, W, C) image at flat pixel indices ``at``: the gather of a
+    mask's few pixels (``gather_pixels(image, mask)`` equals it with ``at`` the mask's
+    ``np.flatnonzero``) without a pass over the whole frame."""
+    image = np.asarray(image)
+    flat = image.reshape(-1, image.shape[-1])
+    return np.asarray(flat[np.asarray(at, np.int64)], np.float64)
+
+
 def facing_mask(normal, valid, sun_direction) -> np.ndarray:
     """(H, W) bool: valid pixels whose oriented normal faces the sun (N·L > 0)."""
     faces = (normal @ np.asarray(sun_direction, dtype=np.float64)) > 0

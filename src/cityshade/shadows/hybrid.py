@@ -43,7 +43,8 @@ import numpy as np
 from numba import njit, prange
 
 from cityshade.errors import UsageError
-from cityshade.shadows import TECHNIQUES, ShadowContext, ShadowResult, TechniqueDiagnostics
+from cityshade.shadows import (TECHNIQUES, ShadowContext, ShadowResult, TechniqueDiagnostics,
+                               take_pixels)
 from cityshade.shadows.shadowmap import clip_point, plane_depth_gradient
 from cityshade.trace.kernels import hit_triangle, on_axes, ray_shear
 
@@ -610,45 +611,96 @@ def refine_engine(n_rays: int):
     return "raytrace", sunlit
 
 
+@njit(cache=True, inline="always")
+def _is_boundary(lit, valid, faces, refined, r, c):
+    """Pixel (r, c) is facing, valid, not yet refined and has a valid 4-neighbour of the other
+    class (lit >= 0.5 or not)."""
+    h, w = lit.shape
+    if not (valid[r, c] and faces[r, c]) or refined[r, c]:
+        return False
+    b = lit[r, c] >= 0.5
+    if r > 0 and valid[r - 1, c] and (lit[r - 1, c] >= 0.5) != b:
+        return True
+    if r + 1 < h and valid[r + 1, c] and (lit[r + 1, c] >= 0.5) != b:
+        return True
+    if c > 0 and valid[r, c - 1] and (lit[r, c - 1] >= 0.5) != b:
+        return True
+    return c + 1 < w and valid[r, c + 1] and (lit[r, c + 1] >= 0.5) != b
+
+
 @njit(cache=True, parallel=True)
 def _boundary_kernel(lit, valid, faces, refined, out):
-    """``out``: the untraced facing pixels with a valid 4-neighbour of the other class
-    (lit >= 0.5 or not)."""
+    """``out``: the untraced facing pixels with a valid 4-neighbour of the other class."""
+    for r in prange(lit.shape[0]):
+        for c in range(lit.shape[1]):
+            out[r, c] = _is_boundary(lit, valid, faces, refined, r, c)
+
+
+@njit(cache=True)
+def _boundary_near_kernel(lit, valid, faces, refined, traced):
+    """Flat indices (ascending) of the boundary pixels among the 4-neighbours of ``traced``."""
     h, w = lit.shape
-    for r in prange(h):
-        for c in range(w):
-            out[r, c] = False
-            if not (valid[r, c] and faces[r, c]) or refined[r, c]:
+    seen = np.zeros(h * w, np.uint8)
+    out = np.empty(4 * traced.shape[0], np.int64)
+    n = 0
+    for i in range(traced.shape[0]):
+        r0, c0 = traced[i] // w, traced[i] % w
+        for k in range(4):
+            r = r0 - 1 if k == 0 else (r0 + 1 if k == 1 else r0)
+            c = c0 - 1 if k == 2 else (c0 + 1 if k == 3 else c0)
+            if r < 0 or r >= h or c < 0 or c >= w:
                 continue
-            b = lit[r, c] >= 0.5
-            edge = False
-            if r > 0 and valid[r - 1, c] and (lit[r - 1, c] >= 0.5) != b:
-                edge = True
-            elif r + 1 < h and valid[r + 1, c] and (lit[r + 1, c] >= 0.5) != b:
-                edge = True
-            elif c > 0 and valid[r, c - 1] and (lit[r, c - 1] >= 0.5) != b:
-                edge = True
-            elif c + 1 < w and valid[r, c + 1] and (lit[r, c + 1] >= 0.5) != b:
-                edge = True
-            out[r, c] = edge
+            q = r * w + c
+            if seen[q]:
+                continue
+            seen[q] = 1
+            if _is_boundary(lit, valid, faces, refined, r, c):
+                out[n] = q
+                n += 1
+    return np.sort(out[:n])
 
 
-def boundary_todo(lit, valid, faces, refined) -> np.ndarray:
-    """(H, W) bool: the facing, valid, not yet refined pixels next to a valid pixel of the other
-    class (4-neighbourhood; its numpy twin is ``tests/reference.py``'s ``reference_boundary``)."""
+def boundary_todo(lit, valid, faces, refined, near=None) -> np.ndarray:
+    """(N,) int64 flat indices, ascending, of the facing, valid, not yet refined pixels next to
+    a valid pixel of the other class (4-neighbourhood; its numpy twin is
+    ``tests/reference.py``'s ``reference_boundary``).
+
+    ``near``: the flat indices traced since the last call, whose 4-neighbours are then the only
+    pixels looked at. The same answer as the whole frame: a pixel that was no boundary pixel
+    (and is not traced) can only become one when a neighbour's class changed, i.e. was traced.
+    """
+    args = (np.ascontiguousarray(lit), np.ascontiguousarray(valid, np.bool_),
+            np.ascontiguousarray(faces, np.bool_), np.ascontiguousarray(refined, np.bool_))
+    if near is not None:
+        return _boundary_near_kernel(*args, np.ascontiguousarray(near, np.int64))
     out = np.empty(lit.shape, np.bool_)
-    _boundary_kernel(np.ascontiguousarray(lit), np.ascontiguousarray(valid, np.bool_),
-                     np.ascontiguousarray(faces, np.bool_),
-                     np.ascontiguousarray(refined, np.bool_), out)
-    return out
+    _boundary_kernel(*args, out)
+    return np.flatnonzero(out)
+
+
+@njit(cache=True, parallel=True)
+def _receiver_polygons(prim, at, polygon_of, out):
+    """``out[i]``: the classifier polygon of the triangle pixel ``at[i]`` shows (-1 where none)."""
+    for i in prange(at.shape[0]):
+        t = prim[at[i]]
+        out[i] = polygon_of[t] if t >= 0 else -1
+
+
+@njit(cache=True, parallel=True)
+def _scatter_states(at, states, lit, refined, uncertain):
+    """The states of the pixels at flat indices ``at`` into the flat images: lit = 1 where surely
+    lit, refined where proven shadow, uncertain where uncertain (each pixel's three set anew)."""
+    for i in prange(at.shape[0]):
+        k = at[i]
+        lit[k] = np.float32(1.0) if states[i] == SURE_LIT else np.float32(0.0)
+        refined[k] = states[i] == PROVEN_SHADOW
+        uncertain[k] = states[i] == UNCERTAIN
 
 
 def _apply_states(at, states, lit, refined, uncertain) -> None:
-    """The states of the pixels at flat indices ``at`` into the images: lit = 1 where surely
-    lit, refined where proven shadow, uncertain where uncertain (each pixel's three set anew)."""
-    lit.reshape(-1)[at] = (states == SURE_LIT).astype(np.float32)
-    refined.reshape(-1)[at] = states == PROVEN_SHADOW
-    uncertain.reshape(-1)[at] = states == UNCERTAIN
+    """:func:`_scatter_states` on the (H, W) images."""
+    _scatter_states(np.ascontiguousarray(at, np.int64), np.ascontiguousarray(states, np.uint8),
+                    lit.reshape(-1), refined.reshape(-1), uncertain.reshape(-1))
 
 
 class Hybrid:
@@ -692,20 +744,26 @@ class Hybrid:
         # 1. Classify facing pixels (facing pixels no map covers stay shadow, untraced):
         # surely lit ones get lit = 1, proven shadow ones are refined, uncertain ones traced.
         uncertain = np.zeros(shape, bool)
+        # The uncertain pixels' receivers, when one map classified every facing pixel: taken
+        # from the gathered ones (no second pass over the frame).
+        todo_rays = None
         if settings.classifier == "bracket" and maps:
-            prim = np.asarray(surfaces.prim_id)
+            prim = np.ascontiguousarray(surfaces.prim_id, np.int32).reshape(-1)
             for use in maps:
                 # A single map serves the facing pixels themselves: their gathered receivers.
                 mask = faces if use.pixels is faces else use.pixels & faces
                 at = np.flatnonzero(mask)
                 if at.size:
                     points, normals = ctx.receivers(mask)
-                    p = prim.reshape(-1)[at]
-                    own_poly = np.where(p >= 0, classifier_polygons(ctx.scene)[
-                        np.maximum(p, 0)], -1).astype(np.int32)
-                    _apply_states(at, bracket_states(
+                    own_poly = np.empty(at.shape[0], np.int32)
+                    _receiver_polygons(prim, at, classifier_polygons(ctx.scene), own_poly)
+                    states = bracket_states(
                         use.depth_map, ctx.scene, points, normals, own_poly, ctx.sun.direction,
-                        settings.extra_texels, ctx.t_days), lit, refined, uncertain)
+                        settings.extra_texels, ctx.t_days)
+                    _apply_states(at, states, lit, refined, uncertain)
+                    if len(maps) == 1:
+                        sel = np.flatnonzero(states == UNCERTAIN)
+                        todo_rays = (at[sel], points[sel], normals[sel])
             classifier_used = "bracket"
         else:
             b = self.base.look_up(ctx, prepared) if base_lit is None else base_lit
@@ -720,13 +778,15 @@ class Hybrid:
 
         engines: list[str] = []
 
-        def trace(mask: np.ndarray) -> int:
-            points, normals = ctx.receivers(mask)
+        def trace(at: np.ndarray, points=None, normals=None) -> int:
+            # Pixels at flat indices ``at`` (ascending), their receivers taken when not given.
+            if points is None:
+                points = take_pixels(surfaces.position_m, at)
+                normals = take_pixels(ctx.normal, at)
             if not len(points):
                 return 0
             engine, sunlit = refine_engine(len(points))
             engines.append(engine)
-            at = np.flatnonzero(mask)
             lit.reshape(-1)[at] = sunlit(ctx.scene, points, normals, ctx.sun.direction,
                                          ctx.t_days)
             refined.reshape(-1)[at] = True
@@ -735,16 +795,19 @@ class Hybrid:
         # 2. Exact rays for the uncertain pixels (the proven ones are decided: shadow).
         n_proven = int(np.count_nonzero(refined))
         n_uncertain = int(np.count_nonzero(uncertain))
-        rays = trace(uncertain)
-        # 3. Follow the boundaries: trace untraced pixels next to the other class until stable.
+        rays = trace(*(todo_rays or (np.flatnonzero(uncertain),)))
+        # 3. Follow the boundaries: trace untraced pixels next to the other class until stable
+        # (after the first pass only the neighbours of the pixels just traced can change).
         passes = 0
         boundary_rays = 0
         valid = np.asarray(surfaces.valid, bool)
+        near = None
         while passes < settings.max_boundary_passes:
-            todo = boundary_todo(lit, valid, faces, refined)
-            if not todo.any():
+            todo = boundary_todo(lit, valid, faces, refined, near)
+            if not todo.size:
                 break
             boundary_rays += trace(todo)
+            near = todo
             passes += 1
         t3 = time.perf_counter()
         n_facing = int(faces.sum())
