@@ -165,6 +165,19 @@ def test_convex_hull_matches_brute_force():
         assert 0.5 * (x * np.roll(y, -1) - np.roll(x, -1) * y).sum() > 0
 
 
+def test_convex_hull_of_a_dense_parallelogram_is_its_corners():
+    """A dense pixel-like cloud (the octagon filter drops nearly all of it): a 300 × 300
+    integer grid sheared into a parallelogram (exact coordinates, so the points on its sides
+    are exactly collinear), whose hull is its four corners, counter-clockwise from the
+    lowest-leftmost, whatever the order of the points."""
+    i, j = np.meshgrid(np.arange(300.0), np.arange(300.0))
+    pts = np.c_[(i + j).ravel(), j.ravel()]
+    rng = np.random.default_rng(5)
+    hull = W.convex_hull_2d(pts[rng.permutation(len(pts))])
+    np.testing.assert_array_equal(hull, [[0.0, 0.0], [299.0, 0.0], [598.0, 299.0],
+                                         [299.0, 299.0]])
+
+
 def test_min_area_rectangle_of_a_rotated_rectangle():
     rng = np.random.default_rng(3)
     theta = math.radians(27.0)

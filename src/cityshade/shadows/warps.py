@@ -462,27 +462,62 @@ def _hull_2d(xy):
     return hull[:max(k - 1, 1)].copy()
 
 
+#: The 8 directions of the Akl–Toussaint octagon: the axes and the diagonals.
+_OCTAGON_DIRS = np.array([[1, 0], [1, 1], [0, 1], [-1, 1], [-1, 0], [-1, -1], [0, -1], [1, -1]],
+                         dtype=np.float64)
+
+
+@njit(cache=True)
+def _extreme_points(p, dirs):
+    """(8,) index of the first point of ``p`` (N, 2) farthest along each direction (numpy's
+    ``argmax(p @ dirs.T, axis=0)``, in one pass without the (N, 8) products)."""
+    best = np.full(dirs.shape[0], -np.inf)
+    at = np.zeros(dirs.shape[0], np.int64)
+    for i in range(p.shape[0]):
+        for k in range(dirs.shape[0]):
+            v = p[i, 0] * dirs[k, 0] + p[i, 1] * dirs[k, 1]
+            if v > best[k]:
+                best[k] = v
+                at[k] = i
+    return at
+
+
+@njit(cache=True)
+def _outside_polygon(p, poly):
+    """The points of ``p`` (N, 2) not strictly inside the convex polygon ``poly`` (counter-
+    clockwise), in their order."""
+    out = np.empty_like(p)
+    m = 0
+    k = poly.shape[0]
+    for i in range(p.shape[0]):
+        inside = True
+        for j in range(k):
+            a0, a1 = poly[j, 0], poly[j, 1]
+            b0, b1 = poly[(j + 1) % k, 0], poly[(j + 1) % k, 1]
+            if not (b0 - a0) * (p[i, 1] - a1) - (b1 - a1) * (p[i, 0] - a0) > 0.0:
+                inside = False
+                break
+        if not inside:
+            out[m] = p[i]
+            m += 1
+    return out[:m].copy()
+
+
 def convex_hull_2d(points_xy) -> np.ndarray:
-    """(H, 2) convex hull of 2-D points, counter-clockwise.
+    """(H, 2) convex hull of finite 2-D points, counter-clockwise.
 
     Points strictly inside the octagon of the 8 extreme points in the axis and diagonal
     directions cannot be on the hull (Akl–Toussaint); they are dropped before the sort, which
-    leaves few of a dense pixel cloud.
+    leaves few of a dense pixel cloud (893 of the 403,579 receivers of the 1M city's overview).
+    Two passes over the points, no per-point temporaries: the fit runs on every frame.
     """
-    p = np.asarray(points_xy, dtype=np.float64).reshape(-1, 2)
+    p = np.ascontiguousarray(points_xy, dtype=np.float64).reshape(-1, 2)
     if len(p) > 64:
-        dirs = np.array([[1, 0], [1, 1], [0, 1], [-1, 1], [-1, 0], [-1, -1], [0, -1], [1, -1]],
-                        dtype=np.float64)
-        ext = p[np.argmax(p @ dirs.T, axis=0)]
+        ext = p[_extreme_points(p, _OCTAGON_DIRS)]
         _, idx = np.unique(np.round(ext, 15), axis=0, return_index=True)
         poly = ext[np.sort(idx)]
         if len(poly) >= 3:
-            inside = np.ones(len(p), bool)
-            for i in range(len(poly)):
-                a, b = poly[i], poly[(i + 1) % len(poly)]
-                cross = (b[0] - a[0]) * (p[:, 1] - a[1]) - (b[1] - a[1]) * (p[:, 0] - a[0])
-                inside &= cross > 0.0
-            p = p[~inside]
+            p = _outside_polygon(p, np.ascontiguousarray(poly))
     p = np.unique(p, axis=0)          # sorted by (x, y), duplicates removed
     if len(p) < 3:
         return p
