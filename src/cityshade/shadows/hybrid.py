@@ -464,23 +464,30 @@ def _hits_a_window_caster(depth, prim, texel_poly, vertices, triangles, cu, cv, 
                           v_s, z_s, dz_du, dz_dv, tol, own, ox, oy, oz, kx, ky, kz, sx, sy, sz):
     """Whether the shadow ray from ``o`` hits (t >= 0) the triangle of an occluding texel of
     the window (the bracket test's occluding texels; a run of texels of one triangle is tested
-    once)."""
+    once). The receiver's own texel first: its caster is the likeliest hit."""
     h, w = depth.shape
     okx, oky, okz = on_axes(ox, oy, oz, kx, ky, kz)
     last = -1
-    for row in range(max(cv - radius, 0), min(cv + radius + 1, h)):
-        for col in range(max(cu - radius, 0), min(cu + radius + 1, w)):
-            t = prim[row, col]
-            if t < 0 or t == last or texel_poly[row, col] == own:
+    for k in range(-1, (2 * radius + 1) ** 2):
+        if k < 0:
+            row, col = cv, cu
+        else:
+            row, col = cv - radius + k // (2 * radius + 1), cu - radius + k % (2 * radius + 1)
+            if row == cv and col == cu:
                 continue
-            plane = (z_s + dz_du * (col + 0.5 - u_s) + dz_dv * (row + 0.5 - v_s) - tol)
-            if not depth[row, col] < plane:
-                continue
-            last = t
-            hit, t_hit, _, _ = hit_triangle(vertices, triangles, t, okx, oky, okz, kx, ky, kz,
-                                            sx, sy, sz)
-            if hit and t_hit >= 0.0:
-                return True
+        if row < 0 or row >= h or col < 0 or col >= w:
+            continue
+        t = prim[row, col]
+        if t < 0 or t == last or texel_poly[row, col] == own:
+            continue
+        plane = (z_s + dz_du * (col + 0.5 - u_s) + dz_dv * (row + 0.5 - v_s) - tol)
+        if not depth[row, col] < plane:
+            continue
+        last = t
+        hit, t_hit, _, _ = hit_triangle(vertices, triangles, t, okx, oky, okz, kx, ky, kz,
+                                        sx, sy, sz)
+        if hit and t_hit >= 0.0:
+            return True
     return False
 
 
