@@ -221,17 +221,18 @@ NEEDED_BLOCK_TEXELS = 8
 
 
 @njit(cache=True, parallel=True)
-def _needed_blocks(needed, out):
-    """``out`` (ceil(H / B), ceil(W / B)) bool: whether block (r // B, c // B) of
+def _needed_blocks(needed):
+    """(ceil(H / B), ceil(W / B)) bool: whether block (r // B, c // B) of
     :data:`NEEDED_BLOCK_TEXELS` holds a needed texel."""
     h, w = needed.shape
     side = NEEDED_BLOCK_TEXELS
+    out = np.zeros(((h + side - 1) // side, (w + side - 1) // side), np.bool_)
     for br in prange(out.shape[0]):
-        out[br, :] = False
         for r in range(br * side, min((br + 1) * side, h)):
             for c in range(w):
                 if needed[r, c]:
                     out[br, c // side] = True
+    return out
 
 
 @njit(cache=True, inline="always")
@@ -318,9 +319,7 @@ def thin_caster_map(scene, view, t_days: float, needed=None) -> tuple[np.ndarray
     h, w = view.height_px, view.width_px
     needed = (np.ones((h, w), np.bool_) if needed is None
               else np.ascontiguousarray(needed, np.bool_))
-    side = NEEDED_BLOCK_TEXELS
-    blocks = np.empty(((h + side - 1) // side, (w + side - 1) // side), np.bool_)
-    _needed_blocks(needed, blocks)
+    blocks = _needed_blocks(needed)
     thin = (np.empty((h, w), np.float32), np.empty((h, w), np.int32),
             np.empty((h, w), np.float32), np.empty((h, w), np.int32))
     present = ((np.asarray(scene.tri_t_begin_days) <= t_days)
@@ -460,6 +459,23 @@ def _thin_kernel(thin_depth, thin_poly, thin_depth2, own_poly, own_texel, z_limi
 
 
 @njit(cache=True, inline="always")
+def _occluder_hit(depth, prim, texel_poly, vertices, triangles, row, col, u_s, v_s, z_s,
+                  dz_du, dz_dv, tol, own, last, okx, oky, okz, kx, ky, kz, sx, sy, sz):
+    """(triangle tested or ``last``, hit): the watertight test of texel (row, col)'s triangle
+    when it occludes (another polygon's caster in front of the receiver's plane) and is not
+    ``last``, the one tested just before."""
+    t = prim[row, col]
+    if t < 0 or t == last or texel_poly[row, col] == own:
+        return last, False
+    plane = (z_s + dz_du * (col + 0.5 - u_s) + dz_dv * (row + 0.5 - v_s) - tol)
+    if not depth[row, col] < plane:
+        return last, False
+    hit, t_hit, _, _ = hit_triangle(vertices, triangles, t, okx, oky, okz, kx, ky, kz,
+                                    sx, sy, sz)
+    return t, hit and t_hit >= 0.0
+
+
+@njit(cache=True, inline="always")
 def _hits_a_window_caster(depth, prim, texel_poly, vertices, triangles, cu, cv, radius, u_s,
                           v_s, z_s, dz_du, dz_dv, tol, own, ox, oy, oz, kx, ky, kz, sx, sy, sz):
     """Whether the shadow ray from ``o`` hits (t >= 0) the triangle of an occluding texel of
@@ -468,26 +484,21 @@ def _hits_a_window_caster(depth, prim, texel_poly, vertices, triangles, cu, cv, 
     h, w = depth.shape
     okx, oky, okz = on_axes(ox, oy, oz, kx, ky, kz)
     last = -1
-    for k in range(-1, (2 * radius + 1) ** 2):
-        if k < 0:
-            row, col = cv, cu
-        else:
-            row, col = cv - radius + k // (2 * radius + 1), cu - radius + k % (2 * radius + 1)
+    if 0 <= cv < h and 0 <= cu < w:
+        last, hit = _occluder_hit(depth, prim, texel_poly, vertices, triangles, cv, cu, u_s, v_s,
+                                  z_s, dz_du, dz_dv, tol, own, last, okx, oky, okz, kx, ky, kz,
+                                  sx, sy, sz)
+        if hit:
+            return True
+    for row in range(max(cv - radius, 0), min(cv + radius + 1, h)):
+        for col in range(max(cu - radius, 0), min(cu + radius + 1, w)):
             if row == cv and col == cu:
                 continue
-        if row < 0 or row >= h or col < 0 or col >= w:
-            continue
-        t = prim[row, col]
-        if t < 0 or t == last or texel_poly[row, col] == own:
-            continue
-        plane = (z_s + dz_du * (col + 0.5 - u_s) + dz_dv * (row + 0.5 - v_s) - tol)
-        if not depth[row, col] < plane:
-            continue
-        last = t
-        hit, t_hit, _, _ = hit_triangle(vertices, triangles, t, okx, oky, okz, kx, ky, kz,
-                                        sx, sy, sz)
-        if hit and t_hit >= 0.0:
-            return True
+            last, hit = _occluder_hit(depth, prim, texel_poly, vertices, triangles, row, col,
+                                      u_s, v_s, z_s, dz_du, dz_dv, tol, own, last, okx, oky,
+                                      okz, kx, ky, kz, sx, sy, sz)
+            if hit:
+                return True
     return False
 
 

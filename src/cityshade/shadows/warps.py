@@ -517,7 +517,7 @@ def convex_hull_2d(points_xy) -> np.ndarray:
         _, idx = np.unique(np.round(ext, 15), axis=0, return_index=True)
         poly = ext[np.sort(idx)]
         if len(poly) >= 3:
-            p = _outside_polygon(p, np.ascontiguousarray(poly))
+            p = _outside_polygon(p, poly)
     p = np.unique(p, axis=0)          # sorted by (x, y), duplicates removed
     if len(p) < 3:
         return p
