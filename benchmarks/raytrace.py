@@ -50,7 +50,7 @@ from cityshade.accel.kdtree_layout import (LEAF_CODE, TIME_AXIS, leaf_first, nod
 from cityshade import lightspace
 from cityshade.trace import intersect, occluded, shadow_rays_from_surface, tile_order
 from cityshade.trace.kernels import (FAR_ONLY, NEAR_ONLY, STACK_SIZE, clip_to_box,
-                                     direction_terms, hit_record, split_side)
+                                     hit_record, ray_shear, split_side)
 
 DAY_2000 = 10957.0   # 2000-01-01 in days since 1970-01-01
 
@@ -195,9 +195,12 @@ def anyhit_counts(tree, box_lo, box_hi, origins, direction, t_days, brick_size, 
     to ``out`` the counts named by ``COUNTER_NAMES`` (caster-cache hits, inner nodes entered,
     leaves, empty leaves, records looked at, records present at ``t_days`` and tested, rays
     blocked found by traversal). The same decisions, order and cache (reset per brick) as
-    ``trace.bricks.occluded_bricks``; a measuring twin, not a fast path."""
-    dx, dy, dz, inv_x, inv_y, inv_z, kx, ky, kz, sx, sy, sz = direction_terms(
-        direction[0], direction[1], direction[2])
+    ``trace.kernels.trace_range``; a measuring twin, not a fast path."""
+    dx, dy, dz = direction[0], direction[1], direction[2]
+    kx, ky, kz, sx, sy, sz = ray_shear(dx, dy, dz)
+    inv_x = 1.0 / dx if dx != 0.0 else 0.0
+    inv_y = 1.0 / dy if dy != 0.0 else 0.0
+    inv_z = 1.0 / dz if dz != 0.0 else 0.0
     st_node = np.empty(STACK_SIZE, np.int64)
     st_t0 = np.empty(STACK_SIZE)
     st_t1 = np.empty(STACK_SIZE)

@@ -377,12 +377,14 @@ def test_tum_campus_agrees_with_brute_force_across_dates(tum_campus):
     assert n_hits > 50
 
 
-def test_brick_interleave_is_a_permutation():
-    from cityshade.trace.bricks import STRIPES, _brick_of
-    for n_bricks in (1, 5, STRIPES, STRIPES + 1, 1000):
-        n_iter = STRIPES * ((n_bricks + STRIPES - 1) // STRIPES)
-        bricks = [b for b in (_brick_of(j, n_bricks) for j in range(n_iter)) if b >= 0]
-        assert sorted(bricks) == list(range(n_bricks))
+def test_stripe_interleave_is_a_permutation():
+    from cityshade.trace.bricks import stripe_interleave
+    for stripes in (1, 8, 64):
+        for n_items in (1, 5, stripes, stripes + 1, 1000):
+            n_iter = stripes * ((n_items + stripes - 1) // stripes)
+            items = [b for b in (stripe_interleave(j, n_items, stripes) for j in range(n_iter))
+                     if b >= 0]
+            assert sorted(items) == list(range(n_items))
 
 
 def test_shadow_ray_leaves_the_wall_at_the_foot_of_a_sun_facing_wall():

@@ -141,8 +141,7 @@ def occluded(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     lo, hi = _padded_box(kd)
     if (directions == directions[0]).all():
         directions = directions[:1]   # one direction for all (sun rays): its terms once
-    with bricks.dynamic_bricks():
-        occluded_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, out)
+    occluded_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, out)
     return out
 
 
@@ -177,9 +176,8 @@ def intersect(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     if n == 0 or kd.tri_records.shape[0] == 0:
         return dist, tri, u, v
     lo, hi = _padded_box(kd)
-    with bricks.dynamic_bricks():
-        intersect_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, dist,
-                         tri, u, v)
+    intersect_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, dist, tri,
+                     u, v)
     return dist, tri, u, v
 
 

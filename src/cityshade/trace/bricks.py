@@ -1,11 +1,13 @@
 """Parallel tracing over bricks of rays, with a shadow-caster cache per brick.
 
 A brick is ``brick_size`` consecutive rays (the thesis slides: "each thread handling a
-brick"). Numba ``prange`` hands whole bricks to threads; each brick owns its traversal stacks
-and its shadow-caster cache (the record index of the last occluder it found, tested first for
-the next ray), so no state is shared between threads and results do not depend on the thread
-count. Rays are most coherent when consecutive rays are neighbours in the image or map:
-:func:`tile_order` gives that order for a raster.
+brick"). The tracing kernels are serial ``nogil`` kernels over a range of bricks, run on
+:func:`cityshade.threadpool.run_chunks` (``BRICKS_PER_CHUNK`` bricks at a time to whichever
+thread is free); each brick owns its traversal scratch and its shadow-caster cache (the record
+index of the last occluder it found, tested first for the next ray), so no state is shared
+between threads and results do not depend on the thread count. Rays are most coherent when
+consecutive rays are neighbours in the image or map: :func:`tile_order` gives that order for a
+raster, and a thread takes neighbouring bricks one after the other.
 """
 from __future__ import annotations
 
@@ -15,22 +17,21 @@ import contextlib
 import numba
 from numba import njit, prange
 
-from cityshade.accel.kdtree_layout import record_id
-from cityshade.trace.kernels import any_hit_dir, closest_hit, direction_terms, new_stack
+from cityshade.threadpool import run_chunks
+from cityshade.trace.kernels import trace_range
 
-#: Rays per brick: large enough to amortise the per-brick stack allocation and to keep the
+#: Rays per brick: large enough to amortise the per-brick scratch allocation and to keep the
 #: caster cache warm (a 16x16 pixel tile in tile order), small enough for two threads to
 #: balance on uneven scenes (thousands of bricks per frame). Not tuned further.
 DEFAULT_BRICK_SIZE = 256
 
-#: Stripes of the brick interleave: ``prange`` hands each thread a contiguous range of
-#: iterations, and costs vary smoothly over an image (sky at the top, near city at the bottom),
-#: so iteration j is mapped to the brick ``(j % STRIPES) * per_stripe + j // STRIPES``: every
-#: thread then takes part of every stripe of the image, and the two cores finish together.
-STRIPES = 64
-#: Bricks a thread takes at a time from the shared queue (dynamic scheduling): few enough that
-#: a thread slowed by other load on the machine does not hold back the end of the call.
-BRICKS_PER_CHUNK = 4
+#: Bricks a thread takes at a time (dynamic scheduling): a chunk of 8 bricks of 256 sun rays
+#: is about 0.2 ms of work, against about 2 µs to hand it out, and few enough that a thread
+#: slowed by other load on the machine does not hold back the end of the call.
+BRICKS_PER_CHUNK = 8
+#: Iterations a thread takes at a time from the prange kernels of other stages
+#: (:func:`dynamic_bricks`).
+PRANGE_CHUNK = 4
 
 
 @njit(cache=True, inline="always")
@@ -40,27 +41,6 @@ def stripe_interleave(j, n_items, stripes):
     per_stripe = (n_items + stripes - 1) // stripes
     b = (j % stripes) * per_stripe + j // stripes
     return b if b < n_items else -1
-
-
-@njit(cache=True, inline="always")
-def _brick_of(j, n_bricks):
-    """Brick traced at prange iteration j (a permutation of 0..n_bricks-1; -1 = padding)."""
-    return stripe_interleave(j, n_bricks, STRIPES)
-
-
-@njit(cache=True, inline="always")
-def _brick_rays(j, n, brick_size):
-    """Rays ``[i0, i1)`` of the brick traced at prange iteration j (empty for padding)."""
-    b = _brick_of(j, (n + brick_size - 1) // brick_size)
-    if b < 0:
-        return 0, 0
-    return b * brick_size, min(n, (b + 1) * brick_size)
-
-
-@njit(cache=True, inline="always")
-def _n_iter(n, brick_size):
-    """prange iterations over n rays: the bricks padded to a multiple of STRIPES."""
-    return STRIPES * (((n + brick_size - 1) // brick_size + STRIPES - 1) // STRIPES)
 
 
 #: Items (rays, points) below which a call of a short parallel kernel runs on one thread: with
@@ -86,17 +66,22 @@ def one_thread_when_small(items: int, limit: int = SMALL_CALL_ITEMS):
 
 @contextlib.contextmanager
 def dynamic_bricks():
-    """Hand prange iterations (bricks) out ``BRICKS_PER_CHUNK`` at a time to whichever thread
-    is free (dynamic scheduling): shadow and camera work is uneven across an image, and on a
-    shared machine one core may be slowed by other load."""
-    old = numba.set_parallel_chunksize(BRICKS_PER_CHUNK)
+    """Hand prange iterations (tiles, rows) out ``PRANGE_CHUNK`` at a time to whichever thread
+    is free (dynamic scheduling): camera work is uneven across an image, and on a shared
+    machine one core may be slowed by other load."""
+    old = numba.set_parallel_chunksize(PRANGE_CHUNK)
     try:
         yield
     finally:
         numba.set_parallel_chunksize(old)
 
 
-@njit(cache=True, parallel=True)
+_NO_BOOL = np.zeros(0, np.bool_)
+_NO_F64 = np.zeros(0)
+_NO_I32 = np.zeros(0, np.int32)
+_NO_F32 = np.zeros(0, np.float32)
+
+
 def occluded_bricks(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_days, brick_size,
                     out):
     """``out[i] = True`` when ray i hits a triangle valid at ``t_days`` within its segment.
@@ -105,43 +90,19 @@ def occluded_bricks(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_day
     ``directions``: (N, 3) float64, or (1, 3) for rays that all share one direction (sun rays:
     its shear and inverses are then computed once); ``tmin``: scalar; ``tmax``: (N,) float64.
     """
-    n = origins.shape[0]
-    shared = directions.shape[0] == 1
-    terms0 = direction_terms(directions[0, 0], directions[0, 1], directions[0, 2])
-    for j in prange(_n_iter(n, brick_size)):
-        i0, i1 = _brick_rays(j, n, brick_size)
-        if i0 >= i1:
-            continue
-        stack = new_stack()
-        cache_k = -1
-        for i in range(i0, i1):
-            terms = terms0 if shared else direction_terms(directions[i, 0], directions[i, 1],
-                                                          directions[i, 2])
-            k = any_hit_dir(tree, box_lo, box_hi, origins[i, 0], origins[i, 1],
-                            origins[i, 2], terms, tmin, tmax[i], t_days, cache_k, stack)
-            out[i] = k >= 0
-            if k >= 0:
-                cache_k = k
+    n_bricks = (origins.shape[0] + brick_size - 1) // brick_size
+    run_chunks(trace_range, n_bricks, BRICKS_PER_CHUNK, tree, box_lo, box_hi, origins,
+               directions, tmin, tmax, t_days, brick_size, False, out, _NO_F64, _NO_I32,
+               _NO_F32, _NO_F32)
 
 
-@njit(cache=True, parallel=True)
 def intersect_bricks(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_days, brick_size,
                      out_t, out_tri, out_u, out_v):
     """Closest hits of all rays; misses get ``t = inf``, ``tri = -1``, ``u = v = 0``."""
-    n = origins.shape[0]
-    for j in prange(_n_iter(n, brick_size)):
-        i0, i1 = _brick_rays(j, n, brick_size)
-        if i0 >= i1:
-            continue
-        stack = new_stack()
-        for i in range(i0, i1):
-            t, k, u, v = closest_hit(tree, box_lo, box_hi, origins[i, 0], origins[i, 1],
-                                     origins[i, 2], directions[i, 0], directions[i, 1],
-                                     directions[i, 2], tmin, tmax[i], t_days, stack)
-            out_t[i] = t
-            out_tri[i] = record_id(tree, k) if k >= 0 else -1
-            out_u[i] = u
-            out_v[i] = v
+    n_bricks = (origins.shape[0] + brick_size - 1) // brick_size
+    run_chunks(trace_range, n_bricks, BRICKS_PER_CHUNK, tree, box_lo, box_hi, origins,
+               directions, tmin, tmax, t_days, brick_size, True, _NO_BOOL, out_t, out_tri,
+               out_u, out_v)
 
 
 #: :func:`shadow_origins` check codes, in the order the wrapper reports them.

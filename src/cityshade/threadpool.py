@@ -1,0 +1,70 @@
+"""Serial ``nogil`` Numba kernels run over chunks of work on a small pool of Python threads.
+
+Numba's ``prange`` compiles the loop body into a separate function, and a kernel loaded from
+Numba's cache runs the copy compiled inside the caller's linked module, which LLVM may lay out
+differently from the first, in-process compile. For the kd-tree's shadow rays that copy was
+1.7x slower (the same kernel: 8.0 Mrays/s freshly compiled, 4.6 from the cache, one thread,
+1M city), while a plain ``@njit(nogil=True)`` kernel runs the same from the cache as compiled.
+So the hot traversal kernels are serial kernels over a range ``[i0, i1)`` of work items, and
+:func:`run_chunks` hands chunks of the range to ``numba.get_num_threads()`` threads (the
+calling thread included), a chunk at a time to whichever thread is free: dynamic scheduling,
+so a core slowed by other load on a shared machine does not hold back the end of the call.
+Each item's result depends only on the item, so it is the same for any thread count.
+"""
+from __future__ import annotations
+
+import itertools
+import threading
+from concurrent.futures import ThreadPoolExecutor
+
+import numba
+
+_POOL: ThreadPoolExecutor | None = None
+_POOL_LOCK = threading.Lock()
+
+
+def _pool() -> ThreadPoolExecutor:
+    """The process's worker threads (one fewer than Numba's thread count: the caller works
+    too), made on first use."""
+    global _POOL
+    with _POOL_LOCK:
+        if _POOL is None:
+            _POOL = ThreadPoolExecutor(max(1, numba.config.NUMBA_NUM_THREADS - 1),
+                                       thread_name_prefix="cityshade-kernel")
+        return _POOL
+
+
+def run_chunks(kernel, n_items: int, chunk_items: int, *args) -> None:
+    """Call ``kernel(*args, i0, i1)`` over ``[0, n_items)`` in chunks of ``chunk_items``.
+
+    ``kernel`` must be a ``nogil`` Numba function whose result for an item does not depend on
+    which call handled it. The chunks go to ``numba.get_num_threads()`` threads (at most one
+    per chunk; one thread runs them in the calling thread, in order). The first exception of
+    any thread is raised once every thread has stopped; an exception or Ctrl-C in the calling
+    thread stops the others after their current chunk.
+    """
+    n_chunks = -(-n_items // chunk_items) if n_items > 0 else 0
+    threads = min(numba.get_num_threads(), n_chunks)
+    if threads <= 1:
+        if n_items > 0:
+            kernel(*args, 0, n_items)
+        return
+    counter = itertools.count()
+    stop = threading.Event()
+
+    def work():
+        while not stop.is_set():
+            c = next(counter)
+            if c >= n_chunks:
+                return
+            kernel(*args, c * chunk_items, min(n_items, (c + 1) * chunk_items))
+
+    futures = [_pool().submit(work) for _ in range(threads - 1)]
+    try:
+        work()
+    finally:
+        stop.set()
+        for f in futures:
+            f.exception()       # wait for every thread before anything is raised
+    for f in futures:
+        f.result()
