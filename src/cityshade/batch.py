@@ -429,8 +429,7 @@ class _PixelRays:
             if self.technique == "izb":
                 blocked = lightspace.occluded(scene, origins, direction, t_days)
             else:
-                directions = np.ascontiguousarray(np.broadcast_to(direction, origins.shape))
-                blocked = occluded(scene, origins, directions, t_days)
+                blocked = occluded(scene, origins, direction, t_days)
             lit[faces] = ~blocked
         return lit
 

@@ -176,9 +176,7 @@ def receiver_lit(scene, points: np.ndarray, normals: np.ndarray, direction: np.n
         else:
             from cityshade.trace import occluded
 
-            blocked = occluded(scene, origins,
-                               np.ascontiguousarray(np.broadcast_to(direction, origins.shape)),
-                               t_days)
+            blocked = occluded(scene, origins, direction, t_days)
         lit[faces] = ~blocked
     return lit
 

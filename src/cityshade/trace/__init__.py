@@ -54,38 +54,55 @@ def _padded_box(tree: KdTree) -> tuple[np.ndarray, np.ndarray]:
 
 
 def _rays(origins, directions, tmax):
-    """Validated float64 (N, 3) origins and directions and (N,) tmax."""
+    """Validated float64 (N, 3) origins, directions (N, 3), or (1, 3) when every ray has the
+    same one (sun rays: the kernel then computes its terms once), and tmax (N,), or (1,) when
+    shared. The checks are one pass over the rays (:func:`bricks.ray_checks`); the messages
+    come from the numpy checks, run only when that pass found something."""
     origins = np.ascontiguousarray(origins, dtype=np.float64)
     directions = np.ascontiguousarray(directions, dtype=np.float64)
     if origins.ndim != 2 or origins.shape[1] != 3:
         raise TraceInputError(f"origins must have shape (N, 3), not {origins.shape}")
-    if directions.shape != origins.shape:
-        raise TraceInputError(f"directions must have shape {origins.shape}, "
+    if directions.shape in ((3,), (1, 3)):
+        directions = directions.reshape(1, 3)
+    elif directions.shape != origins.shape:
+        raise TraceInputError(f"directions must have shape {origins.shape} or (3,), "
                               f"not {directions.shape}")
+    code = bricks.ray_checks(origins, directions, UNIT_LENGTH_TOL)
+    if code & (bricks.BAD_ORIGIN | bricks.BAD_DIRECTION | bricks.NOT_UNIT_DIRECTION):
+        _explain_bad_rays(origins, directions)
+    if directions.shape[0] > 1 and not code & bricks.OTHER_DIRECTION:
+        directions = directions[:1]
+    n = origins.shape[0]
+    if tmax is None:
+        return origins, directions, np.full(1, np.inf)
+    tmax_arr = np.asarray(tmax, dtype=np.float64)
+    if tmax_arr.ndim == 0 or tmax_arr.shape == (1,):
+        tmax_arr = tmax_arr.reshape(1)
+    elif tmax_arr.shape != (n,):
+        raise TraceInputError(f"tmax must be a scalar or have shape ({n},), "
+                              f"not {tmax_arr.shape}")
+    else:
+        tmax_arr = np.ascontiguousarray(tmax_arr)
+    if np.isnan(tmax_arr).any() or (tmax_arr < 0).any():
+        raise TraceInputError("tmax must be >= 0 (inf allowed), not NaN or negative")
+    return origins, directions, tmax_arr
+
+
+def _explain_bad_rays(origins, directions):
+    """Raise the TraceInputError that names what is wrong with the rays."""
     if not np.isfinite(origins).all():
         raise TraceInputError("ray origins contain NaN or infinite values")
     if not np.isfinite(directions).all():
         raise TraceInputError("ray directions contain NaN or infinite values")
     length = np.sqrt(np.einsum("ij,ij->i", directions, directions))
-    if length.size and np.abs(length - 1.0).max() > UNIT_LENGTH_TOL:
-        worst = int(np.argmax(np.abs(length - 1.0)))
-        raise TraceInputError(f"ray directions must be unit length (ray {worst} has length "
-                              f"{length[worst]:.6g})")
-    n = origins.shape[0]
-    if tmax is None:
-        tmax_arr = np.full(n, np.inf)
-    else:
-        tmax_arr = np.asarray(tmax, dtype=np.float64)
-        if tmax_arr.ndim == 0:
-            tmax_arr = np.full(n, float(tmax_arr))
-        elif tmax_arr.shape != (n,):
-            raise TraceInputError(f"tmax must be a scalar or have shape ({n},), "
-                                  f"not {tmax_arr.shape}")
-        else:
-            tmax_arr = np.ascontiguousarray(tmax_arr)
-        if np.isnan(tmax_arr).any() or (tmax_arr < 0).any():
-            raise TraceInputError("tmax must be >= 0 (inf allowed), not NaN or negative")
-    return origins, directions, tmax_arr
+    worst = int(np.argmax(np.abs(length - 1.0)))
+    raise TraceInputError(f"ray directions must be unit length (ray {worst} has length "
+                          f"{length[worst]:.6g})")
+
+
+def _subset(rays_or_shared, rays):
+    """The rows ``rays`` of a per-ray array, or the array itself when it has one row for all."""
+    return rays_or_shared if rays_or_shared.shape[0] == 1 else rays_or_shared[rays]
 
 
 def _brick(brick_size) -> int:
@@ -106,12 +123,13 @@ def occluded(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     origins : (N, 3) float array
         Ray origins, render-space metres. For shadow rays use
         :func:`shadow_rays_from_surface` so rays do not re-hit their own surface.
-    directions : (N, 3) float array
-        Unit directions (towards the sun for shadow rays).
+    directions : (N, 3) or (3,) float array
+        Unit directions (towards the sun for shadow rays); (3,): one for every ray.
     t_days : float
         City time, days since 1970-01-01 UTC; ignored by a model without dates.
     tmax : None, float or (N,) float array
-        Segment end in metres; None traces to the scene bounds (the sun is a direction).
+        Segment end in metres (a float or a (1,) array: the same for every ray); None traces
+        to the scene bounds (the sun is a direction).
     brick_size : int
         Rays per parallel work item; each brick keeps its own shadow-caster cache.
 
@@ -130,7 +148,7 @@ def occluded(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
 
         o, d, tm = _rays(origins, directions, tmax)
         return occluded_over_tiles(tree, o, d, lambda part, rays: occluded(
-            part, o[rays], d[rays], t_days, tm[rays], brick_size=brick_size))
+            part, o[rays], _subset(d, rays), t_days, _subset(tm, rays), brick_size=brick_size))
     kd = tree_of(tree)
     origins, directions, tmax_arr = _rays(origins, directions, tmax)
     t = check_t_days(t_days, TraceInputError)
@@ -139,8 +157,6 @@ def occluded(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     if origins.shape[0] == 0 or kd.tri_records.shape[0] == 0:
         return out
     lo, hi = _padded_box(kd)
-    if (directions == directions[0]).all():
-        directions = directions[:1]   # one direction for all (sun rays): its terms once
     occluded_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, out)
     return out
 
@@ -264,6 +280,4 @@ def sunlit(tree, points, normals, sun_direction, t_days: float = 0.0) -> np.ndar
     (N,) bool array, True where nothing blocks the sun.
     """
     origins = shadow_rays_from_surface(points, normals, sun_direction)
-    directions = np.ascontiguousarray(
-        np.broadcast_to(np.asarray(sun_direction, dtype=np.float64), origins.shape))
-    return ~occluded(tree, origins, directions, t_days)
+    return ~occluded(tree, origins, np.asarray(sun_direction, dtype=np.float64), t_days)

@@ -76,6 +76,48 @@ def dynamic_bricks():
         numba.set_parallel_chunksize(old)
 
 
+#: :func:`ray_checks` codes: a non-finite origin, a non-finite direction, a direction whose
+#: length is off 1 by more than the tolerance, a direction other than the first ray's.
+BAD_ORIGIN = 1
+BAD_DIRECTION = 2
+NOT_UNIT_DIRECTION = 4
+OTHER_DIRECTION = 8
+#: Rays a thread checks at a time (a pass over memory: about 0.1 ms).
+CHECK_CHUNK = 65_536
+
+
+@njit(cache=True, nogil=True)
+def _check_range(origins, directions, unit_tol, codes, i0, i1):
+    """:func:`ray_checks` of rays ``[i0, i1)``: their code ORed into ``codes[i0 //
+    CHECK_CHUNK]``."""
+    shared = directions.shape[0] == 1
+    d0x, d0y, d0z = directions[0, 0], directions[0, 1], directions[0, 2]
+    code = 0
+    for i in range(i0, i1):
+        if not (abs(origins[i, 0]) < np.inf and abs(origins[i, 1]) < np.inf
+                and abs(origins[i, 2]) < np.inf):
+            code |= BAD_ORIGIN
+        j = 0 if shared else i
+        dx, dy, dz = directions[j, 0], directions[j, 1], directions[j, 2]
+        if not (abs(dx) < np.inf and abs(dy) < np.inf and abs(dz) < np.inf):
+            code |= BAD_DIRECTION
+        elif abs(np.sqrt(dx * dx + dy * dy + dz * dz) - 1.0) > unit_tol:
+            code |= NOT_UNIT_DIRECTION
+        if dx != d0x or dy != d0y or dz != d0z:
+            code |= OTHER_DIRECTION
+    codes[i0 // CHECK_CHUNK] |= code
+
+
+def ray_checks(origins, directions, unit_tol: float) -> int:
+    """The OR of the check codes (``BAD_ORIGIN`` …) of all rays, in one pass: ``origins`` (N,
+    3) float64, ``directions`` (N, 3) or (1, 3) (one for all)."""
+    n = origins.shape[0]
+    codes = np.zeros(max(1, -(-n // CHECK_CHUNK)), np.uint8)
+    if n:
+        run_chunks(_check_range, n, CHECK_CHUNK, origins, directions, unit_tol, codes)
+    return int(np.bitwise_or.reduce(codes))
+
+
 _NO_BOOL = np.zeros(0, np.bool_)
 _NO_F64 = np.zeros(0)
 _NO_I32 = np.zeros(0, np.int32)
@@ -88,7 +130,8 @@ def occluded_bricks(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_day
 
     ``tree``: :class:`~cityshade.accel.kdtree_layout.KdViews`; ``origins``: (N, 3) float64;
     ``directions``: (N, 3) float64, or (1, 3) for rays that all share one direction (sun rays:
-    its shear and inverses are then computed once); ``tmin``: scalar; ``tmax``: (N,) float64.
+    its shear and inverses are then computed once); ``tmin``: scalar; ``tmax``: (N,) float64,
+    or (1,) for all.
     """
     n_bricks = (origins.shape[0] + brick_size - 1) // brick_size
     run_chunks(trace_range, n_bricks, BRICKS_PER_CHUNK, tree, box_lo, box_hi, origins,

@@ -206,7 +206,8 @@ def trace_range(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_days, b
     ``tree``: :class:`~cityshade.accel.kdtree_layout.KdViews`; ``box_lo`` / ``box_hi`` the
     (padded) scene box; ``origins`` (N, 3) float64; ``directions`` (N, 3), or (1, 3) for rays
     that all share one direction (sun rays: its shear and inverses computed once); ``tmin``
-    scalar, ``tmax`` (N,) the segment of each ray at city time ``t_days``.
+    scalar, ``tmax`` (N,) or (1,) (one for all): the segment of each ray at city time
+    ``t_days``.
 
     ``closest``: write the closest hit of each ray to ``out_t`` (``inf`` on a miss),
     ``out_tri`` (triangle id, -1), ``out_u``, ``out_v`` (barycentrics of v1 and v2, 0); exact
@@ -230,6 +231,7 @@ def trace_range(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_days, b
     """
     n = origins.shape[0]
     shared = directions.shape[0] == 1
+    tmax_step = 1 if tmax.shape[0] > 1 else 0
     st_node = np.empty(STACK_SIZE, np.int64)
     st_t0 = np.empty(STACK_SIZE)
     st_t1 = np.empty(STACK_SIZE)
@@ -246,7 +248,7 @@ def trace_range(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_days, b
                 set_direction(ray, dx, dy, dz)
             ox, oy, oz = origins[i, 0], origins[i, 1], origins[i, 2]
             okx, oky, okz = on_axes(ox, oy, oz, kx, ky, kz)
-            tm = tmax[i]
+            tm = tmax[i * tmax_step]
             found = -1
             best_t = np.inf
             best_id = -1
