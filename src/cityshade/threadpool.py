@@ -39,9 +39,9 @@ def run_chunks(kernel, n_items: int, chunk_items: int, *args) -> None:
 
     ``kernel`` must be a ``nogil`` Numba function whose result for an item does not depend on
     which call handled it. The chunks go to ``numba.get_num_threads()`` threads (at most one
-    per chunk; one thread runs them in the calling thread, in order). The first exception of
-    any thread is raised once every thread has stopped; an exception or Ctrl-C in the calling
-    thread stops the others after their current chunk.
+    per chunk; one thread runs them in the calling thread, in order). An exception in any
+    thread (Ctrl-C in the calling one) stops the others after their current chunk, and the
+    first is raised once every thread has stopped.
     """
     n_chunks = -(-n_items // chunk_items) if n_items > 0 else 0
     threads = min(numba.get_num_threads(), n_chunks)
@@ -53,11 +53,15 @@ def run_chunks(kernel, n_items: int, chunk_items: int, *args) -> None:
     stop = threading.Event()
 
     def work():
-        while not stop.is_set():
-            c = next(counter)
-            if c >= n_chunks:
-                return
-            kernel(*args, c * chunk_items, min(n_items, (c + 1) * chunk_items))
+        try:
+            while not stop.is_set():
+                c = next(counter)
+                if c >= n_chunks:
+                    return
+                kernel(*args, c * chunk_items, min(n_items, (c + 1) * chunk_items))
+        except BaseException:
+            stop.set()          # the others stop after their chunk
+            raise
 
     futures = [_pool().submit(work) for _ in range(threads - 1)]
     try:
