@@ -263,5 +263,7 @@ def shadow_pass(cp: CameraPass, sun: "SunPosition", technique: "str | Technique"
     t = time.perf_counter()
     result = tech.run(ctx)
     seconds = time.perf_counter() - t
-    lit = np.where(cp.valid, np.nan_to_num(result.lit, nan=0.0), 0.0).astype(np.float32)
+    # One masked copy (nan_to_num, a float64 where and a cast took 17-30 ms on a 2049² map).
+    lit = np.where(cp.valid & ~np.isnan(result.lit), result.lit, np.float32(0.0)).astype(
+        np.float32, copy=False)
     return ShadowPass(result=result, lit=lit, seconds=seconds, sun=sun)
