@@ -441,6 +441,14 @@ def test_lookup_receivers_match_the_step_by_step_twins(sample, warp):
         # range [-1, 1] and 1e-8 of |z| beyond it.
         bound = (1e-8 if view.is_projective else 1e-12) * np.maximum(1.0, np.abs(z0))
         assert np.all(np.abs(z - z0) <= bound), np.max(np.abs(z - z0) / bound)
+    # The hard lookup's fused pass: the one-tap PCF of these receivers, bit for bit.
+    from cityshade.shadows import filtering as flt
+
+    dm = sm.render_depth_map(sample, view, T_1990)
+    u, v, z = sm.lookup_receivers(view, points, normals, sun.direction, settings, 0)
+    got = sm.shadow_lookup(dm, points, normals, sun.direction, settings, "hard")
+    want = flt.pcf_lookup(dm.depth, u, v, z, 1)
+    assert got.tobytes() == want.tobytes() and 0.0 < got.mean() < 1.0
 
 
 def test_light_box_matches_numpy():

@@ -645,44 +645,80 @@ def plane_depth_gradient(m, width, height, px, py, pz, u, v, z, ax, ay, az, bx, 
     return gu, gv
 
 
+@njit(cache=True, inline="always")
+def _receiver_uvz(m, width, height, projective, px, py, pz, nx, ny, nz, sx, sy, sz, t1x, t1y,
+                  t1z, t2x, t2y, t2z, constant_m, slope, max_m, radius):
+    """One receiver of a lookup: the bias of :func:`offset_receivers`, the projection of
+    :func:`project` and, in a projective view, the receiver-plane depth bias of
+    :func:`receiver_plane_gradient`; ``(t1, t2)`` the tangent frame across the sun's rays.
+    Returns ``(u_px, v_px, z)``."""
+    a, b, c, d = _image_jacobian(m, width, height, px, py, pz, t1x, t1y, t1z, t2x, t2y, t2z)
+    det = a * d - b * c
+    texel = np.inf
+    if det > 0.0 or det < 0.0:
+        texel = max(math.sqrt(d * d + c * c) / abs(det), math.sqrt(b * b + a * a) / abs(det))
+        if texel != texel:
+            texel = np.inf
+    cos = min(max(nx * sx + ny * sy + nz * sz, -1.0), 1.0)
+    sin = math.sqrt(1.0 - cos * cos)
+    offset = min(slope * texel * sin * (1.0 + radius), max_m)
+    if not np.isfinite(offset):
+        offset = max_m
+    qx = px + constant_m * sx + offset * nx
+    qy = py + constant_m * sy + offset * ny
+    qz = pz + constant_m * sz + offset * nz
+    u, v, z = clip_point(m, qx, qy, qz, width, height)
+    if projective:
+        # Two tangents of the receiver's plane, 1 cm long (receiver_plane_gradient).
+        ax, ay, az, bx, by, bz = _tangent_frame(nx, ny, nz)
+        gu, gv = plane_depth_gradient(m, width, height, qx, qy, qz, u, v, z,
+                                      ax, ay, az, bx, by, bz)
+        z = z - (abs(gu) + abs(gv)) * (0.5 + radius)
+    return u, v, z
+
+
 @njit(cache=True, parallel=True)
 def _lookup_receivers(m, width, height, projective, points, normals, sun, constant_m, slope,
                       max_m, radius, u_out, v_out, z_out):
-    """The receivers of a lookup in one pass: the bias of :func:`offset_receivers`, the
-    projection of :func:`project` and, in a projective view, the receiver-plane depth bias of
-    :func:`receiver_plane_gradient` (the same arithmetic per point, without the (N, 3)
-    temporaries)."""
+    """The receivers of a lookup in one pass (:func:`_receiver_uvz` per point, without the
+    (N, 3) temporaries of the step-by-step twins)."""
     sx, sy, sz = sun[0], sun[1], sun[2]
     # The light-space texel is measured on the plane across the rays (normal = sun).
     t1x, t1y, t1z, t2x, t2y, t2z = _tangent_frame(sx, sy, sz)
     for i in prange(points.shape[0]):
-        px, py, pz = points[i, 0], points[i, 1], points[i, 2]
-        nx, ny, nz = normals[i, 0], normals[i, 1], normals[i, 2]
-        a, b, c, d = _image_jacobian(m, width, height, px, py, pz, t1x, t1y, t1z, t2x, t2y, t2z)
-        det = a * d - b * c
-        texel = np.inf
-        if det > 0.0 or det < 0.0:
-            texel = max(math.sqrt(d * d + c * c) / abs(det), math.sqrt(b * b + a * a) / abs(det))
-            if texel != texel:
-                texel = np.inf
-        cos = min(max(nx * sx + ny * sy + nz * sz, -1.0), 1.0)
-        sin = math.sqrt(1.0 - cos * cos)
-        offset = min(slope * texel * sin * (1.0 + radius), max_m)
-        if not np.isfinite(offset):
-            offset = max_m
-        qx = px + constant_m * sx + offset * nx
-        qy = py + constant_m * sy + offset * ny
-        qz = pz + constant_m * sz + offset * nz
-        u, v, z = clip_point(m, qx, qy, qz, width, height)
-        if projective:
-            # Two tangents of the receiver's plane, 1 cm long (receiver_plane_gradient).
-            ax, ay, az, bx, by, bz = _tangent_frame(nx, ny, nz)
-            gu, gv = plane_depth_gradient(m, width, height, qx, qy, qz, u, v, z,
-                                          ax, ay, az, bx, by, bz)
-            z = z - (abs(gu) + abs(gv)) * (0.5 + radius)
+        u, v, z = _receiver_uvz(m, width, height, projective, points[i, 0], points[i, 1],
+                                points[i, 2], normals[i, 0], normals[i, 1], normals[i, 2], sx,
+                                sy, sz, t1x, t1y, t1z, t2x, t2y, t2z, constant_m, slope, max_m,
+                                radius)
         u_out[i] = u
         v_out[i] = v
         z_out[i] = z
+
+
+@njit(cache=True, parallel=True)
+def _lookup_hard(m, width, height, projective, points, normals, sun, constant_m, slope, max_m,
+                 depth, out):
+    """The plain shadow-map test in the same pass as the receivers: :func:`_lookup_receivers`
+    (radius 0) followed by :func:`cityshade.shadows.filtering.pcf_lookup` with one tap, the
+    same arithmetic, without writing and reading back (u, v, z) of every receiver (82 MB for
+    a 2049² map)."""
+    h, w = depth.shape
+    sx, sy, sz = sun[0], sun[1], sun[2]
+    t1x, t1y, t1z, t2x, t2y, t2z = _tangent_frame(sx, sy, sz)
+    for i in prange(points.shape[0]):
+        u, v, z = _receiver_uvz(m, width, height, projective, points[i, 0], points[i, 1],
+                                points[i, 2], normals[i, 0], normals[i, 1], normals[i, 2], sx,
+                                sy, sz, t1x, t1y, t1z, t2x, t2y, t2z, constant_m, slope, max_m,
+                                0.0)
+        lit = np.float32(1.0)
+        # Non-finite or far outside the map: lit; outside the map or not behind the caster:
+        # lit (the one-tap PCF's tests).
+        if -1.0 <= u < w + 1.0 and -1.0 <= v < h + 1.0:
+            c = int(math.floor(u))
+            r = int(math.floor(v))
+            if 0 <= r < h and 0 <= c < w and not z <= depth[r, c]:
+                lit = np.float32(0.0)
+        out[i] = lit
 
 
 def lookup_receivers(view: LightView, points_m, normals, sun_direction,
@@ -734,6 +770,17 @@ def shadow_lookup(depth_map: DepthMap, points_m, normals, sun_direction,
     # The temporaries (receivers, VSM moments) live in kept arrays: fresh ones of a 2049² map
     # view were faulted in anew every frame (kernel page zeroing: half a second and more per
     # frame on a loaded machine, depending on what ran before).
+    if mode == "hard":
+        p = np.ascontiguousarray(np.asarray(points_m, dtype=np.float64).reshape(-1, 3))
+        n = np.ascontiguousarray(np.asarray(normals, dtype=np.float64).reshape(-1, 3))
+        out = np.empty(p.shape[0], np.float32)
+        if p.shape[0]:
+            bias = settings.bias
+            _lookup_hard(np.ascontiguousarray(view.clip_from_world.reshape(16)),
+                         float(view.width_px), float(view.height_px), view.is_projective, p, n,
+                         _unit_sun(sun_direction), float(bias.constant_m), float(bias.slope),
+                         float(bias.max_m), depth_map.depth, out)
+        return out
     work = _LOOKUP_SCRATCH.take()
     try:
         u, v, z = lookup_receivers(view, points_m, normals, sun_direction, settings, radius,
