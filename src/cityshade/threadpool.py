@@ -53,15 +53,17 @@ def run_chunks(kernel, n_items: int, chunk_items: int, *args) -> None:
     stop = threading.Event()
 
     def work():
+        done = False
         try:
             while not stop.is_set():
                 c = next(counter)
                 if c >= n_chunks:
-                    return
+                    break
                 kernel(*args, c * chunk_items, min(n_items, (c + 1) * chunk_items))
-        except BaseException:
-            stop.set()          # the others stop after their chunk
-            raise
+            done = True
+        finally:
+            if not done:
+                stop.set()      # failed or interrupted: the others stop after their chunk
 
     futures = [_pool().submit(work) for _ in range(threads - 1)]
     try:

@@ -679,9 +679,15 @@ def _receiver_uvz(m, width, height, projective, px, py, pz, nx, ny, nz, sx, sy, 
 
 @njit(cache=True, parallel=True)
 def _lookup_receivers(m, width, height, projective, points, normals, sun, constant_m, slope,
-                      max_m, radius, u_out, v_out, z_out):
+                      max_m, radius, u_out, v_out, z_out, depth, lit_out):
     """The receivers of a lookup in one pass (:func:`_receiver_uvz` per point, without the
-    (N, 3) temporaries of the step-by-step twins)."""
+    (N, 3) temporaries of the step-by-step twins): their (u, v, z) into ``u_out, v_out,
+    z_out``, or, when ``lit_out`` is not empty, the plain shadow-map test against ``depth``
+    into it instead: :func:`cityshade.shadows.filtering.pcf_lookup` with one tap (radius 0),
+    the same tests, without writing and reading back (u, v, z) of every receiver (82 MB for
+    a 2049² map)."""
+    h, w = depth.shape
+    hard = lit_out.shape[0] > 0
     sx, sy, sz = sun[0], sun[1], sun[2]
     # The light-space texel is measured on the plane across the rays (normal = sun).
     t1x, t1y, t1z, t2x, t2y, t2z = _tangent_frame(sx, sy, sz)
@@ -690,26 +696,11 @@ def _lookup_receivers(m, width, height, projective, points, normals, sun, consta
                                 points[i, 2], normals[i, 0], normals[i, 1], normals[i, 2], sx,
                                 sy, sz, t1x, t1y, t1z, t2x, t2y, t2z, constant_m, slope, max_m,
                                 radius)
-        u_out[i] = u
-        v_out[i] = v
-        z_out[i] = z
-
-
-@njit(cache=True, parallel=True)
-def _lookup_hard(m, width, height, projective, points, normals, sun, constant_m, slope, max_m,
-                 depth, out):
-    """The plain shadow-map test in the same pass as the receivers: :func:`_lookup_receivers`
-    (radius 0) followed by :func:`cityshade.shadows.filtering.pcf_lookup` with one tap, the
-    same arithmetic, without writing and reading back (u, v, z) of every receiver (82 MB for
-    a 2049² map)."""
-    h, w = depth.shape
-    sx, sy, sz = sun[0], sun[1], sun[2]
-    t1x, t1y, t1z, t2x, t2y, t2z = _tangent_frame(sx, sy, sz)
-    for i in prange(points.shape[0]):
-        u, v, z = _receiver_uvz(m, width, height, projective, points[i, 0], points[i, 1],
-                                points[i, 2], normals[i, 0], normals[i, 1], normals[i, 2], sx,
-                                sy, sz, t1x, t1y, t1z, t2x, t2y, t2z, constant_m, slope, max_m,
-                                0.0)
+        if not hard:
+            u_out[i] = u
+            v_out[i] = v
+            z_out[i] = z
+            continue
         lit = np.float32(1.0)
         # Non-finite or far outside the map: lit; outside the map or not behind the caster:
         # lit (the one-tap PCF's tests).
@@ -718,7 +709,13 @@ def _lookup_hard(m, width, height, projective, points, normals, sun, constant_m,
             r = int(math.floor(v))
             if 0 <= r < h and 0 <= c < w and not z <= depth[r, c]:
                 lit = np.float32(0.0)
-        out[i] = lit
+        lit_out[i] = lit
+
+
+#: The unused arguments of :func:`_lookup_receivers` in each of its two uses.
+_NO_DEPTH = np.zeros((0, 0), np.float32)
+_NO_VALUES = np.zeros(0)
+_NO_LIT = np.zeros(0, np.float32)
 
 
 def lookup_receivers(view: LightView, points_m, normals, sun_direction,
@@ -739,7 +736,7 @@ def lookup_receivers(view: LightView, points_m, normals, sun_direction,
         _lookup_receivers(np.ascontiguousarray(view.clip_from_world.reshape(16)),
                           float(view.width_px), float(view.height_px), view.is_projective, p, n,
                           s, float(bias.constant_m), float(bias.slope), float(bias.max_m),
-                          float(filter_radius_px), *out)
+                          float(filter_radius_px), *out, _NO_DEPTH, _NO_LIT)
     return out
 
 
@@ -776,10 +773,11 @@ def shadow_lookup(depth_map: DepthMap, points_m, normals, sun_direction,
         out = np.empty(p.shape[0], np.float32)
         if p.shape[0]:
             bias = settings.bias
-            _lookup_hard(np.ascontiguousarray(view.clip_from_world.reshape(16)),
-                         float(view.width_px), float(view.height_px), view.is_projective, p, n,
-                         _unit_sun(sun_direction), float(bias.constant_m), float(bias.slope),
-                         float(bias.max_m), depth_map.depth, out)
+            _lookup_receivers(np.ascontiguousarray(view.clip_from_world.reshape(16)),
+                              float(view.width_px), float(view.height_px), view.is_projective,
+                              p, n, _unit_sun(sun_direction), float(bias.constant_m),
+                              float(bias.slope), float(bias.max_m), 0.0, _NO_VALUES,
+                              _NO_VALUES, _NO_VALUES, depth_map.depth, out)
         return out
     work = _LOOKUP_SCRATCH.take()
     try:
