@@ -646,12 +646,9 @@ def plane_depth_gradient(m, width, height, px, py, pz, u, v, z, ax, ay, az, bx, 
 
 
 @njit(cache=True, inline="always")
-def _receiver_uvz(m, width, height, projective, px, py, pz, nx, ny, nz, sx, sy, sz, t1x, t1y,
-                  t1z, t2x, t2y, t2z, constant_m, slope, max_m, radius):
-    """One receiver of a lookup: the bias of :func:`offset_receivers`, the projection of
-    :func:`project` and, in a projective view, the receiver-plane depth bias of
-    :func:`receiver_plane_gradient`; ``(t1, t2)`` the tangent frame across the sun's rays.
-    Returns ``(u_px, v_px, z)``."""
+def _light_texel_m(m, width, height, px, py, pz, t1x, t1y, t1z, t2x, t2y, t2z):
+    """The longer edge (metres) of the texel at point p on the plane across the sun's rays
+    (tangents t1, t2): what the slope bias of :func:`offset_receivers` scales with."""
     a, b, c, d = _image_jacobian(m, width, height, px, py, pz, t1x, t1y, t1z, t2x, t2y, t2z)
     det = a * d - b * c
     texel = np.inf
@@ -659,6 +656,16 @@ def _receiver_uvz(m, width, height, projective, px, py, pz, nx, ny, nz, sx, sy, 
         texel = max(math.sqrt(d * d + c * c) / abs(det), math.sqrt(b * b + a * a) / abs(det))
         if texel != texel:
             texel = np.inf
+    return texel
+
+
+@njit(cache=True, inline="always")
+def _receiver_uvz(m, width, height, projective, px, py, pz, nx, ny, nz, sx, sy, sz, texel,
+                  constant_m, slope, max_m, radius):
+    """One receiver of a lookup: the bias of :func:`offset_receivers` (``texel``: its
+    :func:`_light_texel_m`), the projection of :func:`project` and, in a projective view, the
+    receiver-plane depth bias of :func:`receiver_plane_gradient`. Returns ``(u_px, v_px,
+    z)``."""
     cos = min(max(nx * sx + ny * sy + nz * sz, -1.0), 1.0)
     sin = math.sqrt(1.0 - cos * cos)
     offset = min(slope * texel * sin * (1.0 + radius), max_m)
@@ -689,13 +696,21 @@ def _lookup_receivers(m, width, height, projective, points, normals, sun, consta
     h, w = depth.shape
     hard = lit_out.shape[0] > 0
     sx, sy, sz = sun[0], sun[1], sun[2]
-    # The light-space texel is measured on the plane across the rays (normal = sun).
+    # The light-space texel is measured on the plane across the rays (normal = sun). In an
+    # affine view (w row 0 0 0 1) every term of its Jacobian is the same float at every finite
+    # point (w = 1 and x·0 = 0 exactly), so it is computed once; a non-finite receiver gets
+    # NaN coordinates either way.
     t1x, t1y, t1z, t2x, t2y, t2z = _tangent_frame(sx, sy, sz)
+    affine_texel = _light_texel_m(m, width, height, 0.0, 0.0, 0.0, t1x, t1y, t1z, t2x, t2y,
+                                  t2z)
     for i in prange(points.shape[0]):
-        u, v, z = _receiver_uvz(m, width, height, projective, points[i, 0], points[i, 1],
-                                points[i, 2], normals[i, 0], normals[i, 1], normals[i, 2], sx,
-                                sy, sz, t1x, t1y, t1z, t2x, t2y, t2z, constant_m, slope, max_m,
-                                radius)
+        px, py, pz = points[i, 0], points[i, 1], points[i, 2]
+        texel = affine_texel
+        if projective:
+            texel = _light_texel_m(m, width, height, px, py, pz, t1x, t1y, t1z, t2x, t2y, t2z)
+        u, v, z = _receiver_uvz(m, width, height, projective, px, py, pz, normals[i, 0],
+                                normals[i, 1], normals[i, 2], sx, sy, sz, texel, constant_m,
+                                slope, max_m, radius)
         if not hard:
             u_out[i] = u
             v_out[i] = v
