@@ -568,3 +568,27 @@ def test_gather_pixels_is_the_boolean_gather_in_row_major_order():
         mask[5] = False             # an empty row
         got = gather_pixels(image, mask)
         assert got.dtype == np.float64 and np.array_equal(got, image[mask].astype(np.float64))
+
+
+def test_scatter_pixels_is_numpys_boolean_assignment():
+    """scatter_pixels (rows in parallel) writes a mask's pixels as ``out[mask] = values``
+    does, and refuses a wrong number of values."""
+    from cityshade.errors import ContractError
+    from cityshade.shadows import gather_pixels, scatter_pixels
+
+    rng = np.random.default_rng(11)
+    for shape, share in (((37, 53), 0.6), ((1, 9), 1.0), ((12, 5), 0.0)):
+        mask = rng.random(shape) < share
+        for values in (rng.random(int(mask.sum())).astype(np.float32),
+                       rng.random(int(mask.sum())) < 0.5):
+            out = np.full(shape, 7.0, np.float32)
+            want = out.copy()
+            want[mask] = values
+            scatter_pixels(values, mask, out)
+            assert out.tobytes() == want.tobytes()
+        image = rng.random(shape + (1,))
+        back = np.zeros(shape)
+        scatter_pixels(gather_pixels(image, mask)[:, 0], mask, back)
+        np.testing.assert_array_equal(back[mask], image[mask][:, 0])
+    with pytest.raises(ContractError):
+        scatter_pixels(np.zeros(3), np.ones((2, 2), bool), np.zeros((2, 2)))

@@ -357,6 +357,28 @@ def gather_pixels(image, mask) -> np.ndarray:
     return out
 
 
+@njit(cache=True, parallel=True)
+def _scatter_kernel(values, mask, starts, out):
+    for r in prange(mask.shape[0]):
+        k = starts[r]
+        for c in range(mask.shape[1]):
+            if mask[r, c]:
+                out[r, c] = values[k]
+                k += 1
+
+
+def scatter_pixels(values, mask, out) -> None:
+    """``out[mask] = values``: (N,) values of an (H, W) bool mask's pixels in row-major order
+    (:func:`gather_pixels`'s order) written into the (H, W) image ``out``, rows in parallel
+    (numpy's boolean assignment took 11-13 ms for 3.4 M of 4.2 M pixels)."""
+    mask = np.ascontiguousarray(mask, bool)
+    starts = _row_starts(mask)
+    if int(starts[-1]) != len(values):
+        raise ContractError(f"{len(values)} values for {int(starts[-1])} pixels")
+    if len(values):
+        _scatter_kernel(values, mask, starts, out)
+
+
 def take_pixels(image, at) -> np.ndarray:
     """(N, C) float64 rows of an (H, W, C) image at flat pixel indices ``at``: the gather of a
     mask's few pixels (``gather_pixels(image, mask)`` equals it with ``at`` the mask's

@@ -28,7 +28,8 @@ from typing import Any
 
 import numpy as np
 
-from cityshade.shadows import MapUse, ShadowContext, ShadowResult, TechniqueDiagnostics
+from cityshade.shadows import (MapUse, ShadowContext, ShadowResult, TechniqueDiagnostics,
+                               scatter_pixels)
 from cityshade.shadows.lookups import Lookup
 from cityshade.util import Scratch
 
@@ -305,8 +306,8 @@ class MapTechnique:
         lit = np.zeros(ctx.surfaces.valid.shape, np.float32)
         for use in prepared.maps:
             points, normals = ctx.receivers(use.pixels)
-            lit[use.pixels] = self.lookup(use.depth_map, points, normals, prepared.sun_direction,
-                                          ctx.settings)
+            scatter_pixels(self.lookup(use.depth_map, points, normals, prepared.sun_direction,
+                                       ctx.settings), use.pixels, lit)
         return lit
 
     def run(self, ctx: ShadowContext) -> ShadowResult:

@@ -5,7 +5,8 @@ import time
 
 import numpy as np
 
-from cityshade.shadows import ShadowContext, ShadowResult, TechniqueDiagnostics
+from cityshade.shadows import (ShadowContext, ShadowResult, TechniqueDiagnostics,
+                               scatter_pixels)
 
 
 class RayTraced:
@@ -26,8 +27,8 @@ class RayTraced:
         diagnostics.self_shadowed_px = int((surfaces.valid & ~faces).sum())
         points, normals = ctx.receivers(faces)
         if len(points):
-            lit[faces] = self.sunlit(ctx.scene, points, normals, ctx.sun.direction,
-                                     ctx.t_days, diagnostics).astype(np.float32)
+            scatter_pixels(self.sunlit(ctx.scene, points, normals, ctx.sun.direction,
+                                       ctx.t_days, diagnostics), faces, lit)
         diagnostics.rays = int(len(points))
         diagnostics.shadow_s = time.perf_counter() - t0
         return ShadowResult(lit=lit, diagnostics=diagnostics)
