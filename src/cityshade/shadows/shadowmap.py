@@ -733,6 +733,19 @@ _NO_VALUES = np.zeros(0)
 _NO_LIT = np.zeros(0, np.float32)
 
 
+def _lookup_args(view: LightView, points_m, normals, sun_direction,
+                 settings: ShadowSettings) -> tuple:
+    """The leading arguments of :func:`_lookup_receivers` (view, receivers as contiguous
+    float64, unit sun, bias), for both of its uses."""
+    bias = settings.bias
+    return (np.ascontiguousarray(view.clip_from_world.reshape(16)), float(view.width_px),
+            float(view.height_px), view.is_projective,
+            np.ascontiguousarray(np.asarray(points_m, dtype=np.float64).reshape(-1, 3)),
+            np.ascontiguousarray(np.asarray(normals, dtype=np.float64).reshape(-1, 3)),
+            _unit_sun(sun_direction), float(bias.constant_m), float(bias.slope),
+            float(bias.max_m))
+
+
 def lookup_receivers(view: LightView, points_m, normals, sun_direction,
                      settings: ShadowSettings, filter_radius_px: int = 0, work=None
                      ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -741,17 +754,12 @@ def lookup_receivers(view: LightView, points_m, normals, sun_direction,
     :func:`shadow_lookup` compares with the map. One kernel pass; :func:`offset_receivers`,
     :func:`project` and :func:`receiver_plane_gradient` are its step-by-step twins. ``work``
     (a :class:`cityshade.util.Scratch`) holds the outputs instead of fresh arrays."""
-    p = np.ascontiguousarray(np.asarray(points_m, dtype=np.float64).reshape(-1, 3))
-    n = np.ascontiguousarray(np.asarray(normals, dtype=np.float64).reshape(-1, 3))
-    s = _unit_sun(sun_direction)
-    out = tuple(np.empty(p.shape[0]) if work is None else work.get(f"lookup.{k}", p.shape[0])
+    args = _lookup_args(view, points_m, normals, sun_direction, settings)
+    count = args[4].shape[0]
+    out = tuple(np.empty(count) if work is None else work.get(f"lookup.{k}", count)
                 for k in "uvz")
-    if p.shape[0]:
-        bias = settings.bias
-        _lookup_receivers(np.ascontiguousarray(view.clip_from_world.reshape(16)),
-                          float(view.width_px), float(view.height_px), view.is_projective, p, n,
-                          s, float(bias.constant_m), float(bias.slope), float(bias.max_m),
-                          float(filter_radius_px), *out, _NO_DEPTH, _NO_LIT)
+    if count:
+        _lookup_receivers(*args, float(filter_radius_px), *out, _NO_DEPTH, _NO_LIT)
     return out
 
 
@@ -783,17 +791,12 @@ def shadow_lookup(depth_map: DepthMap, points_m, normals, sun_direction,
     # view were faulted in anew every frame (kernel page zeroing: half a second and more per
     # frame on a loaded machine, depending on what ran before).
     if mode == "hard":
-        p = np.ascontiguousarray(np.asarray(points_m, dtype=np.float64).reshape(-1, 3))
-        n = np.ascontiguousarray(np.asarray(normals, dtype=np.float64).reshape(-1, 3))
-        out = np.empty(p.shape[0], np.float32)
-        if p.shape[0]:
-            bias = settings.bias
-            _lookup_receivers(np.ascontiguousarray(view.clip_from_world.reshape(16)),
-                              float(view.width_px), float(view.height_px), view.is_projective,
-                              p, n, _unit_sun(sun_direction), float(bias.constant_m),
-                              float(bias.slope), float(bias.max_m), 0.0, _NO_VALUES,
-                              _NO_VALUES, _NO_VALUES, depth_map.depth, out)
-        return out
+        args = _lookup_args(view, points_m, normals, sun_direction, settings)
+        lit = np.empty(args[4].shape[0], np.float32)
+        if len(lit):
+            _lookup_receivers(*args, 0.0, _NO_VALUES, _NO_VALUES, _NO_VALUES, depth_map.depth,
+                              lit)
+        return lit
     work = _LOOKUP_SCRATCH.take()
     try:
         u, v, z = lookup_receivers(view, points_m, normals, sun_direction, settings, radius,
