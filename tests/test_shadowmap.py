@@ -506,6 +506,57 @@ def test_scratch_hands_out_kept_arrays_one_holder_at_a_time():
     again.give_back()
 
 
+def test_recycler_hands_out_memory_nothing_refers_to():
+    """util.Recycler: a dropped array's memory comes back for the same shape and dtype, never
+    while the array or a view of it is alive, never for another shape or dtype; the oldest
+    buffer is let go beyond ``keep``."""
+    from cityshade.util import Recycler
+
+    pool = Recycler(keep=2)
+    a = pool.empty((4, 3), np.float32)
+    assert a.shape == (4, 3) and a.dtype == np.float32 and a.flags.c_contiguous
+    a_id = id(a)
+    del a
+    b = pool.empty((4, 3), np.float32)
+    assert id(b) == a_id                                  # dropped: the same memory again
+    c = pool.empty((4, 3), np.float32)
+    assert not np.shares_memory(b, c)                     # b is alive
+    view = b[1:]
+    del b
+    d = pool.empty((4, 3), np.float32)
+    assert not np.shares_memory(d, view) and not np.shares_memory(d, c)   # held by the view
+    del c, d, view
+    e = pool.empty((3, 4), np.float32)                    # another shape: fresh
+    f = pool.empty((4, 3), np.int32)                      # another dtype: fresh
+    assert e.shape == (3, 4) and f.dtype == np.int32
+    assert len(pool._buffers) == 2                        # keep=2: the oldest were let go
+    pool.clear()
+    assert not pool._buffers
+
+
+def test_kept_depth_maps_are_not_overwritten_and_an_empty_view_is_cleared(one_box):
+    """The depth pass takes its maps' memory from a Recycler and clears tiles in its first
+    batch: a map the caller still holds keeps its values while later maps of the same size
+    are drawn, and a map with nothing in it is all (+inf, -1)."""
+    views = [sm.ortho_view(sun_from_angles(az, 35.0).direction, (-60, 60), (-60, 60),
+                           (-200, 200), 96, 96) for az in (100.0, 250.0)]
+    first = sm.render_depth_map(one_box, views[0], 0.0)
+    kept_depth, kept_prim = first.depth.copy(), first.prim_id.copy()
+    for _ in range(3):
+        other = sm.render_depth_map(one_box, views[1], 0.0)
+        assert not np.shares_memory(other.depth, first.depth)
+        assert not np.array_equal(other.prim_id, kept_prim)
+        del other
+    assert np.array_equal(first.depth, kept_depth) and np.array_equal(first.prim_id, kept_prim)
+    away = sm.ortho_view(sun_from_angles(100.0, 35.0).direction, (5000, 5100), (5000, 5100),
+                         (-200, 200), 96, 96)
+    empty = sm.render_depth_map(one_box, away, 0.0)             # the model lies outside
+    assert np.isinf(empty.depth).all() and (empty.prim_id == -1).all()
+    assert empty.stats["casters_drawn"] == 0
+    again = sm.render_depth_map(one_box, views[0], 0.0)
+    assert np.array_equal(again.depth, kept_depth) and np.array_equal(again.prim_id, kept_prim)
+
+
 def test_lookups_on_kept_temporaries_equal_the_fresh_twin(sample):
     """shadow_lookup's receivers and VSM moments live in kept arrays: every mode, at map sizes
     that grow and shrink between calls, is bit-identical to the same steps on fresh arrays."""

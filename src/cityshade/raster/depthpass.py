@@ -32,7 +32,7 @@ from cityshade.errors import UsageError
 from cityshade.raster import culling as cull
 from cityshade.raster import triangles as tc
 from cityshade.trace.bricks import dynamic_bricks
-from cityshade.util import check_t_days
+from cityshade.util import Recycler, check_t_days
 
 
 def texel_params(width_px: int, height_px: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -97,6 +97,9 @@ def projection_centre(clip_from_world) -> np.ndarray:
 #: See :data:`cityshade.raster.triangles.NARROW_COLS` (the setup leaves the column bounds of
 #: such boxes out).
 NARROW_COLS = tc.NARROW_COLS
+#: The maps' memory, used again once the caller has let go of a map (a cascade's four maps and
+#: their triangle ids fit).
+_MAPS = Recycler(keep=8)
 
 
 @njit(cache=True, inline="always")
@@ -109,6 +112,25 @@ def _keep(depth, prim, r, c, zp, tri):
     if tc.nearer(d, tri, depth[r, c], prim[r, c]):
         depth[r, c] = d
         prim[r, c] = tri
+
+
+@njit(cache=True, inline="always")
+def _keep_span(depth, prim, r, c0, c1, xs, pz, ypart, tri):
+    """:func:`_keep` for the fragments of row ``r``, columns ``[c0, c1]``, of a triangle with
+    depth plane ``pz x + ypart``: the same decisions, written without branches over slices
+    indexed from 0, which LLVM turns into SIMD (a third of the time of the per-texel calls on
+    the wide casters of a 4096² map of the 1M-triangle city)."""
+    x = xs[c0:c1 + 1]
+    drow = depth[r, c0:c1 + 1]
+    prow = prim[r, c0:c1 + 1]
+    for c in range(x.shape[0]):
+        zp = pz * x[c] + ypart
+        d = np.float32(max(zp, -1.0))
+        cur = drow[c]
+        cur_tri = prow[c]
+        take = (zp <= 1.0) & ((d < cur) | ((d == cur) & (tri < cur_tri)))
+        drow[c] = d if take else cur
+        prow[c] = tri if take else cur_tri
 
 
 @njit(cache=True, inline="always")
@@ -135,11 +157,18 @@ def _column_bounds(y, c_lo, c_hi, sa0, sb0, sk0, sa1, sb1, sk1, sa2, sb2, sk2):
 
 
 @njit(cache=True, parallel=True)
-def _raster_depth_tiles(start, items, ids, coef, vals, bbox, xs, ys, tile_px, tiles_x, depth, prim):
+def _raster_depth_tiles(start, items, ids, coef, vals, bbox, xs, ys, tile_px, tiles_x, clear,
+                        depth, prim):
     """Depth-test the binned triangles into ``depth`` (H, W) float32 / ``prim`` (H, W) int32,
-    one tile per work item (each tile owns its texels)."""
+    one tile per work item (each tile owns its texels); with ``clear``, each tile is set to
+    (+inf, -1) first (the first batch: the tile is then in cache for its casters, where a
+    separate clearing pass wrote the whole map to memory first)."""
     for tile in prange(start.shape[0] - 1):
         m0, m1, tc0, tc1, tr0, tr1 = tc.tile_span(start, tile, tiles_x, tile_px, depth.shape)
+        if clear:
+            for r in range(tr0, tr1 + 1):
+                depth[r, tc0:tc1 + 1] = np.inf
+                prim[r, tc0:tc1 + 1] = -1
         for mm in range(m0, m1):
             j = items[mm]
             a0, b0, k0, a1, b1, k1, a2, b2, k2, own0, own1, own2 = tc.edges(coef, j)
@@ -156,14 +185,18 @@ def _raster_depth_tiles(start, items, ids, coef, vals, bbox, xs, ys, tile_px, ti
             qz = vals[j, tc.PLANE_WORD + 1]
             rz = vals[j, tc.PLANE_WORD + 2]
             if cb1 - cb0 < NARROW_COLS:
+                # At most NARROW_COLS texels a row: each is tested whole (one branch, not
+                # one per edge as in covered_span's scans).
                 for r in range(rb0, rb1 + 1):
                     y = ys[r]
                     row0, row1, row2 = b0 * y + k0, b1 * y + k1, b2 * y + k2
                     ypart = qz * y + rz
-                    c0, c1 = tc.covered_span(xs, cb0, cb1, a0, row0, own0, a1, row1, own1, a2,
-                                             row2, own2)
-                    for c in range(c0, c1 + 1):
-                        _keep(depth, prim, r, c, pz * xs[c] + ypart, tri)
+                    for c in range(cb0, cb1 + 1):
+                        x = xs[c]
+                        if (tc.edge_covers(a0 * x + row0, own0)
+                                & tc.edge_covers(a1 * x + row1, own1)
+                                & tc.edge_covers(a2 * x + row2, own2)):
+                            _keep(depth, prim, r, c, pz * x + ypart, tri)
                 continue
             sw = tc.SPAN_WORD
             sa0, sb0, sk0 = vals[j, sw], vals[j, sw + 1], vals[j, sw + 2]
@@ -181,8 +214,8 @@ def _raster_depth_tiles(start, items, ids, coef, vals, bbox, xs, ys, tile_px, ti
                 ypart = qz * y + rz
                 c0, c1 = tc.covered_span(xs, int(math.ceil(c_lo)), int(math.floor(c_hi)), a0,
                                          row0, own0, a1, row1, own1, a2, row2, own2)
-                for c in range(c0, c1 + 1):
-                    _keep(depth, prim, r, c, pz * xs[c] + ypart, tri)
+                if c0 <= c1:
+                    _keep_span(depth, prim, r, c0, c1, xs, pz, ypart, tri)
 
 
 @njit(cache=True)
@@ -261,17 +294,18 @@ def render_depth(scene, clip_from_world, width_px: int, height_px: int, t_days: 
     tile = int(tile_px)
     xs, ys, to_px = texel_params(w, h)
     view = tc.clip_view(clip_from_world, np.zeros(3), to_px, xs, ys)
-    depth = np.empty((h, w), np.float32)
-    prim = np.empty((h, w), np.int32)
-    _clear(depth, prim)
+    depth = _MAPS.empty((h, w), np.float32)
+    prim = _MAPS.empty((h, w), np.int32)
     tiles_x = -(-w // tile)
+    cleared = [False]
 
     def raster(start, binned, ids, coef, vals, bbox):
         # Tiles handed out a few at a time: a city's casters are uneven over the map (the
         # static halves of the 4096² map of the 1M city hold 46 % and 54 % of the work).
         with dynamic_bricks():
             _raster_depth_tiles(start, binned, ids, coef, vals, bbox, xs, ys, tile, tiles_x,
-                                depth, prim)
+                                not cleared[0], depth, prim)
+        cleared[0] = True
 
     batcher = tc.Batcher(scene, view, True, tile, raster)
     tree = getattr(scene, "kdtree", None)
@@ -308,6 +342,8 @@ def render_depth(scene, clip_from_world, width_px: int, height_px: int, t_days: 
         if "culling" not in stats:
             stats["culling"] = "off"
         stats["time_refs_removed"], walk_s = batcher.draw_present(scene, t)
+    if not cleared[0]:
+        _clear(depth, prim)         # nothing was drawn
     timings = {"walk_s": walk_s, **batcher.timings, "total_s": time.perf_counter() - started}
     stats.update({"casters_drawn": batcher.drawn, "texels": int(w * h), "tile_px": tile,
                   "threads": int(numba.get_num_threads()), "timings_s": timings})
