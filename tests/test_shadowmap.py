@@ -507,28 +507,38 @@ def test_scratch_hands_out_kept_arrays_one_holder_at_a_time():
 
 
 def test_recycler_hands_out_memory_nothing_refers_to():
-    """util.Recycler: a dropped array's memory comes back for the same shape and dtype, never
-    while the array or a view of it is alive, never for another shape or dtype; the oldest
-    buffer is let go beyond ``keep``."""
+    """util.Recycler: a dropped array's memory comes back for the same dtype and a size up to
+    the buffer's and at least half of it, never while the array or a view of it is alive,
+    never for another dtype or a size it does not fit; the least recently used buffer is let go
+    beyond ``keep``."""
     from cityshade.util import Recycler
 
     pool = Recycler(keep=2)
     a = pool.empty((4, 3), np.float32)
     assert a.shape == (4, 3) and a.dtype == np.float32 and a.flags.c_contiguous
-    a_id = id(a)
+    a_ptr = a.__array_interface__["data"][0]
     del a
     b = pool.empty((4, 3), np.float32)
-    assert id(b) == a_id                                  # dropped: the same memory again
+    assert b.__array_interface__["data"][0] == a_ptr      # dropped: the same memory again
     c = pool.empty((4, 3), np.float32)
     assert not np.shares_memory(b, c)                     # b is alive
     view = b[1:]
     del b
     d = pool.empty((4, 3), np.float32)
     assert not np.shares_memory(d, view) and not np.shares_memory(d, c)   # held by the view
-    del c, d, view
-    e = pool.empty((3, 4), np.float32)                    # another shape: fresh
+    del c, view
+    smaller = pool.empty((3, 3), np.float32)              # fits a dropped 12-item buffer
+    assert smaller.shape == (3, 3) and smaller.flags.c_contiguous
+    assert any(np.shares_memory(smaller, buf) for buf in pool._buffers)
+    del d, smaller
+    assert [buf.size for buf in pool._buffers] == [12, 12]
+    kept = {buf.__array_interface__["data"][0] for buf in pool._buffers}   # no references
+    tiny = pool.empty(5, np.float32)                      # under half of every kept buffer
+    assert tiny.__array_interface__["data"][0] not in kept
+    six = pool.empty(6, np.float32)                       # half: fits one
+    assert six.__array_interface__["data"][0] in kept
     f = pool.empty((4, 3), np.int32)                      # another dtype: fresh
-    assert e.shape == (3, 4) and f.dtype == np.int32
+    assert f.dtype == np.int32 and not np.shares_memory(f, pool._buffers[0])
     assert len(pool._buffers) == 2                        # keep=2: the oldest were let go
     pool.clear()
     assert not pool._buffers

@@ -36,6 +36,7 @@ from numba import njit, prange
 
 from cityshade.config import ShadowSettings
 from cityshade.errors import ContractError, UsageError
+from cityshade.util import Recycler
 
 if TYPE_CHECKING:
     from cityshade.geometry.scene import Scene
@@ -345,13 +346,18 @@ def _row_starts(mask) -> np.ndarray:
     return starts
 
 
+#: The gathered receivers' memory (a map frame's points and normals: 81 MB each), used again
+#: once nothing refers to it.
+_GATHERED = Recycler(keep=4)
+
+
 def gather_pixels(image, mask) -> np.ndarray:
     """(N, C) float64 ``image[mask]`` of an (H, W, C) image and an (H, W) bool mask, in
     row-major order (numpy's boolean gather of a 3-D image is several times slower)."""
     image = np.asarray(image)
     mask = np.ascontiguousarray(mask, bool)
     starts = _row_starts(mask)
-    out = np.empty((int(starts[-1]), image.shape[2]), np.float64)
+    out = _GATHERED.empty((int(starts[-1]), image.shape[2]), np.float64)
     if out.shape[0]:
         _gather_kernel(image, mask, starts, out)
     return out
