@@ -379,6 +379,19 @@ def reference_convex_hull(points_xy):
     return np.array(sorted(corners))
 
 
+def reference_tile_lists(bbox, tile_px, tiles_x, tiles_y):
+    """Twin of ``raster.triangles.bin_triangles``: per tile, the triangles whose pixel box
+    (col0, col1, row0, row1 inclusive; col0 > col1 for none) meets it, in drawing order."""
+    lists = [[] for _ in range(tiles_x * tiles_y)]
+    for j, (c0, c1, r0, r1) in enumerate(bbox.tolist()):
+        if c0 > c1:
+            continue
+        for ty in range(r0 // tile_px, r1 // tile_px + 1):
+            for tx in range(c0 // tile_px, c1 // tile_px + 1):
+                lists[ty * tiles_x + tx].append(j)
+    return lists
+
+
 # --- shadow maps (twins of cityshade.raster.depthpass / shadows.shadowmap / filtering) --------------
 
 def reference_depth_map(vertices, triangles, t_begin_days, t_end_days, clip_from_world,

@@ -108,6 +108,40 @@ def test_layout_errors_are_typed(dated):
     assert issubclass(kl.KdTreeLayoutError, CityshadeError)
 
 
+@pytest.mark.parametrize("n", [0, 5, 70_000])
+@pytest.mark.parametrize("tile_px", [64, 48])
+def test_tile_lists_are_the_twins_at_any_thread_count(n, tile_px):
+    """bin_triangles gives the twin's lists, in drawing order, at 1 and 2 threads; and
+    tile_order deals every tile once, each thread's blocks one contiguous part."""
+    import numba
+
+    from reference import reference_tile_lists
+
+    rng = np.random.default_rng(n + tile_px)
+    w, h = 700, 300
+    tiles_x, tiles_y = -(-w // tile_px), -(-h // tile_px)
+    c0 = rng.integers(0, w, n)
+    r0 = rng.integers(0, h, n)
+    bbox = np.stack([c0, np.minimum(c0 + rng.integers(-3, 90, n), w - 1), r0,
+                     np.minimum(r0 + rng.integers(0, 90, n), h - 1)], axis=1).astype(np.int32)
+    want = reference_tile_lists(bbox, tile_px, tiles_x, tiles_y)
+    before = numba.get_num_threads()
+    try:
+        for threads in (1, min(2, numba.config.NUMBA_NUM_THREADS)):
+            numba.set_num_threads(threads)
+            start, items = tc.bin_triangles(bbox, tile_px, tiles_x, tiles_y)
+            got = [items[start[t]:start[t + 1]].tolist() for t in range(tiles_x * tiles_y)]
+            assert got == want
+    finally:
+        numba.set_num_threads(before)
+    for threads in (1, 2, 3):
+        order = tc.tile_order(tiles_x, tiles_y, threads)
+        assert sorted(order.tolist()) == list(range(tiles_x * tiles_y))
+        block = tc.AFFINITY_BLOCK
+        owner = ((order % tiles_x) // block + (order // tiles_x) // block) % threads
+        assert (np.diff(owner) >= 0).all()              # each thread's tiles contiguous
+
+
 def test_depth_pass_narrow_and_wide_boxes_agree_with_the_ray_cast_twin():
     # Casters of 1-3 texels (tested texel by texel) and of tens (within column bounds) over
     # several tiles of 8 texels: both tile-kernel paths against the numpy twin.

@@ -31,7 +31,7 @@ from numba import njit, prange
 from cityshade.errors import UsageError
 from cityshade.raster import culling as cull
 from cityshade.raster import triangles as tc
-from cityshade.trace.bricks import dynamic_bricks
+from cityshade.trace.bricks import static_schedule
 from cityshade.util import Recycler, check_t_days
 
 
@@ -157,13 +157,15 @@ def _column_bounds(y, c_lo, c_hi, sa0, sb0, sk0, sa1, sb1, sk1, sa2, sb2, sk2):
 
 
 @njit(cache=True, parallel=True)
-def _raster_depth_tiles(start, items, ids, coef, vals, bbox, xs, ys, tile_px, tiles_x, clear,
-                        depth, prim):
+def _raster_depth_tiles(order, start, items, ids, coef, vals, bbox, xs, ys, tile_px, tiles_x,
+                        clear, depth, prim):
     """Depth-test the binned triangles into ``depth`` (H, W) float32 / ``prim`` (H, W) int32,
-    one tile per work item (each tile owns its texels); with ``clear``, each tile is set to
-    (+inf, -1) first (the first batch: the tile is then in cache for its casters, where a
-    separate clearing pass wrote the whole map to memory first)."""
-    for tile in prange(start.shape[0] - 1):
+    one tile per work item, tiles in ``order`` (:func:`cityshade.raster.triangles.tile_order`;
+    each tile owns its texels); with ``clear``, each tile is set to (+inf, -1) first (the first batch: the tile is
+    then in cache for its casters, where a separate clearing pass wrote the whole map to memory
+    first)."""
+    for k in prange(order.shape[0]):
+        tile = order[k]
         m0, m1, tc0, tc1, tr0, tr1 = tc.tile_span(start, tile, tiles_x, tile_px, depth.shape)
         if clear:
             for r in range(tr0, tr1 + 1):
@@ -298,13 +300,13 @@ def render_depth(scene, clip_from_world, width_px: int, height_px: int, t_days: 
     prim = _MAPS.empty((h, w), np.int32)
     tiles_x = -(-w // tile)
     cleared = [False]
+    order = tc.tile_order(tiles_x, -(-h // tile), int(numba.get_num_threads()))
 
     def raster(start, binned, ids, coef, vals, bbox):
-        # Tiles handed out a few at a time: a city's casters are uneven over the map (the
-        # static halves of the 4096² map of the 1M city hold 46 % and 54 % of the work).
-        with dynamic_bricks():
-            _raster_depth_tiles(start, binned, ids, coef, vals, bbox, xs, ys, tile, tiles_x,
-                                not cleared[0], depth, prim)
+        # A static schedule: each thread its own part of ``order`` in every batch.
+        with static_schedule():
+            _raster_depth_tiles(order, start, binned, ids, coef, vals, bbox, xs, ys, tile,
+                                tiles_x, not cleared[0], depth, prim)
         cleared[0] = True
 
     batcher = tc.Batcher(scene, view, True, tile, raster)

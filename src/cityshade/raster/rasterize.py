@@ -24,7 +24,7 @@ from cityshade.raster import culling as cull
 from cityshade.raster import triangles as tc
 from cityshade.raster.camera import Camera
 from cityshade.raster.gbuffer import GBuffer
-from cityshade.trace.bricks import dynamic_bricks
+from cityshade.trace.bricks import static_schedule
 from cityshade.util import check_t_days
 
 #: Side of the blocks of the hierarchical max-depth buffer (8 blocks per tile side).
@@ -107,10 +107,12 @@ def camera_view(camera: Camera) -> tuple[tc.ClipView, np.ndarray, np.ndarray]:
 
 
 @njit(cache=True, parallel=True)
-def _raster_tiles(start, items, ids, coef, vals, bbox, xs, ys, near, far, ortho, tile_px, tiles_x,
-                  prim, depth, bary, update_hiz, hiz_block, hiz_tile, block_px):
-    """Rasterize the binned triangles, one tile per work item; refresh the max-depth buffer."""
-    for tile in prange(start.shape[0] - 1):
+def _raster_tiles(order, start, items, ids, coef, vals, bbox, xs, ys, near, far, ortho, tile_px,
+                  tiles_x, prim, depth, bary, update_hiz, hiz_block, hiz_tile, block_px):
+    """Rasterize the binned triangles, one tile per work item, tiles in ``order``
+    (:func:`cityshade.raster.triangles.tile_order`); refresh the max-depth buffer."""
+    for k in prange(order.shape[0]):
+        tile = order[k]
         m0, m1, tc0, tc1, tr0, tr1 = tc.tile_span(start, tile, tiles_x, tile_px, prim.shape)
         if m0 == m1:
             continue
@@ -173,6 +175,7 @@ class _Target:
         self.tile_px = tile_px
         self.tiles_x = -(-w // tile_px)
         self.tiles_y = -(-h // tile_px)
+        self.order = tc.tile_order(self.tiles_x, self.tiles_y, int(numba.get_num_threads()))
         self.prim = np.full((h, w), -1, np.int32)
         self.depth = np.full((h, w), np.inf, np.float32)
         self.bary = np.zeros((h, w, 2), np.float32)
@@ -181,11 +184,11 @@ class _Target:
         self.hiz_tile = np.full((self.tiles_y, self.tiles_x), np.inf, np.float32)
 
     def __call__(self, start, items, ids, coef, vals, bbox) -> None:
-        with dynamic_bricks():  # tiles handed out a few at a time: a picture's work is uneven
-            _raster_tiles(start, items, ids, coef, vals, bbox, self.view.xs, self.view.ys,
-                          self.near, self.far, self.ortho, self.tile_px, self.tiles_x, self.prim,
-                          self.depth, self.bary, self.occlusion, self.hiz_block, self.hiz_tile,
-                          BLOCK_PX)
+        with static_schedule():     # each thread its own part of ``order`` in every batch
+            _raster_tiles(self.order, start, items, ids, coef, vals, bbox, self.view.xs,
+                          self.view.ys, self.near, self.far, self.ortho, self.tile_px,
+                          self.tiles_x, self.prim, self.depth, self.bary, self.occlusion,
+                          self.hiz_block, self.hiz_tile, BLOCK_PX)
 
     def queries(self, query_min_refs: int):
         """The walk's occlusion argument: None when the queries are off."""

@@ -51,6 +51,8 @@ from cityshade.util import Scratch
 #: Tile side in pixels: 64² pixels × (4 + 4 + 8 bytes) = 64 KiB of G-buffer per tile fits the
 #: L2 cache, and 1080p gives 510 tiles, plenty to balance two cores (a 4096² depth map: 4096).
 TILE_PX = 64
+#: Side, in tiles, of the blocks :func:`tile_order` deals to the threads (4: 256² pixels).
+AFFINITY_BLOCK = 4
 #: Triangles per drawing batch: bounds the transient setup arrays (about 150 bytes per triangle
 #: for the G-buffer, 280 for the depth pass: 40-75 MB per batch). Every batch costs four
 #: parallel regions; on a machine shared with other work a region can wait milliseconds for a
@@ -425,6 +427,26 @@ def _depth_words(coef, vals, j, x0, y0, z0, w0, x1, y1, z1, w1, x2, y2, z2, w2, 
             vals[j, SPAN_WORD + 3 * i] = -to_px[0] * b / a
             vals[j, SPAN_WORD + 1 + 3 * i] = -to_px[0] * coef[j, 3 * i + 2] / a + to_px[1]
         vals[j, SPAN_WORD + 2 + 3 * i] = kind
+
+
+def tile_order(tiles_x: int, tiles_y: int, threads: int) -> np.ndarray:
+    """Tiles in the order the passes' tile kernels hand them out under a static schedule
+    (:func:`cityshade.trace.bricks.static_schedule`): row by row for one thread; for more,
+    blocks of ``AFFINITY_BLOCK``² tiles dealt diagonally to the threads (block (bx, by) to
+    thread (bx + by) mod threads), each thread's tiles one contiguous part of the order.
+
+    A batch of the walk holds the triangles of one part of the model, i.e. of a few hundred
+    tiles close together: dealt dynamically, a tile went to a different thread in each batch
+    and its pixels moved between the cores' caches (the depth pass of a 4096² map of the
+    1M-triangle city, raster at 2 threads 108-111 ms against 86 when all casters were one
+    batch); with each tile always on one thread and the blocks spread over the threads,
+    86-87 ms in 7 batches.
+    """
+    tiles = np.arange(tiles_x * tiles_y, dtype=np.int64)
+    if threads <= 1:
+        return tiles
+    colour = ((tiles % tiles_x) // AFFINITY_BLOCK + (tiles // tiles_x) // AFFINITY_BLOCK) % threads
+    return np.concatenate([tiles[colour == t] for t in range(threads)])
 
 
 # --- binning and the date filter --------------------------------------------------------------

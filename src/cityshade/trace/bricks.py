@@ -76,6 +76,18 @@ def dynamic_bricks():
         numba.set_parallel_chunksize(old)
 
 
+@contextlib.contextmanager
+def static_schedule():
+    """Split prange iterations into one contiguous part per thread, in thread order (Numba's
+    default schedule), whatever chunk size the caller set: for kernels whose iteration order
+    gives each thread its own items (:func:`cityshade.raster.depthpass.tile_order`)."""
+    old = numba.set_parallel_chunksize(0)
+    try:
+        yield
+    finally:
+        numba.set_parallel_chunksize(old)
+
+
 #: :func:`ray_checks` codes: a non-finite origin, a non-finite direction, a direction whose
 #: length is off 1 by more than the tolerance, a direction other than the first ray's.
 BAD_ORIGIN = 1
