@@ -47,6 +47,7 @@ from cityshade.shadows import (TECHNIQUES, ShadowContext, ShadowResult, Techniqu
                                take_pixels)
 from cityshade.shadows.shadowmap import clip_point, plane_depth_gradient
 from cityshade.trace.kernels import hit_triangle, on_axes, ray_shear
+from cityshade.util import Recycler, Scratch
 
 #: Receiver states of the classifiers. PROVEN_SHADOW: uncertain by the map, but its shadow ray
 #: hits one of the casters the map holds around it (the tracer's own watertight test of those
@@ -305,6 +306,12 @@ def _thin_edges(u0, v0, u1, v1, u2, v2, sgn, flat, edges):
         _set_edge(edges, 2, u2, v2, u0, v0, sgn)
 
 
+#: The thin-caster maps' memory (used again once the caller drops them) and the per-triangle
+#: temporaries of :func:`thin_caster_map`.
+_THIN_MAPS = Recycler(keep=4)
+_THIN_SCRATCH = Scratch()
+
+
 def thin_caster_map(scene, view, t_days: float, needed=None) -> tuple[np.ndarray, ...]:
     """(depth, polygon, second depth, second polygon), each (H, W) (float32, int32), of the
     triangles present at ``t_days`` that are thinner than :data:`THIN_TEXELS` in the light
@@ -320,18 +327,25 @@ def thin_caster_map(scene, view, t_days: float, needed=None) -> tuple[np.ndarray
     needed = (np.ones((h, w), np.bool_) if needed is None
               else np.ascontiguousarray(needed, np.bool_))
     blocks = _needed_blocks(needed)
-    thin = (np.empty((h, w), np.float32), np.empty((h, w), np.int32),
-            np.empty((h, w), np.float32), np.empty((h, w), np.int32))
-    present = ((np.asarray(scene.tri_t_begin_days) <= t_days)
-               & (t_days < np.asarray(scene.tri_t_end_days)))
+    thin = (_THIN_MAPS.empty((h, w), np.float32), _THIN_MAPS.empty((h, w), np.int32),
+            _THIN_MAPS.empty((h, w), np.float32), _THIN_MAPS.empty((h, w), np.int32))
     n = scene.triangles.shape[0]
-    box = np.empty((n, 4), np.int64)
-    zmin = np.empty(n)
     m = np.ascontiguousarray(view.clip_from_world.reshape(16), np.float64)
-    _thin_boxes(scene.vertices, scene.triangles, present, m, w, h, blocks, box, zmin)
-    band_start, band_items = _band_lists(box, h, min(THIN_BANDS, h))
-    _thin_splat(scene.vertices, scene.triangles, m, box, zmin,
-                classifier_polygons(scene), band_start, band_items, needed, *thin)
+    # Per-triangle temporaries of every frame (a 1M-triangle city: 25 MB), kept: fresh pages
+    # were faulted in anew each time.
+    work = _THIN_SCRATCH.take()
+    try:
+        present = work.get("present", n, np.bool_)
+        np.less_equal(scene.tri_t_begin_days, t_days, out=present)
+        present &= t_days < np.asarray(scene.tri_t_end_days)
+        box = work.get("box", (n, 4), np.int32)
+        zmin = work.get("zmin", n)
+        _thin_boxes(scene.vertices, scene.triangles, present, m, w, h, blocks, box, zmin)
+        band_start, band_items = _band_lists(box, h, min(THIN_BANDS, h))
+        _thin_splat(scene.vertices, scene.triangles, m, box, zmin,
+                    classifier_polygons(scene), band_start, band_items, needed, *thin)
+    finally:
+        work.give_back()
     return thin
 
 
