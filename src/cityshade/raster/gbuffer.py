@@ -15,6 +15,7 @@ from numba import njit, prange
 
 from cityshade.errors import UsageError
 from cityshade.trace.bricks import dynamic_bricks
+from cityshade.util import Recycler
 
 
 @dataclass(eq=False)
@@ -68,15 +69,29 @@ class Surfaces:
 @njit(cache=True, parallel=True)
 def _resolve_kernel(prim, bary, verts, tris, uvs, tri_object, tri_material, tri_texture,
                     tri_class, position, normal, uv, obj_id, material, texture, cls):
-    """Fill the per-pixel attributes of the valid pixels (the outputs come pre-filled with the
-    no-surface values). Every value is the same float64 expression, in the same order, as the
-    numpy twin ``tests/reference.py: reference_resolve``, so the results are bit-identical."""
+    """Fill every pixel's attributes: the no-surface values (NaN position, zero normal and
+    texture coordinates, -1 ids, class 0) where ``prim`` is -1, else the triangle's. Every
+    value is the same float64 expression, in the same order, as the numpy twin
+    ``tests/reference.py: reference_resolve``, so the results are bit-identical. (Numpy's
+    fills before the kernel were a serial quarter of the resolve.)"""
     height, width = prim.shape
     has_uv = uvs.shape[0] > 0
     for r in prange(height):
         for c in range(width):
             tri = prim[r, c]
+            normal[r, c, 0] = np.float32(0.0)
+            normal[r, c, 1] = np.float32(0.0)
+            normal[r, c, 2] = np.float32(0.0)
+            uv[r, c, 0] = np.float32(0.0)
+            uv[r, c, 1] = np.float32(0.0)
             if tri < 0:
+                position[r, c, 0] = np.nan
+                position[r, c, 1] = np.nan
+                position[r, c, 2] = np.nan
+                obj_id[r, c] = -1
+                material[r, c] = -1
+                texture[r, c] = -1
+                cls[r, c] = 0
                 continue
             bu = np.float64(bary[r, c, 0])
             bv = np.float64(bary[r, c, 1])
@@ -113,6 +128,11 @@ def _resolve_kernel(prim, bary, verts, tris, uvs, tri_object, tri_material, tri_
             cls[r, c] = tri_class[tri]
 
 
+#: The resolved surfaces' and oriented normals' memory (eight arrays a frame), used again once
+#: nothing refers to it.
+_SURFACES = Recycler(keep=16)
+
+
 def resolve(scene, gbuf: GBuffer) -> Surfaces:
     """Derive per-pixel surface attributes from ``prim_id`` and ``bary``.
 
@@ -126,13 +146,15 @@ def resolve(scene, gbuf: GBuffer) -> Surfaces:
     if prim.ndim != 2 or gbuf.bary.shape != prim.shape + (2,):
         raise UsageError("G-buffer prim_id must be (H, W) and bary (H, W, 2)")
     h, w = prim.shape
-    position = np.full((h, w, 3), np.nan)
-    normal = np.zeros((h, w, 3), np.float32)
-    uv = np.zeros((h, w, 2), np.float32)
-    obj_id = np.full((h, w), -1, np.int32)
-    material = np.full((h, w), -1, np.int32)
-    texture = np.full((h, w), -1, np.int32)
-    cls = np.zeros((h, w), np.uint8)
+    # Every element is written by the kernel; the memory of earlier frames' dropped surfaces
+    # is used again (fresh pages: a fault and the kernel's zeroing each).
+    position = _SURFACES.empty((h, w, 3), np.float64)
+    normal = _SURFACES.empty((h, w, 3), np.float32)
+    uv = _SURFACES.empty((h, w, 2), np.float32)
+    obj_id = _SURFACES.empty((h, w), np.int32)
+    material = _SURFACES.empty((h, w), np.int32)
+    texture = _SURFACES.empty((h, w), np.int32)
+    cls = _SURFACES.empty((h, w), np.uint8)
     # Rows handed out a few at a time: surfaces are uneven over a picture (the 1080p overview
     # of the 1M city has 32 % of its surface pixels in the top half of the rows).
     with dynamic_bricks():
@@ -183,7 +205,7 @@ def seen_side_normals(surfaces: Surfaces, camera) -> np.ndarray:
     else:
         position = np.zeros((1, 1, 3))
     to_viewer = eye - np.asarray(camera.target_m, np.float64).reshape(3)
-    out = np.empty((h, w, 3))
+    out = _SURFACES.empty((h, w, 3), np.float64)
     with dynamic_bricks():      # rows: uneven, as in resolve
         _seen_side_kernel(normal, position, eye, to_viewer, perspective, out)
     return out

@@ -25,7 +25,7 @@ from cityshade.raster import triangles as tc
 from cityshade.raster.camera import Camera
 from cityshade.raster.gbuffer import GBuffer
 from cityshade.trace.bricks import static_schedule
-from cityshade.util import check_t_days
+from cityshade.util import Recycler, check_t_days
 
 #: Side of the blocks of the hierarchical max-depth buffer (8 blocks per tile side).
 BLOCK_PX = 8
@@ -164,6 +164,21 @@ def _raster_tiles(order, start, items, ids, coef, vals, bbox, xs, ys, near, far,
             hiz_tile[tr0 // tile_px, tc0 // tile_px] = tmax
 
 
+#: The G-buffers' memory (three arrays a frame), used again once nothing refers to it.
+_GBUFFERS = Recycler(keep=6)
+
+
+@njit(cache=True, parallel=True)
+def _clear(prim, depth, bary):
+    """``prim = -1``, ``depth = +inf``, ``bary = 0``, rows in parallel."""
+    for r in prange(prim.shape[0]):
+        for c in range(prim.shape[1]):
+            prim[r, c] = -1
+            depth[r, c] = np.inf
+            bary[r, c, 0] = np.float32(0.0)
+            bary[r, c, 1] = np.float32(0.0)
+
+
 class _Target:
     """The G-buffer being drawn and the tile kernel call the triangle core's batcher makes."""
 
@@ -176,9 +191,12 @@ class _Target:
         self.tiles_x = -(-w // tile_px)
         self.tiles_y = -(-h // tile_px)
         self.order = tc.tile_order(self.tiles_x, self.tiles_y, int(numba.get_num_threads()))
-        self.prim = np.full((h, w), -1, np.int32)
-        self.depth = np.full((h, w), np.inf, np.float32)
-        self.bary = np.zeros((h, w, 2), np.float32)
+        # The memory of dropped G-buffers again, cleared in parallel (numpy's fills were
+        # serial, on fresh pages).
+        self.prim = _GBUFFERS.empty((h, w), np.int32)
+        self.depth = _GBUFFERS.empty((h, w), np.float32)
+        self.bary = _GBUFFERS.empty((h, w, 2), np.float32)
+        _clear(self.prim, self.depth, self.bary)
         self.occlusion = occlusion
         self.hiz_block = np.full((-(-h // BLOCK_PX), -(-w // BLOCK_PX)), np.inf, np.float32)
         self.hiz_tile = np.full((self.tiles_y, self.tiles_x), np.inf, np.float32)
