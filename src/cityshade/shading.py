@@ -34,6 +34,7 @@ from cityshade.errors import CityshadeError
 from cityshade.trace.bricks import dynamic_bricks
 from cityshade.textures import (TextureSet, composite_textures, load_texture_set,
                                 lod_from_uv_neighbours, srgb_to_linear)
+from cityshade.util import Recycler
 
 __all__ = ["ShadingError", "ShadingSettings", "DEFAULT_PALETTE_SRGB8", "shade", "to_srgb8",
            "albedo_of_surfaces"]
@@ -77,6 +78,11 @@ DEFAULT_PALETTE_SRGB8: dict[str, tuple[int, int, int]] = {
 
 class ShadingError(CityshadeError):
     """Inputs to :func:`shade` that do not fit together (shapes, NaN lit fractions, sun)."""
+
+
+#: The memory of the albedo, texture inputs and shaded images of earlier frames, used again
+#: once nothing refers to it (fresh pages: a fault and the kernel's zeroing each).
+_IMAGES = Recycler(keep=8)
 
 
 def _rgb_tuple(name: str, value) -> tuple[float, float, float]:
@@ -264,7 +270,7 @@ def albedo_of_surfaces(scene, surfaces, *, settings: ShadingSettings | None = No
     palette = settings.palette_linear()
     materials = list(getattr(scene, "materials", []) or [])
     colours, usable = _material_table(materials)
-    albedo = np.empty((height, width, 3), np.float32)
+    albedo = _IMAGES.empty((height, width, 3), np.float32)
     _base_albedo_kernel(valid, np.ascontiguousarray(material), np.ascontiguousarray(klass),
                         colours, usable, palette, albedo)
     textures = list(getattr(scene, "textures", []) or [])
@@ -279,8 +285,8 @@ def albedo_of_surfaces(scene, surfaces, *, settings: ShadingSettings | None = No
     # of the triangle, else the triangle; no ids: one patch) and which textures are seen.
     prim = np.zeros((1, 1), np.int32) if prim_id is None else np.ascontiguousarray(prim_id)
     mode = 0 if prim_id is None else (1 if polygon is None else 2)
-    tex_ids = np.empty((height, width), np.int64)
-    group = np.empty((height, width), np.int64)
+    tex_ids = _IMAGES.empty((height, width), np.int64)
+    group = _IMAGES.empty((height, width), np.int64)
     used = np.zeros(n_tex, bool)
     n_textured = _texture_inputs_kernel(
         valid, np.ascontiguousarray(texture), prim,
@@ -309,6 +315,9 @@ def _shade_kernel(valid, normal, position, albedo, lit, sun_dir, eye, view_dir, 
     for r in prange(height):
         for c in range(width):
             if not valid[r, c]:
+                out[r, c, 0] = np.nan       # no surface (the sky kernel may paint it)
+                out[r, c, 1] = np.nan
+                out[r, c, 2] = np.nan
                 continue
             nx = float(normal[r, c, 0])
             ny = float(normal[r, c, 1])
@@ -435,7 +444,7 @@ def shade(scene, surfaces, camera, lit_fraction: np.ndarray, sun_dir_render, *,
 
     albedo = albedo_of_surfaces(scene, surfaces, settings=settings, prim_id=prim_id,
                                 report=report)
-    out = np.full((height, width, 3), np.nan, np.float32)
+    out = _IMAGES.empty((height, width, 3), np.float32)     # every pixel written
     with dynamic_bricks():      # rows handed out a few at a time: surfaces are uneven
         _shade_kernel(valid, normal, position, np.ascontiguousarray(albedo, np.float32), lit,
                       sun, eye, view_dir, perspective, np.array(settings.sun_rgb),
