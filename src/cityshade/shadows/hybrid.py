@@ -306,10 +306,12 @@ def _thin_edges(u0, v0, u1, v1, u2, v2, sgn, flat, edges):
         _set_edge(edges, 2, u2, v2, u0, v0, sgn)
 
 
-#: The thin-caster maps' memory (used again once the caller drops them) and the per-triangle
-#: temporaries of :func:`thin_caster_map`.
-_THIN_MAPS = Recycler(keep=4)
+#: The thin-caster maps' and texel polygons' memory (used again once the caller drops them) and
+#: the per-triangle temporaries of :func:`thin_caster_map`.
+_THIN_MAPS = Recycler(keep=6)
 _THIN_SCRATCH = Scratch()
+#: :func:`bracket_states`'s per-receiver temporaries.
+_BRACKET_SCRATCH = Scratch()
 
 
 def thin_caster_map(scene, view, t_days: float, needed=None) -> tuple[np.ndarray, ...]:
@@ -352,7 +354,7 @@ def thin_caster_map(scene, view, t_days: float, needed=None) -> tuple[np.ndarray
 @njit(cache=True, parallel=True)
 def _bracket_kernel(m, width, height, depth, prim, texel_poly, points, normals, sun,
                     offset_rel, min_scale_m, own_poly, radius, vertices, triangles, state,
-                    own_texel, z_limit):
+                    own_texel, z_limit, needed):
     """Classify receivers from the depth-map texels around their true surface points, in one
     pass per receiver: its shadow-ray origin (:func:`cityshade.trace.shadow_rays_from_surface`'s
     offset, the arithmetic of :func:`cityshade.trace.bricks.shadow_origins`), its projection
@@ -366,7 +368,8 @@ def _bracket_kernel(m, width, height, depth, prim, texel_poly, points, normals, 
     therefore never count, while anything rising above the plane does. Surely lit: no texel
     within ``radius`` occludes (and, decided by :func:`_thin_kernel` afterwards, no thin caster
     covers the receiver's point: ``own_texel``, its texel's flat index or -1 off the map, and
-    ``z_limit``, its depth less the tolerance, are kept for that). Surely in shadow:
+    ``z_limit``, its depth less the tolerance, are kept for that, and ``needed``, (H·W,) bool
+    all False on entry, marks those texels: the thin map is made only there). Surely in shadow:
     every texel within ``radius`` occludes and all come from one polygon (no gap between
     casters, however narrow, can let light through). Else uncertain. No bias is involved: the
     decision is about the exact surface point, within the map's one-texel position accuracy.
@@ -445,6 +448,7 @@ def _bracket_kernel(m, width, height, depth, prim, texel_poly, points, normals, 
             if 0 <= cv < h and 0 <= cu < w:
                 own_texel[i] = cv * w + cu
                 z_limit[i] = z_s - tol
+                needed[cv * w + cu] = True      # every thread writes the same True
         elif clear == 0 and not mixed:
             state[i] = SURE_SHADOW
         else:
@@ -586,7 +590,7 @@ def texel_polygons(prim_id, tri_polygon) -> np.ndarray:
     """(H, W) int32 polygon of each depth-map texel's triangle (-1 where empty): looked up once
     per texel instead of once per receiver and window texel."""
     prim = np.asarray(prim_id)
-    out = np.empty(prim.shape, np.int32)
+    out = _THIN_MAPS.empty(prim.shape, np.int32)
     _texel_polygons_kernel(prim, np.asarray(tri_polygon), out)
     return out
 
@@ -610,18 +614,31 @@ def bracket_states(depth_map, scene, points_m, normals, own_poly, sun_direction,
     the texels of the receivers the depth map calls lit, the only ones it can change; or pass
     a whole one as ``thin_map``.
     """
-    from cityshade.trace import SHADOW_OFFSET_MIN_SCALE_M, SHADOW_OFFSET_REL
-
     points = np.ascontiguousarray(points_m, np.float64).reshape(-1, 3)
     normals = np.ascontiguousarray(normals, np.float64).reshape(-1, 3)
     own_poly = np.ascontiguousarray(own_poly, np.int32)
-    view = depth_map.view
     n = points.shape[0]
     state = np.empty(n, np.uint8)
     if not n:
         return state
-    own_texel = np.empty(n, np.int64)
-    z_limit = np.empty(n)
+    work = _BRACKET_SCRATCH.take()
+    try:
+        return _bracket_states(depth_map, scene, points, normals, own_poly, sun_direction,
+                               radius_texels, t_days, thin_map, state, work)
+    finally:
+        work.give_back()
+
+
+def _bracket_states(depth_map, scene, points, normals, own_poly, sun_direction, radius_texels,
+                    t_days, thin_map, state, work):
+    """:func:`bracket_states` on checked arrays, its per-receiver temporaries in ``work``."""
+    from cityshade.trace import SHADOW_OFFSET_MIN_SCALE_M, SHADOW_OFFSET_REL
+
+    view = depth_map.view
+    n = points.shape[0]
+    own_texel = work.get("own_texel", n, np.int64)
+    z_limit = work.get("z_limit", n)
+    needed = np.zeros(view.height_px * view.width_px, np.bool_)
     _bracket_kernel(np.ascontiguousarray(view.clip_from_world.reshape(16), np.float64),
                     float(view.width_px), float(view.height_px),
                     np.asarray(depth_map.depth), np.asarray(depth_map.prim_id),
@@ -629,10 +646,8 @@ def bracket_states(depth_map, scene, points_m, normals, own_poly, sun_direction,
                     normals,
                     np.ascontiguousarray(sun_direction, np.float64).reshape(3),
                     SHADOW_OFFSET_REL, SHADOW_OFFSET_MIN_SCALE_M, own_poly, int(radius_texels),
-                    scene.vertices, scene.triangles, state, own_texel, z_limit)
+                    scene.vertices, scene.triangles, state, own_texel, z_limit, needed)
     if thin_map is None:
-        needed = np.zeros(view.height_px * view.width_px, np.bool_)
-        needed[own_texel[own_texel >= 0]] = True
         thin_map = thin_caster_map(scene, view, t_days,
                                    needed.reshape(view.height_px, view.width_px))
     _thin_kernel(thin_map[0], thin_map[1], thin_map[2], own_poly, own_texel, z_limit, state)
