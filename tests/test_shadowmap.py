@@ -119,6 +119,32 @@ def test_depth_map_culled_equals_unculled(sample):
     assert part.stats["casters_drawn"] < full.stats["casters_drawn"]
 
 
+def test_depth_pass_skips_the_walk_when_the_view_holds_most_of_the_model(sample, monkeypatch):
+    """inside_share against a count by hand, and a view holding the whole city but for a
+    sliver of one side goes linear (the same map as the walk's)."""
+    from cityshade.raster import depthpass as dp
+
+    sun = sun_from_angles(135.0, 30.0)
+    right, up, fwd = sm.light_basis(sun.direction)
+    light = sample.vertices.astype(np.float64) @ np.stack([right, up], axis=1)
+    lo, hi = light.min(axis=0), light.max(axis=0)
+    cut = lo[0] + 0.1 * (hi[0] - lo[0])              # the view leaves out 10 % of the width
+    view = sm.ortho_view(sun.direction, (cut, hi[0] + 1), (lo[1] - 1, hi[1] + 1), (-2000, 2000),
+                         192, 192)
+    planes = dp.frustum_planes(view.clip_from_world, 0.0)
+    step = max(1, sample.vertices.shape[0] // dp.INSIDE_SAMPLES)
+    want = float((light[::step, 0] >= cut).mean())
+    assert 0.5 < dp.inside_share(sample.vertices, planes) == pytest.approx(want, abs=0.02)
+    assert want >= dp.LINEAR_INSIDE_SHARE
+    linear = sm.render_depth_map(sample, view, T_1990)
+    assert linear.stats["culling"] == "most of the model lies inside the light view"
+    monkeypatch.setattr(dp, "LINEAR_INSIDE_SHARE", 2.0)       # the walk, always
+    walked = sm.render_depth_map(sample, view, T_1990)
+    assert walked.stats["culling"] == "kd-tree walk" and walked.stats["frustum_refs_removed"]
+    np.testing.assert_array_equal(linear.prim_id, walked.prim_id)
+    np.testing.assert_array_equal(linear.depth, walked.depth)
+
+
 def _context(scene, cam, sun, t=0.0, options=None):
     from cityshade.raster.gbuffer import resolve
     from cityshade.raster.rasterize import rasterize

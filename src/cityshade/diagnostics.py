@@ -76,6 +76,10 @@ def _depth_map_skips(stats: dict, where: str) -> list[str]:
     if stats.get("culling") == "the model lies inside the light view":
         out.append(f"{where}: kd-tree walk skipped (the whole model lies inside the light "
                    f"view: nothing to cull, a linear time filter is cheaper)")
+    elif stats.get("culling") == "most of the model lies inside the light view":
+        out.append(f"{where}: kd-tree walk skipped (most of the model lies inside the light "
+                   f"view: too little to cull for the walk's cost, a linear time filter is "
+                   f"cheaper)")
     elif removed:
         out.append(f"{where}: {removed} caster references outside the light frustum not drawn "
                    f"({drawn} drawn of {stats.get('triangles', 0)} triangles; "

@@ -97,6 +97,14 @@ def projection_centre(clip_from_world) -> np.ndarray:
 #: See :data:`cityshade.raster.triangles.NARROW_COLS` (the setup leaves the column bounds of
 #: such boxes out).
 NARROW_COLS = tc.NARROW_COLS
+#: The culled walk is skipped for the linear time filter when at least this share of the
+#: model's vertices (:func:`inside_share`) lies inside the light view: the walk of the 1M-city's
+#: tree costs 16 ms on one thread and culled nothing from the fitted map of the 1080p overview
+#: (835,660 casters either way; depth pass at 2 threads 88 against 71 ms linear). The map is
+#: the same either way.
+LINEAR_INSIDE_SHARE = 0.75
+#: Vertices :func:`inside_share` samples.
+INSIDE_SAMPLES = 4096
 #: The maps' memory, used again once the caller has let go of a map (a cascade's four maps and
 #: their triangle ids fit).
 _MAPS = Recycler(keep=8)
@@ -260,6 +268,17 @@ def _clear(depth, prim):
             prim[r, c] = -1
 
 
+def inside_share(vertices, planes, samples: int = INSIDE_SAMPLES) -> float:
+    """Share of the vertices inside all ``planes`` (``n . p + d >= 0``), from every k-th of
+    them (about ``samples``): how much of the model a view holds."""
+    step = max(1, vertices.shape[0] // samples)
+    points = np.asarray(vertices[::step], np.float64)
+    if points.shape[0] == 0:
+        return 0.0
+    inside = (points @ planes[:, :3].T + planes[:, 3] >= 0.0).all(axis=1)
+    return float(inside.mean())
+
+
 def render_depth(scene, clip_from_world, width_px: int, height_px: int, t_days: float, *,
                  casters_box=None, culling: bool = True, tile_px: int = tc.TILE_PX
                  ) -> tuple[np.ndarray, np.ndarray, dict[str, Any]]:
@@ -329,6 +348,10 @@ def render_depth(scene, clip_from_world, width_px: int, height_px: int, t_days: 
             # The whole model is in the view: a linear time filter beats the walk.
             use_tree = False
             stats["culling"] = "the model lies inside the light view"
+        elif inside_share(scene.vertices, planes) >= LINEAR_INSIDE_SHARE:
+            # Nearly all of it: the serial walk would cull too little to pay for itself.
+            use_tree = False
+            stats["culling"] = "most of the model lies inside the light view"
         else:
             stats["culling"] = "kd-tree walk"
             walk = tc.CulledWalk(tree, t, planes, projection_centre(clip_from_world),
