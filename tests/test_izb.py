@@ -399,13 +399,16 @@ def test_casters_walked_from_the_tree_equal_raytrace_on_real_lod2(tmp_path_facto
                                  crs=True)
 
 
+@pytest.mark.parametrize("parallel_sort_min", [2, 1 << 30])
 def test_casters_gathered_in_chunks_are_the_tree_records_once_each_in_key_order(
-        tmp_path, monkeypatch):
+        tmp_path, monkeypatch, parallel_sort_min):
     """Casters read from a memory-mapped tree a few rows at a time: one row per triangle (its
-    first record), sorted by depth key descending, stable, as one gather of all would be."""
+    first record), sorted by depth key descending, stable, as one gather of all would be;
+    with the halves sorted on two threads and merged, and with one sort."""
     from cityshade.accel import KdTree
 
     monkeypatch.setattr(lightspace, "GATHER_ROWS", 13)
+    monkeypatch.setattr(lightspace, "PARALLEL_SORT_MIN", parallel_sort_min)
     tree = build_kdtree(*box_city(40, seed=3, extent_m=100.0))
     for name, arr in tree.to_arrays().items():
         np.save(tmp_path / f"{name}.npy", arr)
@@ -424,6 +427,25 @@ def test_casters_gathered_in_chunks_are_the_tree_records_once_each_in_key_order(
             once[order][:, :lightspace.K.CASTER_WORDS]).tobytes()
         assert got_keys.dtype == np.float32
         np.testing.assert_array_equal(got_keys.astype(np.float64), keys[order])
+
+
+@pytest.mark.parametrize("n", [2, 3, 1000, 70_001])
+def test_stable_argsort_is_numpys_stable_argsort(n, monkeypatch):
+    """Two halves sorted on two threads and merged: numpy's stable order, ties included (keys
+    from a few values, so most are ties; the right half must come after the left on a tie)."""
+    import numba
+
+    monkeypatch.setattr(lightspace, "PARALLEL_SORT_MIN", 2)
+    keys = np.random.default_rng(n).integers(0, 7, n).astype(np.float64)
+    keys[::5] = -np.inf
+    threads = numba.get_num_threads()
+    try:
+        for t in sorted({1, min(2, numba.config.NUMBA_NUM_THREADS)}):
+            numba.set_num_threads(t)
+            np.testing.assert_array_equal(lightspace.stable_argsort(keys),
+                                          np.argsort(keys, kind="stable"))
+    finally:
+        numba.set_num_threads(threads)
 
 
 def test_forget_casters_drops_what_the_tree_kept():

@@ -209,7 +209,7 @@ def test_tiled_run_sorts_the_casters_as_often_as_the_untiled_one(files, tmp_path
     keys = K.caster_keys
 
     def counted(*args):
-        sorts.append(args[1:3])
+        sorts.append(args[2:4])
         return keys(*args)
 
     monkeypatch.setattr(K, "caster_keys", counted)

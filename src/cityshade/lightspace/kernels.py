@@ -123,13 +123,63 @@ def first_records(ids, seen, out_rows):
 
 
 @njit(cache=True, parallel=True)
-def caster_keys(recs, kz, sgn, out_key):
-    """Depth key ``max_v sgn * v[kz]`` of every record (float32 vertices, exact in float64)."""
-    for j in prange(recs.shape[0]):
-        a = sgn * np.float64(recs[j, kz])
-        b = sgn * np.float64(recs[j, 3 + kz])
-        c = sgn * np.float64(recs[j, 6 + kz])
-        out_key[j] = max(a, max(b, c))
+def caster_keys(recs, rows, kz, sgn, out_key):
+    """Sort key ``-max_v sgn * v[kz]`` (the depth key negated: ascending order is the casters'
+    descending key order) of the tree records ``rows`` (float32 vertices, exact in float64);
+    read in place, no gathered copy."""
+    for j in prange(rows.shape[0]):
+        r = rows[j]
+        a = sgn * np.float64(recs[r, kz])
+        b = sgn * np.float64(recs[r, 3 + kz])
+        c = sgn * np.float64(recs[r, 6 + kz])
+        out_key[j] = -max(a, max(b, c))
+
+
+@njit(cache=True)
+def merge_orders(keys, left, right, out):
+    """``out``: the stable merge of two index arrays each in ascending ``keys`` order, ``left``
+    first on equal keys; for the two halves' stable argsorts (``right`` holding the later
+    indices) that is the stable argsort of the whole."""
+    i = 0
+    j = 0
+    k = 0
+    while i < left.shape[0] and j < right.shape[0]:
+        if keys[right[j]] < keys[left[i]]:
+            out[k] = right[j]
+            j += 1
+        else:
+            out[k] = left[i]
+            i += 1
+        k += 1
+    while i < left.shape[0]:
+        out[k] = left[i]
+        i += 1
+        k += 1
+    while j < right.shape[0]:
+        out[k] = right[j]
+        j += 1
+        k += 1
+
+
+@njit(cache=True, parallel=True)
+def ranks_of(order, keys, out_sorted_keys, out_rank):
+    """Where each caster goes (``out_rank[order[i]] = i``) and the depth keys in that order
+    (``-keys``, float32: exact, a key is a float32 coordinate)."""
+    for i in prange(order.shape[0]):
+        o = order[i]
+        out_sorted_keys[i] = np.float32(-keys[o])
+        out_rank[o] = i
+
+
+@njit(cache=True, parallel=True)
+def scatter_records(recs, rows, rank, out):
+    """``out[rank[j]] = recs[rows[j], :CASTER_WORDS]``: the tree's records read in file order,
+    written to their sorted rows."""
+    for j in prange(rows.shape[0]):
+        r = rows[j]
+        q = rank[j]
+        for w in range(out.shape[1]):
+            out[q, w] = recs[r, w]
 
 
 @njit(cache=True, parallel=True)
