@@ -442,21 +442,25 @@ def shade(scene, surfaces, camera, lit_fraction: np.ndarray, sun_dir_render, *,
         raise ShadingError(f"surfaces.position_m has shape {position.shape}, expected "
                            f"{(height, width, 3)}")
 
-    albedo = albedo_of_surfaces(scene, surfaces, settings=settings, prim_id=prim_id,
-                                report=report)
-    out = _IMAGES.empty((height, width, 3), np.float32)     # every pixel written
-    with dynamic_bricks():      # rows handed out a few at a time: surfaces are uneven
+    # Every row-parallel kernel below takes rows a few at a time (dynamic scheduling): the
+    # surfaces and the sky of a view are uneven over its rows (the sky kernel alone, rows
+    # split in two halves, scaled 1.67x at two threads).
+    with dynamic_bricks():
+        albedo = albedo_of_surfaces(scene, surfaces, settings=settings, prim_id=prim_id,
+                                    report=report)
+        out = _IMAGES.empty((height, width, 3), np.float32)     # every pixel written
         _shade_kernel(valid, normal, position, np.ascontiguousarray(albedo, np.float32), lit,
                       sun, eye, view_dir, perspective, np.array(settings.sun_rgb),
-                      np.array(settings.sky_ambient_rgb), np.array(settings.ground_ambient_rgb),
-                      out)
-    if perspective and sky and not valid.all():
-        xs, ys = camera.screen_coordinates()
-        if xs.shape != (width,) or ys.shape != (height,):
-            raise ShadingError(f"camera gives {len(xs)}×{len(ys)} pixels for {height}×{width}")
-        right, up, fwd = camera.frame()
-        _sky_kernel(valid, xs, ys, right, up, fwd, np.array(settings.sky_zenith_rgb),
-                    np.array(settings.sky_horizon_rgb), np.array(settings.sky_below_rgb), out)
+                      np.array(settings.sky_ambient_rgb),
+                      np.array(settings.ground_ambient_rgb), out)
+        if perspective and sky and not valid.all():
+            xs, ys = camera.screen_coordinates()
+            if xs.shape != (width,) or ys.shape != (height,):
+                raise ShadingError(f"camera gives {len(xs)}×{len(ys)} pixels for "
+                                   f"{height}×{width}")
+            right, up, fwd = camera.frame()
+            _sky_kernel(valid, xs, ys, right, up, fwd, np.array(settings.sky_zenith_rgb),
+                        np.array(settings.sky_horizon_rgb), np.array(settings.sky_below_rgb), out)
     return out
 
 
