@@ -37,7 +37,9 @@ def _pool() -> ThreadPoolExecutor:
 def run_chunks(kernel, n_items: int, chunk_items: int, *args) -> None:
     """Call ``kernel(*args, i0, i1)`` over ``[0, n_items)`` in chunks of ``chunk_items``.
 
-    ``kernel`` must be a ``nogil`` Numba function whose result for an item does not depend on
+    ``kernel`` must release the GIL while it works (a ``nogil`` Numba function, or a Python
+    function whose time is spent in such calls, e.g. numpy's sort:
+    :func:`cityshade.lightspace.stable_argsort`) and its result for an item must not depend on
     which call handled it. The chunks go to ``numba.get_num_threads()`` threads (at most one
     per chunk; one thread runs them in the calling thread, in order). An exception in any
     thread (Ctrl-C in the calling one) stops the others after their current chunk, and the
