@@ -63,7 +63,7 @@ def _progress(done: int, total: int, label: str) -> None:
 
 def evaluate_model(name: str, path: Path, out: Path, shadows: str, sizes: tuple[int, ...],
                    repeat: int, size=(1280, 720), views=("overview", "map")):
-    from cityshade.citygml.temporal import days_to_iso, parse_user_date
+    from cityshade.geo.temporal import days_to_iso, parse_user_date
     from cityshade.evaluate import (EvaluateSettings, expand_techniques, make_camera,
                                     open_scene, parse_suns, run_evaluation, write_report)
 

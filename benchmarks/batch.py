@@ -4,7 +4,7 @@ Input: the synthetic benchmark city of ``cityshade.samplegen`` (1 000 000 triang
 generated into ``--workdir`` (default ``bench_out/``) and built once, as in
 ``benchmarks/render.py``. The city as it stood on 2000-01-01.
 
-Work: ``cityshade.batch.sun_hours`` with the technique ``--shadows`` (default ``izb``, as
+Work: ``cityshade.sunhours.run.sun_hours`` with the technique ``--shadows`` (default ``izb``, as
 ``cityshade batch``; ``raytrace`` is the kd-tree), a top-down map view of the model's extent at
 ``--pixel-size`` (default 1 m; ``--side 2048`` takes a 2048² window centred on the model
 instead), one day ``--date`` (default the summer solstice 2024-06-21; 2024-12-21 is the low-sun
@@ -71,10 +71,10 @@ def main(argv=None) -> dict:
 
     import numba
 
-    from cityshade import batch as B
+    from cityshade.sunhours import run as B
     from cityshade.raster.camera import map_view, scene_box
-    from cityshade.scenefile import load_scene
-    from cityshade.sun import suns_from_instants
+    from cityshade.store.scenefile import load_scene
+    from cityshade.geo.sun import suns_from_instants
 
     scene = load_scene(ensure_scene(args.workdir, args.triangles, args.seed))
     if args.side:

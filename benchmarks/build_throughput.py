@@ -259,7 +259,7 @@ def ours(path: Path, out: Path) -> dict:
         return {"error": f"no output file {out}"}
     run["output_bytes"] = out.stat().st_size
     try:  # the build's own stage timings (read, triangulate, kd-tree) from the file header
-        from cityshade.scenefile import read_header
+        from cityshade.store.scenefile import read_header
 
         run["stage_s"] = read_header(out).get("report", {}).get("timings", {})
     except Exception:  # an older file layout: the stage timings are only missing

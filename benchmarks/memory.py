@@ -52,11 +52,11 @@ def _run(scene, view: str, technique: str, pixels: int, steps: int, out: Path) -
     """Run one case; returns the camera's pixel count."""
     import datetime as dt
 
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
 
     cam = _camera(scene, view, pixels)
     if view == "batch":
-        from cityshade.batch import colour_map_png, sun_hours
+        from cityshade.sunhours.run import colour_map_png, sun_hours
         from cityshade.imageio import write_exr, write_png_rgb
 
         t0 = dt.datetime(2024, 6, 21, 6, tzinfo=dt.timezone.utc)
@@ -65,7 +65,7 @@ def _run(scene, view: str, technique: str, pixels: int, steps: int, out: Path) -
         write_exr(out / "h.exr", {"sun_hours": result.hours}, {})
         write_png_rgb(out / "h.png", colour_map_png(result.hours))
     else:
-        from cityshade.render import render_frame, write_frame
+        from cityshade.frame.render import render_frame, write_frame
 
         sun = sun_from_angles(135.0, 30.0, scene.crs, scene.origin_m)
         frame = render_frame(scene, cam, DAY_2000, sun, technique)
@@ -74,7 +74,7 @@ def _run(scene, view: str, technique: str, pixels: int, steps: int, out: Path) -
 
 
 def child(scene_path: str, case: str, pixels: int, steps: int) -> None:
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     view, technique = case.split(":", 1)
     scene = load_scene(scene_path)

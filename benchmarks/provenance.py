@@ -1,7 +1,7 @@
 """The commit a benchmark figure belongs to: one definition for every script here.
 
 Imported by every in-process benchmark before numpy: it also gives the benchmark's process the
-command's one BLAS thread (:func:`cityshade.startup.one_blas_thread`), so that figures measure
+command's one BLAS thread (:func:`cityshade.runtime.startup.one_blas_thread`), so that figures measure
 what ``cityshade`` does (OpenBLAS's idle threads spin on the core Numba's second thread needs;
 a LocalCluster's workers inherit the setting, as the command's do).
 """
@@ -10,7 +10,7 @@ from __future__ import annotations
 import subprocess
 from pathlib import Path
 
-from cityshade.startup import one_blas_thread
+from cityshade.runtime.startup import one_blas_thread
 
 one_blas_thread()
 

@@ -173,7 +173,7 @@ def main(argv=None) -> dict:
     from cityshade.raster import camera as cams
     from cityshade.raster.gbuffer import gbuffer_by_raycasting
     from cityshade.raster.rasterize import rasterize
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     width, height = (int(v) for v in args.size.lower().split("x"))
     path = ensure_scene(args.workdir, args.triangles, args.seed)
@@ -312,9 +312,9 @@ def shadow_map_main(argv=None) -> dict:
     the same matrix into a depth-only framebuffer (child process per thread count)."""
     import numba
 
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
     from cityshade.shadows import shadowmap as sm
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
 
     global _LLVMPIPE_CHILD
     ap = argparse.ArgumentParser(description="shadow-map depth pass benchmark")
@@ -435,9 +435,9 @@ def techniques_main(argv=None) -> dict:
     import numpy as np
 
     from cityshade.raster.camera import map_view, overview
-    from cityshade.render import render_frame, write_frame
-    from cityshade.scenefile import load_scene
-    from cityshade.sun import sun_from_angles
+    from cityshade.frame.render import render_frame, write_frame
+    from cityshade.store.scenefile import load_scene
+    from cityshade.geo.sun import sun_from_angles
 
     scene = load_scene(ensure_scene(args.workdir, args.triangles, args.seed), verify=False)
     w, h = (int(v) for v in args.size.split("x"))

@@ -57,7 +57,7 @@ print(json.dumps({"returncode": proc.returncode, "seconds": seconds,
 #: One load in a fresh process: seconds of load_scene alone (after the imports).
 _LOAD_CHILD = r"""
 import json, sys, time
-from cityshade.scenefile import load_scene
+from cityshade.store.scenefile import load_scene
 verify = {"auto": "auto", "full": True}[sys.argv[2]]
 t0 = time.perf_counter()
 try:
@@ -111,7 +111,7 @@ def build_figures(python: str, city: Path, cache: Path, threads: int) -> dict:
 
 
 def _header(python: str, cache: Path) -> dict:
-    code = ("import json, sys; from cityshade.scenefile import read_header; "
+    code = ("import json, sys; from cityshade.store.scenefile import read_header; "
             "h = read_header(sys.argv[1]); h.pop('arrays', None); print(json.dumps(h))")
     proc = subprocess.run([python, "-c", code, str(cache)], capture_output=True, text=True)
     return json.loads(proc.stdout) if proc.returncode == 0 else {}
@@ -141,7 +141,7 @@ def load_figures(python: str, cache: Path, repeat: int) -> dict:
 def render_figures(python: str, cache: Path, workdir: Path, megapixels: float,
                    shadows: str = "raytrace", strip_rows: int | None = None) -> dict:
     """A top-down map render of about ``megapixels`` Mpx: wall time and peak RSS."""
-    code = ("import json, sys; from cityshade.scenefile import load_scene; "
+    code = ("import json, sys; from cityshade.store.scenefile import load_scene; "
             "s = load_scene(sys.argv[1], with_kdtree=False); v = s.vertices; "
             "lo = v.min(axis=0); hi = v.max(axis=0); print(json.dumps([float(x) for x in hi - lo]))")
     proc = subprocess.run([python, "-c", code, str(cache)], capture_output=True, text=True)

@@ -8,7 +8,7 @@ the model's extent at ``--pixel-size`` (default 2 m); one day ``--date`` (2024-0
 Europe/Berlin, 00:00–24:00) every 10 minutes: the steps with the sun up are computed; ``izb``.
 
 Runs, interleaved ``--repeat`` times, each into a fresh output folder through
-``cityshade.batch.run_batch`` (what ``cityshade batch`` calls; the same numbers in every run,
+``cityshade.sunhours.run.run_batch`` (what ``cityshade batch`` calls; the same numbers in every run,
 checked byte for byte):
 
 * ``plain-1t`` / ``plain-2t``: the untiled run without Dask, Numba on 1 / 2 threads;
@@ -68,7 +68,7 @@ def _children_cpu_s() -> float:
 def _one(name: str, scene, scene_path, cam, steps, tile_px: int, outdir: Path) -> dict:
     import numba
 
-    from cityshade import batch as B
+    from cityshade.sunhours import run as B
 
     threads = 2 if name.endswith("2t") else 1
     numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
@@ -76,7 +76,7 @@ def _one(name: str, scene, scene_path, cam, steps, tile_px: int, outdir: Path) -
     if name.startswith("tiled") or name.startswith("local"):
         kw["tile_px"] = tile_px
     if name.startswith("local"):
-        from cityshade.distributed import DaskExecutor
+        from cityshade.sunhours.distributed import DaskExecutor
 
         sha = (scene.header or {}).get("source", {}).get("sha256", "")
         kw["scheduler"] = DaskExecutor(name, scene_path, sha, threads_per_worker=1)
@@ -112,9 +112,9 @@ def main(argv=None) -> dict:
 
     import numba
 
-    from cityshade import batch as B
+    from cityshade.sunhours import run as B
     from cityshade.raster.camera import map_view
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     scene_path = args.scene or _default_scene()
     t0 = time.perf_counter()
@@ -171,7 +171,7 @@ def main(argv=None) -> dict:
     # Projection of a year at 1 m: pixel·steps of the year over the measured rates.
     year = B.plan_steps(date(2024, 1, 1), 0, 86_400, 600, "Europe/Berlin",
                         to_date=date(2024, 12, 31))
-    from cityshade.sun import suns_from_instants
+    from cityshade.geo.sun import suns_from_instants
 
     suns = suns_from_instants([s.centre_utc for s in year], scene.crs, scene.origin_m)
     year_units = sum(1 for s in suns if s.above_horizon)

@@ -50,13 +50,13 @@ def stage_runners(scene, args) -> tuple[dict, dict]:
     import numpy as np
 
     from cityshade.accel import build_kdtree
-    from cityshade.batch import sun_hours
-    from cityshade.pipeline import camera_pass, shadow_pass
+    from cityshade.sunhours.run import sun_hours
+    from cityshade.frame.pipeline import camera_pass, shadow_pass
     from cityshade.raster import camera as cams
     from cityshade.raster.rasterize import rasterize
-    from cityshade.shading import shade
+    from cityshade.frame.shading import shade
     from cityshade.shadows import shadowmap as sm
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
 
     az, el = (float(v) for v in args.sun.split(","))
     sun = sun_from_angles(az, el, scene.crs, scene.origin_m)
@@ -134,7 +134,7 @@ def main(argv=None) -> dict:
 
     import numba
 
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
     from raytrace import core_probe, memory_probe
 
     if numba.config.NUMBA_NUM_THREADS < 2:

@@ -40,9 +40,9 @@ _DISTRICT_CHILD = r"""
 import hashlib, json, resource, sys, time
 import numpy as np
 from cityshade.raster import camera as cams
-from cityshade.render import render_frame
-from cityshade.scenefile import open_scene, scene_for_camera
-from cityshade.sun import sun_from_angles
+from cityshade.frame.render import render_frame
+from cityshade.store.scenefile import open_scene, scene_for_camera
+from cityshade.geo.sun import sun_from_angles
 path, side, px = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
 t0 = time.perf_counter()
 scene = open_scene(path)
@@ -73,7 +73,7 @@ print(json.dumps({
 _OPEN_CHILD = r"""
 import json, sys, time
 t0 = time.perf_counter()
-from cityshade.scenefile import open_scene
+from cityshade.store.scenefile import open_scene
 t1 = time.perf_counter()
 open_scene(sys.argv[1])
 print(json.dumps({"open_s": time.perf_counter() - t1}))

@@ -22,11 +22,11 @@ CASES = {
 
 def render_case(scene, name: str):
     """8-bit image of one case."""
-    from cityshade.citygml.temporal import parse_user_date
+    from cityshade.geo.temporal import parse_user_date
     from cityshade.raster import camera as cams
-    from cityshade.render import render_frame, shadow_mask
-    from cityshade.shading import to_srgb8
-    from cityshade.sun import sun_from_angles
+    from cityshade.frame.render import render_frame, shadow_mask
+    from cityshade.frame.shading import to_srgb8
+    from cityshade.geo.sun import sun_from_angles
 
     date, kind, size, az, el, out, technique = CASES[name]
     cam = cams.overview(scene, *size) if kind == "overview" else cams.map_view(scene, size)
@@ -37,7 +37,7 @@ def render_case(scene, name: str):
 
 def sample_scene(tmp_dir: Path):
     from cityshade.build import build_file
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     out, _, _ = build_file(REPO / "sample_data" / "sample_city.gml", tmp_dir / "sample.cityshade")
     return load_scene(out)

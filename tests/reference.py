@@ -207,7 +207,7 @@ def reference_kdtree_triangles_at_time(tree, t_days):
 def reference_mip_reduce(image):
     """Next mip level of ``image`` (h, w, c) by exact area averaging, done by upsampling.
 
-    Twin of ``cityshade.textures._reduce_level``. Each source texel is repeated ``nw`` times
+    Twin of ``cityshade.frame.textures._reduce_level``. Each source texel is repeated ``nw`` times
     along x and ``nh`` times along y; then every output texel covers a whole block of
     ``w × h`` upsampled texels, and its value is that block's plain mean.
     """
@@ -221,7 +221,7 @@ def reference_mip_reduce(image):
 def reference_sample_texture(levels, wrap_mode, border_rgba, u, v, lod):
     """One trilinear texture sample, written out texel by texel.
 
-    Twin of ``cityshade.textures.sample_trilinear`` for a single texture.
+    Twin of ``cityshade.frame.textures.sample_trilinear`` for a single texture.
 
     Parameters
     ----------
@@ -327,7 +327,7 @@ def reference_rasterize(vertices, triangles, t_begin_days, t_end_days, camera, t
     return prim.reshape(h, w), best.reshape(h, w)
 
 
-# --- sun-hours (twin of cityshade.batch / cityshade.surfaces) ------------------------------------
+# --- sun-hours (twin of cityshade.sunhours.run / cityshade.sunhours.surfaces) ------------------------------------
 
 def reference_sun_hours(vertices, triangles, points, normals, sun_directions, weights_h,
                         offset_m=1e-4):
@@ -862,7 +862,7 @@ def reference_thin_caster_map(scene, view, t_days, thin_texels=2.0, margin=1e-3,
 # --- tiledcache -------------------------------------------------------------------------------
 
 def reference_tiles_passing(boxes, passes):
-    """Twin of :meth:`cityshade.tiledcache.TileTree.query`: every tile box tested in turn."""
+    """Twin of :meth:`cityshade.store.tiled.TileTree.query`: every tile box tested in turn."""
     return [i for i in range(len(boxes)) if passes(boxes[i][0], boxes[i][1])]
 
 
@@ -873,8 +873,8 @@ def reference_albedo(scene, surfaces, prim_id=None, settings=None):
     at a time and scattering the composite back (the numpy path it replaced)."""
     import dataclasses
 
-    from cityshade.shading import ShadingSettings, albedo_of_surfaces
-    from cityshade.textures import load_texture_set, lod_from_uv_neighbours, sample_trilinear
+    from cityshade.frame.shading import ShadingSettings, albedo_of_surfaces
+    from cityshade.frame.textures import load_texture_set, lod_from_uv_neighbours, sample_trilinear
 
     settings = settings or ShadingSettings()
     albedo = albedo_of_surfaces(scene, surfaces, settings=dataclasses.replace(settings,
@@ -914,7 +914,7 @@ def reference_albedo(scene, surfaces, prim_id=None, settings=None):
 def reference_accumulate(sums, slots, weights_h, lit):
     """A tiled run's sums after one sun position, numpy's way: for each row with a weight,
     ``sums[row, slots] += weight · lit`` (the fancy-indexed add that
-    :func:`cityshade.tiles.add_lit` does in one pass)."""
+    :func:`cityshade.sunhours.tiled.add_lit` does in one pass)."""
     sums = np.array(sums, dtype=np.float64)
     lit64 = np.asarray(lit).astype(np.float64)
     for row in np.flatnonzero(np.asarray(weights_h) > 0.0):
@@ -939,7 +939,7 @@ def reference_boxes_holding_a_point(boxes, xs, ys):
 
 
 def reference_used_vertex_box(vertices, triangles):
-    """Twin of :func:`cityshade.raster.culling.used_vertex_box`: (2, 3) float64 min and max of
+    """Twin of :func:`cityshade.geometry.bounds.used_vertex_box`: (2, 3) float64 min and max of
     the vertices the triangles use, through the sorted set of used indices."""
     used = np.unique(np.asarray(triangles).reshape(-1))
     pts = np.asarray(vertices)[used].astype(np.float64)
@@ -983,12 +983,12 @@ def reference_pack_nodes(axis, child, first, split):
 
 
 def reference_cache_bytes(header, arrays):
-    """The bytes of a cache file, as :func:`cityshade.cache.write_cache` lays it out, written
+    """The bytes of a cache file, as :func:`cityshade.store.cache.write_cache` lays it out, written
     the obvious way: every checksum first, then prefix, header, padding and arrays in order."""
     import hashlib
     import json
 
-    from cityshade.cache import _ALIGN, _PREFIX, FORMAT_VERSION, MAGIC
+    from cityshade.store.cache import _ALIGN, _PREFIX, FORMAT_VERSION, MAGIC
 
     arrays = {k: np.ascontiguousarray(v) for k, v in arrays.items()}
     directory, offset = {}, 0

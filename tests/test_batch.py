@@ -11,9 +11,9 @@ from click.testing import CliRunner
 
 from citygml_snippets import box_polygons, building, city, ground
 
-from cityshade import batch as B
+from cityshade.sunhours import run as B
 from cityshade.errors import UsageError
-from cityshade.sun import sun_from_angles
+from cityshade.geo.sun import sun_from_angles
 
 #: Box 10 × 10 × 20 m centred on the origin of a 200 × 200 m plane, in EPSG:25832 near Munich.
 X0, Y0, Z0 = 691_000.0, 5_334_000.0, 520.0
@@ -24,7 +24,7 @@ PX = 2.0  # map pixel size in metres
 @pytest.fixture(scope="module")
 def scene(tmp_path_factory):
     from cityshade.build import build_file
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     tmp = tmp_path_factory.mktemp("batch")
     src = tmp / "box.gml"
@@ -194,7 +194,7 @@ def test_flat_roof_gets_the_hours_of_sun_above_the_horizon(scene):
     """SPA sun for the model's place (Munich), 21 June, every 10 min over the whole day: the
     unobstructed roof's sun-hours equal the time with the sun above the horizon within one
     step, here found independently by a 30 s scan of the elevation."""
-    from cityshade.sun import spa_angles, unix_seconds
+    from cityshade.geo.sun import spa_angles, unix_seconds
 
     steps = B.plan_steps(date(2024, 6, 21), 0, 86_400, 600, "Europe/Berlin")
     res = B.surface_sun_hours(scene, [s.centre_utc for s in steps], 0.0,
@@ -339,7 +339,7 @@ def test_cli_batch_writes_everything(files, tmp_path):
     import csv
 
     from cityshade.imageio import read_exr, read_image
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     scene_path, _ = files
     out = tmp_path / "run"
@@ -384,7 +384,7 @@ def test_cli_batch_writes_everything(files, tmp_path):
 
 
 def _city_days(text):
-    from cityshade.citygml.temporal import parse_user_date
+    from cityshade.geo.temporal import parse_user_date
 
     return parse_user_date(text).city_days
 
@@ -513,7 +513,7 @@ def test_run_batch_from_python_resumes_and_refuses_other_parameters(files, tmp_p
 
     from cityshade.config import Settings
     from cityshade.raster.camera import map_view
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     scene = load_scene(files[0])
     steps = B.plan_steps(date(2024, 6, 21), B.parse_clock_s("05:00"), B.parse_clock_s("21:00"),

@@ -9,11 +9,11 @@ import pytest
 from citygml_snippets import box_polygons, building, city
 
 from cityshade.build import build_file, build_scene_from_file
-from cityshade.cache import (FORMAT_VERSION, PackedStrings, open_cache, pack_strings,
+from cityshade.store.cache import (FORMAT_VERSION, PackedStrings, open_cache, pack_strings,
                              unpack_strings, write_cache)
 from cityshade.errors import CacheCorruptError, CacheError, CacheVersionError
 from cityshade.geometry.scene import Scene
-from cityshade.scenefile import load_scene
+from cityshade.store.scenefile import load_scene
 
 
 @pytest.fixture
@@ -50,7 +50,7 @@ def test_written_bytes_equal_the_obvious_layout(tmp_path, monkeypatch):
     piece each, and in pieces of 64 bytes)."""
     from reference import reference_cache_bytes
 
-    import cityshade.cache as cache
+    import cityshade.store.cache as cache
 
     rng = np.random.default_rng(3)
     arrays = {"xyz": rng.random((1001, 3)), "ids": np.arange(77, dtype=np.int32),
@@ -67,8 +67,8 @@ def test_written_bytes_equal_the_obvious_layout(tmp_path, monkeypatch):
 def test_released_pages_of_a_loaded_scene_read_back_the_same(built):
     """release_scene_pages drops the mapped pages of a loaded scene (and nothing of arrays in
     memory); the arrays read afterwards are the same bytes."""
-    from cityshade.cache import release_pages
-    from cityshade.scenefile import release_scene_pages
+    from cityshade.runtime.memory import release_pages
+    from cityshade.store.scenefile import release_scene_pages
 
     out, scene, _ = built
     loaded = load_scene(out)
@@ -148,7 +148,7 @@ def test_xml_given_as_cache(tmp_path):
 
 def test_interrupted_write_leaves_no_file(tmp_path, monkeypatch):
     """A write interrupted after the data went out (at fsync) leaves neither file nor temp."""
-    import cityshade.cache as cache_mod
+    import cityshade.store.cache as cache_mod
 
     target = tmp_path / "out.cityshade"
 
@@ -175,7 +175,7 @@ def test_verified_stamp_skips_the_checksum_pass(built, tmp_path, monkeypatch):
     afterwards is checked again on its next load and its damage is caught."""
     import time
 
-    import cityshade.cache as cache_mod
+    import cityshade.store.cache as cache_mod
 
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
     monkeypatch.setattr(cache_mod, "RACY_S", 0.05)
@@ -198,7 +198,7 @@ def test_verified_stamp_skips_the_checksum_pass(built, tmp_path, monkeypatch):
 def test_stamp_racy_and_unwritable(built, tmp_path, monkeypatch):
     """A stamp made right after the file's last change is not trusted (a write in the same
     clock tick keeps the times); without a writable cache folder every load checks."""
-    import cityshade.cache as cache_mod
+    import cityshade.store.cache as cache_mod
 
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
     out = built[0]
@@ -218,7 +218,7 @@ def test_info_verify(built, tmp_path, monkeypatch):
 
     from click.testing import CliRunner
 
-    import cityshade.cache as cache_mod
+    import cityshade.store.cache as cache_mod
     from cityshade.cli.main import cli
 
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
@@ -243,7 +243,7 @@ def test_info_verify(built, tmp_path, monkeypatch):
 
 def test_large_build_stamp_is_trusted(tmp_path, monkeypatch):
     """A build of a large file waits out the racy window, so its first load needs no pass."""
-    import cityshade.cache as cache_mod
+    import cityshade.store.cache as cache_mod
 
     monkeypatch.setenv("XDG_CACHE_HOME", str(tmp_path / "xdg"))
     monkeypatch.setattr(cache_mod, "STAMP_WAIT_BYTES", 0)
@@ -259,7 +259,7 @@ def test_a_consuming_write_gives_the_same_bytes_and_hands_memory_back(tmp_path, 
     another array, a read-only array and small arrays are left as they were."""
     from reference import reference_cache_bytes
 
-    import cityshade.cache as cache
+    import cityshade.store.cache as cache
 
     monkeypatch.setattr(cache, "_CONSUME_PIECE_BYTES", 1 << 20)
     rng = np.random.default_rng(5)

@@ -48,9 +48,9 @@ def sample(sample_city_scene):
 
 
 def test_cascades_cover_the_visible_frustum_without_gaps(sample):
-    from cityshade.citygml.temporal import parse_user_date
+    from cityshade.geo.temporal import parse_user_date
     from cityshade.shadows import facing_sun
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
 
     t = parse_user_date("1990").city_days
     cam = cams.overview(sample, 256, 160)
@@ -92,7 +92,7 @@ def test_cascades_cover_the_visible_frustum_without_gaps(sample):
 def near_and_far(tmp_path_factory):
     """Two blocks 300 m apart and nothing between: the middle slices hold no pixel."""
     from cityshade.build import build_file
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     tmp = tmp_path_factory.mktemp("nearfar")
     src = tmp / "nf.gml"
@@ -103,7 +103,7 @@ def near_and_far(tmp_path_factory):
 
 
 def test_a_cascade_covering_no_pixel_is_skipped(near_and_far):
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
 
     cam = _camera_looking(np.array([0.0, -40.0, 10.0]) - near_and_far.origin_m, 0.0, 0.0)
     options = {"cascades": 4, "split_lambda": 0.0, "map_px": 512}
@@ -123,8 +123,8 @@ def test_a_cascade_covering_no_pixel_is_skipped(near_and_far):
 @pytest.mark.parametrize("technique", ["csm", "csm:lispsm", "csm:psm", "csm:xpsm"])
 @pytest.mark.parametrize("view", ["overview", "map"])
 def test_sample_city_agrees_with_raytrace(sample, technique, view):
-    from cityshade.citygml.temporal import parse_user_date
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.temporal import parse_user_date
+    from cityshade.geo.sun import sun_from_angles
 
     t = parse_user_date("1990").city_days
     cam = cams.overview(sample, 256, 160) if view == "overview" else cams.map_view(sample, 2.0)

@@ -165,7 +165,7 @@ def test_plateau_textures_and_axis_order(shared_data):
 
 def test_lyon_versioning_intervals(shared_data):
     """AL47 exists from 2000 and is deleted in 2015: present in 2010, absent in 2016."""
-    from cityshade.citygml.temporal import parse_xsd_datetime_days
+    from cityshade.geo.temporal import parse_xsd_datetime_days
 
     from cityshade.config import BuildSettings
     path = shared_data / "ogc-citygml3-versioning-lyon" / \

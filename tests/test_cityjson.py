@@ -105,7 +105,7 @@ def test_every_cityjson_file_builds_or_fails_cleanly(path):
 
 def _scene_with_tree(path, tmp_path, name):
     from cityshade.build import build_file
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     out, _, _ = build_file(path, tmp_path / f"{name}.cityshade")
     return load_scene(out)
@@ -115,8 +115,8 @@ def _scene_with_tree(path, tmp_path, name):
 def test_same_buildings_from_cityjson_and_citygml3(tmp_path):
     """lod2_buildings_v2.json and lod2_buildings_v3.gml are the same 100 buildings."""
     from cityshade.raster.camera import map_view
-    from cityshade.render import render_frame, shadow_mask
-    from cityshade.sun import sun_from_angles
+    from cityshade.frame.render import render_frame, shadow_mask
+    from cityshade.geo.sun import sun_from_angles
 
     cj = _scene_with_tree(shared_file("citygml4j-samples/lod2_buildings_v2.json"), tmp_path, "j")
     gml = _scene_with_tree(shared_file("citygml4j-samples/lod2_buildings_v3.gml"), tmp_path, "g")

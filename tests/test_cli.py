@@ -226,13 +226,13 @@ def test_render_night_warns_and_is_dark(built, tmp_path):
 
 def test_internal_error_is_exit_70_with_traceback_only_under_verbose(monkeypatch, tmp_path):
     # A contract error is a bug of the caller, not the user's: exit 70, "internal error".
-    import cityshade.scenefile
+    import cityshade.store.scenefile
     from cityshade.errors import ContractError
 
     def broken(*args, **kwargs):
         raise ContractError("scene arrays of the wrong dtype")
 
-    monkeypatch.setattr(cityshade.scenefile, "load_scene", broken)
+    monkeypatch.setattr(cityshade.store.scenefile, "load_scene", broken)
     args = ("render", tmp_path / "x.cityshade", "--sun-azimuth", "10", "--sun-elevation", "20",
             "-o", tmp_path / "x.exr")
     assert_one_line_error(run(*args), "internal error: scene arrays of the wrong dtype", code=70)
@@ -291,7 +291,7 @@ from pathlib import Path
 import cityshade
 from cityshade.config import Settings, load_settings
 from cityshade.raster.camera import load_presets
-from cityshade.rules import load_rules
+from cityshade.planning.rules import load_rules
 site = Path(sys.argv[1])
 assert Path(cityshade.__file__).resolve().parent == site / "cityshade", cityshade.__file__
 # The presets are read from the installed file, not from a copy inside the code.

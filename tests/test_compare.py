@@ -27,7 +27,7 @@ def _units(order_of_step):
 
 
 def test_stretches_match_the_reference_with_gaps_duplicates_and_resume():
-    from cityshade.runs import Stretches
+    from cityshade.sunhours.stretches import Stretches
 
     rng = np.random.default_rng(7)
     n_steps, n = 40, 25
@@ -81,7 +81,7 @@ def test_stretches_match_the_reference_with_gaps_duplicates_and_resume():
 
 
 def test_stretch_kernels_by_hand():
-    from cityshade.runs import close_stretches, update_stretches
+    from cityshade.sunhours.stretches import close_stretches, update_stretches
 
     cur, lng, q = np.zeros(2), np.zeros(2), np.zeros(2)
     for lit in ([1, 0], [1, 1], [0, 1], [1, 1]):
@@ -94,7 +94,7 @@ def test_stretch_kernels_by_hand():
 # --- the rule engine on synthetic arrays ----------------------------------------------------------
 
 def _rule(**kw):
-    from cityshade.rules import _rule_from
+    from cityshade.planning.rules import _rule_from
 
     table = {"id": "r", "name": "r", "source": "s", "receivers": "area", "date": "03-21",
              "min_hours": 2.0}
@@ -105,7 +105,7 @@ def _rule(**kw):
 
 
 def _m(values, weight=None, longest=None, stretches=None):
-    from cityshade.rules import Measures
+    from cityshade.planning.rules import Measures
 
     v = np.asarray(values, float)
     return Measures(v, v if longest is None else np.asarray(longest, float),
@@ -115,7 +115,7 @@ def _m(values, weight=None, longest=None, stretches=None):
 
 
 def test_bre_garden_share_and_relative_edges():
-    from cityshade.rules import evaluate
+    from cityshade.planning.rules import evaluate
 
     rule = _rule(share=0.5, relative=0.8)
     six_steps = sum([1 / 3] * 6)  # 2 h from 20-minute steps: just below 2.0 in binary
@@ -139,7 +139,7 @@ def test_bre_garden_share_and_relative_edges():
 
 
 def test_en17037_levels_and_chinese_stretches():
-    from cityshade.rules import evaluate
+    from cityshade.planning.rules import evaluate
 
     en = _rule(receivers="openings", levels={"minimum": 1.5, "medium": 3.0, "high": 4.0})
     v = evaluate(en, _m([1.5, 1.4999, 3.0, 4.5]))
@@ -155,7 +155,7 @@ def test_en17037_levels_and_chinese_stretches():
 
 
 def test_point_rule_with_only_a_relative_test_is_not_assessed_but_shows_the_ratio():
-    from cityshade.rules import evaluate
+    from cityshade.planning.rules import evaluate
 
     rule = _rule(receivers="openings", min_hours=0.0, relative=0.8,
                  not_assessed=["needs APSH"])
@@ -166,7 +166,7 @@ def test_point_rule_with_only_a_relative_test_is_not_assessed_but_shows_the_rati
 
 
 def test_shipped_rules_load_and_bad_files_are_refused(tmp_path):
-    from cityshade.rules import load_rules
+    from cityshade.planning.rules import load_rules
 
     ids = [r.id for name in ("bre209", "en17037", "china-sunshine") for r in load_rules(name)]
     assert ids == ["bre209-garden", "bre209-window", "en17037-sunlight", "gb50180-great-cold"]
@@ -183,7 +183,7 @@ def test_shipped_rules_load_and_bad_files_are_refused(tmp_path):
 
 
 def test_points_in_polygon():
-    from cityshade.rules import points_in_polygon
+    from cityshade.planning.rules import points_in_polygon
 
     ring = np.array([(0, 0), (4, 0), (4, 4), (2, 2), (0, 4)], float)
     pts = np.array([(1, 1), (3, 1), (2, 3), (1, 2.5), (5, 1)], float)
@@ -198,7 +198,7 @@ LAT_DEG = 45.0  # at the equinox the sun's profile angle on an east-west wall is
 def _equinox_suns(hour_angles_deg):
     """Explicit suns of 21 March (declination 0) at LAT_DEG: the direction (east, north, up)
     is (-sin h, -sin φ cos h, cos φ cos h)."""
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
 
     phi = math.radians(LAT_DEG)
     out = []
@@ -212,7 +212,7 @@ def _equinox_suns(hour_angles_deg):
 
 def _steps(day, minutes, every_min=60):
     """Steps of ``every_min`` starting at the given minutes after midnight UTC."""
-    from cityshade.batch import Step
+    from cityshade.sunhours.run import Step
 
     t0 = datetime(day.year, day.month, day.day, tzinfo=timezone.utc)
     return [Step(i, t0 + timedelta(minutes=m), t0 + timedelta(minutes=m + every_min))
@@ -233,9 +233,9 @@ def test_box_south_of_a_garden_takes_the_analytic_share_on_21_march(tmp_path):
     10 m north all day, so the garden's southern half (rows 5-10 m) loses all 10 hours and the
     northern half loses nothing: exactly half keeps >= 2 h, and BRE 209's garden test passes
     on its edge."""
-    from cityshade.compare import compare_states
+    from cityshade.planning.compare import compare_states
     from cityshade.raster.camera import map_view
-    from cityshade.rules import evaluate, load_rules, measures_from
+    from cityshade.planning.rules import evaluate, load_rules, measures_from
 
     block = building("NEW", box_polygons(-100.0, -4.0, 0.0, 200.0, 4.0, 10.0, "b"),
                      extra="<bldg:yearOfConstruction>2030</bldg:yearOfConstruction>")
@@ -287,8 +287,8 @@ def test_south_window_stretches_against_an_obstruction_by_hand(tmp_path):
     sun stands higher than that (every sample of the 0.2 m high window agrees: their angles lie
     within 32.3°-35.0°). By hand: lit steps (10 min each) 1 1 0 1 1 1 . 0 1 1 (one step with
     the sun down) give stretches of 20, 30 and 20 min."""
-    from cityshade.compare import compare_states, openings_of
-    from cityshade.sun import sun_from_angles
+    from cityshade.planning.compare import compare_states, openings_of
+    from cityshade.geo.sun import sun_from_angles
 
     wall = building("OBST", box_polygons(-100.0, -3.2, 0.0, 200.0, 0.2, 3.1, "w"),
                     extra="<bldg:yearOfConstruction>2030</bldg:yearOfConstruction>")
@@ -323,9 +323,9 @@ def test_south_window_stretches_against_an_obstruction_by_hand(tmp_path):
 # --- compare == two batch runs ------------------------------------------------------------------
 
 def test_compare_between_two_dates_is_the_difference_of_two_batch_runs(sample_city_scene):
-    from cityshade.batch import plan_steps, sun_hours
-    from cityshade.citygml.temporal import parse_user_date
-    from cityshade.compare import compare_states
+    from cityshade.sunhours.run import plan_steps, sun_hours
+    from cityshade.geo.temporal import parse_user_date
+    from cityshade.planning.compare import compare_states
     from cityshade.raster.camera import map_view
 
     scene = sample_city_scene
@@ -336,7 +336,7 @@ def test_compare_between_two_dates_is_the_difference_of_two_batch_runs(sample_ci
                           opening_samples_per_m2=0.0)
     instants = [s.centre_utc for s in steps]
     weights = [s.weight_h for s in steps]
-    z = repr(__import__("cityshade.ground", fromlist=["x"]).ground_height_m(scene, "auto")
+    z = repr(__import__("cityshade.geometry.ground", fromlist=["x"]).ground_height_m(scene, "auto")
              + float(scene.origin_m[2]))
     b = sun_hours(scene, cam, instants, t1, weights_h=weights, ground=z, samples_per_m2=0.05)
     a = sun_hours(scene, cam, instants, t2, weights_h=weights, ground=z, samples_per_m2=0.05)
@@ -353,7 +353,7 @@ def test_compare_between_two_dates_is_the_difference_of_two_batch_runs(sample_ci
 
 
 def test_merge_scenes_keeps_the_existing_indices_and_refuses_another_crs(tmp_path):
-    from cityshade.compare import merge_scenes, openings_of
+    from cityshade.planning.compare import merge_scenes, openings_of
     from cityshade.errors import UsageError
 
     shed = building("SHED", box_polygons(20.0, 20.0, 0.0, 2.0, 2.0, 2.0, "s"))  # with a srsName
@@ -384,7 +384,7 @@ def test_fzk_haus_citygml3_openings_are_windows_and_doors_with_their_ids():
     from conftest import shared_file
 
     from cityshade.build import build_scene_from_file
-    from cityshade.compare import openings_of
+    from cityshade.planning.compare import openings_of
 
     scene = build_scene_from_file(
         shared_file("fzk-haus/citygml3.0/FZK-Haus-LoD3-KIT-IAI-KHH-B36-V1__v3.gml"))

@@ -1,4 +1,4 @@
-"""Tests of cityshade.citygml.crs: srsName spellings, a file's CRS, geographic projection,
+"""Tests of cityshade.geo.crs: srsName spellings, a file's CRS, geographic projection,
 meridian convergence."""
 from __future__ import annotations
 
@@ -11,7 +11,7 @@ import sys
 import numpy as np
 import pytest
 
-from cityshade.citygml.crs import (
+from cityshade.geo.crs import (
     NO_CRS, CrsInfo, GeographicProjector, grid_convergence_deg, parse_srs_name,
     resolve_model_crs, resolve_model_crs_detailed, to_wgs84,
 )
@@ -378,7 +378,7 @@ def test_to_wgs84():
 
 
 def test_import_is_cheap():
-    code = ("import sys, cityshade.citygml.crs, cityshade.citygml.temporal; "
+    code = ("import sys, cityshade.geo.crs, cityshade.geo.temporal; "
             "print(','.join(m for m in ('pyproj', 'lxml', 'numba', 'click') "
             "if m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,

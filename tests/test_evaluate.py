@@ -13,11 +13,11 @@ from reference import reference_nearest_feature_distance2
 from cityshade.build import build_file
 from cityshade.cli.main import cli
 from cityshade.errors import UsageError
-from cityshade.diagnostics import skipped_work
+from cityshade.frame.diagnostics import skipped_work
 from cityshade.evaluate import (EvaluateSettings, compare, diff_image, error_time_plot,
                                 expand_techniques, make_reference, nearest_feature,
                                 pareto_front)
-from cityshade.scenefile import load_scene
+from cityshade.store.scenefile import load_scene
 
 
 @pytest.mark.parametrize("seed,density", [(0, 0.002), (1, 0.05), (2, 0.5), (3, 0.97)])
@@ -187,8 +187,8 @@ def test_cli_evaluate_failures(box_file, args, message):
 
 def test_render_lists_what_it_left_out(box_file):
     from cityshade.raster.camera import overview
-    from cityshade.render import render_frame
-    from cityshade.sun import sun_from_angles
+    from cityshade.frame.render import render_frame
+    from cityshade.geo.sun import sun_from_angles
 
     scene = load_scene(box_file)
     # Seen from the south-west, lit from the north-east: the two visible walls face away.
@@ -217,7 +217,7 @@ def test_report_without_matplotlib_keeps_csv_and_markdown(box_file, tmp_path, mo
 
 def test_evaluate_honours_ground_like_render(box_file):
     from cityshade.evaluate import Evaluation, evaluate_frame, make_camera, parse_suns
-    from cityshade.render import render_frame
+    from cityshade.frame.render import render_frame
 
     scene = load_scene(box_file)
     cam = make_camera(scene, "overview", (96, 64))

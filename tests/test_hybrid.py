@@ -5,13 +5,13 @@ import numpy as np
 import pytest
 
 
-from cityshade.citygml.temporal import parse_user_date
+from cityshade.geo.temporal import parse_user_date
 from cityshade.config import ShadowSettings
 from cityshade.errors import UsageError
 from cityshade.raster.camera import map_view, overview, preset
-from cityshade.render import render_frame
+from cityshade.frame.render import render_frame
 from cityshade.shadows import get_technique
-from cityshade.sun import sun_from_angles
+from cityshade.geo.sun import sun_from_angles
 
 BASES = ["shadowmap", "pcf", "vsm", "psm", "lispsm", "xpsm", "csm", "csm:lispsm"]
 
@@ -90,7 +90,7 @@ def gap_city(tmp_path_factory):
     from citygml_snippets import box_polygons, building, city, ground
 
     from cityshade.build import build_file
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     west = box_polygons(-10.1, -10, 0, 10, 10, 20, "w")
     east = box_polygons(0.1, -10, 0, 10, 10, 20, "e")
@@ -135,7 +135,7 @@ def test_lit_gap_narrower_than_a_texel_is_traced(gap_city, kind, base):
 
 
 def cam_context(scene, cam, sun, settings):
-    from cityshade.pipeline import camera_pass
+    from cityshade.frame.pipeline import camera_pass
 
     return camera_pass(scene, cam, 0.0).context(sun, settings)
 
@@ -162,7 +162,7 @@ def test_bracket_kernel_agrees_with_its_numpy_twin(scene, references):
     pixel of the sample city (three views, a low and a high sun; all three states occur)."""
     from reference import reference_bracket_states
 
-    from cityshade.pipeline import camera_pass
+    from cityshade.frame.pipeline import camera_pass
     from cityshade.shadows.hybrid import bracket_states, classifier_polygons, thin_caster_map
 
     t, refs = references
@@ -192,7 +192,7 @@ def test_thin_caster_map_agrees_with_its_numpy_twin(scene, references):
     twin finds them, on a low sun (many walls thin in light space)."""
     from reference import reference_thin_caster_map
 
-    from cityshade.pipeline import camera_pass
+    from cityshade.frame.pipeline import camera_pass
     from cityshade.shadows.hybrid import thin_caster_map
 
     t, refs = references
@@ -242,7 +242,7 @@ def test_hybrid_misses_no_pixel_on_real_lod2(name, tmp_path_factory):
     from conftest import shared_file
 
     from cityshade.build import build_file
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     path = shared_file(REAL_FILES[name])
     out, _, _ = build_file(path, tmp_path_factory.mktemp(name) / f"{name}.cityshade")
@@ -316,7 +316,7 @@ def test_classifier_polygons_agree_with_their_twin_and_split_folded_polygons(sce
     from reference import reference_classifier_polygons
 
     from cityshade.build import build_file
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
     from cityshade.shadows.hybrid import classifier_polygons
 
     got = classifier_polygons(scene)

@@ -93,7 +93,7 @@ def batch_args(scene):
 
 
 def _interrupted_builds(tmp_path, city, delays_s):
-    from cityshade.cache import open_cache
+    from cityshade.store.cache import open_cache
     interrupted = 0
     for k, delay in enumerate(delays_s):
         folder = tmp_path / f"b{k}"

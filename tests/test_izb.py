@@ -22,9 +22,9 @@ from test_trace import closed_box_tree, edge_and_vertex_targets, unit
 from cityshade import lightspace
 from cityshade.accel import build_kdtree
 from cityshade.build import build_file
-from cityshade.scenefile import load_scene
+from cityshade.store.scenefile import load_scene
 from cityshade.shadows import ShadowContext, get_technique
-from cityshade.sun import sun_from_angles
+from cityshade.geo.sun import sun_from_angles
 from cityshade.trace import TraceInputError, occluded, shadow_rays_from_surface
 
 #: (elevation, azimuth) pairs covering the issue's suns: grazing to zenith, several azimuths
@@ -49,7 +49,7 @@ def _surfaces(scene, camera, t_days, ground):
 
     surfaces = resolve(scene, rasterize(scene, camera, t_days))
     if ground is not None:
-        from cityshade.ground import add_ground_plane, ground_height_m
+        from cityshade.geometry.ground import add_ground_plane, ground_height_m
 
         surfaces, _ = add_ground_plane(scene, camera, surfaces, ground_height_m(scene, ground))
     return surfaces
@@ -77,7 +77,7 @@ def _assert_same_as_raytrace(scene, camera, t_days, suns, ground=None, crs=False
 @pytest.mark.parametrize("year", ["1750", "1990"])
 @pytest.mark.parametrize("ground", [None, "min"])
 def test_sample_city_map_and_overview_equal_raytrace(sample_scene, year, ground):
-    from cityshade.citygml.temporal import parse_xsd_datetime_days
+    from cityshade.geo.temporal import parse_xsd_datetime_days
     from cityshade.raster.camera import map_view, overview
 
     t = parse_xsd_datetime_days(year)
@@ -377,7 +377,7 @@ def test_casters_walked_from_the_tree_for_a_tile_equal_raytrace(sample_scene, ye
                                                                  monkeypatch):
     """A tile's casters gathered by the kd-tree walk (what a tiled batch does on a big city),
     on the sample city at two dates (the walk's time axis), map and overview receivers."""
-    from cityshade.citygml.temporal import parse_xsd_datetime_days
+    from cityshade.geo.temporal import parse_xsd_datetime_days
     from cityshade.raster.camera import map_view, overview
 
     t = parse_xsd_datetime_days(year)

@@ -124,8 +124,8 @@ def test_a_render_whose_last_output_fails_leaves_none_of_them(tmp_path, monkeypa
                                                               sample_city_scene, failure):
     from cityshade import imageio
     from cityshade.raster.camera import map_view
-    from cityshade.render import render_frame, write_frame
-    from cityshade.sun import sun_from_angles
+    from cityshade.frame.render import render_frame, write_frame
+    from cityshade.geo.sun import sun_from_angles
 
     scene = sample_city_scene
     cam = map_view(scene, pixel_size_m=4.0)

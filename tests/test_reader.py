@@ -113,7 +113,7 @@ def test_time_attributes_and_parts_inherit(tmp_path):
              f"<bldg:consistsOfBuildingPart>{part}</bldg:consistsOfBuildingPart>")
     doc = city(building("b", box_polygons(0, 0, 0, 5, 5, 5), extra=extra))
     scene = scene_of(tmp_path, doc)
-    from cityshade.citygml.temporal import parse_xsd_datetime_days as days
+    from cityshade.geo.temporal import parse_xsd_datetime_days as days
     assert scene.obj_types == ["Building", "BuildingPart"]
     assert scene.obj_parent.tolist() == [-1, 0]
     for i in (0, 1):

@@ -15,10 +15,10 @@ from click.testing import CliRunner
 
 from citygml_snippets import CG2, box_polygons, building, city, polygon
 
-from cityshade.citygml.crs import (GeographicProjector, grid_convergence_deg, parse_srs_name,
+from cityshade.geo.crs import (GeographicProjector, grid_convergence_deg, parse_srs_name,
                                    resolve_model_crs_detailed)
 from cityshade.citygml.reader import read_citygml
-from cityshade.citygml.temporal import parse_user_date, parse_xsd_datetime_days
+from cityshade.geo.temporal import parse_user_date, parse_xsd_datetime_days
 from cityshade.config import BuildSettings
 from cityshade.errors import CRSError, UsageError
 from cityshade.geometry.scene import build_scene
@@ -43,7 +43,7 @@ def _build(tmp_path, text: str, name: str = "city.gml", **settings):
     generic = [v for k, v in settings.items() if k == "time_attribute" and v]
     names = []
     if generic:
-        from cityshade.citygml.temporal import parse_time_attribute
+        from cityshade.geo.temporal import parse_time_attribute
         names = [n for n in parse_time_attribute(generic[0]) if n]
     return build_scene(read_citygml(path, generic_attributes=names), BuildSettings(**settings))
 
@@ -126,7 +126,7 @@ def test_short_epsg_4326_longitude_first_is_placed_and_timed_right(tmp_path):
     # The sun at true solar noon of the model's place stands due south; its elevation is
     # 90° − latitude + declination (23.44° at the June solstice): 64.4° at 49.01° N (a reading
     # at latitude 8.4° would give 75°).
-    from cityshade.sun import solar_time_zone, sun_from_instant
+    from cityshade.geo.sun import solar_time_zone, sun_from_instant
     zone = solar_time_zone("local-apparent", scene.crs, scene.origin_m)
     instant = parse_user_date("2024-06-21T12:00", zone).instant_utc
     sun = sun_from_instant(instant, scene.crs, scene.origin_m)
@@ -202,7 +202,7 @@ def test_compound_with_unknown_height_system_uses_the_horizontal_part(tmp_path):
     assert len(warning) == 1 and "using the horizontal part EPSG:27700" in warning[0]
     assert not any("25832" in w for w in scene.report["warnings"])
     # London: the sun of a date is computed there (not in Germany, not in the north).
-    from cityshade.sun import sun_from_instant
+    from cityshade.geo.sun import sun_from_instant
     sun = sun_from_instant(datetime(2024, 6, 21, 12, 0, tzinfo=timezone.utc), scene.crs,
                            scene.origin_m)
     assert sun.latitude_deg == pytest.approx(51.5, abs=0.1)
@@ -226,7 +226,7 @@ def test_unknown_crs_builds_and_geodesy_fails_later_naming_crs(tmp_path):
     assert scene.crs.name == "unknown (EPSG:23632)"
     warning = [w for w in scene.report["warnings"] if "23632" in w]
     assert len(warning) == 1 and "does not exist" in warning[0] and "--crs" in warning[0]
-    from cityshade.sun import sun_from_angles, sun_from_instant
+    from cityshade.geo.sun import sun_from_angles, sun_from_instant
     sun = sun_from_angles(135.0, 30.0, scene.crs, scene.origin_m)  # explicit sun: works
     assert sun.azimuth_grid_deg == 135.0 and "no CRS" in sun.note
     with pytest.raises(CRSError, match="rebuild it with --crs"):
@@ -265,7 +265,7 @@ def test_shifted_model_is_warned_about_and_its_convergence_refused(tmp_path):
     scene = _build(tmp_path, text)
     warning = [w for w in scene.report["warnings"] if "area of use" in w]
     assert len(warning) == 1 and "ETRS89 / UTM zone 32N" in warning[0]
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
     with pytest.raises(CRSError) as info:
         sun_from_angles(135.0, 30.0, scene.crs, scene.origin_m)
     message = str(info.value)
@@ -342,7 +342,7 @@ def test_time_attribute_begin_and_end_citygml3(tmp_path):
     scene = _build(tmp_path, text, time_attribute="begin=built,end=razed")
     assert [_standing(scene, y) for y in (1880, 1900, 1944, 1950)] == [0, 1, 0, 0]
     with pytest.raises(UsageError, match="begin=NAME"):
-        from cityshade.citygml.temporal import parse_time_attribute
+        from cityshade.geo.temporal import parse_time_attribute
         parse_time_attribute("start=built")
 
 
@@ -367,7 +367,7 @@ def test_lmt_is_warned_about():
 
 
 def test_local_mean_and_apparent_time():
-    from cityshade.sun import SolarTime
+    from cityshade.geo.sun import SolarTime
     # Munich's mean time: 11.5675° E × 4 min/° = +0:46:16.2 (the issue's +0:46:16).
     mean = SolarTime(11.5675, apparent=False)
     assert mean.utcoffset(None).total_seconds() == pytest.approx(46 * 60 + 16.2, abs=0.01)
@@ -454,7 +454,7 @@ def test_ground_auto_is_the_default_and_none_switches_it_off(tmp_path):
 
 def test_scene_file_gets_the_umask(tmp_path):
     import os
-    from cityshade.cache import write_cache
+    from cityshade.store.cache import write_cache
     old = os.umask(0o027)
     try:
         write_cache(tmp_path / "x.cityshade", {}, {"a": np.zeros(3)})
@@ -540,7 +540,7 @@ def test_batch_and_evaluate_accept_solar_time(tmp_path):
     first = next(line for line in result.output.splitlines() if line.startswith("first"))
     assert float(first.split("azimuth ")[1].split("°")[0]) == pytest.approx(180.0, abs=0.05)
     from cityshade.evaluate import suns_of_day
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
     from cityshade.cli.options import solar_zone_of_scene
     scene = load_scene(scene_path)
     sun, = suns_of_day("2024-11-03", "12:00", solar_zone_of_scene("local-apparent", scene), scene)
@@ -610,7 +610,7 @@ def test_batch_prints_progress_lines_when_stderr_is_not_a_terminal(tmp_path):
 def test_only_terrain_standing_is_warned_about():
     from types import SimpleNamespace
     from cityshade.citygml.namespaces import SURFACE_CODE
-    from cityshade.render import only_terrain_stands
+    from cityshade.frame.render import only_terrain_stands
     terrain, roof = SURFACE_CODE["terrain"], SURFACE_CODE["roof"]
     scene = SimpleNamespace(tri_class=np.array([terrain, terrain, roof], np.uint8),
                             tri_t_begin_days=np.array([-np.inf, -np.inf, 100.0]),
@@ -626,7 +626,7 @@ def test_only_terrain_standing_is_warned_about():
 def test_render_checks_every_output_before_the_work(tmp_path, monkeypatch):
     """Issue 13 point 7: a bad --png extension or a --geotiff of a perspective view failed
     after rendering and left the EXR written before it."""
-    from cityshade import render as R
+    from cityshade.frame import render as R
     from cityshade.cli.main import cli
     scene_path = _two_boxes_without_terrain(tmp_path)
 
@@ -671,7 +671,7 @@ def test_a_frame_that_does_not_fit_in_memory_is_refused_before_allocating(tmp_pa
     """Issue 13 point 10: --pixel-size 0.021 on the sample passed and needed about 50 GB."""
     from types import SimpleNamespace
     from cityshade.cli.main import cli
-    from cityshade.pipeline import check_frame_memory
+    from cityshade.frame.pipeline import check_frame_memory
     cam = SimpleNamespace(width_px=2000, height_px=1000, kind="map")
     # 290 B/px: the measured peak of the camera pass (benchmarks/memory.py, pipeline's table).
     assert check_frame_memory(cam, available_bytes=580_000_000) == 580_000_000
@@ -685,8 +685,8 @@ def test_a_frame_that_does_not_fit_in_memory_is_refused_before_allocating(tmp_pa
     assert check_frame_memory(cam, huge, technique="csm") == 2_000_000 * 290 + 4 * 2048**2 * 24
     assert check_frame_memory(cam, huge, technique="izb+smooth") == 2_000_000 * 290
     scene_path = _two_boxes_without_terrain(tmp_path)
-    import cityshade.pipeline
-    monkeypatch.setattr(cityshade.pipeline, "available_memory_bytes", lambda: 800_000_000)
+    import cityshade.frame.pipeline
+    monkeypatch.setattr(cityshade.frame.pipeline, "available_memory_bytes", lambda: 800_000_000)
     result = CliRunner().invoke(cli, [
         "render", str(scene_path), "--date", "2000", "--sun-azimuth", "135",
         "--sun-elevation", "30", "--camera", "map", "--pixel-size", "0.003", "-o",
@@ -712,8 +712,8 @@ def test_a_batch_that_does_not_fit_in_memory_is_refused_before_any_work(tmp_path
     """Issue 13 point 10 for batch: the estimate per receiver pixel, and tiles in the hint."""
     from cityshade.cli.main import cli
     scene_path = _two_boxes_without_terrain(tmp_path)
-    import cityshade.pipeline
-    monkeypatch.setattr(cityshade.pipeline, "available_memory_bytes", lambda: 8_000_000_000)
+    import cityshade.frame.pipeline
+    monkeypatch.setattr(cityshade.frame.pipeline, "available_memory_bytes", lambda: 8_000_000_000)
     result = CliRunner().invoke(cli, [
         "batch", str(scene_path), "--date", "2024-06-21", "--tz", "Europe/Berlin",
         "--pixel-size", "0.003", "-o", str(tmp_path / "b")])

@@ -11,8 +11,8 @@ from citygml_snippets import box_polygons, building, city, ground
 
 from cityshade.build import build_file
 from cityshade.citygml.namespaces import SURFACE_CODE
-from cityshade.scenefile import load_scene
-from cityshade.sun import sun_from_angles
+from cityshade.store.scenefile import load_scene
+from cityshade.geo.sun import sun_from_angles
 
 PX = 0.5  # map pixel size in metres
 H1 = 20.0  # height of the tall box
@@ -41,7 +41,7 @@ def box_scene(tmp_path_factory):
 
 def map_frame(scene, az, el, technique="raytrace"):
     from cityshade.raster.camera import map_view
-    from cityshade.render import render_frame
+    from cityshade.frame.render import render_frame
 
     cam = map_view(scene, PX)
     sun = sun_from_angles(az, el)  # no CRS correction: the scene's +y is north
@@ -94,7 +94,7 @@ def test_box_in_shadow_is_shaded_on_the_right_faces(box_scene):
     """Sun in the south at 30°: the low box stands in the tall box's shadow — its roof and
     south wall are shadowed; its north wall faces away from the sun (self-shadowed)."""
     from cityshade.raster.camera import perspective
-    from cityshade.render import render_frame
+    from cityshade.frame.render import render_frame
 
     low = box_scene.obj_ids.index("low")
     frame = map_frame(box_scene, 180.0, 30.0)
@@ -128,9 +128,9 @@ def sample_scene(sample_city_scene):
 
 @pytest.mark.parametrize("year", [1750, 1900, 1990])
 def test_time_slices_show_only_standing_buildings(sample_scene, year):
-    from cityshade.citygml.temporal import parse_xsd_datetime_days
+    from cityshade.geo.temporal import parse_xsd_datetime_days
     from cityshade.raster.camera import map_view
-    from cityshade.render import render_frame
+    from cityshade.frame.render import render_frame
 
     t = parse_xsd_datetime_days(str(year))
     frame = render_frame(sample_scene, map_view(sample_scene, 1.0), t, sun_from_angles(180, 45))
@@ -145,9 +145,9 @@ def test_time_slices_show_only_standing_buildings(sample_scene, year):
 
 
 def test_time_changes_the_picture(sample_scene):
-    from cityshade.citygml.temporal import parse_xsd_datetime_days as days
+    from cityshade.geo.temporal import parse_xsd_datetime_days as days
     from cityshade.raster.camera import map_view
-    from cityshade.render import render_frame
+    from cityshade.frame.render import render_frame
 
     cam = map_view(sample_scene, 1.0)
     a = render_frame(sample_scene, cam, days("1750"), sun_from_angles(180, 45))

@@ -7,8 +7,8 @@ import pytest
 from conftest import shared_file
 
 from cityshade.build import build_file
-from cityshade.scenefile import load_scene
-from cityshade.sun import sun_from_angles
+from cityshade.store.scenefile import load_scene
+from cityshade.geo.sun import sun_from_angles
 
 
 def _scene(path, tmp_path):
@@ -18,7 +18,7 @@ def _scene(path, tmp_path):
 
 def test_tum_campus_with_ground(tmp_path):
     from cityshade.raster.camera import map_view, overview
-    from cityshade.render import render_frame, shadow_mask
+    from cityshade.frame.render import render_frame, shadow_mask
 
     scene = _scene(shared_file("munich-tum-campus-lod2/TUM Munich.gml"), tmp_path)
     sun = sun_from_angles(200.0, 35.0, scene.crs, scene.origin_m)
@@ -44,8 +44,8 @@ def test_tum_campus_with_ground(tmp_path):
 ])
 def test_textured_model_shows_its_textures(relative, tmp_path):
     from cityshade.raster.camera import overview
-    from cityshade.render import render_frame
-    from cityshade.shading import albedo_of_surfaces
+    from cityshade.frame.render import render_frame
+    from cityshade.frame.shading import albedo_of_surfaces
 
     scene = _scene(shared_file(relative), tmp_path)
     assert scene.textures, "the model should carry textures"

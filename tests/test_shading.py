@@ -1,4 +1,4 @@
-"""Shading (cityshade.shading): Lambert + sky ambient, albedo sources, back faces, sky, sRGB."""
+"""Shading (cityshade.frame.shading): Lambert + sky ambient, albedo sources, back faces, sky, sRGB."""
 from __future__ import annotations
 
 from dataclasses import dataclass, field
@@ -8,7 +8,7 @@ import numpy as np
 import pytest
 
 from cityshade.citygml.namespaces import SURFACE_CLASSES, SURFACE_CODE
-from cityshade.shading import (DEFAULT_PALETTE_SRGB8, ShadingError, ShadingSettings, shade,
+from cityshade.frame.shading import (DEFAULT_PALETTE_SRGB8, ShadingError, ShadingSettings, shade,
                                to_srgb8)
 
 REPO = Path(__file__).parents[1]
@@ -259,7 +259,7 @@ def test_texture_composite_equals_the_gather_twin(tmp_path):
     from reference import reference_albedo
 
     from cityshade import imageio
-    from cityshade.shading import albedo_of_surfaces
+    from cityshade.frame.shading import albedo_of_surfaces
 
     rng = np.random.default_rng(5)
     rgba = rng.integers(0, 256, (16, 24, 4), dtype=np.uint8)

@@ -17,11 +17,11 @@ from cityshade.citygml.namespaces import SURFACE_CODE
 from cityshade.config import ShadowSettings
 from cityshade.errors import UsageError
 from cityshade.raster import camera as cams
-from cityshade.render import render_frame
-from cityshade.scenefile import load_scene
+from cityshade.frame.render import render_frame
+from cityshade.store.scenefile import load_scene
 from cityshade.shadows import ShadowContext, facing_sun, get_technique
 from cityshade.shadows import shadowmap as sm
-from cityshade.sun import sun_from_angles
+from cityshade.geo.sun import sun_from_angles
 
 T_1990 = 7305.0          # 1990-01-01 in days since 1970 (the sample city stands then)
 MAP_TECHNIQUES = ("shadowmap", "pcf", "vsm")
@@ -438,7 +438,7 @@ def test_lookup_receivers_match_the_step_by_step_twins(sample, warp):
 
     cam = cams.overview(sample, 160, 100)
     sun = sun_from_angles(135.0, 30.0, sample.crs, sample.origin_m)
-    from cityshade.pipeline import camera_pass
+    from cityshade.frame.pipeline import camera_pass
 
     ctx = camera_pass(sample, cam, T_1990).context(sun)
     faces, points, normals, casters = focus(ctx)
@@ -492,7 +492,7 @@ def test_depth_map_reuse_draws_each_map_once(one_box):
     is counted as reused); another view, or no reuse block, draws anew."""
     sun = sun_from_angles(200.0, 30.0)
     cam = cams.overview(one_box, 64, 40)
-    from cityshade.pipeline import camera_pass
+    from cityshade.frame.pipeline import camera_pass
 
     ctx = camera_pass(one_box, cam, 0.0).context(sun)
     view = sm.fit_uniform(one_box, ctx, 128)
@@ -512,9 +512,9 @@ def test_depth_map_reuse_draws_each_map_once(one_box):
 
 
 def test_scratch_hands_out_kept_arrays_one_holder_at_a_time():
-    """util.Scratch: the same memory on the next take, a private one while it is held, and
+    """runtime.memory.Scratch: the same memory on the next take, a private one while it is held, and
     buffers that grow when asked for more."""
-    from cityshade.util import Scratch
+    from cityshade.runtime.memory import Scratch
 
     ws = Scratch()
     first = ws.take()
@@ -533,11 +533,11 @@ def test_scratch_hands_out_kept_arrays_one_holder_at_a_time():
 
 
 def test_recycler_hands_out_memory_nothing_refers_to():
-    """util.Recycler: a dropped array's memory comes back for the same dtype and a size up to
+    """runtime.memory.Recycler: a dropped array's memory comes back for the same dtype and a size up to
     the buffer's and at least half of it, never while the array or a view of it is alive,
     never for another dtype or a size it does not fit; the least recently used buffer is let go
     beyond ``keep``."""
-    from cityshade.util import Recycler
+    from cityshade.runtime.memory import Recycler
 
     pool = Recycler(keep=2)
     a = pool.empty((4, 3), np.float32)
@@ -596,7 +596,7 @@ def test_kept_depth_maps_are_not_overwritten_and_an_empty_view_is_cleared(one_bo
 def test_lookups_on_kept_temporaries_equal_the_fresh_twin(sample):
     """shadow_lookup's receivers and VSM moments live in kept arrays: every mode, at map sizes
     that grow and shrink between calls, is bit-identical to the same steps on fresh arrays."""
-    from cityshade.pipeline import camera_pass
+    from cityshade.frame.pipeline import camera_pass
     from cityshade.shadows import filtering as flt
 
     cam = cams.overview(sample, 160, 100)
@@ -631,7 +631,7 @@ def test_context_gathers_the_facing_receivers_once_per_sun(sample):
     """The contexts of one camera pass and sun share the facing mask and gathered receivers
     (evaluate runs every technique on them); another sun gets its own, equal to a fresh
     gather."""
-    from cityshade.pipeline import camera_pass
+    from cityshade.frame.pipeline import camera_pass
     from cityshade.shadows import facing_mask, gather_pixels
 
     cp = camera_pass(sample, cams.overview(sample, 96, 60), T_1990)

@@ -13,10 +13,10 @@ from click.testing import CliRunner
 from citygml_snippets import box_polygons, building, city
 from conftest import REPO
 
-from cityshade.citygml.crs import parse_srs_name
-from cityshade.citygml.temporal import parse_user_date
+from cityshade.geo.crs import parse_srs_name
+from cityshade.geo.temporal import parse_user_date
 from cityshade.errors import CRSError, UsageError
-from cityshade.sun import (SpaSettings, delta_t_seconds, direction_from_angles, spa_angles,
+from cityshade.geo.sun import (SpaSettings, delta_t_seconds, direction_from_angles, spa_angles,
                            sun_from_instant, suns_from_instants, unix_seconds)
 
 UTM32 = parse_srs_name("EPSG:25832")

@@ -13,8 +13,8 @@ from conftest import shared_file
 from cityshade import imageio
 from cityshade.errors import UsageError
 from cityshade.raster.camera import map_view, overview
-from cityshade.render import render_frame, strip_rows_for, write_frame
-from cityshade.sun import sun_from_angles
+from cityshade.frame.render import render_frame, strip_rows_for, write_frame
+from cityshade.geo.sun import sun_from_angles
 
 
 def _outputs(scene, frame, folder):
@@ -142,7 +142,7 @@ def test_strip_arrays_live_in_a_temporary_file(sample_city_scene, tmp_path, monk
     import shutil
     import tempfile
 
-    from cityshade.cache import release_pages
+    from cityshade.runtime.memory import release_pages
 
     scene = sample_city_scene
     cam = map_view(scene, 2.0)

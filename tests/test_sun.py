@@ -6,9 +6,9 @@ import math
 import numpy as np
 import pytest
 
-from cityshade.citygml.crs import parse_srs_name
+from cityshade.geo.crs import parse_srs_name
 from cityshade.errors import UsageError
-from cityshade.sun import direction_from_angles, sun_from_angles
+from cityshade.geo.sun import direction_from_angles, sun_from_angles
 
 
 @pytest.mark.parametrize("az, el, expected", [

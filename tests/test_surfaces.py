@@ -9,8 +9,8 @@ import pytest
 from citygml_snippets import box_polygons, building, city, ground
 
 from cityshade.errors import UsageError
-from cityshade.sun import sun_from_angles
-from cityshade.surfaces import (SampleSettings, polygon_means, sample_surfaces, samples_lit,
+from cityshade.geo.sun import sun_from_angles
+from cityshade.sunhours.surfaces import (SampleSettings, polygon_means, sample_surfaces, samples_lit,
                                 write_surface_csv)
 
 
@@ -18,7 +18,7 @@ from cityshade.surfaces import (SampleSettings, polygon_means, sample_surfaces, 
 def scene(tmp_path_factory):
     """A plane, a 10 × 10 × 20 m box, and a shed demolished in 1950 (absent in 2000)."""
     from cityshade.build import build_file
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     tmp = tmp_path_factory.mktemp("surfaces")
     src = tmp / "s.gml"
@@ -31,7 +31,7 @@ def scene(tmp_path_factory):
 
 
 def _days(year):
-    from cityshade.citygml.temporal import parse_xsd_datetime_days
+    from cityshade.geo.temporal import parse_xsd_datetime_days
 
     return parse_xsd_datetime_days(str(year))
 

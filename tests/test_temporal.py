@@ -1,4 +1,4 @@
-"""Tests of cityshade.citygml.temporal: XSD values to days, intervals, --date."""
+"""Tests of cityshade.geo.temporal: XSD values to days, intervals, --date."""
 from __future__ import annotations
 
 import math
@@ -9,7 +9,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from cityshade.citygml.temporal import (
+from cityshade.geo.temporal import (
     DAYS_OPEN_BEGIN, DAYS_OPEN_END, TIME_ATTRIBUTES, Interval, choose_interval, datetime_to_days,
     days_to_iso, parse_user_date, parse_xsd_datetime_days,
 )

@@ -1,4 +1,4 @@
-"""Texture loading, mip pyramids, trilinear sampling and mip-level choice (cityshade.textures)."""
+"""Texture loading, mip pyramids, trilinear sampling and mip-level choice (cityshade.frame.textures)."""
 from __future__ import annotations
 
 from pathlib import Path
@@ -6,7 +6,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from cityshade import textures as T
+from cityshade.frame import textures as T
 from cityshade.imageio import write_image
 from reference import reference_mip_reduce, reference_sample_texture
 

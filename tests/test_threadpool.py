@@ -1,4 +1,4 @@
-"""cityshade.threadpool.run_chunks: every item once, whatever the thread count; errors reach
+"""cityshade.runtime.threadpool.run_chunks: every item once, whatever the thread count; errors reach
 the caller after every thread stopped."""
 from __future__ import annotations
 
@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 from numba import njit
 
-from cityshade.threadpool import run_chunks
+from cityshade.runtime.threadpool import run_chunks
 
 
 @njit(nogil=True, cache=True)

@@ -11,9 +11,9 @@ from click.testing import CliRunner
 
 from citygml_snippets import box_polygons, building, city, ground
 
-from cityshade import batch as B
+from cityshade.sunhours import run as B
 from cityshade.errors import UsageError
-from cityshade.tiles import plan_tiles
+from cityshade.sunhours.tiled import plan_tiles
 
 X0, Y0, Z0 = 691_000.0, 5_334_000.0, 520.0
 REPO_SAMPLE = "sample_data/sample_city.gml"
@@ -47,7 +47,7 @@ def _steps(day=date(2024, 6, 21), every_s=5400, **kw):
 
 def _run(path, outdir, technique="izb", steps=None, **kw):
     from cityshade.raster.camera import map_view
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     scene = load_scene(path)
     cam = map_view(scene, 2.0)
@@ -106,7 +106,7 @@ def test_plan_tiles_splits_receivers_into_disjoint_squares():
 def test_accumulate_equals_numpy_fancy_add_bit_for_bit():
     from reference import reference_accumulate
 
-    from cityshade.tiles import accumulate
+    from cityshade.sunhours.tiled import accumulate
 
     rng = np.random.default_rng(11)
     sums = rng.random((3, 500)) * 40.0
@@ -180,8 +180,8 @@ def test_sun_blocks_keep_one_caster_order_each():
     """Blocks cover the sun positions in order, at most ``block`` long, each with one caster
     order, and cut only where the order changes or the block is full."""
     from cityshade.lightspace import caster_order
-    from cityshade.sun import sun_from_angles
-    from cityshade.tiles import sun_blocks
+    from cityshade.geo.sun import sun_from_angles
+    from cityshade.sunhours.tiled import sun_blocks
 
     # A day's arc: east, up, west (the key axis changes from x or y to z and back).
     dirs = np.array([sun_from_angles(az, el).direction for az, el in
@@ -228,7 +228,7 @@ def test_tiled_run_sorts_the_casters_as_often_as_the_untiled_one(files, tmp_path
 
 def test_tiled_run_resumes_bit_identical_without_redoing_tasks(files, tmp_path):
     boxes, _ = files
-    from cityshade import tiles
+    from cityshade.sunhours import tiled as tiles
 
     straight = _run(boxes, tmp_path / "straight", tile_px=16)
     calls = []
@@ -304,8 +304,8 @@ def test_cog_has_geokeys_tiles_and_the_values(tmp_path):
 
 def test_year_of_suns_at_once_equals_each_instant():
     """The vectorised SPA of a whole run gives what one instant at a time gives, exactly."""
-    from cityshade.citygml.crs import parse_srs_name
-    from cityshade.sun import sun_from_instant, suns_from_instants
+    from cityshade.geo.crs import parse_srs_name
+    from cityshade.geo.sun import sun_from_instant, suns_from_instants
 
     crs = parse_srs_name("EPSG:25832")
     origin = np.array([X0, Y0, Z0])
@@ -372,8 +372,8 @@ class TaskLog(SchedulerPlugin):
 
 def _logged_executor(sample, log_holder):
     """A DaskExecutor of 2 local workers (1 Numba thread each) whose scheduler logs tasks."""
-    from cityshade.distributed import DaskExecutor
-    from cityshade.scenefile import load_scene
+    from cityshade.sunhours.distributed import DaskExecutor
+    from cityshade.store.scenefile import load_scene
 
     sha = (load_scene(sample).header or {}).get("source", {}).get("sha256", "")
 
@@ -518,8 +518,8 @@ def test_driver_runs_tasks_while_the_cluster_starts(files, sample_plain, tmp_pat
     pytest.importorskip("dask.distributed")
     import threading
 
-    from cityshade.distributed import DaskExecutor
-    from cityshade.scenefile import load_scene
+    from cityshade.sunhours.distributed import DaskExecutor
+    from cityshade.store.scenefile import load_scene
 
     _, sample = files
     steps = _steps(every_s=5400)

@@ -31,8 +31,8 @@ def built(tmp_path_factory):
 
 
 def test_index_and_tiles(built):
-    from cityshade.scenefile import load_scene
-    from cityshade.tiledcache import open_tiled
+    from cityshade.store.scenefile import load_scene
+    from cityshade.store.tiled import open_tiled
 
     one, tiled = built
     scene = load_scene(one)
@@ -61,8 +61,8 @@ def test_index_and_tiles(built):
 
 def test_view_of_all_tiles_is_the_one_cache_scene(built):
     from cityshade.geometry.scene import Scene
-    from cityshade.scenefile import load_scene
-    from cityshade.tiledcache import open_tiled
+    from cityshade.store.scenefile import load_scene
+    from cityshade.store.tiled import open_tiled
 
     one, tiled = built
     scene = load_scene(one)
@@ -86,10 +86,10 @@ def _cameras(scene):
 
 @pytest.mark.parametrize("technique", ["raytrace", "izb"])
 def test_render_equals_one_cache(built, technique):
-    from cityshade.render import render_frame
-    from cityshade.scenefile import load_scene, open_scene, scene_for_camera
-    from cityshade.sun import sun_from_angles
-    from cityshade.tiledcache import to_global
+    from cityshade.frame.render import render_frame
+    from cityshade.store.scenefile import load_scene, open_scene, scene_for_camera
+    from cityshade.geo.sun import sun_from_angles
+    from cityshade.store.tiled import to_global
 
     one, tiled = built
     scene = load_scene(one)
@@ -113,9 +113,9 @@ def test_render_equals_one_cache(built, technique):
 
 def test_shadow_rays_skip_tiles_they_cannot_reach(built):
     from cityshade.raster import camera as cams
-    from cityshade.render import render_frame
-    from cityshade.scenefile import load_scene, open_scene, scene_for_camera
-    from cityshade.sun import sun_from_angles
+    from cityshade.frame.render import render_frame
+    from cityshade.store.scenefile import load_scene, open_scene, scene_for_camera
+    from cityshade.geo.sun import sun_from_angles
 
     one, tiled = built
     scene = load_scene(one)
@@ -212,9 +212,9 @@ def test_real_file_in_tiles(tmp_path):
 
     from cityshade.build import build_file
     from cityshade.raster import camera as cams
-    from cityshade.render import render_frame
-    from cityshade.scenefile import load_scene, open_scene, scene_for_camera
-    from cityshade.sun import sun_from_angles
+    from cityshade.frame.render import render_frame
+    from cityshade.store.scenefile import load_scene, open_scene, scene_for_camera
+    from cityshade.geo.sun import sun_from_angles
 
     tum = shared_file("munich-tum-campus-lod2/TUM Munich.gml")
     files = split_citygml(tum, tmp_path, 3, overlap=2)
@@ -236,7 +236,7 @@ def test_real_file_in_tiles(tmp_path):
 def _same_tiled(a, b) -> None:
     """Two tiled caches hold the same index (but the build's timings and source) and the same
     tiles, every cache array equal."""
-    from cityshade.cache import open_cache
+    from cityshade.store.cache import open_cache
 
     ia, ib = (json.loads((p / "index.json").read_text()) for p in (a, b))
     for index in (ia, ib):
@@ -266,7 +266,7 @@ def test_tiles_from_many_files_spilled_equal_the_assembled_city(tmp_path):
 
     from cityshade.build import build_file, build_scene_from_files
     from cityshade.config import Settings
-    from cityshade.tiledcache import save_tiled
+    from cityshade.build.tiled import save_tiled
 
     x, y = 690000.0, 5336000.0
     part = building("bp", box_polygons(x + 70, y, 0, 3, 3, 3, "q"), solid_refs=False
@@ -306,7 +306,7 @@ def test_tree_over_tiles_finds_what_the_linear_test_finds():
     from reference import reference_tiles_passing
 
     from cityshade.raster import culling as cull
-    from cityshade.tiledcache import TileTree
+    from cityshade.store.tiled import TileTree
 
     rng = np.random.default_rng(5)
     for n in (0, 1, 3, 5, 40, 200):
@@ -341,7 +341,7 @@ def test_views_use_the_tree(built):
     from reference import reference_tiles_passing
 
     from cityshade.raster import culling as cull
-    from cityshade.tiledcache import open_tiled
+    from cityshade.store.tiled import open_tiled
 
     tc = open_tiled(built[1])
     assert tc.tree.n_nodes > 1
@@ -368,9 +368,9 @@ def test_map_techniques_evaluate_and_compare_on_a_tiled_cache(built, tmp_path):
     that view: the same pictures, errors and sun-hours as the one cache."""
     import csv
 
-    from cityshade.render import render_frame
-    from cityshade.scenefile import load_scene, open_scene, scene_for_camera
-    from cityshade.sun import sun_from_angles
+    from cityshade.frame.render import render_frame
+    from cityshade.store.scenefile import load_scene, open_scene, scene_for_camera
+    from cityshade.geo.sun import sun_from_angles
 
     one, tiled = built
     scene, tc = load_scene(one), open_scene(tiled)

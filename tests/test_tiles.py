@@ -76,7 +76,7 @@ def _same_scene(a, b) -> None:
 
 def test_tiles_build_the_one_file_scene(sample_tiles, sample_city_scene, tmp_path):
     from cityshade.build import build_file
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     out, scene, _ = build_file(list(sample_tiles), tmp_path / "tiled.cityshade")
     tiled = load_scene(out)
@@ -120,7 +120,7 @@ def _one_line_error(result, fragment, code=1):
 def test_mixed_crs_refused_unless_crs_names_the_target(tmp_path):
     from pyproj import Transformer
 
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     a, b = _two_tiles(tmp_path, srs_b="EPSG:25833")
     out = tmp_path / "mixed.cityshade"

@@ -404,10 +404,10 @@ def test_sample_pixel_at_a_roof_step_is_lit():
     (centre 690244.5, 5336100.5, exactly on a roof-step edge in front of a sun-facing wall)."""
     from conftest import REPO
     from cityshade.build import build_scene_from_file
-    from cityshade.citygml.temporal import parse_user_date
+    from cityshade.geo.temporal import parse_user_date
     from cityshade.raster import camera as cams
-    from cityshade.render import render_frame
-    from cityshade.sun import sun_from_angles
+    from cityshade.frame.render import render_frame
+    from cityshade.geo.sun import sun_from_angles
 
     scene = build_scene_from_file(REPO / "sample_data" / "sample_city.gml")
     cam = cams.map_view(scene, 1.0)

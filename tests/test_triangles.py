@@ -148,7 +148,7 @@ def test_depth_pass_narrow_and_wide_boxes_agree_with_the_ray_cast_twin():
     from types import SimpleNamespace
 
     from cityshade.raster.depthpass import NARROW_COLS
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
     from reference import reference_depth_map
 
     rng = np.random.default_rng(5)

@@ -221,7 +221,7 @@ def test_xpsm_affine_step_does_not_change_the_warp(focus_points):
 def grid_city(tmp_path_factory):
     """8 × 8 blocks of 12 × 12 × 15 m on a 300 m square: a deep view for a street camera."""
     from cityshade.build import build_file
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     tmp = tmp_path_factory.mktemp("grid")
     src = tmp / "grid.gml"
@@ -247,7 +247,7 @@ def _context(scene, cam, sun, options=None):
 def test_lispsm_lowers_mean_aliasing_below_uniform_at_equal_map_size(grid_city, sun_az, sun_el,
                                                                      relation):
     from cityshade.shadows import shadowmap as sm
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
 
     view_az = sun_az + (180.0 if relation == "along" else 90.0)
     a = math.radians(view_az)
@@ -270,7 +270,7 @@ def test_lispsm_lowers_mean_aliasing_below_uniform_at_equal_map_size(grid_city, 
 
 def agreement(scene, cam, t_days, sun, technique, options=None):
     """(share of valid pixels where technique and raytrace agree, frame)."""
-    from cityshade.render import render_frame
+    from cityshade.frame.render import render_frame
 
     ref = render_frame(scene, cam, t_days, sun, "raytrace")
     frame = render_frame(scene, cam, t_days, sun, technique,
@@ -282,7 +282,7 @@ def agreement(scene, cam, t_days, sun, technique, options=None):
 
 
 def test_psm_with_the_sun_behind_the_camera_matches_raytrace(grid_city):
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
 
     # Inside the city (render space is relative to the model's origin), looking north.
     cam = _camera_looking(np.array([-5.0, -30.0, 14.0]) - grid_city.origin_m, 0.0, 12.0)
@@ -302,8 +302,8 @@ def sample(sample_city_scene):
 @pytest.mark.parametrize("technique", ["psm", "lispsm", "xpsm"])
 @pytest.mark.parametrize("view", ["overview", "map"])
 def test_sample_city_agrees_with_raytrace(sample, technique, view):
-    from cityshade.citygml.temporal import parse_user_date
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.temporal import parse_user_date
+    from cityshade.geo.sun import sun_from_angles
 
     t = parse_user_date("1990").city_days
     cam = cams.overview(sample, 256, 160) if view == "overview" else cams.map_view(sample, 2.0)
@@ -317,8 +317,8 @@ def test_sample_city_agrees_with_raytrace(sample, technique, view):
 
 
 def test_night_is_all_shadow(sample):
-    from cityshade.render import render_frame
-    from cityshade.sun import sun_from_angles
+    from cityshade.frame.render import render_frame
+    from cityshade.geo.sun import sun_from_angles
 
     cam = cams.overview(sample, 64, 40)
     frame = render_frame(sample, cam, 0.0, sun_from_angles(135.0, -5.0), "lispsm")

@@ -5,7 +5,7 @@ only by the stages that use them, so ``cityshade --help`` stays instant.
 """
 from __future__ import annotations
 
-from cityshade.startup import command_is_starting, hold_ctrl_c_while_starting, one_blas_thread
+from cityshade.runtime.startup import command_is_starting, hold_ctrl_c_while_starting, one_blas_thread
 
 hold_ctrl_c_while_starting()  # first: a Ctrl-C from here on is one line and status 130
 if command_is_starting():

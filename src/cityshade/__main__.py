@@ -1,6 +1,6 @@
 """``python -m cityshade`` is the same as the ``cityshade`` command (whose entry point is
 :func:`run` too)."""
-from cityshade.startup import install_start_handler
+from cityshade.runtime.startup import install_start_handler
 
 
 def run() -> None:

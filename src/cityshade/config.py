@@ -69,7 +69,7 @@ class BuildSettings:
             raise ConfigError(f"axis_order must be one of {', '.join(AXIS_ORDERS)}, "
                               f"not {self.axis_order!r}")
         if self.time_attribute is not None:
-            from cityshade.citygml.temporal import parse_time_attribute
+            from cityshade.geo.temporal import parse_time_attribute
             from cityshade.errors import UsageError
 
             try:
@@ -99,7 +99,7 @@ def _kdtree_settings():
 
 def _sun_settings():
     # Next to the SPA code (sun.py), for the same reason as the kd-tree's.
-    from cityshade.sun import SpaSettings
+    from cityshade.geo.sun import SpaSettings
 
     return SpaSettings()
 
@@ -462,7 +462,7 @@ class Settings:
     kdtree: Any = field(default_factory=_kdtree_settings)
     #: ``[shadows]`` and its sub-tables: the technique and its tunables.
     shadows: ShadowSettings = field(default_factory=ShadowSettings)
-    #: ``[sun]``: SPA (:class:`cityshade.sun.SpaSettings`).
+    #: ``[sun]``: SPA (:class:`cityshade.geo.sun.SpaSettings`).
     sun: Any = field(default_factory=_sun_settings)
     #: ``[batch]``, ``[evaluate]``, ``[stress]``: the commands of the same names.
     batch: BatchSettings = field(default_factory=BatchSettings)

@@ -351,7 +351,7 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
         Wrong extension, no channels, shapes that differ or are not 2-D, unsupported types,
         integers outside -1 … 2**32 - 2, bad names or attributes, or a write failure.
     """
-    from cityshade.cache import release_pages
+    from cityshade.runtime.memory import release_pages
 
     path = Path(path)
     if path.suffix.lower() != ".exr":
@@ -435,7 +435,7 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
 def _interleaver(planes, ids: bool) -> Callable[[int, int], np.ndarray]:
     """``rows(y0, y1)``: rows ``[y0, y1)`` of the planes interleaved as one (rows, W, C)
     float32 strip, or uint32 with -1 as ``_UINT32_NONE`` when ``ids``."""
-    from cityshade.cache import release_pages
+    from cityshade.runtime.memory import release_pages
 
     width = planes[0].shape[1]
 

@@ -37,7 +37,7 @@ from numba.typed import List
 from cityshade.accel.kdtree_layout import (LEAF_CODE, TIME_AXIS, KdTree, pack_nodes,
                                            triangle_records)
 from cityshade.errors import ConfigError, UsageError
-from cityshade.util import release_freed_memory
+from cityshade.runtime.memory import release_freed_memory
 
 #: Axis code of a placeholder node whose subtree is built separately (never stored).
 DEFERRED = -1

@@ -300,7 +300,7 @@ class _Walker:
         """Keep a generic attribute named by ``--time-attribute``: 1.0/2.0
         ``<gen:intAttribute name="N"><gen:value>…`` or 3.0
         ``<genericAttribute><gen:IntAttribute><gen:name>N</gen:name><gen:value>…``."""
-        from cityshade.citygml.temporal import GENERIC_PREFIX
+        from cityshade.geo.temporal import GENERIC_PREFIX
 
         if el.get("name") is None:  # 3.0: the property wraps the typed attribute
             inner = [c for c in el if isinstance(c.tag, str)]

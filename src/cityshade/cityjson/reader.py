@@ -39,7 +39,7 @@ from cityshade.citygml import namespaces as ns
 from cityshade.citygml.appearance import MaterialRecord, TextureRecord
 from cityshade.citygml.geometry import parse_ring_texts
 from cityshade.citygml.reader import RawModel
-from cityshade.citygml.temporal import GENERIC_PREFIX, TIME_ATTRIBUTES
+from cityshade.geo.temporal import GENERIC_PREFIX, TIME_ATTRIBUTES
 from cityshade.errors import EmptyModelError, InputError
 
 #: CityJSON versions read (a "1.1.3"-style patch suffix is accepted).

@@ -48,13 +48,13 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     import sys
     import time
 
-    from cityshade import batch as B
-    from cityshade.citygml.temporal import parse_user_date
+    from cityshade.sunhours import run as B
+    from cityshade.geo.temporal import parse_user_date
     from cityshade.errors import UsageError
-    from cityshade.scenefile import open_scene, scene_for_camera
-    from cityshade.tiledcache import is_tiled_cache
+    from cityshade.store.scenefile import open_scene, scene_for_camera
+    from cityshade.store.tiled import is_tiled_cache
     from cityshade.shadows import get_technique
-    from cityshade.surfaces import SampleSettings
+    from cityshade.sunhours.surfaces import SampleSettings
     from cityshade.util import check_outputs
 
     t_start = time.perf_counter()
@@ -79,7 +79,7 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     if tile_px is not None and tile_px < 1:
         raise UsageError(f"--tile-px must be >= 1, not {tile_px}")
     if scheduler is not None:
-        from cityshade.distributed import parse_scheduler
+        from cityshade.sunhours.distributed import parse_scheduler
 
         parse_scheduler(scheduler)
     if (tile_px is not None or scheduler is not None or monthly) and frames:
@@ -95,7 +95,7 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
                          every_s, zone, days=days, to_date=to_date, every_day=every_day)
     step_month = None
     if monthly:
-        from cityshade.citygml.temporal import zone_info
+        from cityshade.geo.temporal import zone_info
 
         local = zone_info(zone)
         step_month = [s.start_utc.astimezone(local).strftime("%Y-%m") for s in steps]

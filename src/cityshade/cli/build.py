@@ -110,7 +110,8 @@ def build(city: tuple[Path, ...], output: Path | None, lod: int | float | None, 
 
 
 def _tiles_note(folder: Path, scene) -> str:
-    from cityshade.tiledcache import TiledBuild, open_tiled
+    from cityshade.build.tiled import TiledBuild
+    from cityshade.store.tiled import open_tiled
 
     n = len(open_tiled(folder).tiles)
     if isinstance(scene, TiledBuild):  # several files: the timings cover the tiles too

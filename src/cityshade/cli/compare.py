@@ -47,16 +47,16 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
     import dataclasses
     import time
 
-    from cityshade import batch as B
-    from cityshade import compare as C
-    from cityshade import planreport, rules as R
-    from cityshade.citygml.temporal import parse_user_date
+    from cityshade.sunhours import run as B
+    from cityshade.planning import compare as C
+    from cityshade.planning import report as planreport, rules as R
+    from cityshade.geo.temporal import parse_user_date
     from cityshade.cli.batch import parse_day
     from cityshade.cli.options import solar_zone_of_scene, warn_lmt
     from cityshade.errors import UsageError
-    from cityshade.scenefile import whole_scene
+    from cityshade.store.scenefile import whole_scene
     from cityshade.shadows import get_technique
-    from cityshade.surfaces import SampleSettings
+    from cityshade.sunhours.surfaces import SampleSettings
     from cityshade.util import check_outputs, output_group
 
     t_start = time.perf_counter()
@@ -150,7 +150,7 @@ def _area(text):
 def _load_any(path: Path, settings):
     """A scene file, or a city model built in memory (nothing written)."""
     from cityshade.build import build_scene_from_file
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     if path.suffix == ".cityshade":
         return load_scene(path)
@@ -188,7 +188,7 @@ def _run_rule(rule, scene, scene_after, before, after, year, tz, every_text, cam
 
     from cityshade.cli.options import solar_zone_of_scene
     from cityshade.raster.camera import map_view
-    from cityshade.sun import suns_from_instants
+    from cityshade.geo.sun import suns_from_instants
 
     day = R.rule_day(rule, year)
     to_date = R.rule_day(rule, year, rule.to_date) if rule.to_date else None

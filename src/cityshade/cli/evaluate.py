@@ -124,7 +124,7 @@ def evaluate(file, views, sun_text, date_text, times, tz, settings, sizes, size,
         raise UsageError("give the report folder with -o/--output")
     import datetime as dt
 
-    from cityshade.citygml.temporal import days_to_iso, parse_user_date
+    from cityshade.geo.temporal import days_to_iso, parse_user_date
     from cityshade.evaluate import (expand_techniques, make_camera, open_scene, parse_suns,
                                     run_evaluation, suns_of_day, write_report)
 

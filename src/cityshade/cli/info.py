@@ -176,13 +176,13 @@ def info(file: Path, as_json: bool, crs: str | None, verify: bool) -> None:
     FILE is a .cityshade file; a CityGML, CityJSON or CityJSONSeq file is read and described
     without writing anything.
     """
-    from cityshade.cache import is_cache_file
+    from cityshade.store.cache import is_cache_file
     from cityshade.cli.options import settings_for_source
     from cityshade.errors import InputError
     if file.is_dir():  # a tiled cache (or a folder that is not one: said in one line)
         import time
 
-        from cityshade.tiledcache import open_tiled
+        from cityshade.store.tiled import open_tiled
 
         tiled = open_tiled(file)
         d = describe_tiled(tiled)
@@ -202,7 +202,7 @@ def info(file: Path, as_json: bool, crs: str | None, verify: bool) -> None:
     if is_cache_file(file):
         import time
 
-        from cityshade.scenefile import load_scene
+        from cityshade.store.scenefile import load_scene
 
         t0 = time.perf_counter()
         scene = load_scene(file, verify=True if verify else "auto")

@@ -175,7 +175,7 @@ def install_sigint_handler() -> None:
     if threading.current_thread() is threading.main_thread():
         _interrupt["done"] = False
         signal.signal(signal.SIGINT, on_sigint)
-        from cityshade.startup import terminated_while_starting
+        from cityshade.runtime.startup import terminated_while_starting
 
         if signal.getsignal(signal.SIGTERM) in (signal.SIG_DFL, terminated_while_starting):
             signal.signal(signal.SIGTERM, on_sigterm)
@@ -297,7 +297,7 @@ def settings_for_source(path, crs: str | None, settings=None):
     ``--crs``; ``settings`` as given (None included) without ``--crs``."""
     import dataclasses
 
-    from cityshade.cache import is_cache_file
+    from cityshade.store.cache import is_cache_file
     from cityshade.config import Settings
     from cityshade.errors import UsageError
 
@@ -317,36 +317,36 @@ def settings_for_source(path, crs: str | None, settings=None):
 def solar_placeholder(tz):
     """``--tz`` for checking a date's text before the model is loaded: solar time is checked
     as UTC (the date is parsed again with :func:`reparse_solar_date` once the model is there)."""
-    from cityshade.citygml.temporal import SOLAR_TIME_ZONES
+    from cityshade.geo.temporal import SOLAR_TIME_ZONES
 
     return "UTC" if tz in SOLAR_TIME_ZONES else tz
 
 
 def solar_zone_of_scene(tz, scene):
     """``--tz`` as given, or the solar-time tzinfo at the model's longitude."""
-    from cityshade.citygml.temporal import SOLAR_TIME_ZONES
+    from cityshade.geo.temporal import SOLAR_TIME_ZONES
 
     if tz not in SOLAR_TIME_ZONES:
         return tz
-    from cityshade.sun import solar_time_zone
+    from cityshade.geo.sun import solar_time_zone
 
     return solar_time_zone(tz, scene.crs, scene.origin_m)
 
 
 def solar_zone_of_file(tz, path):
     """:func:`solar_zone_of_scene` for a scene file not loaded yet (loaded only for solar time)."""
-    from cityshade.citygml.temporal import SOLAR_TIME_ZONES
+    from cityshade.geo.temporal import SOLAR_TIME_ZONES
 
     if tz not in SOLAR_TIME_ZONES:
         return tz
-    from cityshade.scenefile import load_scene
+    from cityshade.store.scenefile import load_scene
 
     return solar_zone_of_scene(tz, load_scene(path))
 
 
 def reparse_solar_date(user_date, tz, scene):
     """The date again in solar time at the model's longitude (unchanged for other zones)."""
-    from cityshade.citygml.temporal import SOLAR_TIME_ZONES, parse_user_date
+    from cityshade.geo.temporal import SOLAR_TIME_ZONES, parse_user_date
 
     if tz not in SOLAR_TIME_ZONES or user_date.instant_utc is None:
         return user_date
@@ -355,7 +355,7 @@ def reparse_solar_date(user_date, tz, scene):
 
 def warn_lmt(instants_utc, tz) -> None:
     """Warn when ``--tz`` gives the tz database's local mean time at these instants."""
-    from cityshade.citygml.temporal import SOLAR_TIME_ZONES, lmt_warning, zone_info
+    from cityshade.geo.temporal import SOLAR_TIME_ZONES, lmt_warning, zone_info
 
     if not isinstance(tz, str) or tz in SOLAR_TIME_ZONES:
         return
@@ -510,7 +510,7 @@ class ProgressLines:
 
 def time_plan_options(func):
     """``--date --from --to --every --tz --days --to-date --every-day`` (see
-    :func:`cityshade.batch.plan_steps`)."""
+    :func:`cityshade.sunhours.run.plan_steps`)."""
     options = [
         click.option("--date", "date_text", required=True, help="First day, YYYY-MM-DD."),
         click.option("--from", "from_text", default="00:00", show_default=True,

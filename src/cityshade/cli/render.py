@@ -47,13 +47,13 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     import datetime as dt
     import time
 
-    from cityshade.citygml.temporal import parse_user_date
+    from cityshade.geo.temporal import parse_user_date
     from cityshade.cli.options import reparse_solar_date, solar_placeholder
     from cityshade.errors import UsageError
-    from cityshade.render import check_frame_outputs, render_frame, strip_rows_for, write_frame
-    from cityshade.scenefile import open_scene, scene_for_camera
+    from cityshade.frame.render import check_frame_outputs, render_frame, strip_rows_for, write_frame
+    from cityshade.store.scenefile import open_scene, scene_for_camera
     from cityshade.shadows import get_technique
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
 
     technique = settings.shadows.technique
     get_technique(technique)  # unknown names fail before any work
@@ -86,7 +86,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
         sun = sun_from_angles(sun_azimuth, sun_elevation, scene.crs, scene.origin_m)
     else:
         # pvlib (and pandas) load only here: a render with explicit angles never needs them.
-        from cityshade.sun import sun_from_instant
+        from cityshade.geo.sun import sun_from_instant
 
         spa = settings.sun
         if no_refraction:

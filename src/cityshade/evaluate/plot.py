@@ -1,5 +1,5 @@
 """The error-against-time plot of an evaluation, drawn with matplotlib (the optional
-``[plot]`` extra; :func:`cityshade.util.agg_canvas`).
+``[plot]`` extra; :func:`cityshade.plotting.agg_canvas`).
 
 Without matplotlib :func:`error_time_plot` returns None and the report says the plot was
 skipped; the CSV and the Markdown are written either way.
@@ -11,7 +11,7 @@ from typing import Sequence
 
 import numpy as np
 
-from cityshade.util import NO_MATPLOTLIB, agg_canvas, canvas_pixels, have_matplotlib
+from cityshade.plotting import NO_MATPLOTLIB, agg_canvas, canvas_pixels, have_matplotlib
 
 __all__ = ["OKABE_ITO", "NO_MATPLOTLIB", "base_technique", "technique_colour",
            "error_time_plot"]

@@ -10,7 +10,7 @@ import numpy as np
 
 from cityshade.evaluate.metrics import median_s, pareto_front
 from cityshade.evaluate.plot import error_time_plot
-from cityshade.util import NO_MATPLOTLIB
+from cityshade.plotting import NO_MATPLOTLIB
 from cityshade.evaluate.run import Evaluation
 
 

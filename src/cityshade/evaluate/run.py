@@ -1,6 +1,6 @@
 """The frame loop of ``cityshade evaluate``: every technique on the pipeline's frames.
 
-For each view (camera), the camera pass (:func:`cityshade.pipeline.camera_pass`, ground plane
+For each view (camera), the camera pass (:func:`cityshade.frame.pipeline.camera_pass`, ground plane
 included) is timed ``repeat + 1`` times and serves every sun; for each sun position, technique
 and shadow-map size the shadow pass runs ``repeat + 1`` times on it: the first run is reported
 separately as the warm-up (Numba compile or cache load, first-touch allocations), the median
@@ -26,7 +26,7 @@ from cityshade.shadows.shadowmap import DepthMapReuse
 if TYPE_CHECKING:
     from cityshade.geometry.scene import Scene
     from cityshade.raster.camera import Camera
-    from cityshade.sun import SunPosition
+    from cityshade.geo.sun import SunPosition
 
 __all__ = ["EvaluateSettings", "Case", "Evaluation", "expand_techniques", "uses_map",
            "evaluate_frame", "TimedCameraPass", "timed_camera_pass", "run_evaluation",
@@ -138,17 +138,17 @@ def evaluate_frame(scene: "Scene", camera: "Camera", view: str, sun: "SunPositio
                    camera_runs: "TimedCameraPass | None" = None) -> dict[str, Any]:
     """Evaluate every technique and size on one view and sun; rows go into ``evaluation``.
 
-    The frame is the pipeline's (:func:`cityshade.pipeline.camera_pass`, with ``ground`` like
+    The frame is the pipeline's (:func:`cityshade.frame.pipeline.camera_pass`, with ``ground`` like
     ``render --ground``), timed ``repeat + 1`` times (or ``camera_runs``, the view's camera pass
     timed once for all its suns); each technique runs through
-    :func:`cityshade.pipeline.shadow_pass` on the same camera pass.
+    :func:`cityshade.frame.pipeline.shadow_pass` on the same camera pass.
 
     Returns a dict with the frame's G-buffer, surfaces, reference lit fraction and the
     results of the last run of each (technique, size) (``results``), for callers (the stress
     set) that check more.
     """
-    from cityshade.diagnostics import skipped_work
-    from cityshade.pipeline import shadow_pass
+    from cityshade.frame.diagnostics import skipped_work
+    from cityshade.frame.pipeline import shadow_pass
     from cityshade.shadows import get_technique
 
     runs = settings.repeat + 1
@@ -260,7 +260,7 @@ class TimedCameraPass:
     """A view's camera pass and the medians of its timed runs (it does not depend on the sun,
     so one serves every sun of the view)."""
 
-    cp: Any                     # cityshade.pipeline.CameraPass
+    cp: Any                     # cityshade.frame.pipeline.CameraPass
     gbuffer_s: float
     resolve_s: float
 
@@ -269,7 +269,7 @@ def timed_camera_pass(scene, camera, t_days: float, repeat: int, ground: str | N
                       ) -> TimedCameraPass:
     """The camera pass run ``repeat + 1`` times: the last one, and the medians of all runs
     but the first (the warm-up)."""
-    from cityshade.pipeline import camera_pass
+    from cityshade.frame.pipeline import camera_pass
 
     g_times, r_times = [], []
     for _ in range(repeat + 1):
@@ -295,7 +295,7 @@ def _keep_worst(evaluation: Evaluation, k: int, case: Case) -> None:
 
 def _keep_picture(scene, camera, gbuf, surfaces, ref_lit, sun, view, label, evaluation) -> None:
     """The shaded reference picture of a view and sun (the background of diff images)."""
-    from cityshade.shading import shade, to_srgb8
+    from cityshade.frame.shading import shade, to_srgb8
 
     if evaluation.meta.get("no_pictures"):
         return
@@ -389,8 +389,8 @@ def open_scene(path, settings=None):
     of all its tiles, a city model (CityGML, CityJSON: anything else) is built in memory
     (nothing written)."""
     from cityshade.build import build_scene_from_file
-    from cityshade.cache import is_cache_file
-    from cityshade.scenefile import whole_scene
+    from cityshade.store.cache import is_cache_file
+    from cityshade.store.scenefile import whole_scene
 
     path = Path(path)
     if is_cache_file(path) or path.is_dir() or not path.exists():
@@ -400,7 +400,7 @@ def open_scene(path, settings=None):
 
 def parse_suns(text: str, scene) -> list:
     """``"az,el;az,el"`` (degrees, azimuth from true north) → sun positions of the model."""
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
 
     suns = []
     for part in (p.strip() for p in text.split(";")):
@@ -419,8 +419,8 @@ def parse_suns(text: str, scene) -> list:
 
 def suns_of_day(day: str, times: str, tz: str | None, scene, spa=None) -> list:
     """Sun positions (SPA) at local ``times`` ("HH:MM,HH:MM") of ``day`` (YYYY-MM-DD)."""
-    from cityshade.citygml.temporal import parse_user_date
-    from cityshade.sun import SpaSettings, suns_from_instants
+    from cityshade.geo.temporal import parse_user_date
+    from cityshade.geo.sun import SpaSettings, suns_from_instants
 
     instants = []
     for t in (s.strip() for s in times.split(",")):

@@ -117,7 +117,7 @@ class _Checker:
 
 def _frame(scene, camera, t_days, s: StressSettings):
     """The pipeline's camera pass, with the set's ground plane (as ``render --ground``)."""
-    from cityshade.pipeline import camera_pass
+    from cityshade.frame.pipeline import camera_pass
 
     return camera_pass(scene, camera, t_days, ground=s.ground)
 
@@ -125,7 +125,7 @@ def _frame(scene, camera, t_days, s: StressSettings):
 def _run(cp, sun, technique: str, **flags):
     """One technique's result on a camera pass (flags: :meth:`ShadowSettings.override`)."""
     from cityshade.config import ShadowSettings
-    from cityshade.pipeline import shadow_pass
+    from cityshade.frame.pipeline import shadow_pass
 
     return shadow_pass(cp, sun, technique, ShadowSettings().override(**flags)).result
 
@@ -371,7 +371,7 @@ def _street_view(scene, s: StressSettings):
 
 
 def case_elevation(scene, s: StressSettings, elevation_deg: float, t_days: float) -> CaseResult:
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
 
     chk = _Checker(f"sun elevation {elevation_deg:g}°")
     sun = sun_from_angles(STRESS_AZIMUTH_DEG, elevation_deg, scene.crs, scene.origin_m)
@@ -402,7 +402,7 @@ def case_elevation(scene, s: StressSettings, elevation_deg: float, t_days: float
 
 def case_shift(source_gml: Path, scene, s: StressSettings, t_days: float) -> CaseResult:
     from cityshade.build import build_scene_from_file
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
 
     chk = _Checker(f"model shifted by {SHIFT_M:g} m in x and y")
     with tempfile.TemporaryDirectory(prefix="cityshade-stress-") as tmp:
@@ -438,7 +438,7 @@ def case_shift(source_gml: Path, scene, s: StressSettings, t_days: float) -> Cas
 
 def case_geometry(s: StressSettings) -> CaseResult:
     from cityshade.build import build_scene_from_file
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
 
     chk = _Checker("awkward geometry (slivers 1e6, zero-area, duplicate vertices, coplanar "
                    "overlap, walls on the ground, 1 cm walls, 600 m tower)")
@@ -496,7 +496,7 @@ def wall_foot_case() -> CaseResult:
     the step edges, suns from the west at 5°–60° and from the north-west and south-west.
     """
     from cityshade.accel.kdtree_build import build_kdtree
-    from cityshade.sun import direction_from_angles
+    from cityshade.geo.sun import direction_from_angles
     from cityshade.trace import sunlit
 
     chk = _Checker("foot of a sun-facing wall (points on a roof-step edge)")
@@ -538,7 +538,7 @@ def case_time_slices(scene, s: StressSettings) -> CaseResult:
     """On each date d of the model, the objects beginning at d are drawn and traced, and
     one day before they are not; objects ending at d are gone on d. Frames before, on and
     after each date pass the technique checks."""
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
     from cityshade.trace import intersect
 
     chk = _Checker("time slices on, before and after the model's dates")
@@ -588,7 +588,7 @@ def case_time_slices(scene, s: StressSettings) -> CaseResult:
 
 
 def case_map_sizes(scene, s: StressSettings, t_days: float) -> CaseResult:
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
 
     chk = _Checker(f"map sizes {s.sweep_sizes[0]}² to {s.sweep_sizes[-1]}²")
     sun = sun_from_angles(STRESS_AZIMUTH_DEG, 30.0, scene.crs, scene.origin_m)
@@ -602,7 +602,7 @@ def case_map_sizes(scene, s: StressSettings, t_days: float) -> CaseResult:
 
 def case_cascades(scene, s: StressSettings, t_days: float) -> CaseResult:
     from cityshade.evaluate.metrics import compare, make_reference
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
 
     chk = _Checker(f"CSM with {s.cascades[0]} to {s.cascades[-1]} cascades")
     sun = sun_from_angles(STRESS_AZIMUTH_DEG, 30.0, scene.crs, scene.origin_m)
@@ -632,7 +632,7 @@ def case_cascades(scene, s: StressSettings, t_days: float) -> CaseResult:
 
 def case_street(scene, s: StressSettings, t_days: float) -> CaseResult:
     """A view of one street does not shade the whole city."""
-    from cityshade.sun import sun_from_angles
+    from cityshade.geo.sun import sun_from_angles
 
     chk = _Checker("a view of one street draws a fraction of the city")
     cam = _street_view(scene, s)
@@ -673,7 +673,7 @@ def run_stress(path, settings: StressSettings | None = None,
                echo: Callable[[str], None] | None = None) -> StressReport:
     """Run the stress set on the model at ``path`` (.gml or .cityshade) and the generated
     geometry model; ``echo`` gets each case's PASS/FAIL line as it finishes."""
-    from cityshade.citygml.temporal import parse_user_date
+    from cityshade.geo.temporal import parse_user_date
 
     s = settings or StressSettings()
     scene, source = _model_source(path)

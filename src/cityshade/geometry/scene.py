@@ -23,14 +23,14 @@ from numba import njit
 
 from cityshade.citygml.appearance import (georeferenced_uv, read_world_file,
                                           resolve_image_path)
-from cityshade.citygml.crs import (CrsInfo, GeographicProjector, area_of_use_warning,
+from cityshade.geo.crs import (CrsInfo, GeographicProjector, area_of_use_warning,
                                    reproject_horizontal, resolve_model_crs_detailed)
 from cityshade.citygml.reader import RawModel
-from cityshade.citygml.temporal import (choose_interval, days_to_iso, has_creation_dates,
+from cityshade.geo.temporal import (choose_interval, days_to_iso, has_creation_dates,
                                         parse_time_attribute)
 from cityshade.config import BuildSettings
 from cityshade.errors import EmptyModelError, UsageError
-from cityshade.raster.culling import used_vertex_box
+from cityshade.geometry.bounds import used_vertex_box
 
 #: Time-source codes stored per object (uint8); new sources are appended (codes are stored).
 TIME_SOURCE_NAMES = ("none", "valid", "construction", "creation", "inherited", "attribute")
@@ -352,7 +352,7 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
         the scene's.
     render_space : bool
         False keeps the vertices as float64 model-CRS coordinates with a zero origin, for
-        :func:`cityshade.geometry.merge.merge_scenes` to choose the origin of all tiles and
+        :func:`cityshade.build.merge.merge_scenes` to choose the origin of all tiles and
         cast once (so a tiled build equals the one-file build bit for bit).
     consume_raw : bool
         True when the caller drops ``raw`` afterwards: its coordinates (``raw.xyz``, set to

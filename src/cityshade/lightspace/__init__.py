@@ -24,11 +24,11 @@ import numba
 import numpy as np
 
 from cityshade.accel.kdtree_layout import REC_ID, KdTree
-from cityshade.cache import release_pages
+from cityshade.runtime.memory import release_pages
 from cityshade.trace.bricks import one_thread_when_small
 from cityshade.lightspace import kernels as K
-from cityshade.threadpool import run_chunks
-from cityshade.util import Recycler, Scratch
+from cityshade.runtime.threadpool import run_chunks
+from cityshade.runtime.memory import Recycler, Scratch
 from cityshade.trace import (UNIT_LENGTH_TOL, TraceInputError, tree_of, shadow_offset_m,
                              shadow_rays_from_surface)
 
@@ -175,7 +175,7 @@ PARALLEL_SORT_MIN = 1 << 16
 
 def stable_argsort(keys: np.ndarray) -> np.ndarray:
     """``np.argsort(keys, kind="stable")``, the halves sorted on two threads
-    (:func:`~cityshade.threadpool.run_chunks`) and merged when there are two Numba threads and
+    (:func:`~cityshade.runtime.threadpool.run_chunks`) and merged when there are two Numba threads and
     at least ``PARALLEL_SORT_MIN`` keys (the same order)."""
     n = keys.shape[0]
     if numba.get_num_threads() < 2 or n < max(PARALLEL_SORT_MIN, 2):
@@ -305,7 +305,7 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
         Wrong shapes, non-finite values, a non-unit sun direction, a NaN time.
     """
     if getattr(tree, "tiled", None) is not None:  # a tiled cache's view: per tile, ORed
-        from cityshade.tiledcache import occluded_over_tiles
+        from cityshade.store.tiled import occluded_over_tiles
 
         o = np.ascontiguousarray(origins, dtype=np.float64)
         return occluded_over_tiles(tree, o, sun_direction, lambda part, rays: occluded(

@@ -291,7 +291,7 @@ def scene_box(scene, t_days: float | None = None) -> np.ndarray:
     if tris.shape[0] == 0:
         when = "" if t_days is None else f" at t = {t_days} days"
         raise UsageError(f"the scene has no triangles{when} to frame")
-    from cityshade.raster.culling import used_vertex_box
+    from cityshade.geometry.bounds import used_vertex_box
 
     box = np.empty((2, 3))
     used_vertex_box(np.ascontiguousarray(tris), np.asarray(scene.vertices), box)

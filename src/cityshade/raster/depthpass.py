@@ -32,7 +32,8 @@ from cityshade.errors import UsageError
 from cityshade.raster import culling as cull
 from cityshade.raster import triangles as tc
 from cityshade.trace.bricks import static_schedule
-from cityshade.util import Recycler, check_t_days
+from cityshade.runtime.memory import Recycler
+from cityshade.util import check_t_days
 
 
 def texel_params(width_px: int, height_px: int) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

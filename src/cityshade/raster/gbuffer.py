@@ -15,7 +15,7 @@ from numba import njit, prange
 
 from cityshade.errors import UsageError
 from cityshade.trace.bricks import dynamic_bricks
-from cityshade.util import Recycler
+from cityshade.runtime.memory import Recycler
 
 
 @dataclass(eq=False)

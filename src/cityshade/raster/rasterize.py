@@ -25,7 +25,8 @@ from cityshade.raster import triangles as tc
 from cityshade.raster.camera import Camera
 from cityshade.raster.gbuffer import GBuffer
 from cityshade.trace.bricks import static_schedule
-from cityshade.util import Recycler, check_t_days
+from cityshade.runtime.memory import Recycler
+from cityshade.util import check_t_days
 
 #: Side of the blocks of the hierarchical max-depth buffer (8 blocks per tile side).
 BLOCK_PX = 8

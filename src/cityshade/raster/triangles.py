@@ -46,7 +46,7 @@ from numba import njit, prange
 from cityshade.accel.kdtree_layout import KdTree, KdViews, record_id
 from cityshade.errors import UsageError
 from cityshade.raster import culling as cull
-from cityshade.util import Scratch
+from cityshade.runtime.memory import Scratch
 
 #: Tile side in pixels: 64² pixels × (4 + 4 + 8 bytes) = 64 KiB of G-buffer per tile fits the
 #: L2 cache, and 1080p gives 510 tiles, plenty to balance two cores (a 4096² depth map: 4096).
@@ -576,7 +576,7 @@ class Batcher:
         if n == 0:
             return
         t0 = time.perf_counter()
-        # The batch arrays are kept for the later batches and passes (util.Scratch): fresh
+        # The batch arrays are kept for the later batches and passes (runtime.memory.Scratch): fresh
         # pages cost a fault and a zeroing each on first touch (about a third of the setup's
         # time when every batch allocated its own, and 100-200 ms of a 1M-triangle depth pass
         # on a loaded machine, depending on what ran before, when every pass did).

@@ -36,13 +36,13 @@ from numba import njit, prange
 
 from cityshade.config import ShadowSettings
 from cityshade.errors import ContractError, UsageError
-from cityshade.util import Recycler
+from cityshade.runtime.memory import Recycler
 
 if TYPE_CHECKING:
     from cityshade.geometry.scene import Scene
     from cityshade.raster.camera import Camera
     from cityshade.raster.gbuffer import Surfaces
-    from cityshade.sun import SunPosition
+    from cityshade.geo.sun import SunPosition
 
 #: Techniques that are not map techniques: name → "module:Class" (registering one is one line).
 TECHNIQUES: dict[str, str] = {

@@ -153,7 +153,7 @@ def vsm_moments(depth, metres_per_ndc: float, filter_weights=None, work=None) ->
     Depth is ``(z_ndc + 1) · metres_per_ndc``, i.e. metres from the near plane, so the moments
     stay small; texels without caster count as the far plane (z = 1). float64 because
     ``E[d²] - E[d]²`` cancels: in float32 a 1 km depth range would leave a variance noise of
-    0.1 m². ``work`` (a :class:`cityshade.util.Scratch`) holds the result and its temporary
+    0.1 m². ``work`` (a :class:`cityshade.runtime.memory.Scratch`) holds the result and its temporary
     instead of fresh arrays (valid while the caller holds it).
     """
     z = np.asarray(depth)

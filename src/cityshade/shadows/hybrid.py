@@ -47,7 +47,7 @@ from cityshade.shadows import (TECHNIQUES, ShadowContext, ShadowResult, Techniqu
                                take_pixels)
 from cityshade.shadows.shadowmap import clip_point, plane_depth_gradient
 from cityshade.trace.kernels import hit_triangle, on_axes, ray_shear
-from cityshade.util import Recycler, Scratch
+from cityshade.runtime.memory import Recycler, Scratch
 
 #: Receiver states of the classifiers. PROVEN_SHADOW: uncertain by the map, but its shadow ray
 #: hits one of the casters the map holds around it (the tracer's own watertight test of those

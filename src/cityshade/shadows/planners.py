@@ -31,7 +31,7 @@ import numpy as np
 from cityshade.shadows import (MapUse, ShadowContext, ShadowResult, TechniqueDiagnostics,
                                scatter_pixels)
 from cityshade.shadows.lookups import Lookup
-from cityshade.util import Scratch
+from cityshade.runtime.memory import Scratch
 
 
 @dataclass

@@ -43,7 +43,7 @@ from cityshade.errors import UsageError
 from cityshade.raster.depthpass import render_depth
 from cityshade.raster.triangles import TILE_PX
 from cityshade.shadows import ShadowContext
-from cityshade.util import Scratch
+from cityshade.runtime.memory import Scratch
 
 #: Smallest extent (metres) of a fitted light view across or along the rays: a single visible
 #: point still gets a non-degenerate map.
@@ -753,7 +753,7 @@ def lookup_receivers(view: LightView, points_m, normals, sun_direction,
     the view, with the receiver-plane depth bias of projective views: what
     :func:`shadow_lookup` compares with the map. One kernel pass; :func:`offset_receivers`,
     :func:`project` and :func:`receiver_plane_gradient` are its step-by-step twins. ``work``
-    (a :class:`cityshade.util.Scratch`) holds the outputs instead of fresh arrays."""
+    (a :class:`cityshade.runtime.memory.Scratch`) holds the outputs instead of fresh arrays."""
     args = _lookup_args(view, points_m, normals, sun_direction, settings)
     count = args[4].shape[0]
     out = tuple(np.empty(count) if work is None else work.get(f"lookup.{k}", count)

@@ -689,7 +689,7 @@ def warp_matrix(warp: str, camera, sun_direction, receivers_m, casters_m,
 def focus(ctx, work=None) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
     """Facing mask (H, W), receivers (N, 3), their oriented normals (N, 3) and the receivers
     extruded toward the sun to the scene box (N, 3) of a shadow context (in ``work``, a held
-    :class:`cityshade.util.Scratch`, when given: valid until it is given back)."""
+    :class:`cityshade.runtime.memory.Scratch`, when given: valid until it is given back)."""
     from cityshade.shadows import shadowmap as sm
 
     faces = ctx.faces

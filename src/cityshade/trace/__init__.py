@@ -14,7 +14,8 @@ from cityshade.errors import UsageError
 from cityshade.trace import bricks
 from cityshade.trace.bricks import (DEFAULT_BRICK_SIZE, intersect_bricks, occluded_bricks,
                                     tile_order)
-from cityshade.util import Recycler, check_t_days
+from cityshade.runtime.memory import Recycler
+from cityshade.util import check_t_days
 
 __all__ = ["TraceInputError", "intersect", "occluded", "shadow_rays_from_surface", "sunlit", "tree_of",
            "tile_order", "SHADOW_OFFSET_REL", "SHADOW_OFFSET_MIN_SCALE_M"]
@@ -149,7 +150,7 @@ def occluded(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
         Wrong shapes, non-finite values, non-unit directions, negative or NaN ``tmax``.
     """
     if getattr(tree, "tiled", None) is not None:  # a tiled cache's view: per tile, ORed
-        from cityshade.tiledcache import occluded_over_tiles
+        from cityshade.store.tiled import occluded_over_tiles
 
         o, d, tm = _rays(origins, directions, tmax)
         return occluded_over_tiles(tree, o, d, lambda part, rays: occluded(

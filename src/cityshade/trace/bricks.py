@@ -2,7 +2,7 @@
 
 A brick is ``brick_size`` consecutive rays (the thesis slides: "each thread handling a
 brick"). The tracing kernels are serial ``nogil`` kernels over a range of bricks, run on
-:func:`cityshade.threadpool.run_chunks` (``BRICKS_PER_CHUNK`` bricks at a time to whichever
+:func:`cityshade.runtime.threadpool.run_chunks` (``BRICKS_PER_CHUNK`` bricks at a time to whichever
 thread is free); each brick owns its traversal scratch and its shadow-caster cache (the record
 index of the last occluder it found, tested first for the next ray), so no state is shared
 between threads and results do not depend on the thread count. Rays are most coherent when
@@ -17,7 +17,7 @@ import contextlib
 import numba
 from numba import njit, prange
 
-from cityshade.threadpool import run_chunks
+from cityshade.runtime.threadpool import run_chunks
 from cityshade.trace.kernels import trace_range
 
 #: Rays per brick: large enough to amortise the per-brick scratch allocation and to keep the

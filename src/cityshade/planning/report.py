@@ -31,9 +31,9 @@ def _pct(v) -> str:
 
 
 def worst_surfaces(comp, n: int = 10) -> list[tuple]:
-    """The ``n`` surface rows (see :data:`cityshade.compare.SURFACE_COLUMNS`) with the largest
+    """The ``n`` surface rows (see :data:`cityshade.planning.compare.SURFACE_COLUMNS`) with the largest
     loss in hours, of polygons of at least :data:`MIN_LISTED_AREA_M2`."""
-    from cityshade.compare import surface_rows
+    from cityshade.planning.compare import surface_rows
 
     if comp.samples is None:
         return []
@@ -45,13 +45,13 @@ def worst_surfaces(comp, n: int = 10) -> list[tuple]:
 
 def _worst_picture(outdir: Path, comp, rows) -> Path | None:
     """loss.png with the worst-hit surfaces' centres numbered (map view only)."""
-    from cityshade.util import agg_canvas, canvas_pixels, have_matplotlib
+    from cityshade.plotting import agg_canvas, canvas_pixels, have_matplotlib
 
     cam = comp.camera
     if cam is None or cam.kind != "map" or not rows or not have_matplotlib():
         return None
     from cityshade import imageio
-    from cityshade.compare import loss_picture
+    from cityshade.planning.compare import loss_picture
 
     img = loss_picture(comp)
     h, w = img.shape[:2]
@@ -106,7 +106,7 @@ def _verdict_md(v) -> list[str]:
 def write_report(outdir, comp, verdicts: Sequence, request: dict[str, Any],
                  steps: Sequence) -> list[Path]:
     """Write ``report.md``, ``rules.json`` and (map view) ``worst.png``; returns the paths."""
-    from cityshade.citygml.temporal import days_to_iso
+    from cityshade.geo.temporal import days_to_iso
     from cityshade.util import write_text_atomic
 
     outdir = Path(outdir)

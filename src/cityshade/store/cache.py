@@ -247,43 +247,6 @@ def _write_pieces(fh, arrays: list, buffers: list, offsets: list, consume: bool)
     return digests
 
 
-def release_pages(*arrays) -> int:
-    """Drop this process's resident pages of read-only memory-mapped arrays (views into a
-    :func:`open_cache` map); other arrays are left alone. Returns the bytes released.
-
-    The pages are clean file pages: they stay in the OS page cache and the next touch maps
-    them back unchanged, so the data read is the same, only the resident set shrinks (a whole
-    10^7-triangle city read strip by strip otherwise keeps most of its 2.1 GB file resident).
-    """
-    import mmap
-
-    released = 0
-    if not hasattr(mmap, "MADV_DONTNEED"):  # not Linux/BSD: the pages stay, as before
-        return released
-    for a in arrays:
-        if not isinstance(a, np.ndarray) or a.nbytes == 0:
-            continue
-        root = a
-        while isinstance(root.base, np.ndarray):
-            root = root.base
-        # np.memmap(mode="r") maps with ACCESS_READ: nothing can have written to its pages.
-        if not (isinstance(root.base, mmap.mmap) and getattr(root, "mode", None) == "r"):
-            continue
-        mm = root.base
-        base = root.ctypes.data - (root.offset % mmap.ALLOCATIONGRANULARITY)
-        # A view's span: strided too (a channel of an (H, W, 3) map spans its whole rows).
-        lo = hi = a.ctypes.data - base
-        for n, step in zip(a.shape, a.strides):
-            lo, hi = (lo + (n - 1) * step, hi) if step < 0 else (lo, hi + (n - 1) * step)
-        hi += a.itemsize
-        lo -= lo % mmap.PAGESIZE
-        hi = min(len(mm), hi + (-hi) % mmap.PAGESIZE)
-        if hi > lo:
-            mm.madvise(mmap.MADV_DONTNEED, lo, hi - lo)
-            released += hi - lo
-    return released
-
-
 def pack_strings(values: list[str]) -> tuple[np.ndarray, np.ndarray]:
     """Strings → (UTF-8 blob uint8, offsets int64 of length n+1)."""
     if isinstance(values, PackedStrings) and values.packed_whole():

@@ -153,7 +153,7 @@ def plan_steps(first_day: date, from_s: int, to_s: int, every_s: float, tz: str,
         Unknown zone, empty window, both ``days`` and ``to_date``, non-positive counts, years
         outside 1000–3000, or more than :data:`MAX_STEPS` steps.
     """
-    from cityshade.citygml.temporal import zone_info
+    from cityshade.geo.temporal import zone_info
 
     if days is not None and to_date is not None:
         raise UsageError("give --days or --to-date, not both")
@@ -268,7 +268,7 @@ class Checkpoint:
         # Called with the new state's checksum before it replaces the old one (run_batch records
         # both in the manifest, so an interruption between the two writes loses nothing).
         self.before_write: Callable[[str], None] | None = None
-        # Further arrays of the run (the sunlit stretches, :mod:`cityshade.runs`), saved with
+        # Further arrays of the run (the sunlit stretches, :mod:`cityshade.sunhours.stretches`), saved with
         # the sums under ``x_`` names and read back by :meth:`load`.
         self.extra: dict[str, np.ndarray] = {}
 
@@ -324,7 +324,7 @@ class Checkpoint:
                          **{f"x_{k}": v for k, v in (extra or {}).items()})
 
     def save_arrays(self, units_done: int, **arrays: np.ndarray) -> None:
-        """:meth:`save` with other arrays (a tiled run's, :mod:`cityshade.tiles`)."""
+        """:meth:`save` with other arrays (a tiled run's, :mod:`cityshade.sunhours.tiled`)."""
         from cityshade.util import atomic_write
 
         t0 = time.perf_counter()
@@ -358,7 +358,7 @@ class SunHours:
         Pixels showing a surface.
     surfaces : cityshade.raster.gbuffer.Surfaces or None
         The camera pass (done once).
-    samples : cityshade.surfaces.SurfaceSamples or None
+    samples : cityshade.sunhours.surfaces.SurfaceSamples or None
     sample_hours : (N,) float64 or None
         Sun-hours of each surface sample.
     polygon_hours : (P,) float64 or None
@@ -391,7 +391,7 @@ class SunHours:
     timings_s: dict[str, float] = field(default_factory=dict)
     diagnostics: dict[str, Any] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
-    #: The sunlit stretches (:class:`cityshade.runs.Stretches`) when asked for, else None.
+    #: The sunlit stretches (:class:`cityshade.sunhours.stretches.Stretches`) when asked for, else None.
     stretches: Any = None
 
 
@@ -456,14 +456,14 @@ def _city_changes(scene, instants, t_days) -> str | None:
     """A warning when objects appear or disappear between the first and last instant."""
     if not scene.has_time or not instants:
         return None
-    from cityshade.citygml.temporal import datetime_to_days
+    from cityshade.geo.temporal import datetime_to_days
 
     lo = min(datetime_to_days(t) for t in instants)
     hi = max(datetime_to_days(t) for t in instants)
     ends = np.concatenate([scene.obj_t_begin_days, scene.obj_t_end_days])
     n = int(((ends > lo) & (ends <= hi)).sum())
     if n:
-        from cityshade.citygml.temporal import days_to_iso
+        from cityshade.geo.temporal import days_to_iso
 
         return (f"{n} object dates fall inside the run; the city is shown as it stood at "
                 f"{days_to_iso(t_days) if math.isfinite(t_days) else 'any time'} throughout")
@@ -489,7 +489,7 @@ def receivers_pass(scene, camera, t_days: float, ground, samples_per_m2, timings
     G-buffer and ground diagnostics."""
     cp = samples = None
     if camera is not None:
-        from cityshade.pipeline import camera_pass
+        from cityshade.frame.pipeline import camera_pass
 
         t0 = time.perf_counter()
         cp = camera_pass(scene, camera, float(t_days), ground=ground)
@@ -498,7 +498,7 @@ def receivers_pass(scene, camera, t_days: float, ground, samples_per_m2, timings
             diagnostics["ground"] = cp.ground
         timings["camera_s"] = time.perf_counter() - t0
     if samples_per_m2 is not None:
-        from cityshade.surfaces import sample_surfaces
+        from cityshade.sunhours.surfaces import sample_surfaces
 
         t0 = time.perf_counter()
         samples = sample_surfaces(scene, samples_per_m2, float(t_days))
@@ -537,7 +537,7 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
         The technique's tunables (``[shadows]``).
     ground : str, optional
         Ground plane where no surface is drawn ("min", "auto" or a height; see render).
-    spa : cityshade.sun.SpaSettings, optional
+    spa : cityshade.geo.sun.SpaSettings, optional
         Sun computation settings (refraction...).
     suns : sequence of SunPosition, optional
         Precomputed sun positions, one per instant (then no SPA and no CRS is needed).
@@ -556,10 +556,10 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
         KeyboardInterrupt, stops the run with the state saved).
     on_frame : callable(unit, lit, valid), optional
         Receives each position's per-pixel lit fraction (for ``--frames``).
-    samples : cityshade.surfaces.SurfaceSamples, optional
+    samples : cityshade.sunhours.surfaces.SurfaceSamples, optional
         Surface samples to use instead of sampling at ``samples_per_m2`` (the same receivers
         in two runs, e.g. ``compare``).
-    stretches : cityshade.runs.Stretches, optional
+    stretches : cityshade.sunhours.stretches.Stretches, optional
         Also keep every receiver's sunlit stretches (continuous sunshine) over the steps,
         which must be the instants' steps; returned as ``result.stretches``.
 
@@ -574,7 +574,7 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
     CRSError
         Sun positions from instants for a model without CRS.
     """
-    from cityshade.pipeline import shadow_pass
+    from cityshade.frame.pipeline import shadow_pass
     from cityshade.shadows import get_technique
 
     t_start = time.perf_counter()
@@ -599,7 +599,7 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
     # Sun positions: one SPA call for all instants, or the caller's.
     t0 = time.perf_counter()
     if suns is None:
-        from cityshade.sun import suns_from_instants
+        from cityshade.geo.sun import suns_from_instants
 
         suns = suns_from_instants(instants, scene.crs, scene.origin_m, spa)
     else:
@@ -662,7 +662,7 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
                     lit = shadow_pass(cp, unit.sun, tech, settings).lit
                 timings["shadow_s"] += time.perf_counter() - t0
             if samples is not None:
-                from cityshade.surfaces import samples_lit
+                from cityshade.sunhours.surfaces import samples_lit
 
                 t0 = time.perf_counter()
                 slit = samples_lit(scene, samples, unit.sun, float(t_days),
@@ -697,7 +697,7 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
         hours = np.where(valid, pixel_sum, np.nan).astype(np.float32)
     sample_hours = polygon_hours = None
     if samples is not None:
-        from cityshade.surfaces import polygon_means
+        from cityshade.sunhours.surfaces import polygon_means
 
         sample_hours = sample_sum
         polygon_hours = polygon_means(samples, sample_sum)
@@ -785,7 +785,7 @@ def colour_map_png(hours: np.ndarray, vmax_h: float | None = None) -> np.ndarray
 def legend_band(width_px: int, vmax_h: float) -> np.ndarray | None:
     """(B, width_px, 3) uint8: the viridis bar from 0 to ``vmax_h`` hours with labels at 0,
     the middle and the top, drawn by matplotlib; None without it."""
-    from cityshade.util import agg_canvas, canvas_pixels, have_matplotlib
+    from cityshade.plotting import agg_canvas, canvas_pixels, have_matplotlib
 
     if not have_matplotlib():
         return None
@@ -846,7 +846,7 @@ def write_sun_hours(outdir, result: SunHours, scene, camera, meta: dict[str, Any
         exr = outdir / "sun_hours.exr"
         channels = {"sun_hours": result.hours, "objid": np.asarray(result.surfaces.obj_id)}
         if getattr(scene, "tiled", None) is not None:  # a tiled cache's view: the global ids
-            from cityshade.tiledcache import to_global
+            from cityshade.store.tiled import to_global
 
             channels["objid"] = to_global(scene.global_obj, channels["objid"])
         if result.stretches is not None:
@@ -870,7 +870,7 @@ def write_sun_hours(outdir, result: SunHours, scene, camera, meta: dict[str, Any
                 epsg=scene.crs.horizontal_epsg, nodata=float("nan"),
                 attributes={k: str(v) for k, v in meta.items()})
     if surfaces_csv and result.samples is not None:
-        from cityshade.surfaces import write_surface_csv
+        from cityshade.sunhours.surfaces import write_surface_csv
 
         written.append(write_surface_csv(outdir / "surfaces.csv", scene, result.samples,
                                          result.polygon_hours))
@@ -991,10 +991,10 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
         Called after each sun position (an exception raised here stops the run with the state
         saved). In a tiled run: after each task, ``(tasks_done, tasks_total, None)``.
     tile_px : int, optional
-        Split the receivers into tiles of this many pixels a side (:mod:`cityshade.tiles`);
+        Split the receivers into tiles of this many pixels a side (:mod:`cityshade.sunhours.tiled`);
         the result is identical.
-    scheduler : str or cityshade.distributed.DaskExecutor, optional
-        ``local[:N]`` or ``tcp://HOST:PORT``: run the tasks on Dask (:mod:`cityshade.distributed`);
+    scheduler : str or cityshade.sunhours.distributed.DaskExecutor, optional
+        ``local[:N]`` or ``tcp://HOST:PORT``: run the tasks on Dask (:mod:`cityshade.sunhours.distributed`);
         needs ``scene_path``, which every worker memory-maps. An executor object is used as
         it is (e.g. with another number of threads per worker).
     step_month : sequence of str, optional
@@ -1011,10 +1011,10 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
     import dataclasses
 
     from cityshade.config import Settings
-    from cityshade.sun import suns_from_instants
+    from cityshade.geo.sun import suns_from_instants
     from types import SimpleNamespace
 
-    from cityshade.pipeline import check_frame_memory
+    from cityshade.frame.pipeline import check_frame_memory
     from cityshade.util import check_outputs, make_folder, output_group
 
     settings = settings or Settings()
@@ -1075,7 +1075,7 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
         manifest["state_sha256"] = [state.sha256]
     write_manifest(outdir, manifest)
 
-    from cityshade.distributed import MANIFEST_EVERY_S
+    from cityshade.sunhours.distributed import MANIFEST_EVERY_S
 
     progress = {"done": None, "written_s": time.perf_counter()}
 
@@ -1130,11 +1130,11 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
         for i in unit.steps:
             write_mask_png(frames_dir / frame_name(steps[i]), mask)
 
-    from cityshade.runs import Stretches
+    from cityshade.sunhours.stretches import Stretches
 
     tiled = None
     if tile_px is not None or scheduler is not None or step_month is not None:
-        from cityshade.distributed import run_tiled
+        from cityshade.sunhours.distributed import run_tiled
 
         result, tiled = run_tiled(scene, camera, instants, t_days, weights_h=weights, suns=suns,
                                   units=units, technique=technique, ground=ground,
@@ -1167,7 +1167,7 @@ def run_batch(outdir, scene: "Scene", camera: "Camera", steps: Sequence[Step], t
         written = write_sun_hours(outdir, result, scene, camera, meta,
                                   surfaces_csv=surfaces_csv, cog=tiled is not None)
         if tiled is not None:
-            from cityshade.distributed import write_tiled_extras
+            from cityshade.sunhours.distributed import write_tiled_extras
 
             written += write_tiled_extras(outdir, tiled, result, scene, camera, meta)
     write_s = time.perf_counter() - t1

@@ -10,10 +10,10 @@ from dataclasses import asdict
 from pathlib import Path
 from typing import Callable, Iterable
 
-from cityshade.cache import PackedStrings, pack_strings
+from cityshade.store.cache import PackedStrings, pack_strings
 from cityshade.config import Settings
 from cityshade.errors import ContractError
-from cityshade.util import release_freed_memory
+from cityshade.runtime.memory import release_freed_memory
 from cityshade.geometry.scene import Scene
 
 #: Read size when hashing the source file (large reads keep hashing near disk speed).
@@ -103,7 +103,7 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
     ----------
     pack_ids : bool
         Give the scene its polygon and object ids packed
-        (:class:`~cityshade.cache.PackedStrings`, as a loaded scene has them) for a build that
+        (:class:`~cityshade.store.cache.PackedStrings`, as a loaded scene has them) for a build that
         only writes them: less memory from the kd-tree on, but each id is decoded when read.
     after_read : callable, optional
         Called once the file is read, before the scene is assembled.
@@ -118,7 +118,7 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
     read_progress = (lambda done, total: progress("read", done, total)) if progress else None
     generic = ()
     if settings.build.time_attribute:
-        from cityshade.citygml.temporal import parse_time_attribute
+        from cityshade.geo.temporal import parse_time_attribute
 
         generic = [n for n in parse_time_attribute(settings.build.time_attribute) if n]
     raw = read_model(source, progress=read_progress, generic_attributes=generic)
@@ -207,7 +207,7 @@ def build_scene_from_files(sources: list[Path], settings: Settings | None = None
     CRSError
         Files in different CRSs without ``--crs``, or a ``--crs`` that is not projected.
     """
-    from cityshade.geometry.merge import SceneMerger
+    from cityshade.build.merge import SceneMerger
 
     merger, timings = read_files(sources, settings or Settings(), progress, SceneMerger)
     if progress:
@@ -224,7 +224,7 @@ def build_scene_from_files(sources: list[Path], settings: Settings | None = None
 
 def read_files(sources: list[Path], settings: Settings, progress, make_merger):
     """Read the files one at a time, each assembled in float64 model coordinates and handed to
-    ``make_merger(crs_given=...)``'s merger (:class:`~cityshade.geometry.merge.SceneMerger`
+    ``make_merger(crs_given=...)``'s merger (:class:`~cityshade.build.merge.SceneMerger`
     or a subclass), then dropped; returns the merger and the read/triangulate timings.
 
     Raises
@@ -234,7 +234,7 @@ def read_files(sources: list[Path], settings: Settings, progress, make_merger):
     """
     import dataclasses
 
-    from cityshade.citygml.crs import parse_srs_name
+    from cityshade.geo.crs import parse_srs_name
     from cityshade.errors import UsageError
     from cityshade.geometry.scene import build_scene
 
@@ -247,7 +247,7 @@ def read_files(sources: list[Path], settings: Settings, progress, make_merger):
     build_settings = dataclasses.replace(settings.build, crs=None)
     generic = ()
     if settings.build.time_attribute:
-        from cityshade.citygml.temporal import parse_time_attribute
+        from cityshade.geo.temporal import parse_time_attribute
 
         generic = [n for n in parse_time_attribute(settings.build.time_attribute) if n]
     timings = {"read_s": 0.0, "triangulate_s": 0.0}
@@ -295,14 +295,14 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
                tile_m: float | None = None) -> tuple[Path, Scene, int]:
     """Build the ``.cityshade`` file of a CityGML/CityJSON file, or of several files and
     folders (a list: :func:`build_scene_from_files`); returns (output path, scene, bytes),
-    the scene that of the written file (memory-mapped, as :func:`~cityshade.scenefile.load_scene`
+    the scene that of the written file (memory-mapped, as :func:`~cityshade.store.scenefile.load_scene`
     gives it: the built one's memory went into the file's pages).
-    With ``tile_m`` the output is a tiled cache folder (:mod:`cityshade.tiledcache`): tiles of
+    With ``tile_m`` the output is a tiled cache folder (:mod:`cityshade.store.tiled`): tiles of
     ``tile_m`` × ``tile_m`` CRS metres, each with its own kd-tree (the scene has none; for
-    several files the city is never assembled and a :class:`~cityshade.tiledcache.TiledBuild`
+    several files the city is never assembled and a :class:`~cityshade.build.tiled.TiledBuild`
     summary stands for the scene)."""
-    from cityshade.scenefile import load_scene, save_scene
-    from cityshade.tiledcache import save_tiled
+    from cityshade.store.scenefile import load_scene, save_scene
+    from cityshade.build.tiled import save_tiled
 
     def save(scene, output, source_info, options):
         """Write the scene; returns (the scene of the file, bytes). A one-file cache is written
@@ -334,7 +334,7 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
                        "mtime": max(f["mtime"] for f in files), "sha256": combined,
                        "files": files}
         if tile_m is not None:  # file by file into tile spills: memory of one file + one tile
-            from cityshade.tiledcache import build_tiled_from_files
+            from cityshade.build.tiled import build_tiled_from_files
 
             summary, size = build_tiled_from_files(sources, output, tile_m, settings,
                                                    source_info, asdict(settings.build), progress)

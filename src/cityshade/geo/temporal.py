@@ -377,7 +377,7 @@ class UserDate(NamedTuple):
     warnings: tuple[str, ...] = ()
 
 
-#: ``--tz`` names of solar time at the model's own longitude (:mod:`cityshade.sun`).
+#: ``--tz`` names of solar time at the model's own longitude (:mod:`cityshade.geo.sun`).
 SOLAR_TIME_ZONES = ("local-mean", "local-apparent")
 
 
@@ -442,7 +442,7 @@ def parse_user_date(text: str, tz: str | None = None) -> UserDate:
         The option's value.
     tz : str or tzinfo, optional
         IANA time zone name (``--tz``), or a tzinfo such as
-        :func:`cityshade.sun.solar_time_zone` of ``--tz local-mean|local-apparent``.
+        :func:`cityshade.geo.sun.solar_time_zone` of ``--tz local-mean|local-apparent``.
 
     Returns
     -------

@@ -3,9 +3,9 @@
 Two states are either two dates of one time-dependent model (a proposed building carries a
 ``validFrom`` in the future) or the existing model and the same model with a proposal added
 (:func:`merge_scenes`; the existing objects, polygons and triangles keep their indices, so a
-receiver means the same surface in both). :func:`compare_states` runs :func:`cityshade.batch.sun_hours`
+receiver means the same surface in both). :func:`compare_states` runs :func:`cityshade.sunhours.run.sun_hours`
 once per state over the same steps, camera and surface samples, with the sunlit stretches
-(:mod:`cityshade.runs`) of every receiver, and derives the loss. Pixels whose surface is not
+(:mod:`cityshade.sunhours.stretches`) of every receiver, and derives the loss. Pixels whose surface is not
 the same in both states (a new building stands there, or an old one is gone) are *changed*:
 they have no loss. Openings (:func:`openings_of`) get their own denser samples and a reference
 point. :func:`write_comparison` writes the pictures, rasters and tables; :mod:`cityshade.report`
@@ -195,8 +195,8 @@ def compare_states(scene_before, t_before_days: float, scene_after, t_after_days
         City times of the two states.
     camera : Camera or None
         Pixel receivers (the same view in both states); None: surfaces only.
-    steps : sequence of cityshade.batch.Step
-        Time steps (:func:`cityshade.batch.plan_steps`).
+    steps : sequence of cityshade.sunhours.run.Step
+        Time steps (:func:`cityshade.sunhours.run.plan_steps`).
     samples_per_m2 : float or None
         Sample density on the polygons standing before (None: no surface receivers except
         the openings).
@@ -209,11 +209,11 @@ def compare_states(scene_before, t_before_days: float, scene_after, t_after_days
     on_step : callable(done, total), optional
         Progress over both states' sun positions.
     """
-    from cityshade.batch import plan_units, sun_hours
+    from cityshade.sunhours.run import plan_units, sun_hours
     from cityshade.config import Settings
-    from cityshade.runs import Stretches
-    from cityshade.sun import suns_from_instants
-    from cityshade.surfaces import sample_surfaces
+    from cityshade.sunhours.stretches import Stretches
+    from cityshade.geo.sun import suns_from_instants
+    from cityshade.sunhours.surfaces import sample_surfaces
 
     settings = settings or Settings()
     if not steps:
@@ -224,7 +224,7 @@ def compare_states(scene_before, t_before_days: float, scene_after, t_after_days
         suns = suns_from_instants(instants, scene_before.crs, scene_before.origin_m,
                                   settings.sun)
     if ground is not None:
-        from cityshade.ground import ground_height_m
+        from cityshade.geometry.ground import ground_height_m
 
         # One height for both states (a proposal must not move the ground plane).
         ground = repr(ground_height_m(scene_before, ground) + float(scene_before.origin_m[2]))
@@ -374,7 +374,7 @@ def surface_rows(comp: Comparison):
 def loss_picture(comp: Comparison) -> np.ndarray:
     """(H + legend, W, 3) uint8: the loss in hours colour-mapped with its legend (gains shown as
     0), changed pixels grey."""
-    from cityshade.batch import colour_map_png
+    from cityshade.sunhours.run import colour_map_png
 
     loss = np.where(np.isfinite(comp.loss_h), np.maximum(comp.loss_h, 0.0), np.nan)
     img = colour_map_png(loss)
@@ -389,7 +389,7 @@ def write_comparison(outdir, comp: Comparison, meta: dict[str, Any]) -> list[Pat
     map views ``before_h/after_h/loss_h/loss_pct.tif`` (+ .tfw, .prj), ``surfaces.csv`` and
     ``openings.csv``. Returns the paths written."""
     from cityshade import imageio
-    from cityshade.batch import colour_map_png
+    from cityshade.sunhours.run import colour_map_png
     from cityshade.util import atomic_write
 
     outdir = Path(outdir)

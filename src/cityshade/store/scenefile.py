@@ -1,6 +1,6 @@
 """Scene ↔ ``.cityshade`` file: which arrays and tables are stored, and how they come back.
 
-The generic container (atomic write, checksums, memory mapping) is :mod:`cityshade.cache`;
+The generic container (atomic write, checksums, memory mapping) is :mod:`cityshade.store.cache`;
 this module decides the content. Loaded arrays are read-only views into the memory map.
 """
 from __future__ import annotations
@@ -12,8 +12,8 @@ from typing import Any
 import numpy as np
 
 from cityshade import __version__
-from cityshade.cache import FORMAT_VERSION, PackedStrings, open_cache, pack_strings, write_cache
-from cityshade.citygml.crs import CrsInfo
+from cityshade.store.cache import FORMAT_VERSION, PackedStrings, open_cache, pack_strings, write_cache
+from cityshade.geo.crs import CrsInfo
 from cityshade.errors import CacheError
 from cityshade.geometry.scene import Scene
 
@@ -33,11 +33,11 @@ def save_scene(scene: Scene, path: str | os.PathLike, source: dict[str, Any],
         The options the scene was built with (stored for ``info`` and cache checks).
     extra_arrays : dict, optional
         Further arrays stored under their names (a tiled cache's global indices,
-        :mod:`cityshade.tiledcache`); :func:`scene_from_cache` ignores them.
+        :mod:`cityshade.store.tiled`); :func:`scene_from_cache` ignores them.
     consume : bool
         The scene is not used again (a build that returns the file's scene instead): its
         large arrays' memory goes back to the OS as they are written, and they then read as
-        zeros (:func:`cityshade.cache.write_cache`).
+        zeros (:func:`cityshade.store.cache.write_cache`).
     """
     arrays: dict[str, np.ndarray] = {name: getattr(scene, name) for name in Scene.ARRAY_FIELDS}
     type_names = sorted(set(scene.obj_types))
@@ -71,7 +71,7 @@ def load_scene(path: str | os.PathLike, verify: bool | str = "auto",
                with_kdtree: bool = True) -> Scene:
     """Load a scene file written by :func:`save_scene` (memory-mapped, read-only arrays).
 
-    ``verify`` is :func:`cityshade.cache.open_cache`'s: by default the arrays' checksums are
+    ``verify`` is :func:`cityshade.store.cache.open_cache`'s: by default the arrays' checksums are
     checked unless a verified stamp vouches for this very file; True checks them always.
 
     Raises
@@ -83,7 +83,7 @@ def load_scene(path: str | os.PathLike, verify: bool | str = "auto",
 
 
 def scene_from_cache(cache, with_kdtree: bool = True) -> Scene:
-    """The scene of an opened cache file (:func:`cityshade.cache.open_cache`)."""
+    """The scene of an opened cache file (:func:`cityshade.store.cache.open_cache`)."""
     header = cache.header
     if header.get("kind") != "cityshade-scene":
         raise CacheError("not a cityshade scene file; rebuild it with `cityshade build`",
@@ -109,9 +109,9 @@ def scene_from_cache(cache, with_kdtree: bool = True) -> Scene:
 
 
 def release_scene_pages(scene) -> int:
-    """:func:`cityshade.cache.release_pages` of a scene's arrays and its kd-tree's: the bytes of
+    """:func:`cityshade.runtime.memory.release_pages` of a scene's arrays and its kd-tree's: the bytes of
     the memory-mapped cache this process stops holding (0 for a scene built in memory)."""
-    from cityshade.cache import release_pages
+    from cityshade.runtime.memory import release_pages
 
     arrays = [getattr(scene, name, None) for name in Scene.ARRAY_FIELDS]
     tree = getattr(scene, "kdtree", None)
@@ -127,9 +127,9 @@ def read_header(path: str | os.PathLike) -> dict[str, Any]:
 
 def open_scene(path: str | os.PathLike):
     """A scene file (:func:`load_scene`) or a tiled cache folder (its index only:
-    :func:`cityshade.tiledcache.open_tiled`; :meth:`~cityshade.tiledcache.TiledCache.view`
+    :func:`cityshade.store.tiled.open_tiled`; :meth:`~cityshade.store.tiled.TiledCache.view`
     gives the scene of the tiles a camera reaches)."""
-    from cityshade.tiledcache import open_tiled
+    from cityshade.store.tiled import open_tiled
 
     return open_tiled(path) if Path(path).is_dir() else load_scene(path)
 
@@ -139,7 +139,7 @@ def scene_for_camera(scene, camera, technique: str | None = None):
     of the tiles the camera's frustum reaches (all tiles for ``camera`` None, and for the map
     techniques, whose depth pass draws the casters from the scene: a caster outside the
     frustum still shades what is in it, and the light view is fitted to the whole city)."""
-    from cityshade.tiledcache import TiledCache
+    from cityshade.store.tiled import TiledCache
 
     if not isinstance(scene, TiledCache):
         return scene
@@ -154,6 +154,6 @@ def scene_for_camera(scene, camera, technique: str | None = None):
 def whole_scene(path: str | os.PathLike):
     """A scene file (:func:`load_scene`), or a tiled cache folder as the view of all its tiles
     (the one-cache scene array for array; shadow rays through the tiles' own trees)."""
-    from cityshade.tiledcache import open_tiled
+    from cityshade.store.tiled import open_tiled
 
     return open_tiled(path).view() if Path(path).is_dir() else load_scene(path)

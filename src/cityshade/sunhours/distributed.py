@@ -1,14 +1,14 @@
 """Tiled batches run here or on Dask: ``cityshade batch … --tile-px N --scheduler local:N``.
 
-:func:`run_tiled` is what :func:`cityshade.batch.run_batch` calls for a tiled, distributed or
+:func:`run_tiled` is what :func:`cityshade.sunhours.run.run_batch` calls for a tiled, distributed or
 monthly run: it keeps the manifest's finished steps up to date as tasks are added and hands
-the tasks (:mod:`cityshade.tiles`) to a :class:`DaskExecutor` when a scheduler is given.
+the tasks (:mod:`cityshade.sunhours.tiled`) to a :class:`DaskExecutor` when a scheduler is given.
 
 A Dask run ships no scene: the driver writes the receivers once to ``OUTDIR/receivers.npy``
 and every worker memory-maps that file and the scene's cache file from their paths (on a
 cluster of several machines both must lie on a file system all of them see, under the same
 path). Workers keep what they opened for the tasks that follow. Results come back as packed
-bits and are added in sun-position order per tile (:func:`cityshade.tiles.accumulate`), so the
+bits and are added in sun-position order per tile (:func:`cityshade.sunhours.tiled.accumulate`), so the
 numbers are bit-identical to a run without Dask; a task lost with a worker is run again by Dask,
 and a run stopped part-way resumes from its saved state with only the missing tasks.
 
@@ -84,9 +84,9 @@ def _opened(path: str, loader):
 def _worker_task(scene_path: str, scene_sha: str, receivers_path: str, lo: int, hi: int,
                  directions: np.ndarray, t_days: float, engine: str) -> np.ndarray:
     """One task on a worker: memory-map the scene and receivers (once per process) and
-    return the packed lit bits (:func:`cityshade.tiles.task_lit`)."""
-    from cityshade.scenefile import load_scene
-    from cityshade.tiles import task_lit
+    return the packed lit bits (:func:`cityshade.sunhours.tiled.task_lit`)."""
+    from cityshade.store.scenefile import load_scene
+    from cityshade.sunhours.tiled import task_lit
 
     # The driver verified the cache file; a worker checks it is the same file.
     scene = _opened(scene_path, lambda p: load_scene(p, verify=False))
@@ -103,8 +103,8 @@ def _warm_worker(scene_path: str, scene_sha: str, direction, t_days: float,
     """Run on every worker as it joins (:meth:`DaskExecutor.start`): import the engine, map
     the scene, load the Numba kernels and sort the casters for the first sun, so that the
     first task costs what the others do (a cold worker: about 2 s of CPU)."""
-    from cityshade.scenefile import load_scene
-    from cityshade.tiles import task_lit
+    from cityshade.store.scenefile import load_scene
+    from cityshade.sunhours.tiled import task_lit
 
     scene = _opened(scene_path, lambda p: load_scene(p, verify=False))
     if (scene.header or {}).get("source", {}).get("sha256", "") != scene_sha:
@@ -289,7 +289,7 @@ class DaskExecutor:
         try:
             first = 0
             if self.driver_tasks and self._scene is not None and self._starting is not None:
-                from cityshade.tiles import task_lit
+                from cityshade.sunhours.tiled import task_lit
 
                 # The cluster is still starting: run tasks here, in order, meanwhile.
                 while first < len(tasks) and not self.ready.is_set():
@@ -340,8 +340,8 @@ def run_tiled(scene, camera, instants, t_days: float, *, weights_h, suns, units,
               workdir, frames: bool, finished: list, manifest: dict,
               write_manifest: Callable[[], Any], on_step=None, executor=None,
               stretches=None):
-    """The tiled run of :func:`cityshade.batch.run_batch`: (SunHours, TiledRun)."""
-    from cityshade.tiles import tiled_sun_hours
+    """The tiled run of :func:`cityshade.sunhours.run.run_batch`: (SunHours, TiledRun)."""
+    from cityshade.sunhours.tiled import tiled_sun_hours
 
     if frames:
         raise UsageError("--frames cannot be combined with --tile-px, --scheduler or "
@@ -429,7 +429,7 @@ def write_tiled_extras(outdir, run, result, scene, camera, meta: dict[str, Any])
                                              attributes={k: str(v) for k, v in attrs.items()})
         poly = run.month_sample_hours.get(month)
         if poly is not None:
-            from cityshade.surfaces import write_surface_csv
+            from cityshade.sunhours.surfaces import write_surface_csv
 
             written.append(write_surface_csv(folder / f"surfaces_{month}.csv", scene,
                                              result.samples, poly))

@@ -12,7 +12,7 @@ face: the inside of a wall, a roof seen from below) is flipped before shading, s
 side is lit as a surface.
 
 Albedo, by priority: the texture where the pixel has one (trilinear mip sampling,
-:mod:`cityshade.textures`; a texture's alpha, and wrap mode ``none`` outside [0, 1]², show the
+:mod:`cityshade.frame.textures`; a texture's alpha, and wrap mode ``none`` outside [0, 1]², show the
 colour underneath); else the X3DMaterial diffuse colour; else a neutral default colour of the
 pixel's surface class (:data:`DEFAULT_PALETTE_SRGB8`). Material and palette colours are
 sRGB-encoded display values like the texture images, and are decoded to linear before shading;
@@ -32,9 +32,9 @@ from numba import njit, prange
 
 from cityshade.errors import CityshadeError
 from cityshade.trace.bricks import dynamic_bricks
-from cityshade.textures import (TextureSet, composite_textures, load_texture_set,
+from cityshade.frame.textures import (TextureSet, composite_textures, load_texture_set,
                                 lod_from_uv_neighbours, srgb_to_linear)
-from cityshade.util import Recycler
+from cityshade.runtime.memory import Recycler
 
 __all__ = ["ShadingError", "ShadingSettings", "DEFAULT_PALETTE_SRGB8", "shade", "to_srgb8",
            "albedo_of_surfaces"]
@@ -172,7 +172,7 @@ def _material_table(materials) -> tuple[np.ndarray, np.ndarray]:
 
 
 #: Texture sets of recent scenes, keyed by their texture list: a batch of frames concatenates
-#: the pyramids once (the pyramids themselves are cached per file in cityshade.textures).
+#: the pyramids once (the pyramids themselves are cached per file in cityshade.frame.textures).
 _TEXTURE_SETS: dict[tuple, TextureSet] = {}
 _TEXTURE_SETS_MAX = 4  # a few scenes per process; each set can be hundreds of MB
 

@@ -17,13 +17,13 @@ import numpy as np
 
 from cityshade import __version__
 from cityshade.config import ShadowSettings
-from cityshade.diagnostics import FrameDiagnostics
+from cityshade.frame.diagnostics import FrameDiagnostics
 from cityshade.errors import UsageError
 
 if TYPE_CHECKING:
     from cityshade.geometry.scene import Scene
     from cityshade.raster.camera import Camera
-    from cityshade.sun import SunPosition
+    from cityshade.geo.sun import SunPosition
 
 
 @dataclass
@@ -64,19 +64,19 @@ def only_terrain_stands(scene, t_days: float) -> bool:
 
 
 def _range_text(rng) -> str:
-    from cityshade.citygml.temporal import days_to_iso
+    from cityshade.geo.temporal import days_to_iso
 
     return f"{days_to_iso(rng[0])} … {days_to_iso(rng[1])}"
 
 
-#: A map frame of an exact technique whose estimate (:func:`cityshade.pipeline.frame_bytes`)
+#: A map frame of an exact technique whose estimate (:func:`cityshade.frame.pipeline.frame_bytes`)
 #: exceeds this is rendered in strips of rows (:func:`strip_rows_for`) ...
 STRIP_FRAME_BYTES = 2 * 1024 ** 3
 #: ... each of them estimated at about this many bytes (about 90 rows of a 5000-pixel map): on
 #: the 1M city's 20 Mpx izb map, strips of 186 rows peaked at 1976 MB, of 60 rows at 1865 MB.
 STRIP_BYTES = 128 * 1024 ** 2
 #: Rows each strip computes above and below its own and then drops: a texture's mip level
-#: comes from the pixel's neighbours (:func:`cityshade.textures.lod_from_uv_neighbours`), and
+#: comes from the pixel's neighbours (:func:`cityshade.frame.textures.lod_from_uv_neighbours`), and
 #: at the strip's edge they must be the whole map's.
 STRIP_HALO_ROWS = 1
 #: The whole-map arrays of a strip-wise frame: name, dtype, values per pixel.
@@ -108,7 +108,7 @@ def strip_rows_for(camera: "Camera", technique: str = "raytrace",
     UsageError
         ``strip_rows`` below 1, for a perspective view or a technique that is not exact.
     """
-    from cityshade.pipeline import frame_bytes
+    from cityshade.frame.pipeline import frame_bytes
     from cityshade.shadows import exact_technique_names
 
     exact = technique in exact_technique_names()
@@ -143,14 +143,14 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
     camera : cityshade.raster.camera.Camera
     t_days : float
         City time, days since 1970-01-01 UTC.
-    sun : cityshade.sun.SunPosition
+    sun : cityshade.geo.sun.SunPosition
     technique : str
         A name of the shadow registry (:func:`cityshade.shadows.get_technique`).
     settings : ShadowSettings, optional
         The techniques' tunables (``[shadows]`` of the settings file).
     ground : str, optional
         "min", "auto" or a CRS height: add a ground plane where no surface was drawn
-        (:mod:`cityshade.ground`).
+        (:mod:`cityshade.geometry.ground`).
     measure : bool
         Also the map techniques' per-frame measures (texel footprint, aliasing m), as
         ``render -v`` reports them.
@@ -163,8 +163,8 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
         these, ``lit`` and ``rgb`` are read-only memory maps of a temporary file (in
         :func:`tempfile.gettempdir`, ``TMPDIR``), not memory.
     """
-    from cityshade.pipeline import camera_pass, check_frame_memory, shadow_pass
-    from cityshade.shading import shade
+    from cityshade.frame.pipeline import camera_pass, check_frame_memory, shadow_pass
+    from cityshade.frame.shading import shade
     from cityshade.shadows import get_technique
 
     if scene.kdtree is None and getattr(scene, "tiled", None) is None:
@@ -216,7 +216,7 @@ def check_strip_memory(camera: "Camera", rows: int, technique: str,
     UsageError
         The estimate exceeds the available memory, or the file the free disk space.
     """
-    from cityshade.pipeline import available_memory_bytes, frame_bytes
+    from cityshade.frame.pipeline import available_memory_bytes, frame_bytes
 
     import shutil
     import tempfile
@@ -244,7 +244,7 @@ class _Spool:
     """The whole-map arrays of a strip-wise frame (:data:`_STRIP_KEPT`) in an unlinked
     temporary file: each strip's rows are written with ``os.pwrite`` (no page of them stays
     resident), and :meth:`arrays` maps the complete file read-only, so the writers' reads are
-    clean file pages (:func:`cityshade.cache.release_pages` drops them, the OS page cache
+    clean file pages (:func:`cityshade.runtime.memory.release_pages` drops them, the OS page cache
     keeps them). Nothing is left on disk however the process ends."""
 
     def __init__(self, height: int, width: int):
@@ -288,10 +288,10 @@ def _render_strips(scene, camera, t_days, sun, technique, tech, settings, sky, g
     """:func:`render_frame` of a map in strips of ``rows`` rows (each with
     :data:`STRIP_HALO_ROWS` more on either side, dropped), written into the whole-map arrays
     of a :class:`_Spool`."""
-    from cityshade.pipeline import camera_pass, shadow_pass
+    from cityshade.frame.pipeline import camera_pass, shadow_pass
     from cityshade.raster.gbuffer import GBuffer, Surfaces
-    from cityshade.scenefile import release_scene_pages
-    from cityshade.shading import shade
+    from cityshade.store.scenefile import release_scene_pages
+    from cityshade.frame.shading import shade
 
     height, width = camera.shape
     spool = _Spool(height, width)
@@ -299,7 +299,7 @@ def _render_strips(scene, camera, t_days, sun, technique, tech, settings, sky, g
     timings: dict[str, float] = {}
     ground_z = ground_box = None
     if ground is not None:
-        from cityshade.ground import ground_box_m, ground_height_m
+        from cityshade.geometry.ground import ground_box_m, ground_height_m
 
         ground_z = ground_height_m(scene, ground)  # once, not per strip
         ground_box = ground_box_m(scene)
@@ -366,7 +366,7 @@ def shadow_mask(frame: Frame) -> np.ndarray:
 
 def frame_metadata(frame: Frame, scene, date_text: str) -> dict[str, Any]:
     """Provenance recorded in every output (DESIGN §13.10)."""
-    from cityshade.citygml.temporal import days_to_iso
+    from cityshade.geo.temporal import days_to_iso
 
     header = scene.header or {}
     meta = {
@@ -435,8 +435,8 @@ def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
 
 def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef) -> list[Path]:
     from cityshade import imageio
-    from cityshade.cache import release_pages
-    from cityshade.shading import to_srgb8
+    from cityshade.runtime.memory import release_pages
+    from cityshade.frame.shading import to_srgb8
 
     meta = frame_metadata(frame, scene, date_text)
     written = []
@@ -463,7 +463,7 @@ def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef) ->
             "primid": frame.gbuffer.prim_id, "objid": s.obj_id,
         }
         if getattr(scene, "tiled", None) is not None:  # a tiled cache's view: the global ids
-            from cityshade.tiledcache import to_global
+            from cityshade.store.tiled import to_global
 
             channels["primid"] = to_global(scene.global_tri, frame.gbuffer.prim_id)
             channels["objid"] = to_global(scene.global_obj, s.obj_id)

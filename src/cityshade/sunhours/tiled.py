@@ -2,15 +2,15 @@
 
 A batch's receivers are the surface points whose sun-hours it sums: the map's pixels (the
 camera pass, done once) and the surface samples of ``--surfaces``. Both get the same exact
-per-step rule as the untiled run (:class:`cityshade.batch._PixelRays`,
-:func:`cityshade.surfaces.samples_lit`): a receiver is lit when its oriented normal faces the
+per-step rule as the untiled run (:class:`cityshade.sunhours.run._PixelRays`,
+:func:`cityshade.sunhours.surfaces.samples_lit`): a receiver is lit when its oriented normal faces the
 sun and its shadow ray is free. That rule reads one receiver at a time, so any split of the
 receivers gives the same booleans; the sums are float64 added in the order of the sun
 positions for every receiver, so a tiled run equals the untiled one bit for bit.
 
 Layout: the receivers are stored tile by tile, each tile a contiguous range of one
 (N, 6) float64 array (point, normal), written once to ``OUTDIR/receivers.npy`` so that
-the workers of a distributed run memory-map it (:mod:`cityshade.distributed`); ``slot``
+the workers of a distributed run memory-map it (:mod:`cityshade.sunhours.distributed`); ``slot``
 maps each receiver to its place in one flat vector of sums (the H × W pixels, then the
 samples). A task is (tile, block of sun positions); it returns the lit bits of its receivers
 for each position of the block, packed, and the driver adds them in position order
@@ -263,12 +263,12 @@ class TiledState:
 
     tile_done: np.ndarray      # (T,) int64
     sums: np.ndarray           # (1 + months, n_slots) float64
-    #: Per tile, the arrays of its sunlit stretches (:meth:`cityshade.runs.Stretches.state`).
+    #: Per tile, the arrays of its sunlit stretches (:meth:`cityshade.sunhours.stretches.Stretches.state`).
     stretches: dict[int, dict[str, np.ndarray]] = field(default_factory=dict)
 
 
 def _load_state(checkpoint, n_tiles: int, n_units: int, shape: tuple[int, int]):
-    """A saved tiled state that fits, else None (see :class:`cityshade.batch.Checkpoint`)."""
+    """A saved tiled state that fits, else None (see :class:`cityshade.sunhours.run.Checkpoint`)."""
     import zipfile
 
     if checkpoint is None or not checkpoint.path.exists():
@@ -298,7 +298,7 @@ def _load_state(checkpoint, n_tiles: int, n_units: int, shape: tuple[int, int]):
 
 def _save_state(checkpoint, state: TiledState, parts=None) -> None:
     """Atomically, the manifest told the new checksum first; ``units_done`` is what every
-    tile has added (what :meth:`cityshade.batch.Checkpoint.units_done` reads); with
+    tile has added (what :meth:`cityshade.sunhours.run.Checkpoint.units_done` reads); with
     ``parts``, each tile's sunlit stretches as ``st{tile}_{name}``."""
     done = int(state.tile_done.min()) if state.tile_done.size else 0
     extra = {f"st{t}_{k}": v for t, part in enumerate(parts or ())
@@ -308,7 +308,7 @@ def _save_state(checkpoint, state: TiledState, parts=None) -> None:
 
 @dataclass
 class TiledRun:
-    """What :func:`tiled_sun_hours` adds to :class:`cityshade.batch.SunHours`."""
+    """What :func:`tiled_sun_hours` adds to :class:`cityshade.sunhours.run.SunHours`."""
 
     plan: TilePlan
     month_hours: dict[str, np.ndarray] = field(default_factory=dict)
@@ -346,13 +346,13 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
                     on_plan: Callable[[int], None] | None = None,
                     on_task: Callable[[int, int, list], None] | None = None,
                     stretches=None):
-    """:func:`cityshade.batch.sun_hours` over tiles of receivers (and optionally per month).
+    """:func:`cityshade.sunhours.run.sun_hours` over tiles of receivers (and optionally per month).
 
     Parameters
     ----------
     scene, camera, instants_utc, t_days, weights_h, suns, technique, ground, samples_per_m2
-        As for :func:`cityshade.batch.sun_hours` (``suns`` required; ``technique`` exact).
-    checkpoint : cityshade.batch.Checkpoint, optional
+        As for :func:`cityshade.sunhours.run.sun_hours` (``suns`` required; ``technique`` exact).
+    checkpoint : cityshade.sunhours.run.Checkpoint, optional
         Saved every ``save_every_s`` seconds and when the run stops (Ctrl-C included).
     tile_px : int, optional
         Tile side in pixels; None: one tile.
@@ -362,14 +362,14 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
         A label (YYYY-MM) per step: also sum per month.
     workdir : path-like, optional
         Where ``receivers.npy`` is written for the workers of ``executor``.
-    executor : cityshade.distributed.Executor, optional
+    executor : cityshade.sunhours.distributed.Executor, optional
         Runs the tasks elsewhere; default: here, in order.
     on_plan : callable(tasks_to_run)
     on_task : callable(tasks_done, tasks_total, units_finished)
         After each task is added; ``units_finished`` lists the sun positions (indices into
         the run's units) that every tile has now added.
-    stretches : cityshade.runs.Stretches, optional
-        Also keep the sunlit stretches, as :func:`cityshade.batch.sun_hours` does: each tile
+    stretches : cityshade.sunhours.stretches.Stretches, optional
+        Also keep the sunlit stretches, as :func:`cityshade.sunhours.run.sun_hours` does: each tile
         replays its own receivers' steps in time order (its blocks arrive in sun-position
         order), so every receiver sees the steps of the untiled run; merged at the end
         (``result.stretches``). Kept for the whole run, not per month.
@@ -378,7 +378,7 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
     -------
     (SunHours, TiledRun)
     """
-    from cityshade.batch import SunHours, step_weights, plan_run, receivers_pass
+    from cityshade.sunhours.run import SunHours, step_weights, plan_run, receivers_pass
 
     if technique not in EXACT_ENGINES:
         raise UsageError(f"tiled and distributed batches need an exact technique "
@@ -517,7 +517,7 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
     sample_hours = polygon_hours = None
     run = TiledRun(plan=plan, tasks=total, tasks_resumed=resumed_tasks, halo_m=reach)
     if samples is not None:
-        from cityshade.surfaces import polygon_means
+        from cityshade.sunhours.surfaces import polygon_means
 
         sample_hours = state.sums[0, n_px:].copy()
         polygon_hours = polygon_means(samples, sample_hours)
@@ -525,7 +525,7 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
         if cp is not None:
             run.month_hours[month] = pixels(state.sums[1 + m])
         if samples is not None:
-            from cityshade.surfaces import polygon_means
+            from cityshade.sunhours.surfaces import polygon_means
 
             run.month_sample_hours[month] = polygon_means(samples, state.sums[1 + m, n_px:])
     timings["total_s"] = time.perf_counter() - t_start

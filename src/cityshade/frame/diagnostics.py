@@ -1,7 +1,7 @@
 """What a frame did and left out: the typed diagnostics of the pipeline.
 
-:class:`FrameDiagnostics` is what :func:`cityshade.pipeline.camera_pass` and
-:func:`cityshade.pipeline.shadow_pass` report about one frame (the camera pass's statistics,
+:class:`FrameDiagnostics` is what :func:`cityshade.frame.pipeline.camera_pass` and
+:func:`cityshade.frame.pipeline.shadow_pass` report about one frame (the camera pass's statistics,
 the ground plane, the shadow technique's own diagnostics); :func:`skipped_work` turns them into
 the lines ``render -v`` prints and ``evaluate`` reports: what the scene and request let the
 frame leave out, with an estimate of the time saved.
@@ -18,12 +18,12 @@ if TYPE_CHECKING:
     from cityshade.geometry.scene import Scene
     from cityshade.shadows import TechniqueDiagnostics
     from cityshade.raster.gbuffer import Surfaces
-    from cityshade.sun import SunPosition
+    from cityshade.geo.sun import SunPosition
 
 
 @dataclass(frozen=True)
 class GroundInfo:
-    """The ground plane a frame added (:mod:`cityshade.ground`)."""
+    """The ground plane a frame added (:mod:`cityshade.geometry.ground`)."""
 
     mode: str           # "min", "auto" or the height the user gave
     z_crs_m: float      # height of the plane in the model's CRS, metres

@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from cityshade.config import ShadowSettings
-from cityshade.diagnostics import FrameDiagnostics, GroundInfo, skipped_work
+from cityshade.frame.diagnostics import FrameDiagnostics, GroundInfo, skipped_work
 from cityshade.errors import ContractError, UsageError
 
 if TYPE_CHECKING:
@@ -32,7 +32,7 @@ if TYPE_CHECKING:
     from cityshade.raster.camera import Camera
     from cityshade.raster.gbuffer import GBuffer, Surfaces
     from cityshade.shadows import ShadowContext, ShadowResult, Technique
-    from cityshade.sun import SunPosition
+    from cityshade.geo.sun import SunPosition
 
 
 @dataclass
@@ -181,12 +181,12 @@ def camera_pass(scene: "Scene", camera: "Camera", t_days: float, *, ground: str 
         City time, days since 1970-01-01 UTC.
     ground : str, optional
         "min", "auto" or a CRS height: add a ground plane where no surface was drawn
-        (:mod:`cityshade.ground`).
+        (:mod:`cityshade.geometry.ground`).
     ground_z_m : float, optional
         The render-space height of ``ground``'s plane when already known
-        (:func:`cityshade.ground.ground_height_m`; the strips of one frame compute it once).
+        (:func:`cityshade.geometry.ground.ground_height_m`; the strips of one frame compute it once).
     ground_box_m : (lo, hi), optional
-        :func:`cityshade.ground.ground_box_m` when already known (likewise).
+        :func:`cityshade.geometry.ground.ground_box_m` when already known (likewise).
 
     Raises
     ------
@@ -209,7 +209,7 @@ def camera_pass(scene: "Scene", camera: "Camera", t_days: float, *, ground: str 
     surfaces = resolve(scene, gbuf)
     ground_info = None
     if ground is not None:
-        from cityshade.ground import add_ground_plane, ground_height_m
+        from cityshade.geometry.ground import add_ground_plane, ground_height_m
 
         z = ground_height_m(scene, ground) if ground_z_m is None else float(ground_z_m)
         surfaces, filled = add_ground_plane(scene, camera, surfaces, z, ground_box_m)

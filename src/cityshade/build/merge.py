@@ -16,7 +16,7 @@ from pathlib import Path
 
 import numpy as np
 
-from cityshade.citygml.temporal import days_to_iso
+from cityshade.geo.temporal import days_to_iso
 from cityshade.errors import CRSError, EmptyModelError
 from cityshade.geometry.scene import TIME_SOURCE_NAMES, Scene, render_origin
 
@@ -135,7 +135,7 @@ class SceneMerger:
     def keep(self, part: dict) -> None:
         """Keep one file's new objects (arrays in the merged numbering; called by :meth:`add`
         before the counts move on). Here they are gathered for :meth:`finish`; a tiled build
-        spills them to disk instead (:class:`cityshade.tiledcache.TileSpill`)."""
+        spills them to disk instead (:class:`cityshade.build.tiled.TileSpill`)."""
         self.obj_ids += part.pop("obj_ids")
         self.obj_types += part.pop("obj_types")
         self.poly_ids += part.pop("poly_ids")

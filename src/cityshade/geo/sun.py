@@ -3,7 +3,7 @@
 Convention (DESIGN §3): azimuth in degrees clockwise from TRUE north, elevation in degrees above
 the horizon. Render space has grid north (+y of the projected CRS), which differs from true
 north by the meridian convergence γ at the model's origin: ``azimuth_grid = azimuth_true − γ``
-(γ > 0 where grid north lies east of true north; :func:`cityshade.citygml.crs.grid_convergence_deg`).
+(γ > 0 where grid north lies east of true north; :func:`cityshade.geo.crs.grid_convergence_deg`).
 The sun is a direction, never a far-away point: float32 far points broke a peer (HORAYZON #12).
 
 Sun positions from a date, a time and a place use NREL's Solar Position Algorithm (Reda &
@@ -117,7 +117,7 @@ def sun_from_angles(azimuth_true_deg: float, elevation_deg: float, crs=None,
     elif convergence_deg is not None:
         convergence = float(convergence_deg)
     elif origin_m is not None and not crs.is_geographic:
-        from cityshade.citygml.crs import grid_convergence_deg
+        from cityshade.geo.crs import grid_convergence_deg
 
         convergence = grid_convergence_deg(crs, float(origin_m[0]), float(origin_m[1]))
     azimuth_grid = (azimuth_true_deg - convergence) % 360.0
@@ -285,7 +285,7 @@ def model_place(crs, origin_m) -> tuple[float, float, float]:
         The model has no CRS (or a local one): its place on Earth, and so the sun of a date,
         is unknown; the message names ``--crs``.
     """
-    from cityshade.citygml.crs import to_wgs84
+    from cityshade.geo.crs import to_wgs84
 
     if crs is None or crs.local or crs.horizontal_epsg is None:
         name = "none" if crs is None else crs.name
@@ -454,7 +454,7 @@ def solar_time_zone(kind: str, crs, origin_m) -> SolarTime:
     UsageError
         ``kind`` is neither.
     """
-    from cityshade.citygml.temporal import SOLAR_TIME_ZONES
+    from cityshade.geo.temporal import SOLAR_TIME_ZONES
 
     if kind not in SOLAR_TIME_ZONES:
         raise UsageError(f"solar time is one of {', '.join(SOLAR_TIME_ZONES)}, not {kind!r}")

@@ -9,7 +9,7 @@ the Chinese kind) are documented in ``docs/RULES.md``; the files are the package
 ``rules_data/*.toml``.
 
 The engine (:func:`evaluate`) works on plain arrays (:class:`Measures`), so it is tested on
-synthetic hours; :func:`measures_from` takes them from a :class:`cityshade.compare.Comparison`.
+synthetic hours; :func:`measures_from` takes them from a :class:`cityshade.planning.compare.Comparison`.
 """
 from __future__ import annotations
 
@@ -399,8 +399,8 @@ def measures_from(rule: Rule, comp) -> tuple[Measures, Measures]:
                                 o["area_m2"][keep], labels))
         return out[0], out[1]
     # Surfaces: per polygon, area-weighted means; longest = the longest of its samples.
-    from cityshade.compare import polygon_longest
-    from cityshade.surfaces import polygon_means
+    from cityshade.planning.compare import polygon_longest
+    from cityshade.sunhours.surfaces import polygon_means
 
     wanted = receiver_polygons(rule, comp.scene_before)
     keep = comp.samples.sampled & wanted & comp.polygon_standing_after

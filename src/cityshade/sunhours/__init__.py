@@ -1,0 +1,2 @@
+"""Sun-hours over times: the time plan, accumulation, per-surface results, sunlit stretches,
+tiled and Dask runs, checkpoints and the batch's outputs."""
