@@ -263,32 +263,68 @@ def _unknown(name: str, why: str = "") -> UsageError:
     return UsageError(f"unknown shadow technique {name!r}{why}; valid: {names_help()}")
 
 
-def get_technique(name: str) -> Technique:
-    """The technique registered under ``name`` (an instance ready to run), by the grammar of
-    the module docstring."""
+@dataclass(frozen=True)
+class TechniqueSpec:
+    """A technique name parsed once by the grammar of the module docstring.
+
+    ``family`` is ``"exact"`` (an engine of :data:`TECHNIQUES`: no map, the same answer as
+    ``raytrace``), ``"map"`` (a planner and a lookup) or ``"hybrid"`` (a map technique whose
+    uncertain pixels exact rays decide). ``+smooth`` keeps the family of what it smooths.
+    """
+
+    name: str                  # the name as given
+    family: str                # "exact" | "map" | "hybrid"
+    engine: str | None = None  # exact: the engine's name (a key of TECHNIQUES)
+    planner: str | None = None  # map and hybrid: shadowmap | psm | lispsm | xpsm | csm
+    warp: str | None = None     # csm:WARP's warp
+    lookup: str | None = None   # map and hybrid: hard | pcf | vsm
+    base: str | None = None     # hybrid: its map technique's name; +smooth: the unsmoothed name
+    smooth: bool = False
+
+    @property
+    def exact(self) -> bool:
+        """An exact engine alone (``raytrace``, ``izb``; not smoothed): no depth map, answers
+        equal to ``raytrace``'s on every receiver, runs on a tiled scene view and on batch
+        receivers."""
+        return self.family == "exact" and not self.smooth
+
+    @property
+    def tileable(self) -> bool:
+        """Runs tile by tile over a tiled cache's view (shadow rays per tile, ORed)."""
+        return self.exact
+
+    def maps_per_frame(self, settings: ShadowSettings | None = None) -> int:
+        """Depth maps a frame draws: 0 for an exact engine, the cascades' count for ``csm``,
+        else 1."""
+        if self.family == "exact":
+            return 0
+        if self.planner == "csm":
+            return (settings or ShadowSettings()).cascades.count
+        return 1
+
+
+def describe(name: str) -> TechniqueSpec:
+    """The :class:`TechniqueSpec` of ``name``: the one parser of technique names. Unknown
+    names raise a :class:`UsageError` listing the valid ones."""
+    return _describe(name)
+
+
+@functools.lru_cache(maxsize=256)
+def _describe(name: str) -> TechniqueSpec:
     base, plus, suffix = name.partition("+")
     if plus:
         if suffix != "smooth":
             raise _unknown(name, f" (unknown suffix +{suffix})")
-        from cityshade.shadows.filtering import Smoothed
-
-        return Smoothed(get_technique(base))
+        return dataclasses.replace(_describe(base), name=name, base=base, smooth=True)
     if name == "hybrid" or name.startswith("hybrid:"):
-        from cityshade.shadows.hybrid import Hybrid
-
-        return Hybrid(name.partition(":")[2] or "vsm")
-    entry = TECHNIQUES.get(name)
-    if entry is not None:
-        module, cls = entry.split(":")
-        return getattr(importlib.import_module(module), cls)()
-    return get_map_technique(name)
-
-
-def get_map_technique(name: str):
-    """The :class:`~cityshade.shadows.planners.MapTechnique` of ``PLANNER[/LOOKUP]`` or an
-    alias; a :class:`UsageError` for anything else."""
-    from cityshade.shadows import lookups, planners
-
+        inner_name = name.partition(":")[2] or "vsm"
+        if inner_name.startswith("hybrid") or inner_name in TECHNIQUES or "+" in inner_name:
+            raise UsageError(f"hybrid needs a shadow-map base technique, not {inner_name!r}; "
+                             "valid: " + ", ".join(map_technique_names()) + " (or PLANNER/LOOKUP)")
+        inner = _describe(inner_name)
+        return dataclasses.replace(inner, name=name, family="hybrid", base=inner_name)
+    if name in TECHNIQUES:
+        return TechniqueSpec(name=name, family="exact", engine=name)
     spec = ALIASES.get(name, name)
     planner_name, slash, lookup_name = spec.partition("/")
     if slash and lookup_name not in LOOKUPS:
@@ -298,8 +334,38 @@ def get_map_technique(name: str):
         if head == "csm" and colon:
             raise _unknown(name, f" (unknown warp {warp!r}; valid: {', '.join(PLANNERS[1:4])})")
         raise _unknown(name)
-    planner = planners.make_planner(head, warp or None)
-    return planners.MapTechnique(name, planner, lookups.make_lookup(lookup_name or "hard"))
+    return TechniqueSpec(name=name, family="map", planner=head, warp=warp or None,
+                         lookup=lookup_name or "hard")
+
+
+def get_technique(name: "str | TechniqueSpec") -> Technique:
+    """The technique registered under ``name`` (an instance ready to run), by the grammar of
+    the module docstring."""
+    spec = name if isinstance(name, TechniqueSpec) else describe(name)
+    if spec.smooth:
+        from cityshade.shadows.filtering import Smoothed
+
+        return Smoothed(get_technique(spec.base))
+    if spec.family == "hybrid":
+        from cityshade.shadows.hybrid import Hybrid
+
+        return Hybrid(spec.base)
+    if spec.family == "exact":
+        module, cls = TECHNIQUES[spec.engine].split(":")
+        return getattr(importlib.import_module(module), cls)()
+    return get_map_technique(spec.name)
+
+
+def get_map_technique(name: str):
+    """The :class:`~cityshade.shadows.planners.MapTechnique` of ``PLANNER[/LOOKUP]`` or an
+    alias; a :class:`UsageError` for anything else."""
+    from cityshade.shadows import lookups, planners
+
+    spec = describe(name)
+    if spec.family != "map" or spec.smooth:
+        raise _unknown(name)
+    planner = planners.make_planner(spec.planner, spec.warp)
+    return planners.MapTechnique(name, planner, lookups.make_lookup(spec.lookup))
 
 
 def oriented_normals(surfaces: "Surfaces", camera: "Camera") -> np.ndarray:
