@@ -64,14 +64,14 @@ def _progress(done: int, total: int, label: str) -> None:
 def evaluate_model(name: str, path: Path, out: Path, shadows: str, sizes: tuple[int, ...],
                    repeat: int, size=(1280, 720), views=("overview", "map")):
     from cityshade.geo.temporal import days_to_iso, parse_user_date
-    from cityshade.evaluate import (EvaluateSettings, expand_techniques, make_camera,
-                                    open_scene, parse_suns, run_evaluation, write_report)
+    from cityshade.evaluate import (EvaluateSettings, expand_techniques, load_or_build_scene,
+                                    parse_suns, run_evaluation, view_camera, write_report)
 
     t0 = time.perf_counter()
-    scene = open_scene(path)
+    scene = load_or_build_scene(path)
     load_s = time.perf_counter() - t0
     city_days = parse_user_date("2024-06-21").city_days
-    cams = [(v, make_camera(scene, v, size, None, city_days)) for v in views]
+    cams = [(v, view_camera(scene, v, size, None, city_days)) for v in views]
     settings = EvaluateSettings(repeat=repeat, sizes=sizes, worst_cases=1)
     evaluation = run_evaluation(scene, cams, parse_suns(SUNS, scene), city_days,
                                 expand_techniques(shadows), settings, progress=_progress,

@@ -4,7 +4,7 @@ Input: the synthetic benchmark city of ``cityshade.samplegen`` (1 000 000 triang
 generated into ``--workdir`` (default ``bench_out/``) and built once, as in
 ``benchmarks/render.py``. The city as it stood on 2000-01-01.
 
-Work: ``cityshade.sunhours.run.sun_hours`` with the technique ``--shadows`` (default ``izb``, as
+Work: ``cityshade.sunhours.accumulate.sun_hours`` with the technique ``--shadows`` (default ``izb``, as
 ``cityshade batch``; ``raytrace`` is the kd-tree), a top-down map view of the model's extent at
 ``--pixel-size`` (default 1 m; ``--side 2048`` takes a 2048² window centred on the model
 instead), one day ``--date`` (default the summer solstice 2024-06-21; 2024-12-21 is the low-sun
@@ -71,7 +71,9 @@ def main(argv=None) -> dict:
 
     import numba
 
-    from cityshade.sunhours import run as B
+    from cityshade.sunhours import accumulate as A
+    from cityshade.sunhours import checkpoint as C
+    from cityshade.sunhours import plan as P
     from cityshade.raster.camera import map_view, scene_box
     from cityshade.store.scenefile import load_scene
     from cityshade.geo.sun import suns_from_instants
@@ -85,7 +87,7 @@ def main(argv=None) -> dict:
                                                      cy + half - 1e-6), max_px=16384)
     else:
         cam = map_view(scene, args.pixel_size, max_px=16384)
-    steps = B.plan_steps(date.fromisoformat(args.date), 0, 86_400, B.parse_duration_s(args.every),
+    steps = P.plan_steps(date.fromisoformat(args.date), 0, 86_400, P.parse_duration_s(args.every),
                          "Europe/Berlin")
     instants = [s.centre_utc for s in steps]
     weights = [s.weight_h for s in steps]
@@ -94,12 +96,12 @@ def main(argv=None) -> dict:
     spa_s = time.perf_counter() - t
 
     def run(checkpoint=None, technique=args.shadows):
-        return B.sun_hours(scene, cam, instants, DAY_2000, weights_h=weights,
+        return A.sun_hours(scene, cam, instants, DAY_2000, weights_h=weights,
                            checkpoint=checkpoint, technique=technique)
 
     # Warm-up: compile every kernel on two sun positions.
     noon = len(instants) // 2  # sun up at midday whatever --every is
-    B.sun_hours(scene, cam, instants[noon:noon + 2], DAY_2000, weights_h=weights[noon:noon + 2],
+    A.sun_hours(scene, cam, instants[noon:noon + 2], DAY_2000, weights_h=weights[noon:noon + 2],
                 technique=args.shadows)
     runs = [run() for _ in range(args.repeat)]
     totals = [r.timings_s["total_s"] for r in runs]
@@ -109,7 +111,7 @@ def main(argv=None) -> dict:
     valid_px = int(r0.valid.sum())
     mpx_steps = valid_px * r0.units / 1e6
     with tempfile.TemporaryDirectory(dir=args.workdir) as tmp:
-        ck = B.Checkpoint(Path(tmp) / B.STATE_NAME, "bench")
+        ck = C.Checkpoint(Path(tmp) / C.STATE_NAME, "bench")
         with_ck = run(checkpoint=ck)
     same = all(r.hours.tobytes() == r0.hours.tobytes() for r in runs + [with_ck])
     compared = None

@@ -56,7 +56,8 @@ def _run(scene, view: str, technique: str, pixels: int, steps: int, out: Path) -
 
     cam = _camera(scene, view, pixels)
     if view == "batch":
-        from cityshade.sunhours.run import colour_map_png, sun_hours
+        from cityshade.sunhours.accumulate import sun_hours
+        from cityshade.sunhours.outputs import colour_map_png
         from cityshade.imageio import write_exr, write_png_rgb
 
         t0 = dt.datetime(2024, 6, 21, 6, tzinfo=dt.timezone.utc)

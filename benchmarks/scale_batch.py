@@ -68,7 +68,7 @@ def _children_cpu_s() -> float:
 def _one(name: str, scene, scene_path, cam, steps, tile_px: int, outdir: Path) -> dict:
     import numba
 
-    from cityshade.sunhours import run as B
+    from cityshade.sunhours.run import run_batch
 
     threads = 2 if name.endswith("2t") else 1
     numba.set_num_threads(min(threads, numba.config.NUMBA_NUM_THREADS))
@@ -84,7 +84,10 @@ def _one(name: str, scene, scene_path, cam, steps, tile_px: int, outdir: Path) -
     # workers are children of this process): the work done, whatever the machine's load.
     c0, k0 = time.process_time(), _children_cpu_s()
     t0 = time.perf_counter()
-    run = B.run_batch(outdir, scene, cam, steps, DAY_2000, technique="izb", **kw)
+    from cityshade.sunhours.request import SunHoursRequest
+
+    run = run_batch(outdir, scene, SunHoursRequest.from_settings(steps, DAY_2000, camera=cam,
+                                                                 technique="izb", **kw))
     wall = time.perf_counter() - t0
     cpu, workers_cpu = time.process_time() - c0, _children_cpu_s() - k0
     res = run.result
@@ -112,7 +115,7 @@ def main(argv=None) -> dict:
 
     import numba
 
-    from cityshade.sunhours import run as B
+    from cityshade.sunhours import plan as B
     from cityshade.raster.camera import map_view
     from cityshade.store.scenefile import load_scene
 

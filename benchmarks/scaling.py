@@ -50,7 +50,7 @@ def stage_runners(scene, args) -> tuple[dict, dict]:
     import numpy as np
 
     from cityshade.accel import build_kdtree
-    from cityshade.sunhours.run import sun_hours
+    from cityshade.sunhours.accumulate import sun_hours
     from cityshade.frame.pipeline import camera_pass, shadow_pass
     from cityshade.raster import camera as cams
     from cityshade.raster.rasterize import rasterize
@@ -92,7 +92,7 @@ def stage_runners(scene, args) -> tuple[dict, dict]:
         # run of each round (the 1-thread one) also paid the sort (session 18's "1-thread
         # anomaly": 383-478 ms against 206-216 ms).
         from cityshade import lightspace
-        lightspace.occluded(scene, np.array([[0.0, 0.0, float(box[1, 2])]]), sun.direction,
+        lightspace.occluded(scene.kdtree, np.array([[0.0, 0.0, float(box[1, 2])]]), sun.direction,
                             DAY_2000)
 
     runners = {

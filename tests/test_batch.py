@@ -11,7 +11,12 @@ from click.testing import CliRunner
 
 from citygml_snippets import box_polygons, building, city, ground
 
-from cityshade.sunhours import run as B
+from cityshade.sunhours import accumulate as A
+from cityshade.sunhours import checkpoint as C
+from cityshade.sunhours import outputs as O
+from cityshade.sunhours import plan as P
+from cityshade.sunhours import run as R
+from cityshade.sunhours.request import SunHoursRequest
 from cityshade.errors import UsageError
 from cityshade.geo.sun import sun_from_angles
 
@@ -37,60 +42,60 @@ def scene(tmp_path_factory):
 # --- time steps --------------------------------------------------------------------------------
 
 def test_durations_and_clock():
-    assert B.parse_duration_s("10min") == 600 and B.parse_duration_s("1h30min") == 5400
-    assert B.parse_duration_s("30s") == 30 and B.parse_duration_s("0.5h") == 1800
-    assert B.parse_clock_s("05:30") == 19_800 and B.parse_clock_s("24:00") == 86_400
+    assert P.parse_duration_s("10min") == 600 and P.parse_duration_s("1h30min") == 5400
+    assert P.parse_duration_s("30s") == 30 and P.parse_duration_s("0.5h") == 1800
+    assert P.parse_clock_s("05:30") == 19_800 and P.parse_clock_s("24:00") == 86_400
     for bad in ("10", "10 minutes", "h", "0min", ""):
         with pytest.raises(UsageError):
-            B.parse_duration_s(bad)
+            P.parse_duration_s(bad)
     for bad in ("5", "25:00", "12:60", "24:01"):
         with pytest.raises(UsageError):
-            B.parse_clock_s(bad)
+            P.parse_clock_s(bad)
 
 
 def test_plan_steps_midpoints_weights_and_days():
-    steps = B.plan_steps(date(2024, 6, 21), B.parse_clock_s("05:00"), B.parse_clock_s("21:00"),
+    steps = P.plan_steps(date(2024, 6, 21), P.parse_clock_s("05:00"), P.parse_clock_s("21:00"),
                          600, "Europe/Berlin")
     assert len(steps) == 96 and sum(s.weight_h for s in steps) == pytest.approx(16.0)
     assert steps[0].start_utc == datetime(2024, 6, 21, 3, 0, tzinfo=timezone.utc)  # CEST
     assert steps[0].centre_utc == datetime(2024, 6, 21, 3, 5, tzinfo=timezone.utc)
     # A step that does not divide the window: the last step is shorter.
-    odd = B.plan_steps(date(2024, 1, 1), 0, 3600, 25 * 60, "UTC")
+    odd = P.plan_steps(date(2024, 1, 1), 0, 3600, 25 * 60, "UTC")
     assert [round(s.weight_h * 60) for s in odd] == [25, 25, 10]
     # Winter day: CET, one hour less offset than the summer day.
-    winter = B.plan_steps(date(2024, 12, 21), B.parse_clock_s("05:00"), B.parse_clock_s("06:00"),
+    winter = P.plan_steps(date(2024, 12, 21), P.parse_clock_s("05:00"), P.parse_clock_s("06:00"),
                           3600, "Europe/Berlin")
     assert winter[0].start_utc.hour == 4 and steps[0].start_utc.hour == 3
     # Several days, every 7 days, and --to-date.
-    week = B.plan_steps(date(2024, 6, 1), 0, 86_400, 3600, "UTC", days=3, every_day=7)
+    week = P.plan_steps(date(2024, 6, 1), 0, 86_400, 3600, "UTC", days=3, every_day=7)
     assert len(week) == 72 and week[24].start_utc.date() == date(2024, 6, 8)
-    upto = B.plan_steps(date(2024, 6, 1), 0, 3600, 3600, "UTC", to_date=date(2024, 6, 30),
+    upto = P.plan_steps(date(2024, 6, 1), 0, 3600, 3600, "UTC", to_date=date(2024, 6, 30),
                         every_day=10)
     assert [s.start_utc.day for s in upto] == [1, 11, 21]
     # The night the clocks go forward has one real hour less between 00:00 and 06:00.
-    spring = B.plan_steps(date(2024, 3, 31), 0, B.parse_clock_s("06:00"), 3600,
+    spring = P.plan_steps(date(2024, 3, 31), 0, P.parse_clock_s("06:00"), 3600,
                           "Europe/Berlin")
     assert len(spring) == 5
 
 
 def test_plan_steps_failures():
     with pytest.raises(UsageError, match="--to must be later"):
-        B.plan_steps(date(2024, 6, 21), 3600, 3600, 600, "UTC")
+        P.plan_steps(date(2024, 6, 21), 3600, 3600, 600, "UTC")
     with pytest.raises(UsageError, match="not both"):
-        B.plan_steps(date(2024, 6, 21), 0, 3600, 600, "UTC", days=2, to_date=date(2024, 7, 1))
+        P.plan_steps(date(2024, 6, 21), 0, 3600, 600, "UTC", days=2, to_date=date(2024, 7, 1))
     with pytest.raises(UsageError, match="unknown time zone"):
-        B.plan_steps(date(2024, 6, 21), 0, 3600, 600, "Mars/Olympus")
+        P.plan_steps(date(2024, 6, 21), 0, 3600, 600, "Mars/Olympus")
     with pytest.raises(UsageError, match="before --date"):
-        B.plan_steps(date(2024, 6, 21), 0, 3600, 600, "UTC", to_date=date(2024, 6, 1))
+        P.plan_steps(date(2024, 6, 21), 0, 3600, 600, "UTC", to_date=date(2024, 6, 1))
     with pytest.raises(UsageError, match="exceed the limit"):
-        B.plan_steps(date(2024, 1, 1), 0, 86_400, 1, "UTC", days=30)
+        P.plan_steps(date(2024, 1, 1), 0, 86_400, 1, "UTC", days=30)
     with pytest.raises(UsageError, match="1000 to 3000"):
-        B.plan_steps(date(3000, 12, 31), 0, 3600, 600, "UTC", days=2)
+        P.plan_steps(date(3000, 12, 31), 0, 3600, 600, "UTC", days=2)
 
 
 def test_plan_units_skips_night_and_merges_identical_suns():
     a, b, night = sun_from_angles(120, 30), sun_from_angles(200, 50), sun_from_angles(0, -3)
-    units, below, dup = B.plan_units([a, night, b, a, night, a], [1, 2, 3, 4, 5, 6])
+    units, below, dup = P.plan_units([a, night, b, a, night, a], [1, 2, 3, 4, 5, 6])
     assert below == [1, 4] and dup == 2
     assert [u.steps for u in units] == [(0, 3, 5), (2,)]
     assert [u.weight_h for u in units] == [11.0, 3.0]
@@ -131,7 +136,7 @@ def test_box_on_plane_equals_sum_of_analytic_steps(scene):
     from cityshade.raster.camera import map_view
 
     cam = map_view(scene, PX)
-    res = B.sun_hours(scene, cam, _instants(len(SUNS)), 0.0, weights_h=WEIGHTS,
+    res = A.sun_hours(scene, cam, _instants(len(SUNS)), 0.0, weights_h=WEIGHTS,
                       suns=_explicit_suns())
     assert res.steps == 6 and res.steps_below_horizon == 1 and res.steps_duplicate == 1
     assert res.units == 4 and res.hours_sun_up == pytest.approx(4.25)
@@ -162,9 +167,9 @@ def test_reused_rays_equal_the_technique_per_step(scene):
             perspective(np.array([40.0, -60.0, 30.0]), np.array([0.0, 0.0, 0.0]), vfov_deg=50,
                         width_px=96, height_px=64, scene=scene)]
     for cam in cams:
-        fast = B.sun_hours(scene, cam, _instants(len(SUNS)), 0.0, weights_h=WEIGHTS,
+        fast = A.sun_hours(scene, cam, _instants(len(SUNS)), 0.0, weights_h=WEIGHTS,
                            suns=_explicit_suns())
-        slow = B.sun_hours(scene, cam, _instants(len(SUNS)), 0.0, weights_h=WEIGHTS,
+        slow = A.sun_hours(scene, cam, _instants(len(SUNS)), 0.0, weights_h=WEIGHTS,
                            suns=_explicit_suns(), reuse_rays=False)
         assert fast.hours.tobytes() == slow.hours.tobytes()
         assert np.isfinite(fast.hours).any()
@@ -173,7 +178,7 @@ def test_reused_rays_equal_the_technique_per_step(scene):
 def test_surface_samples_match_brute_force_twin(scene):
     from reference import reference_sun_hours
 
-    res = B.surface_sun_hours(scene, _instants(len(SUNS)), 0.0, weights_h=WEIGHTS,
+    res = A.surface_sun_hours(scene, _instants(len(SUNS)), 0.0, weights_h=WEIGHTS,
                               suns=_explicit_suns(), samples_per_m2=0.02)
     s = res.samples
     assert s.n < 2000 and s.sampled.all()
@@ -196,8 +201,8 @@ def test_flat_roof_gets_the_hours_of_sun_above_the_horizon(scene):
     step, here found independently by a 30 s scan of the elevation."""
     from cityshade.geo.sun import spa_angles, unix_seconds
 
-    steps = B.plan_steps(date(2024, 6, 21), 0, 86_400, 600, "Europe/Berlin")
-    res = B.surface_sun_hours(scene, [s.centre_utc for s in steps], 0.0,
+    steps = P.plan_steps(date(2024, 6, 21), 0, 86_400, 600, "Europe/Berlin")
+    res = A.surface_sun_hours(scene, [s.centre_utc for s in steps], 0.0,
                               weights_h=[s.weight_h for s in steps], samples_per_m2=0.02)
     roof = res.polygon_hours[scene.poly_ids.index("br")]
     assert roof == res.hours_sun_up
@@ -214,7 +219,7 @@ def test_polar_night_lights_nothing(scene):
     from cityshade.raster.camera import map_view
 
     suns = [sun_from_angles(180.0, -1.0), sun_from_angles(180.0, 0.0)]
-    res = B.sun_hours(scene, map_view(scene, 4.0), _instants(2), 0.0, suns=suns)
+    res = A.sun_hours(scene, map_view(scene, 4.0), _instants(2), 0.0, suns=suns)
     assert res.units == 0 and res.steps_below_horizon == 2
     assert (res.hours[res.valid] == 0).all() and np.isfinite(res.hours[res.valid]).all()
     assert any("below the horizon in all 2 steps" in w for w in res.warnings)
@@ -225,22 +230,22 @@ def test_api_validation(scene):
 
     cam = map_view(scene, 4.0)
     with pytest.raises(UsageError, match="at least one instant"):
-        B.sun_hours(scene, cam, [], 0.0)
+        A.sun_hours(scene, cam, [], 0.0)
     with pytest.raises(UsageError, match="aware"):
-        B.sun_hours(scene, cam, [datetime(2024, 6, 21, 12)], 0.0, weights_h=[1.0])
+        A.sun_hours(scene, cam, [datetime(2024, 6, 21, 12)], 0.0, weights_h=[1.0])
     with pytest.raises(UsageError, match="single instant"):
-        B.sun_hours(scene, cam, _instants(1), 0.0)
+        A.sun_hours(scene, cam, _instants(1), 0.0)
     uneven = _instants(2) + [datetime(2024, 6, 21, 9, tzinfo=timezone.utc)]
     with pytest.raises(UsageError, match="evenly spaced"):
-        B.sun_hours(scene, cam, uneven, 0.0)
+        A.sun_hours(scene, cam, uneven, 0.0)
     with pytest.raises(UsageError, match="one value per instant"):
-        B.sun_hours(scene, cam, _instants(2), 0.0, weights_h=[1.0])
+        A.sun_hours(scene, cam, _instants(2), 0.0, weights_h=[1.0])
     with pytest.raises(UsageError, match="nothing to compute"):
-        B.sun_hours(scene, None, _instants(2), 0.0)
+        A.sun_hours(scene, None, _instants(2), 0.0)
     with pytest.raises(UsageError, match="one sun per instant"):
-        B.sun_hours(scene, cam, _instants(2), 0.0, suns=_explicit_suns())
+        A.sun_hours(scene, cam, _instants(2), 0.0, suns=_explicit_suns())
     with pytest.raises(UsageError, match="samples per m²"):
-        B.surface_sun_hours(scene, _instants(2), 0.0, samples_per_m2=0.0)
+        A.surface_sun_hours(scene, _instants(2), 0.0, samples_per_m2=0.0)
 
 
 # --- resume -------------------------------------------------------------------------------------
@@ -253,11 +258,11 @@ def test_interrupted_and_resumed_run_is_bit_identical(scene, tmp_path):
     from cityshade.raster.camera import map_view
 
     cam = map_view(scene, PX)
-    steps = B.plan_steps(date(2024, 6, 21), B.parse_clock_s("05:00"), B.parse_clock_s("21:00"),
+    steps = P.plan_steps(date(2024, 6, 21), P.parse_clock_s("05:00"), P.parse_clock_s("21:00"),
                          3600, "Europe/Berlin")
     kwargs = dict(weights_h=[s.weight_h for s in steps], samples_per_m2=0.05)
     instants = [s.centre_utc for s in steps]
-    straight = B.sun_hours(scene, cam, instants, 0.0, **kwargs)
+    straight = A.sun_hours(scene, cam, instants, 0.0, **kwargs)
 
     def stop_after(n):
         def hook(done, total, unit):
@@ -265,34 +270,34 @@ def test_interrupted_and_resumed_run_is_bit_identical(scene, tmp_path):
                 raise Stop
         return hook
 
-    ck = B.Checkpoint(tmp_path / B.STATE_NAME, "k1")
+    ck = C.Checkpoint(tmp_path / C.STATE_NAME, "k1")
     with pytest.raises(Stop):
-        B.sun_hours(scene, cam, instants, 0.0, checkpoint=ck, on_step=stop_after(3), **kwargs)
+        A.sun_hours(scene, cam, instants, 0.0, checkpoint=ck, on_step=stop_after(3), **kwargs)
     with pytest.raises(Stop):  # a second interruption, resumed from the first one's state
-        B.sun_hours(scene, cam, instants, 0.0, checkpoint=ck, on_step=stop_after(9), **kwargs)
+        A.sun_hours(scene, cam, instants, 0.0, checkpoint=ck, on_step=stop_after(9), **kwargs)
     assert ck.units_done() == 9
-    resumed = B.sun_hours(scene, cam, instants, 0.0, checkpoint=ck, **kwargs)
+    resumed = A.sun_hours(scene, cam, instants, 0.0, checkpoint=ck, **kwargs)
     assert resumed.units_resumed == 9 and resumed.units == straight.units == 16
     assert resumed.hours.tobytes() == straight.hours.tobytes()
     assert resumed.sample_hours.tobytes() == straight.sample_hours.tobytes()
     # A state of other parameters is refused.
     with pytest.raises(UsageError, match="other parameters"):
-        B.sun_hours(scene, cam, instants, 0.0, checkpoint=B.Checkpoint(ck.path, "k2"),
+        A.sun_hours(scene, cam, instants, 0.0, checkpoint=C.Checkpoint(ck.path, "k2"),
                     **kwargs)
     # A damaged state is refused with the way out.
     ck.path.write_bytes(b"not a state")
     with pytest.raises(UsageError, match="damaged.*--overwrite"):
-        B.sun_hours(scene, cam, instants, 0.0, checkpoint=ck, **kwargs)
+        A.sun_hours(scene, cam, instants, 0.0, checkpoint=ck, **kwargs)
     ck.path.write_bytes(b"PK\x03\x04" + b"\0" * 40)  # a truncated zip: not BadZipFile
     with pytest.raises(UsageError, match="damaged.*--overwrite"):
-        B.sun_hours(scene, cam, instants, 0.0, checkpoint=ck, **kwargs)
+        A.sun_hours(scene, cam, instants, 0.0, checkpoint=ck, **kwargs)
 
 
 # --- outputs ------------------------------------------------------------------------------------
 
 def test_colour_map_png_has_legend():
     hours = np.array([[0.0, 4.0], [8.0, np.nan]], np.float32)
-    img = B.colour_map_png(np.kron(hours, np.ones((50, 50))))
+    img = O.colour_map_png(np.kron(hours, np.ones((50, 50))))
     assert img.dtype == np.uint8 and img.shape[1] == 100 and img.shape[0] > 100
     assert (img[75, 75] == 255).all()  # no surface: white
     assert tuple(img[10, 10]) == (68, 1, 84) and tuple(img[60, 10]) == (253, 231, 37)
@@ -355,8 +360,8 @@ def test_cli_batch_writes_everything(files, tmp_path):
     scene = load_scene(scene_path)
     from cityshade.raster.camera import map_view
 
-    steps = B.plan_steps(date(2024, 6, 21), 5 * 3600, 21 * 3600, 3600, "Europe/Berlin")
-    api = B.sun_hours(scene, map_view(scene, 4.0), [s.centre_utc for s in steps],
+    steps = P.plan_steps(date(2024, 6, 21), 5 * 3600, 21 * 3600, 3600, "Europe/Berlin")
+    api = A.sun_hours(scene, map_view(scene, 4.0), [s.centre_utc for s in steps],
                       _city_days("2024-06-21"), weights_h=[s.weight_h for s in steps])
     np.testing.assert_array_equal(np.nan_to_num(hours, nan=-1), np.nan_to_num(api.hours, nan=-1))
     png, _ = read_image(out / "sun_hours.png")
@@ -405,20 +410,20 @@ def test_cli_resumes_after_interruption(files, tmp_path, monkeypatch):
     straight = tmp_path / "straight"
     assert _run("batch", scene_path, *ARGS, "-o", straight).exit_code == 0
     out = tmp_path / "interrupted"
-    real_save = B.Checkpoint.save
+    real_save = C.Checkpoint.save
 
     def save_then_interrupt(self, done, *a):
         real_save(self, done, *a)
         if done == 5:
             raise KeyboardInterrupt
 
-    monkeypatch.setattr(B.Checkpoint, "save", save_then_interrupt)
-    monkeypatch.setattr(B, "CHECKPOINT_EVERY_S", 0.0)  # a save after every position
+    monkeypatch.setattr(C.Checkpoint, "save", save_then_interrupt)
+    monkeypatch.setattr(C, "CHECKPOINT_EVERY_S", 0.0)  # a save after every position
     cut = _run("batch", scene_path, *ARGS, "-o", out)
     assert cut.exit_code == 130 and "cityshade: interrupted" in cut.output
     manifest = json.loads((out / "manifest.json").read_text())
     assert manifest["status"] == "running" and manifest.get("sun_positions_done") in (4, 5)
-    monkeypatch.setattr(B.Checkpoint, "save", real_save)
+    monkeypatch.setattr(C.Checkpoint, "save", real_save)
     _resume_equals_straight(scene_path, straight, out)
 
 
@@ -426,14 +431,13 @@ def test_interruption_between_saves_keeps_every_finished_position(files, tmp_pat
                                                                   monkeypatch):
     # With the default interval nothing is saved during this short run until the interruption
     # (inside the 6th position's shadows); the state must then hold the 5 finished positions.
-    from cityshade.imageio import read_exr
 
     scene_path, _ = files
     straight = tmp_path / "straight"
     assert _run("batch", scene_path, *ARGS, "-o", straight).exit_code == 0
     out = tmp_path / "interrupted"
     saves = []
-    real_save, real_lit = B.Checkpoint.save, B._PixelRays.lit
+    real_save, real_lit = C.Checkpoint.save, A._PixelRays.lit
     calls = iter(range(1000))
 
     def counting_save(self, done, *a):
@@ -445,11 +449,11 @@ def test_interruption_between_saves_keeps_every_finished_position(files, tmp_pat
             raise KeyboardInterrupt
         return real_lit(self, *a)
 
-    monkeypatch.setattr(B.Checkpoint, "save", counting_save)
-    monkeypatch.setattr(B._PixelRays, "lit", lit_then_interrupt)
+    monkeypatch.setattr(C.Checkpoint, "save", counting_save)
+    monkeypatch.setattr(A._PixelRays, "lit", lit_then_interrupt)
     cut = _run("batch", scene_path, *ARGS, "-o", out)
     assert cut.exit_code == 130 and saves == [5]
-    monkeypatch.setattr(B._PixelRays, "lit", real_lit)
+    monkeypatch.setattr(A._PixelRays, "lit", real_lit)
     _resume_equals_straight(scene_path, straight, out)
 
 
@@ -486,7 +490,7 @@ def test_damaged_state_is_detected_and_its_steps_start_again(files, tmp_path, da
     out = tmp_path / "run"
     assert _run("batch", scene_path, *ARGS, "-o", out).exit_code == 0
     hours = read_exr(out / "sun_hours.exr")[0]["sun_hours"].copy()
-    state = out / B.STATE_NAME
+    state = out / C.STATE_NAME
     data = bytearray(state.read_bytes())
     if damage == "truncated":
         data = data[: len(data) // 2]
@@ -516,22 +520,25 @@ def test_run_batch_from_python_resumes_and_refuses_other_parameters(files, tmp_p
     from cityshade.store.scenefile import load_scene
 
     scene = load_scene(files[0])
-    steps = B.plan_steps(date(2024, 6, 21), B.parse_clock_s("05:00"), B.parse_clock_s("21:00"),
+    steps = P.plan_steps(date(2024, 6, 21), P.parse_clock_s("05:00"), P.parse_clock_s("21:00"),
                          3600.0, "Europe/Berlin")
     cam = map_view(scene, 4.0)
     out = tmp_path / "py"
-    first = B.run_batch(out, scene, cam, steps, 0.0, request={"what": "test"})
+    def request(settings=None):
+        return SunHoursRequest.from_settings(steps, 0.0, settings, camera=cam,
+                                             provenance={"what": "test"})
+
+    first = R.run_batch(out, scene, request())
     assert first.manifest["status"] == "finished" and first.result.units_resumed == 0
     assert json.loads((out / "manifest.json").read_text())["key"] == first.manifest["key"]
-    again = B.run_batch(out, scene, cam, steps, 0.0, request={"what": "test"})
+    again = R.run_batch(out, scene, request())
     assert again.result.units_resumed == again.result.units == first.result.units > 0
     assert again.result.hours.tobytes() == first.result.hours.tobytes()
     # Other shadow settings are other parameters: refused, unless overwrite.
     other = dataclasses.replace(Settings(), shadows=Settings().shadows.override(map_px=64))
     with pytest.raises(UsageError, match="differs in: shadow_settings"):
-        B.run_batch(out, scene, cam, steps, 0.0, request={"what": "test"}, settings=other)
-    redone = B.run_batch(out, scene, cam, steps, 0.0, request={"what": "test"}, settings=other,
-                         overwrite=True)
+        R.run_batch(out, scene, request(other))
+    redone = R.run_batch(out, scene, request(other), overwrite=True)
     assert redone.result.units_resumed == 0
     assert redone.result.hours.tobytes() == first.result.hours.tobytes()  # exact (izb): no map
 
@@ -539,7 +546,7 @@ def test_run_batch_from_python_resumes_and_refuses_other_parameters(files, tmp_p
 def test_izb_default_equals_raytrace_for_pixels_and_surfaces(scene):
     """The default exact engine of a batch (izb) gives raytrace's sun-hours, bit for bit."""
     cam = __import__("cityshade.raster.camera", fromlist=["map_view"]).map_view(scene, PX)
-    runs = [B.sun_hours(scene, cam, _instants(len(SUNS)), 0.0, weights_h=WEIGHTS,
+    runs = [A.sun_hours(scene, cam, _instants(len(SUNS)), 0.0, weights_h=WEIGHTS,
                         suns=_explicit_suns(), samples_per_m2=0.05, technique=name)
             for name in ("izb", "raytrace")]
     assert runs[0].hours.tobytes() == runs[1].hours.tobytes()

@@ -11,7 +11,8 @@ import pytest
 
 from cityshade.errors import ConfigError, UsageError
 from cityshade.raster import camera as cams
-from cityshade.raster.camera import Camera, UnknownPresetError
+from cityshade.raster.camera import Camera
+from cityshade.errors import UnknownPresetError
 
 
 def box_scene(lo=(-50.0, -30.0, 0.0), hi=(70.0, 40.0, 25.0), origin=(690000.0, 5336000.0, 500.0)):

@@ -38,6 +38,9 @@ EXPECTED_FAILURES = {
     "val3dity-testdata/gml/csol1b.gml": (NotCityGMLError, "not a CityGML file"),
     "sig3d-citygml2-examples/ade/noise-ade/railway_example.gml": (EmptyModelError, "no surface geometry"),
     "sig3d-citygml2-examples/ade/noise-ade/road_example.gml": (EmptyModelError, "no surface geometry"),
+    # Every tree is an ImplicitGeometry, which the reader does not place yet (issue 38).
+    "berlin-lichtenberg-trees/semantic_3D_tree_model_berlin_test_area.gml":
+        (EmptyModelError, "no surface geometry (288 objects, 0 polygons read)"),
 }
 
 

@@ -212,7 +212,7 @@ def _equinox_suns(hour_angles_deg):
 
 def _steps(day, minutes, every_min=60):
     """Steps of ``every_min`` starting at the given minutes after midnight UTC."""
-    from cityshade.sunhours.run import Step
+    from cityshade.sunhours.plan import Step
 
     t0 = datetime(day.year, day.month, day.day, tzinfo=timezone.utc)
     return [Step(i, t0 + timedelta(minutes=m), t0 + timedelta(minutes=m + every_min))
@@ -233,7 +233,7 @@ def test_box_south_of_a_garden_takes_the_analytic_share_on_21_march(tmp_path):
     10 m north all day, so the garden's southern half (rows 5-10 m) loses all 10 hours and the
     northern half loses nothing: exactly half keeps >= 2 h, and BRE 209's garden test passes
     on its edge."""
-    from cityshade.planning.compare import compare_states
+    from cityshade.planning.compare import Receivers, compare_states
     from cityshade.raster.camera import map_view
     from cityshade.planning.rules import evaluate, load_rules, measures_from
 
@@ -246,8 +246,8 @@ def test_box_south_of_a_garden_takes_the_analytic_share_on_21_march(tmp_path):
     steps = _steps(date(2025, 3, 21), [60 * h for h in hours])
     suns = _equinox_suns([15.0 * (h + 0.5 - 12.0) for h in hours])
     t_2025, t_2031 = ((date(y, 6, 1) - date(1970, 1, 1)).days for y in (2025, 2031))
-    comp = compare_states(scene, t_2025, scene, t_2031, cam, steps, suns=suns,
-                          samples_per_m2=None, opening_samples_per_m2=0.0)
+    comp = compare_states(scene, t_2025, scene, t_2031, cam, steps,
+                          Receivers(samples_per_m2=None, opening_samples_per_m2=0.0), suns=suns)
     assert cam.shape == (20, 40)
     y = cam.pixel_centres_world(o)[..., 1]
     assert np.all(comp.before.hours == 10.0)
@@ -287,7 +287,7 @@ def test_south_window_stretches_against_an_obstruction_by_hand(tmp_path):
     sun stands higher than that (every sample of the 0.2 m high window agrees: their angles lie
     within 32.3°-35.0°). By hand: lit steps (10 min each) 1 1 0 1 1 1 . 0 1 1 (one step with
     the sun down) give stretches of 20, 30 and 20 min."""
-    from cityshade.planning.compare import compare_states, openings_of
+    from cityshade.planning.compare import Receivers, compare_states, openings_of
     from cityshade.geo.sun import sun_from_angles
 
     wall = building("OBST", box_polygons(-100.0, -3.2, 0.0, 200.0, 0.2, 3.1, "w"),
@@ -299,8 +299,8 @@ def test_south_window_stretches_against_an_obstruction_by_hand(tmp_path):
     suns = [sun_from_angles(180.0, e) for e in elevations]
     steps = _steps(date(2025, 3, 21), [540 + 10 * k for k in range(10)], every_min=10)
     t_2025, t_2031 = ((date(y, 6, 1) - date(1970, 1, 1)).days for y in (2025, 2031))
-    comp = compare_states(scene, t_2025, scene, t_2031, None, steps, suns=suns,
-                          samples_per_m2=None)
+    comp = compare_states(scene, t_2025, scene, t_2031, None, steps,
+                          Receivers(samples_per_m2=None), suns=suns)
     o = comp.opening
     assert o["samples"][0] > 4
     # Before the wall: lit whenever the sun is up: 6 steps, the sun-down step, 3 steps.
@@ -323,17 +323,19 @@ def test_south_window_stretches_against_an_obstruction_by_hand(tmp_path):
 # --- compare == two batch runs ------------------------------------------------------------------
 
 def test_compare_between_two_dates_is_the_difference_of_two_batch_runs(sample_city_scene):
-    from cityshade.sunhours.run import plan_steps, sun_hours
+    from cityshade.sunhours.accumulate import sun_hours
+    from cityshade.sunhours.plan import plan_steps
     from cityshade.geo.temporal import parse_user_date
-    from cityshade.planning.compare import compare_states
+    from cityshade.planning.compare import Receivers, compare_states
     from cityshade.raster.camera import map_view
 
     scene = sample_city_scene
     cam = map_view(scene, 4.0)
     steps = plan_steps(date(2024, 3, 21), 8 * 3600, 16 * 3600, 7200.0, "Europe/Berlin")
     t1, t2 = parse_user_date("1750").city_days, parse_user_date("1990").city_days
-    comp = compare_states(scene, t1, scene, t2, cam, steps, ground="auto", samples_per_m2=0.05,
-                          opening_samples_per_m2=0.0)
+    comp = compare_states(scene, t1, scene, t2, cam, steps,
+                          Receivers(samples_per_m2=0.05, opening_samples_per_m2=0.0),
+                          ground="auto")
     instants = [s.centre_utc for s in steps]
     weights = [s.weight_h for s in steps]
     z = repr(__import__("cityshade.geometry.ground", fromlist=["x"]).ground_height_m(scene, "auto")

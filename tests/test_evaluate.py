@@ -202,11 +202,11 @@ def test_render_lists_what_it_left_out(box_file):
 
 def test_report_without_matplotlib_keeps_csv_and_markdown(box_file, tmp_path, monkeypatch):
     import cityshade.evaluate.plot as plot
-    from cityshade.evaluate import make_camera, parse_suns, run_evaluation, write_report
+    from cityshade.evaluate import parse_suns, run_evaluation, view_camera, write_report
 
     monkeypatch.setattr(plot, "have_matplotlib", lambda: False)
     scene = load_scene(box_file)
-    evaluation = run_evaluation(scene, [("map", make_camera(scene, "map", pixel_size_m=2.0))],
+    evaluation = run_evaluation(scene, [("map", view_camera(scene, "map", pixel_size_m=2.0))],
                                 parse_suns("135,30", scene), 0.0, ["shadowmap"],
                                 EvaluateSettings(repeat=1, sizes=(64,)))
     written = {p.name for p in write_report(evaluation, tmp_path / "r")}
@@ -216,14 +216,14 @@ def test_report_without_matplotlib_keeps_csv_and_markdown(box_file, tmp_path, mo
 
 
 def test_evaluate_honours_ground_like_render(box_file):
-    from cityshade.evaluate import Evaluation, evaluate_frame, make_camera, parse_suns
+    from cityshade.evaluate import Evaluation, FrameSetup, evaluate_frame, parse_suns, view_camera
     from cityshade.frame.render import render_frame
 
     scene = load_scene(box_file)
-    cam = make_camera(scene, "overview", (96, 64))
+    cam = view_camera(scene, "overview", (96, 64))
     sun = parse_suns("135,30", scene)[0]
-    out = evaluate_frame(scene, cam, "overview", sun, 0.0, [], [64],
-                         EvaluateSettings(repeat=1, worst_cases=0), Evaluation(), ground="min")
+    out = evaluate_frame(FrameSetup(scene, cam, "overview", sun, 0.0, ground="min"), [], [64],
+                         EvaluateSettings(repeat=1, worst_cases=0), Evaluation())
     frame = render_frame(scene, cam, 0.0, sun, "raytrace", ground="min")
     assert frame.diagnostics.ground is not None
     np.testing.assert_array_equal(out["surfaces"].valid, frame.surfaces.valid)

@@ -5,7 +5,8 @@ import numpy as np
 import pytest
 
 from cityshade.errors import CityshadeError
-from cityshade.imageio import FORMAT_DTYPES, ImageIOError, read_image, write_image
+from cityshade.imageio import FORMAT_DTYPES, read_image, write_image
+from cityshade.errors import ImageIOError
 
 
 def _pattern(shape, dtype) -> np.ndarray:

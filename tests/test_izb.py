@@ -25,7 +25,8 @@ from cityshade.build import build_file
 from cityshade.store.scenefile import load_scene
 from cityshade.shadows import ShadowContext, get_technique
 from cityshade.geo.sun import sun_from_angles
-from cityshade.trace import TraceInputError, occluded, shadow_rays_from_surface
+from cityshade.errors import TraceInputError
+from cityshade.trace import occluded, shadow_rays_from_surface
 
 #: (elevation, azimuth) pairs covering the issue's suns: grazing to zenith, several azimuths
 #: (axis-aligned ones put walls edge-on to the sun; 90° is straight down the z axis).
@@ -197,7 +198,7 @@ def test_thread_count_does_not_change_the_answer(sample_scene, monkeypatch):
     try:
         for threads in sorted({1, min(2, numba.config.NUMBA_NUM_THREADS)}):
             numba.set_num_threads(threads)
-            results.append(lightspace.sunlit(sample_scene, points, normals, d, 20000.0))
+            results.append(lightspace.sunlit(sample_scene.kdtree, points, normals, d, 20000.0))
     finally:
         numba.set_num_threads(default)
     for r in results[1:]:
@@ -348,7 +349,7 @@ def _walked_tiles_equal_raytrace(scene, camera, t_days, suns, monkeypatch, crs=F
     normals = seen_side_normals(surfaces, camera)[rows, cols].astype(np.float64)
     tile = np.minimum(3 * rows // surfaces.valid.shape[0], 2) * 3 + np.minimum(
         3 * cols // surfaces.valid.shape[1], 2)
-    n_casters = lightspace.casters_of(scene).first.size
+    n_casters = lightspace.casters_of(scene.kdtree).first.size
     walked = shadowed = 0
     for el, az in suns:
         sun = (sun_from_angles(az, el, scene.crs, scene.origin_m) if crs
@@ -360,9 +361,9 @@ def _walked_tiles_equal_raytrace(scene, camera, t_days, suns, monkeypatch, crs=F
             if not sel.any():
                 continue
             origins = shadow_rays_from_surface(points[sel], normals[sel], d)
-            ref = occluded(scene, origins, np.broadcast_to(d, origins.shape).copy(), t_days)
+            ref = occluded(scene.kdtree, origins, np.broadcast_to(d, origins.shape).copy(), t_days)
             stats: dict = {}
-            got = lightspace.occluded(scene, origins, d, t_days, stats=stats)
+            got = lightspace.occluded(scene.kdtree, origins, d, t_days, stats=stats)
             diff = int((got != ref).sum())
             assert diff == 0, f"{diff} rays differ, tile {k}, sun {el}°/{az}°, t={t_days}"
             shadowed += int(ref.sum())

@@ -11,7 +11,7 @@ from click.testing import CliRunner
 
 from cityshade.cli.main import cli
 from cityshade.errors import OutputError, UsageError
-from cityshade.imageio import ImageIOError
+from cityshade.errors import ImageIOError
 from cityshade.util import check_outputs, interrupts_held, output_group, write_text_atomic
 
 

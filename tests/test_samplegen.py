@@ -17,7 +17,8 @@ from lxml import etree
 
 from cityshade.errors import UsageError
 from cityshade.imageio import read_image
-from cityshade.samplegen import SampleGenError, facade_texture, generate_city, main
+from cityshade.errors import SampleGenError
+from cityshade.samplegen import facade_texture, generate_city, main
 
 REPO = Path(__file__).resolve().parents[1]
 SAMPLE_DIR = REPO / "sample_data"

@@ -3,7 +3,7 @@ from __future__ import annotations
 
 import json
 import os
-from datetime import date, datetime, timezone
+from datetime import date, timezone
 
 import numpy as np
 import pytest
@@ -11,7 +11,10 @@ from click.testing import CliRunner
 
 from citygml_snippets import box_polygons, building, city, ground
 
-from cityshade.sunhours import run as B
+from cityshade.sunhours import checkpoint as C
+from cityshade.sunhours import plan as P
+from cityshade.sunhours import run as R
+from cityshade.sunhours.request import SunHoursRequest
 from cityshade.errors import UsageError
 from cityshade.sunhours.tiled import plan_tiles
 
@@ -41,7 +44,7 @@ def files(tmp_path_factory):
 
 
 def _steps(day=date(2024, 6, 21), every_s=5400, **kw):
-    return B.plan_steps(day, B.parse_clock_s("04:00"), B.parse_clock_s("22:00"), every_s,
+    return P.plan_steps(day, P.parse_clock_s("04:00"), P.parse_clock_s("22:00"), every_s,
                         "Europe/Berlin", **kw)
 
 
@@ -51,8 +54,12 @@ def _run(path, outdir, technique="izb", steps=None, **kw):
 
     scene = load_scene(path)
     cam = map_view(scene, 2.0)
-    return B.run_batch(outdir, scene, cam, steps or _steps(), 0.0, technique=technique,
-                       surfaces_csv=True, ground="auto", **kw)
+    run_kw = {k: kw.pop(k) for k in ("overwrite", "on_plan", "on_step") if k in kw}
+    if kw.get("step_month") is not None:
+        kw["step_month"] = tuple(kw["step_month"])
+    request = SunHoursRequest.from_settings(steps or _steps(), 0.0, surfaces=True, camera=cam,
+                                            technique=technique, ground="auto", **kw)
+    return R.run_batch(outdir, scene, request, **run_kw)
 
 
 @pytest.fixture(scope="module")
@@ -250,7 +257,7 @@ def test_tiled_run_resumes_bit_identical_without_redoing_tasks(files, tmp_path):
         with pytest.raises(Stop):
             _run(boxes, out, tile_px=16, on_step=stop_after(5))
         first = len(calls)
-        manifest = json.loads((out / B.MANIFEST_NAME).read_text())
+        manifest = json.loads((out / C.MANIFEST_NAME).read_text())
         assert manifest["status"] == "running" and manifest["tasks_done"] == 5
         resumed = _run(boxes, out, tile_px=16)
     total = straight.result.diagnostics["tiles"]["tasks"]
@@ -309,7 +316,7 @@ def test_year_of_suns_at_once_equals_each_instant():
 
     crs = parse_srs_name("EPSG:25832")
     origin = np.array([X0, Y0, Z0])
-    steps = B.plan_steps(date(2024, 1, 1), 0, 86_400, 3600, "Europe/Berlin",
+    steps = P.plan_steps(date(2024, 1, 1), 0, 86_400, 3600, "Europe/Berlin",
                          to_date=date(2024, 12, 31), every_day=7)
     instants = [s.centre_utc for s in steps]
     suns = suns_from_instants(instants, crs, origin)
@@ -497,7 +504,7 @@ def test_stopped_distributed_run_resumes_to_the_plain_result(files, sample_plain
     with pytest.raises(Stop):
         _run(sample, out, steps=steps, tile_px=24, scheduler=_logged_executor(sample, first),
              on_step=stop_after(5))
-    manifest = json.loads((out / B.MANIFEST_NAME).read_text())
+    manifest = json.loads((out / C.MANIFEST_NAME).read_text())
     assert manifest["status"] == "running" and manifest["tasks_done"] == 5
     second: list[TaskLog] = []
     resumed = _run(sample, out, steps=steps, tile_px=24,

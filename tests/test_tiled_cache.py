@@ -89,7 +89,6 @@ def test_render_equals_one_cache(built, technique):
     from cityshade.frame.render import render_frame
     from cityshade.store.scenefile import load_scene, open_scene, scene_for_camera
     from cityshade.geo.sun import sun_from_angles
-    from cityshade.store.tiled import to_global
 
     one, tiled = built
     scene = load_scene(one)
@@ -100,13 +99,13 @@ def test_render_equals_one_cache(built, technique):
     for name, cam in cams_one.items():
         a = render_frame(scene, cam, T_DAYS, sun, technique, ground="auto")
         view = scene_for_camera(tc, cams_tiled[name], technique)
-        partial += len(view.tile_ids) < len(tc.tiles)
+        partial += len(view.tiling.tile_ids) < len(tc.tiles)
         b = render_frame(view, cams_tiled[name], T_DAYS, sun, technique, ground="auto")
         assert np.array_equal(a.lit, b.lit), name
         assert np.array_equal(a.rgb, b.rgb), name
         assert np.array_equal(a.gbuffer.depth, b.gbuffer.depth), name
-        assert np.array_equal(a.gbuffer.prim_id, to_global(view.global_tri, b.gbuffer.prim_id))
-        assert np.array_equal(a.surfaces.obj_id, to_global(view.global_obj, b.surfaces.obj_id))
+        assert np.array_equal(a.gbuffer.prim_id, view.global_triangle_ids(b.gbuffer.prim_id))
+        assert np.array_equal(a.surfaces.obj_id, view.global_object_ids(b.surfaces.obj_id))
         assert (a.lit > 0).any() and (a.lit == 0).any()  # sun and shadow in every picture
     assert partial >= 1  # the close view draws some tiles only
 
@@ -380,7 +379,7 @@ def test_map_techniques_evaluate_and_compare_on_a_tiled_cache(built, tmp_path):
         for name in ("map", "close"):
             a = render_frame(scene, cams_one[name], T_DAYS, sun, technique)
             view = scene_for_camera(tc, cams_tiled[name], technique)
-            assert len(view.tile_ids) == len(tc.tiles)
+            assert len(view.tiling.tile_ids) == len(tc.tiles)
             b = render_frame(view, cams_tiled[name], T_DAYS, sun, technique)
             assert np.array_equal(a.lit, b.lit), (technique, name)
             assert np.array_equal(a.rgb, b.rgb), (technique, name)

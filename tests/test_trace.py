@@ -7,8 +7,8 @@ import numpy as np
 import pytest
 
 from cityshade.accel import build_kdtree
-from cityshade.trace import (TraceInputError, intersect, occluded, shadow_rays_from_surface,
-                             tile_order)
+from cityshade.errors import TraceInputError
+from cityshade.trace import intersect, occluded, shadow_rays_from_surface, tile_order
 from conftest import run_with_and_without_jit, shared_file
 from reference import reference_closest_hit, reference_ray_hits
 from test_kdtree import BOX_FACES, box_city
@@ -282,12 +282,19 @@ def test_read_only_memory_mapped_tree(tmp_path, city, tree):
         np.testing.assert_array_equal(a, b)
 
 
-def test_scene_like_object_is_accepted(tree):
-    class Scene:
-        kdtree = tree
+def test_a_scene_traces_through_its_own_tree(tree, sample_city_scene):
+    """The engines take one KdTree; a scene hands its own to them
+    (:mod:`cityshade.shadows.visibility`), with the engine's answer."""
+    import dataclasses
+
+    from cityshade.shadows import visibility
+
+    scene = dataclasses.replace(sample_city_scene, kdtree=tree)
     origins, directions = random_rays(10, seed=3)
-    np.testing.assert_array_equal(occluded(Scene(), origins, directions),
+    np.testing.assert_array_equal(visibility.occluded(scene, origins, directions),
                                   occluded(tree, origins, directions))
+    with pytest.raises(TraceInputError, match="KdTree"):
+        occluded(scene, origins, directions)
 
 
 def test_input_validation(tree):

@@ -5,11 +5,8 @@ import numpy as np
 import pytest
 
 from cityshade.errors import InputError
-from cityshade.geometry.triangulate import (
-    REPAIR_COLLINEAR_POINTS, REPAIR_DUPLICATE_POINTS, REPAIR_HOLE_DROPPED, REPAIR_NONPLANAR,
-    REPAIR_UNCLOSED_RING, SKIP_ALL_COLLINEAR, SKIP_INVALID_HOLES, SKIP_NAN_COORDINATES,
-    SKIP_REASONS, SKIP_SELF_INTERSECTING, SKIP_TOO_FEW_POINTS, SKIP_ZERO_AREA, TRIANGULATED,
-    TriangulationInputError, triangulate_polygons)
+from cityshade.geometry.triangulate import REPAIR_COLLINEAR_POINTS, REPAIR_DUPLICATE_POINTS, REPAIR_HOLE_DROPPED, REPAIR_NONPLANAR, REPAIR_UNCLOSED_RING, SKIP_ALL_COLLINEAR, SKIP_INVALID_HOLES, SKIP_NAN_COORDINATES, SKIP_REASONS, SKIP_SELF_INTERSECTING, SKIP_TOO_FEW_POINTS, SKIP_ZERO_AREA, TRIANGULATED, triangulate_polygons
+from cityshade.errors import TriangulationInputError
 from conftest import shared_file
 from reference import reference_triangulate_polygon
 

@@ -39,9 +39,9 @@ class BuildSettings:
     #: Override of the file's CRS, e.g. "EPSG:25832" (needed for files without srsName).
     crs: str | None = None
     #: Axis order of geographic coordinates, "lonlat" or "latlon"; None decides from the
-    #: values, the footprints' right angles and the srsName spelling (DESIGN §3).
+    #: values, the footprints' right angles and the srsName spelling (docs/DESIGN.md §1).
     axis_order: str | None = None
-    #: Where validity intervals come from (DESIGN §3); "auto" takes the first available of
+    #: Where validity intervals come from (docs/DESIGN.md §1); "auto" takes the first available of
     #: valid → construction → attribute per object (database creation dates only with
     #: "creation").
     time_source: str = "auto"

@@ -97,3 +97,31 @@ class ContractError(Exception):
     """
 
     exit_code = 70
+
+
+class TraceInputError(ContractError):
+    """Rays handed to the tracing API of the wrong shape or with non-finite values."""
+
+
+class KdTreeLayoutError(CityshadeError):
+    """Arrays that do not make a flat kd-tree (wrong shape or type, missing, too large)."""
+
+
+class SampleGenError(CityshadeError):
+    """The sample city cannot be written (folder missing, disk full, ...)."""
+
+
+class TriangulationInputError(InputError, ValueError):
+    """Arrays handed to :func:`triangulate_polygons` that do not describe polygons.
+
+    This is a programming error of the caller (wrong shape, dtype or offsets), not bad geometry:
+    bad geometry is never an error, it is skipped and counted.
+    """
+
+
+class UnknownPresetError(ConfigError):
+    """A camera preset name that the shipped presets (and ``--cameras``) do not define."""
+
+
+class ImageIOError(CityshadeError):
+    """An image that cannot be written or read (carries the path)."""

@@ -4,7 +4,7 @@ Every image the package writes goes through :func:`write_image`, which guards ag
 ways OpenImageIO loses data without an error:
 
 * a 2-D ``(H, W)`` array handed to OpenImageIO's Python ``write_image`` writes wrong pixels
-  (DESIGN §14), so 2-D input is reshaped to ``(H, W, 1)`` here;
+  (docs/DESIGN.md §15), so 2-D input is reshaped to ``(H, W, 1)`` here;
 * a pixel type the format cannot store is converted silently (float → 8 bit in PNG, uint32 →
   half in EXR, uint32 → uint8 in TIFF), so each format accepts only the types it stores exactly
   and anything else is an :class:`ImageIOError`.
@@ -28,15 +28,11 @@ from typing import Callable, Mapping, NamedTuple, Sequence
 
 import numpy as np
 
-from cityshade.errors import CityshadeError
+from cityshade.errors import ImageIOError
 
 __all__ = ["ImageIOError", "write_image", "read_image", "FORMAT_DTYPES", "write_exr", "read_exr",
            "write_png_rgb", "write_mask_png", "mask_from_lit", "write_georeferenced",
            "world_file_lines", "MASK_LIT", "MASK_SHADOW", "MASK_NODATA"]
-
-
-class ImageIOError(CityshadeError):
-    """An image that cannot be written or read (carries the path)."""
 
 
 #: Pixel types each format stores exactly, by file extension. OpenImageIO converts any other
@@ -84,7 +80,7 @@ def _checked_pixels(path: Path, ext: str, pixels: np.ndarray) -> np.ndarray:
     """Validate ``pixels`` for format ``ext`` and return a C-contiguous ``(H, W, C)`` array."""
     pixels = np.asarray(pixels)
     if pixels.ndim == 2:
-        # OpenImageIO writes wrong pixels from a 2-D array (DESIGN §14): always hand it 3-D.
+        # OpenImageIO writes wrong pixels from a 2-D array (docs/DESIGN.md §15): always hand it 3-D.
         pixels = pixels[:, :, np.newaxis]
     if pixels.ndim != 3:
         raise ImageIOError(f"pixels must have shape (H, W) or (H, W, C), not {pixels.shape}",
@@ -153,7 +149,7 @@ def _write_atomically(path: Path, parts: Sequence[tuple], finish=None) -> None:
     ``finish(tmp_path)``, if given, edits the complete temporary file before the rename. Any
     failure removes the temporary file.
     """
-    import OpenImageIO as oiio  # heavy import only when an image is written (DESIGN §2)
+    import OpenImageIO as oiio  # heavy import only when an image is written (docs/DESIGN.md §17)
 
     from cityshade.util import atomic_path
 
@@ -231,7 +227,7 @@ def write_image(path: str | os.PathLike, pixels: np.ndarray, *,
 
 def _make_spec(path: Path, ext: str, pixels: np.ndarray, attributes, channel_names):
     """The ImageSpec of checked ``pixels`` with channel names and attributes."""
-    import OpenImageIO as oiio  # heavy import only when an image is written (DESIGN §2)
+    import OpenImageIO as oiio  # heavy import only when an image is written (docs/DESIGN.md §17)
 
     height, width, channels = pixels.shape
     spec = oiio.ImageSpec(width, height, channels, _OIIO_TYPE_NAMES[pixels.dtype])
@@ -275,7 +271,7 @@ def read_image(path: str | os.PathLike) -> tuple[np.ndarray, dict]:
     ImageIOError
         The file is missing, unreadable or not an image.
     """
-    import OpenImageIO as oiio  # heavy import only when an image is read (DESIGN §2)
+    import OpenImageIO as oiio  # heavy import only when an image is read (docs/DESIGN.md §17)
 
     path = Path(path)
     if not path.is_file():
@@ -534,7 +530,7 @@ def read_exr(path: str | os.PathLike) -> tuple[dict[str, np.ndarray], dict]:
 
 # --- PNG beauty image and shadow masks -------------------------------------------------------
 
-#: 8-bit shadow-mask values (DESIGN §14): nodata is distinct from both lit and shadow.
+#: 8-bit shadow-mask values (docs/DESIGN.md §15): nodata is distinct from both lit and shadow.
 MASK_LIT, MASK_SHADOW, MASK_NODATA = 255, 0, 128
 
 

@@ -38,7 +38,7 @@ from typing import Callable, Sequence
 
 import numpy as np
 
-from cityshade.errors import CityshadeError, UsageError
+from cityshade.errors import CityshadeError, SampleGenError, UsageError
 from cityshade.util import atomic_write
 
 __all__ = ["CityInfo", "SampleCitySettings", "SampleGenError", "generate_city",
@@ -70,10 +70,6 @@ _MATERIALS = (
     ("window_glass", "0.150 0.200 0.260"),
 )
 _TEXTURE_KEY = "facade_texture"
-
-
-class SampleGenError(CityshadeError):
-    """The sample city cannot be written (folder missing, disk full, ...)."""
 
 
 @dataclass(frozen=True)
@@ -1055,7 +1051,8 @@ def generate_city(path: str | os.PathLike, *, n_buildings: int = 40, seed: int =
     texture_path = None
     texture_uri = None
     if texture:
-        from cityshade.imageio import ImageIOError, write_image
+        from cityshade.errors import ImageIOError
+        from cityshade.imageio import write_image
         texture_path = path.with_name(f"{path.stem}_facade.png")
         texture_uri = texture_path.name
         try:

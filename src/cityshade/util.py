@@ -1,6 +1,6 @@
 """Small helpers every writer and reader shares: atomic writes and the one TOML reader.
 
-A leaf module (DESIGN §4): it imports nothing of cityshade but :mod:`cityshade.errors`.
+A leaf module (docs/DESIGN.md §17): it imports nothing of cityshade but :mod:`cityshade.errors`.
 """
 from __future__ import annotations
 

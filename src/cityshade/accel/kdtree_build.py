@@ -1,6 +1,6 @@
 """Build the 4-D (x, y, z, time) SAH kd-tree of a scene's triangles.
 
-The tree follows the thesis slides ("Data structure") and DESIGN §5:
+The tree follows the thesis slides ("Data structure") and docs/DESIGN.md §5:
 
 * Spatial splits are chosen by the surface-area heuristic (SAH): the probability that a ray
   which hits a node also hits a child is the ratio of their 3-D surface areas.
@@ -1164,6 +1164,46 @@ def _finite_range(t_begin, t_end, valid):
     return lo, hi, n
 
 
+def _checked_inputs(vertices, triangles, t_begin_days, t_end_days, material):
+    """The inputs of :func:`build_kdtree` checked and made contiguous.
+
+    Returns
+    -------
+    vertices32 : (V, 3) float32, triangles : (T, 3) int, t_begin, t_end : (T,) float64 days,
+    material : (T,) int32
+
+    Raises
+    ------
+    KdTreeInputError
+        Arrays of the wrong shape, non-finite vertices, indices out of range or NaN times.
+    """
+    vertices = np.asarray(vertices)
+    triangles = np.asarray(triangles)
+    if vertices.ndim != 2 or vertices.shape[1] != 3:
+        raise KdTreeInputError(f"vertices must have shape (V, 3), not {vertices.shape}")
+    if triangles.ndim != 2 or triangles.shape[1] != 3:
+        raise KdTreeInputError(f"triangles must have shape (T, 3), not {triangles.shape}")
+    if not np.issubdtype(triangles.dtype, np.integer):
+        raise KdTreeInputError(f"triangles must be integer indices, not {triangles.dtype}")
+    n_tri = triangles.shape[0]
+    if n_tri >= 2**29:
+        raise KdTreeInputError(f"{n_tri} triangles exceed the layout's limit of 2^29")
+    vertices32 = np.ascontiguousarray(vertices, dtype=np.float32)
+    if not np.all(np.isfinite(vertices32)):
+        raise KdTreeInputError("vertices contain NaN or infinite coordinates")
+    if n_tri and (triangles.min() < 0 or triangles.max() >= vertices32.shape[0]):
+        raise KdTreeInputError("triangle vertex indices out of range")
+    t_begin = np.ascontiguousarray(t_begin_days, dtype=np.float64)
+    t_end = np.ascontiguousarray(t_end_days, dtype=np.float64)
+    material = np.ascontiguousarray(material, dtype=np.int32)
+    for name, arr in (("t_begin_days", t_begin), ("t_end_days", t_end), ("material", material)):
+        if arr.shape != (n_tri,):
+            raise KdTreeInputError(f"{name} must have shape ({n_tri},), not {arr.shape}")
+    if np.isnan(t_begin).any() or np.isnan(t_end).any():
+        raise KdTreeInputError("validity times contain NaN (use -inf/+inf for open ends)")
+    return vertices32, np.ascontiguousarray(triangles), t_begin, t_end, material
+
+
 def build_kdtree(vertices, triangles, t_begin_days, t_end_days, material,
                  settings: KdTreeSettings | None = None):
     """Build the 4-D SAH kd-tree of a triangle scene.
@@ -1195,32 +1235,9 @@ def build_kdtree(vertices, triangles, t_begin_days, t_end_days, material,
     """
     settings = settings or KdTreeSettings()
     started = time.perf_counter()
-    vertices = np.asarray(vertices)
-    triangles = np.asarray(triangles)
-    if vertices.ndim != 2 or vertices.shape[1] != 3:
-        raise KdTreeInputError(f"vertices must have shape (V, 3), not {vertices.shape}")
-    if triangles.ndim != 2 or triangles.shape[1] != 3:
-        raise KdTreeInputError(f"triangles must have shape (T, 3), not {triangles.shape}")
-    if not np.issubdtype(triangles.dtype, np.integer):
-        raise KdTreeInputError(f"triangles must be integer indices, not {triangles.dtype}")
+    vertices32, triangles, t_begin, t_end, material = _checked_inputs(
+        vertices, triangles, t_begin_days, t_end_days, material)
     n_tri = triangles.shape[0]
-    if n_tri >= 2**29:
-        raise KdTreeInputError(f"{n_tri} triangles exceed the layout's limit of 2^29")
-    vertices32 = np.ascontiguousarray(vertices, dtype=np.float32)
-    if not np.all(np.isfinite(vertices32)):
-        raise KdTreeInputError("vertices contain NaN or infinite coordinates")
-    if n_tri and (triangles.min() < 0 or triangles.max() >= vertices32.shape[0]):
-        raise KdTreeInputError("triangle vertex indices out of range")
-    t_begin = np.ascontiguousarray(t_begin_days, dtype=np.float64)
-    t_end = np.ascontiguousarray(t_end_days, dtype=np.float64)
-    material = np.ascontiguousarray(material, dtype=np.int32)
-    for name, arr in (("t_begin_days", t_begin), ("t_end_days", t_end), ("material", material)):
-        if arr.shape != (n_tri,):
-            raise KdTreeInputError(f"{name} must have shape ({n_tri},), not {arr.shape}")
-    if np.isnan(t_begin).any() or np.isnan(t_end).any():
-        raise KdTreeInputError("validity times contain NaN (use -inf/+inf for open ends)")
-
-    triangles = np.ascontiguousarray(triangles)
     valid = t_begin < t_end
     ids0 = np.flatnonzero(valid).astype(np.int32)
     time_range = model_time_range(t_begin, t_end, valid)

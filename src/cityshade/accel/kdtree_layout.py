@@ -30,7 +30,7 @@ from typing import NamedTuple
 import numpy as np
 from numba import njit, prange
 
-from cityshade.errors import CityshadeError
+from cityshade.errors import KdTreeLayoutError
 
 #: Number of float32 words of one triangle record (64 bytes: one cache line).
 RECORD_WORDS = 16
@@ -51,10 +51,6 @@ AXIS_BITS = 3
 AXIS_MASK = (1 << AXIS_BITS) - 1
 #: Arrays written to and read from the cache, in this order.
 ARRAY_NAMES = ("kdtree_nodes", "kdtree_prim_indices", "kdtree_tri_records", "kdtree_bounds")
-
-
-class KdTreeLayoutError(CityshadeError):
-    """Arrays that do not make a flat kd-tree (wrong shape or type, missing, too large)."""
 
 
 class KdViews(NamedTuple):

@@ -122,7 +122,7 @@ SKIPPED_CITYGML = frozenset("""
 #: Implicit geometries are counted as skipped: no file in the test data uses them.
 IMPLICIT_PROPERTIES = frozenset(f"lod{n}ImplicitRepresentation" for n in range(5))
 
-#: Attributes that give an object's validity interval (DESIGN §3).
+#: Attributes that give an object's validity interval (docs/DESIGN.md §1).
 TIME_ATTRIBUTES = frozenset({
     "validFrom", "validTo", "yearOfConstruction", "yearOfDemolition", "dateOfConstruction",
     "dateOfDemolition", "creationDate", "terminationDate",

@@ -45,15 +45,17 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     frames and surfaces.csv in OUTDIR. Re-running the same command after an interruption
     continues where it stopped."""
     import dataclasses
-    import sys
     import time
 
-    from cityshade.sunhours import run as B
-    from cityshade.geo.temporal import parse_user_date
+    from cityshade.cli.options import solar_zone_of_scene, warn_lmt
     from cityshade.errors import UsageError
+    from cityshade.geo.temporal import parse_user_date
+    from cityshade.shadows import get_technique
     from cityshade.store.scenefile import open_scene, scene_for_camera
     from cityshade.store.tiled import is_tiled_cache
-    from cityshade.shadows import get_technique
+    from cityshade.sunhours.plan import parse_clock_s, parse_duration_s, plan_steps, step_months
+    from cityshade.sunhours.request import SunHoursRequest, check_execution
+    from cityshade.sunhours.run import run_batch
     from cityshade.sunhours.surfaces import SampleSettings
     from cityshade.util import check_outputs
 
@@ -73,107 +75,99 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     parse_triple(eye, "--eye"), parse_triple(target, "--target"), parse_size(size)  # fail early
     first_day = parse_day(date_text, "--date")
     to_date = parse_day(to_date_text, "--to-date") if to_date_text else None
-    every_s = B.parse_duration_s(every_text)
-    from cityshade.cli.options import solar_zone_of_file
-
-    if tile_px is not None and tile_px < 1:
-        raise UsageError(f"--tile-px must be >= 1, not {tile_px}")
-    if scheduler is not None:
-        from cityshade.sunhours.distributed import parse_scheduler
-
-        parse_scheduler(scheduler)
-    if (tile_px is not None or scheduler is not None or monthly) and frames:
-        raise UsageError("--frames cannot be combined with --tile-px, --scheduler or "
-                         "--monthly; run the frames without them")
-    if (tile_px is not None or scheduler is not None or monthly) and \
-            technique not in ("izb", "raytrace"):
-        raise UsageError(f"--tile-px, --scheduler and --monthly need an exact technique "
-                         f"(izb, raytrace), not {technique!r}")
+    every_s = parse_duration_s(every_text)
+    check_execution(technique, tile_px, scheduler, monthly, frames)
     check_outputs(("-o", outdir, None))  # once the options are valid, before any work
-    zone = solar_zone_of_file(tz, file)
-    steps = B.plan_steps(first_day, B.parse_clock_s(from_text), B.parse_clock_s(to_text),
-                         every_s, zone, days=days, to_date=to_date, every_day=every_day)
-    step_month = None
-    if monthly:
-        from cityshade.geo.temporal import zone_info
-
-        local = zone_info(zone)
-        step_month = [s.start_utc.astimezone(local).strftime("%Y-%m") for s in steps]
-    from cityshade.cli.options import warn_lmt
-
+    scene = open_scene(file)  # once: also the solar time zone's longitude
+    zone = solar_zone_of_scene(tz, scene)
+    steps = plan_steps(first_day, parse_clock_s(from_text), parse_clock_s(to_text), every_s,
+                       zone, days=days, to_date=to_date, every_day=every_day)
     warn_lmt([step.start_utc for step in steps[:1]], tz)
     city = parse_user_date(city_date or first_day.isoformat())
-    scene = open_scene(file)
     cam = make_camera(scene, camera, eye, target, fov, size, pixel_size, cameras_file)
     if scheduler is not None and is_tiled_cache(file):
         raise UsageError("--scheduler needs one cache file: a tiled cache is not read by "
                          "Dask workers yet")
     scene = scene_for_camera(scene, None if surfaces else cam, technique)
-    request = {
+    provenance = {
         "file": Path(file).name,
         "source_sha256": (scene.header or {}).get("source", {}).get("sha256", ""),
         "date": first_day.isoformat(), "from": from_text, "to": to_text, "every_s": every_s,
         "tz": tz, "days": days, "to_date": to_date.isoformat() if to_date else None,
         "every_day": every_day,
     }
-    bar = None
-    lines = None
-    label = ("tasks (tile × sun positions)" if tile_px is not None or scheduler is not None
-             or monthly else "sun positions")
+    request = SunHoursRequest.from_settings(
+        steps, city.city_days, settings, surfaces=surfaces, camera=cam, technique=technique,
+        ground=ground, frames=frames, provenance=provenance, tile_px=tile_px,
+        scheduler=scheduler, scene_path=file,
+        step_month=tuple(step_months(steps, zone)) if monthly else None)
+    with Progress("tasks (tile × sun positions)" if request.tiled else "sun positions") as bar:
+        run = run_batch(outdir, scene, request, overwrite=overwrite, on_plan=bar.plan,
+                        on_step=bar.step)
+    for warning in run.result.warnings:
+        click.echo(f"cityshade: warning: {warning}", err=True)
+    if verbose:
+        echo_verbose(run, time.perf_counter() - t_start)
+    click.echo(" ".join(str(p) for p in run.written))
 
-    def on_plan(todo):
-        nonlocal bar, lines
+
+class Progress:
+    """A progress bar on a terminal, plain lines otherwise (:class:`ProgressLines`)."""
+
+    def __init__(self, label: str):
+        self.label = label
+        self.bar = self.lines = None
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        if self.bar is not None:
+            self.bar.__exit__(None, None, None)
+
+    def plan(self, todo: int) -> None:
+        import sys
+
         if todo > 0 and sys.stderr.isatty():
-            bar = click.progressbar(length=todo, label=label, show_eta=True,
-                                    file=sys.stderr)
-            bar.__enter__()
+            self.bar = click.progressbar(length=todo, label=self.label, show_eta=True,
+                                         file=sys.stderr)
+            self.bar.__enter__()
         elif todo > 0:
             from cityshade.cli.options import ProgressLines
 
-            lines = ProgressLines(label)
+            self.lines = ProgressLines(self.label)
 
-    def on_step(done, total, unit):
-        if bar is not None:
-            bar.update(1)
-        elif lines is not None:
-            lines(done, total)
+    def step(self, done: int, total: int, unit) -> None:
+        if self.bar is not None:
+            self.bar.update(1)
+        elif self.lines is not None:
+            self.lines(done, total)
 
-    try:
-        run = B.run_batch(outdir, scene, cam, steps, city.city_days, request=request,
-                          technique=technique, settings=settings, ground=ground, frames=frames,
-                          surfaces_csv=surfaces, overwrite=overwrite, on_plan=on_plan,
-                          on_step=on_step, tile_px=tile_px, scheduler=scheduler,
-                          scene_path=file, step_month=step_month)
-    finally:
-        if bar is not None:
-            bar.__exit__(None, None, None)
+
+def echo_verbose(run, command_s: float) -> None:
+    """``-v``: timings, counts, tiles and the sun of the first and last step with the sun up."""
     result = run.result
-    for warning in result.warnings:
-        click.echo(f"cityshade: warning: {warning}", err=True)
-    if verbose:
-        timings = {**result.timings_s, "write_s": run.write_s,
-                   "command_s": time.perf_counter() - t_start}
-        click.echo("timings  " + "  ".join(f"{k[:-2]} {v * 1000:.1f} ms"
-                                           for k, v in timings.items()), err=True)
-        click.echo(f"steps    {result.steps} ({result.steps_below_horizon} with the sun down, "
-                   f"{result.steps_duplicate} sharing a sun position), {result.units} sun "
-                   f"positions computed, {result.units_resumed} taken from the saved state",
-                   err=True)
-        tiles = result.diagnostics.get("tiles")
-        if tiles:
-            click.echo(f"tiles    {tiles['tiles']} of {tiles['tile_px'] or 'all'} px, "
-                       f"{tiles['tasks']} tasks of {tiles['sun_positions_per_task']} sun "
-                       f"positions, {tiles['receivers']:,} receivers, shadow reach "
-                       f"{tiles['halo_m']:.0f} m"
-                       + (f", {tiles['workers']} Dask workers ({tiles['scheduler']}), "
-                          f"{tiles.get('tasks_on_driver', 0)} tasks run here while they started"
-                          if tiles.get("scheduler") else ""), err=True)
-        up = [s for s in run.suns if s.above_horizon] or run.suns
-        for label, s in (("first", up[0]), ("last", up[-1])):
-            click.echo(f"{label:<8} {s.instant_utc} UTC: azimuth {s.azimuth_true_deg:.3f}° "
-                       f"true / {s.azimuth_grid_deg:.3f}° grid, elevation "
-                       f"{s.elevation_deg:.3f}°, ΔT {s.delta_t_s:.2f} s", err=True)
-    click.echo(" ".join(str(p) for p in run.written))
+    timings = {**result.timings_s, "write_s": run.write_s, "command_s": command_s}
+    click.echo("timings  " + "  ".join(f"{k[:-2]} {v * 1000:.1f} ms"
+                                       for k, v in timings.items()), err=True)
+    click.echo(f"steps    {result.steps} ({result.steps_below_horizon} with the sun down, "
+               f"{result.steps_duplicate} sharing a sun position), {result.units} sun "
+               f"positions computed, {result.units_resumed} taken from the saved state",
+               err=True)
+    tiles = result.diagnostics.get("tiles")
+    if tiles:
+        click.echo(f"tiles    {tiles['tiles']} of {tiles['tile_px'] or 'all'} px, "
+                   f"{tiles['tasks']} tasks of {tiles['sun_positions_per_task']} sun "
+                   f"positions, {tiles['receivers']:,} receivers, shadow reach "
+                   f"{tiles['halo_m']:.0f} m"
+                   + (f", {tiles['workers']} Dask workers ({tiles['scheduler']}), "
+                      f"{tiles.get('tasks_on_driver', 0)} tasks run here while they started"
+                      if tiles.get("scheduler") else ""), err=True)
+    up = [s for s in run.suns if s.above_horizon] or run.suns
+    for label, s in (("first", up[0]), ("last", up[-1])):
+        click.echo(f"{label:<8} {s.instant_utc} UTC: azimuth {s.azimuth_true_deg:.3f}° "
+                   f"true / {s.azimuth_grid_deg:.3f}° grid, elevation "
+                   f"{s.elevation_deg:.3f}°, ΔT {s.delta_t_s:.2f} s", err=True)
 
 
 def parse_day(text: str, option: str):

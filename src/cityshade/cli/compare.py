@@ -5,8 +5,7 @@ from pathlib import Path
 
 import click
 
-from cityshade.cli.options import (camera_options, ground_option, make_camera, shadow_options,
-                                   time_plan_options)
+from cityshade.cli.options import camera_options, ground_option, shadow_options, time_plan_options
 
 
 @click.command("compare")
@@ -47,90 +46,59 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
     import dataclasses
     import time
 
-    from cityshade.sunhours import run as B
-    from cityshade.planning import compare as C
-    from cityshade.planning import report as planreport, rules as R
-    from cityshade.geo.temporal import parse_user_date
     from cityshade.cli.batch import parse_day
-    from cityshade.cli.options import solar_zone_of_scene, warn_lmt
-    from cityshade.errors import UsageError
-    from cityshade.store.scenefile import whole_scene
-    from cityshade.shadows import get_technique
-    from cityshade.sunhours.surfaces import SampleSettings
-    from cityshade.util import check_outputs, output_group
+    from cityshade.cli.options import make_camera, warn_lmt
+    from cityshade.planning.rules import load_rules
+    from cityshade.planning.run import (CompareRequest, CompareStates, TimePlan, open_compare,
+                                        require_exact, run_compare)
+    from cityshade.sunhours.plan import parse_clock_s, parse_duration_s
 
     t_start = time.perf_counter()
     technique = settings.shadows.technique
-    get_technique(technique)
-    if technique not in ("izb", "raytrace"):
-        raise UsageError(f"compare needs an exact technique (izb or raytrace), not {technique}")
+    require_exact(technique)
     if samples_per_m2 is not None:
         settings = dataclasses.replace(settings, batch=dataclasses.replace(
             settings.batch, samples_per_m2=samples_per_m2))
-    SampleSettings(samples_per_m2=settings.batch.samples_per_m2)
     if no_refraction:
         settings = dataclasses.replace(settings, sun=dataclasses.replace(settings.sun,
                                                                         refraction=False))
-    if proposal is None and after_text is None:
-        raise UsageError("give --after DATE (one model, two dates) or --with PROPOSAL")
-    if proposal is not None and after_text is not None:
-        raise UsageError("give --after or --with, not both (the proposal's own dates decide "
-                         "when its objects stand)")
-    min_stretch_h = B.parse_duration_s(min_stretch_text) / 3600.0 \
+    states = CompareStates(before_text, after_text, proposal)
+    min_stretch_h = parse_duration_s(min_stretch_text) / 3600.0 \
         if min_stretch_text.strip() not in ("0", "0min", "0s", "0h") else 0.0
-    rules = [r for f in rule_files for r in R.load_rules(f)]
+    rules = [r for f in rule_files for r in load_rules(f)]
     area = _area(area_text)
     first_day = parse_day(date_text, "--date")
     to_date = parse_day(to_date_text, "--to-date") if to_date_text else None
-    every_s = B.parse_duration_s(every_text)
-    from_s, to_s = B.parse_clock_s(from_text), B.parse_clock_s(to_text)
-    before = parse_user_date(before_text or first_day.isoformat())
-    after = parse_user_date(after_text) if after_text else before
-
-    check_outputs(("-o", outdir, None))  # once the options are valid, before any work
-    scene = whole_scene(file)  # a tiled cache: the view of all its tiles
-    steps = B.plan_steps(first_day, from_s, to_s, every_s, solar_zone_of_scene(tz, scene),
-                         days=days, to_date=to_date, every_day=every_day)
-    warn_lmt([step.start_utc for step in steps[:1]], tz)
-    scene_after = scene
-    if proposal is not None:
-        scene_after = C.merge_scenes(scene, _load_any(proposal, settings), settings)
-    cam = make_camera(scene_after, camera, eye, target, fov, size, pixel_size, cameras_file)
-    progress = _progress("sun positions (before, after)")
-    comp = C.compare_states(
-        scene, before.city_days, scene_after, after.city_days, cam, steps,
-        technique=technique, settings=settings, ground=ground,
-        samples_per_m2=None if no_surfaces else settings.batch.samples_per_m2,
-        min_stretch_h=min_stretch_h, on_step=progress)
-    progress.close()
-    verdicts = []
-    for rule in rules:
-        verdicts.append(_run_rule(rule, scene, scene_after, before, after, first_day.year, tz,
-                                  every_text, cam, settings, ground, technique, area, C, R, B))
-    meta = {"cityshade:kind": "compare", "cityshade:before": before_text or first_day.isoformat(),
-            "cityshade:after": after_text or f"with {Path(proposal).name}",
-            "cityshade:technique": technique, "cityshade:crs": scene.crs.name,
-            "cityshade:steps": len(steps), "cityshade:step_s": every_s}
-    request = {"file": str(file), "before": before_text or first_day.isoformat(),
-               "after": after_text, "with": str(proposal) if proposal else None,
-               "date": first_day.isoformat(), "from": from_text, "to": to_text,
-               "every": every_text, "tz": tz, "days": days,
-               "to_date": to_date.isoformat() if to_date else None, "every_day": every_day,
-               "technique": technique, "camera": camera, "pixel_size": pixel_size,
-               "ground": ground, "min_stretch": min_stretch_text,
-               "rules": list(rule_files)}
-    with output_group():  # the rasters, tables and report appear together, or none of them
-        written = C.write_comparison(outdir, comp, meta)
-        written += planreport.write_report(outdir, comp, verdicts, request, steps)
+    plan = TimePlan(first_day, every_s=parse_duration_s(every_text),
+                    from_s=parse_clock_s(from_text), to_s=parse_clock_s(to_text), tz=tz,
+                    days=days, to_date=to_date, every_day=every_day)
+    provenance = {"file": str(file), "before": before_text or first_day.isoformat(),
+                  "after": after_text, "with": str(proposal) if proposal else None,
+                  "date": first_day.isoformat(), "from": from_text, "to": to_text,
+                  "every": every_text, "tz": tz, "days": days,
+                  "to_date": to_date.isoformat() if to_date else None, "every_day": every_day,
+                  "technique": technique, "camera": camera, "pixel_size": pixel_size,
+                  "ground": ground, "min_stretch": min_stretch_text, "rules": list(rule_files)}
+    view = camera
+    request = CompareRequest(
+        file, plan, states, technique=technique, settings=settings, ground=ground,
+        camera=lambda scene: make_camera(scene, view, eye, target, fov, size, pixel_size,
+                                         cameras_file),
+        surfaces=not no_surfaces, min_stretch_h=min_stretch_h, rules=rules, area=area,
+        outdir=outdir, provenance=provenance)
+    inputs = open_compare(request)
+    warn_lmt([step.start_utc for step in inputs.steps[:1]], tz)
+    result = run_compare(request, inputs, on_step=_progress("sun positions (before, after)"))
+    comp = result.comparison
     for warning in comp.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
-    for v in verdicts:
+    for v in result.verdicts:
         click.echo(f"{v.rule.id}: {v.status.upper()} — {v.summary}")
     if verbose:
         click.echo(f"timings  before {comp.before.timings_s['total_s']:.2f} s  after "
                    f"{comp.after.timings_s['total_s']:.2f} s  command "
                    f"{time.perf_counter() - t_start:.2f} s", err=True)
-    click.echo(" ".join(str(p) for p in written))
+    click.echo(" ".join(str(p) for p in result.written))
 
 
 def _area(text):
@@ -147,20 +115,6 @@ def _area(text):
     return values
 
 
-def _load_any(path: Path, settings):
-    """A scene file, or a city model built in memory (nothing written)."""
-    from cityshade.build import build_scene_from_file
-    from cityshade.store.scenefile import load_scene
-
-    if path.suffix == ".cityshade":
-        return load_scene(path)
-    if not path.exists():
-        from cityshade.errors import UsageError
-
-        raise UsageError(f"the proposal {path} does not exist")
-    return build_scene_from_file(path, settings)
-
-
 class _progress:
     """Progress lines (or nothing) for the two runs."""
 
@@ -174,66 +128,3 @@ class _progress:
     def __call__(self, done, total):
         if self.lines is not None:
             self.lines(done, total)
-
-    def close(self):
-        pass
-
-
-def _run_rule(rule, scene, scene_after, before, after, year, tz, every_text, cam, settings,
-              ground, technique, area, C, R, B):
-    """The rule's own day, window and receivers, before and after → its verdict."""
-    import dataclasses
-
-    import numpy as np
-
-    from cityshade.cli.options import solar_zone_of_scene
-    from cityshade.raster.camera import map_view
-    from cityshade.geo.sun import suns_from_instants
-
-    day = R.rule_day(rule, year)
-    to_date = R.rule_day(rule, year, rule.to_date) if rule.to_date else None
-    steps = B.plan_steps(day, B.parse_clock_s(rule.time_from), B.parse_clock_s(rule.time_to),
-                         B.parse_duration_s(rule.every or every_text),
-                         solar_zone_of_scene(rule.tz or tz, scene), to_date=to_date,
-                         every_day=rule.every_day)
-    suns = suns_from_instants([s.centre_utc for s in steps], scene.crs, scene.origin_m,
-                              settings.sun)
-    if rule.min_elevation_deg > 0:
-        # Below the rule's minimum altitude the sun does not count: such steps are sun-down.
-        suns = [s if s.elevation_deg >= rule.min_elevation_deg else
-                dataclasses.replace(s, elevation_deg=min(s.elevation_deg, 0.0)) for s in suns]
-    polygons = R.receiver_polygons(rule, scene)
-    if polygons is not None:
-        if rule.receivers == "openings":
-            polygons = polygons & np.isin(np.arange(len(polygons)), [
-                p for o in C.openings_of(scene) for p in o.polygons])
-        if not polygons.any():
-            kind = "windows or doors (LoD3 openings)" if rule.receivers == "openings" else \
-                f"surfaces of class {', '.join(rule.classes)}"
-            return R.Verdict(rule, "not assessed", f"the model has no {kind}",
-                             not_assessed=rule.not_assessed)
-    camera = None
-    if rule.receivers == "area":
-        box = R.area_bbox(rule) or area
-        if box is None:
-            return R.Verdict(rule, "not assessed", "no area: give the rule an area_bbox or "
-                             "area_polygon, or --area x0,y0,x1,y1", not_assessed=rule.not_assessed)
-        if rule.area_bbox is None and rule.area_polygon is None:
-            rule = dataclasses.replace(rule, area_bbox=tuple(box))
-        o = scene.origin_m
-        px = cam.pixel_size_m if cam is not None and cam.kind == "map" else 0.5
-        camera = map_view(scene_after, min(px, 0.5),
-                          bbox=(box[0] - o[0], box[1] - o[1], box[2] - o[0], box[3] - o[1]))
-    comp = C.compare_states(
-        scene, before.city_days, scene_after, after.city_days, camera, steps,
-        technique=technique, settings=settings, ground=ground, suns=suns,
-        samples_per_m2=settings.batch.samples_per_m2 if rule.receivers == "surfaces" else None,
-        opening_samples_per_m2=0.0 if rule.receivers == "area" else C.OPENING_SAMPLES_PER_M2,
-        polygons=polygons, min_stretch_h=rule.min_stretch_h)
-    m_before, m_after = R.measures_from(rule, comp)
-    verdict = R.evaluate(rule, m_after, m_before)
-    verdict.numbers["steps"] = len(steps)
-    verdict.numbers["step_min"] = (steps[0].weight_h * 60.0) if steps else 0.0
-    verdict.numbers["period"] = f"{day.isoformat()}" + (f" to {to_date.isoformat()}"
-                                                        if to_date else "")
-    return verdict

@@ -96,37 +96,15 @@ def evaluate(file, views, sun_text, date_text, times, tz, settings, sizes, size,
     check_outputs(("-o", output, None))  # before any work
     bar = _Bar()
     if stress:
-        from cityshade.config import StressSettings
-        from cityshade.evaluate.stress import run_stress, stress_markdown
-        from cityshade.util import make_folder, write_text_atomic
-
-        stress_settings = StressSettings.quick_set() if quick else settings.stress
-        # The stress set has its own cases with and without ground; only an explicit
-        # --ground replaces them.
-        if click.get_current_context().get_parameter_source("ground").name != "DEFAULT":
-            stress_settings = dataclasses.replace(stress_settings, ground=ground)
-        try:
-            report = run_stress(file, stress_settings, progress=bar,
-                                echo=lambda line: _echo_line(bar, line))
-        finally:
-            bar.close()
-        if output is not None:
-            make_folder(output, "report folder")
-            write_text_atomic(output / "stress.md", stress_markdown(report) + "\n",
-                              what="the stress report")
-        failed = [c for c in report.cases if not c.passed]
-        click.echo(f"stress: {len(report.cases) - len(failed)} of {len(report.cases)} cases "
-                   f"passed" + (f"; FAILED: {', '.join(c.name for c in failed)}" if failed else ""))
-        if failed:
-            sys.exit(1)
+        _run_stress(file, settings, ground, quick, output, bar)
         return
     if output is None:
         raise UsageError("give the report folder with -o/--output")
     import datetime as dt
 
     from cityshade.geo.temporal import days_to_iso, parse_user_date
-    from cityshade.evaluate import (expand_techniques, make_camera, open_scene, parse_suns,
-                                    run_evaluation, suns_of_day, write_report)
+    from cityshade.evaluate import (expand_techniques, load_or_build_scene, parse_suns,
+                                    run_evaluation, suns_of_day, view_camera, write_report)
 
     if sun_text and times:
         raise UsageError("give either --sun or --date/--times, not both")
@@ -142,11 +120,11 @@ def evaluate(file, views, sun_text, date_text, times, tz, settings, sizes, size,
 
     city_days = parse_user_date(day.split("T")[0] if times else day,
                                 solar_placeholder(tz)).city_days
-    scene = open_scene(file, settings_for_source(file, crs, settings))
+    scene = load_or_build_scene(file, settings_for_source(file, crs, settings))
     tz = solar_zone_of_scene(tz, scene)
     suns = (suns_of_day(day, times, tz, scene, settings.sun) if times
             else parse_suns(sun_text or "135,45;240,15", scene))
-    cams = [(v, make_camera(scene, v, (width, height), pixel_size, city_days, cameras_file))
+    cams = [(v, view_camera(scene, v, (width, height), pixel_size, city_days, cameras_file))
             for v in (s.strip() for s in views.split(",")) if v]
     if not cams:
         raise UsageError("--views needs at least one view")
@@ -163,6 +141,36 @@ def evaluate(file, views, sun_text, date_text, times, tz, settings, sizes, size,
         click.echo(f"cityshade: warning: {r['technique']} map {r['map_px'] or '-'} on "
                    f"{r['view']} {r['sun']}: {r['error']}", err=True)
     click.echo(" ".join(str(p) for p in written))
+
+
+def _run_stress(file, settings, ground, quick: bool, output, bar: _Bar) -> None:
+    """``evaluate --stress``: the stress set on FILE, its report into ``output`` (optional);
+    exit status 1 on any FAIL."""
+    import dataclasses
+
+    from cityshade.config import StressSettings
+    from cityshade.evaluate.stress import run_stress, stress_markdown
+    from cityshade.util import make_folder, write_text_atomic
+
+    stress_settings = StressSettings.quick_set() if quick else settings.stress
+    # The stress set has its own cases with and without ground; only an explicit
+    # --ground replaces them.
+    if click.get_current_context().get_parameter_source("ground").name != "DEFAULT":
+        stress_settings = dataclasses.replace(stress_settings, ground=ground)
+    try:
+        report = run_stress(file, stress_settings, progress=bar,
+                            echo=lambda line: _echo_line(bar, line))
+    finally:
+        bar.close()
+    if output is not None:
+        make_folder(output, "report folder")
+        write_text_atomic(output / "stress.md", stress_markdown(report) + "\n",
+                          what="the stress report")
+    failed = [c for c in report.cases if not c.passed]
+    click.echo(f"stress: {len(report.cases) - len(failed)} of {len(report.cases)} cases "
+               f"passed" + (f"; FAILED: {', '.join(c.name for c in failed)}" if failed else ""))
+    if failed:
+        sys.exit(1)
 
 
 def _echo_line(bar: _Bar, line: str) -> None:

@@ -191,7 +191,7 @@ def install_sigint_handler() -> None:
 
 def _caused_by_interrupt(exc: BaseException) -> bool:
     """A KeyboardInterrupt inside a Numba kernel surfaces as ``SystemError: CPUDispatcher(...)
-    returned a result with an exception set`` (DESIGN §14): look through the chain."""
+    returned a result with an exception set`` (docs/DESIGN.md §14): look through the chain."""
     seen = set()
     while exc is not None and id(exc) not in seen:
         if isinstance(exc, KeyboardInterrupt):
@@ -456,21 +456,28 @@ def shadow_options(default_technique: str, *, technique_help: str | None = None,
 
 
 def _flag_applies(flag: str, name: str) -> bool:
-    """Whether a tunable of ``[shadows]`` changes technique ``name`` (without +smooth)."""
-    if name in ("all", ""):
+    """Whether a tunable of ``[shadows]`` changes technique ``name``."""
+    from cityshade.errors import UsageError
+    from cityshade.shadows import describe
+
+    if name in ("all", "all+smooth", ""):
         return True
+    try:
+        spec = describe(name)
+    except UsageError:
+        return True  # the command refuses the name itself, with the registry's message
     if flag == "cascades":
-        return "csm" in name
+        return spec.planner == "csm"
     if flag == "pcf_kernel":
-        return "pcf" in name
+        return spec.lookup == "pcf"
     if flag == "vsm_blur":
-        return "vsm" in name or name == "hybrid"  # hybrid's default base is vsm
-    return name not in ("raytrace", "izb")  # the map's size and biases: every map technique
+        return spec.lookup == "vsm"  # also hybrid's default base
+    return spec.family != "exact"  # the map's size and biases: every map technique
 
 
 def inapplicable_flags(technique: str, flags: dict) -> list[str]:
     """The shadow flags given (not None) that apply to none of the comma-separated techniques."""
-    names = [n.strip().removesuffix("+smooth") for n in str(technique).split(",")]
+    names = [n.strip() for n in str(technique).split(",")]
     return [flag for flag, value in flags.items() if value is not None
             and not any(_flag_applies(flag, n) for n in names)]
 
@@ -510,7 +517,7 @@ class ProgressLines:
 
 def time_plan_options(func):
     """``--date --from --to --every --tz --days --to-date --every-day`` (see
-    :func:`cityshade.sunhours.run.plan_steps`)."""
+    :func:`cityshade.sunhours.plan.plan_steps`)."""
     options = [
         click.option("--date", "date_text", required=True, help="First day, YYYY-MM-DD."),
         click.option("--from", "from_text", default="00:00", show_default=True,
@@ -545,7 +552,7 @@ def _ground_value(ctx, param, value):
 
 
 def ground_option(func):
-    """--ground, default auto (DESIGN §14: most real files carry no terrain)."""
+    """--ground, default auto (docs/DESIGN.md §10: most real files carry no terrain)."""
     return click.option("--ground", default="auto", show_default=True, callback=_ground_value,
                         help=GROUND_HELP)(func)
 

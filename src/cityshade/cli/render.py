@@ -43,7 +43,6 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     """Render FILE (a .cityshade scene) as the city stood on --date, lit by the sun at
     --sun-azimuth/--sun-elevation or, for a --date with a time, by the sun computed for the
     model's place (NREL SPA), from a perspective camera or as a top-down map."""
-    import dataclasses
     import datetime as dt
     import time
 
@@ -52,11 +51,9 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     from cityshade.errors import UsageError
     from cityshade.frame.render import check_frame_outputs, render_frame, strip_rows_for, write_frame
     from cityshade.store.scenefile import open_scene, scene_for_camera
-    from cityshade.shadows import get_technique
-    from cityshade.geo.sun import sun_from_angles
+    from cityshade.shadows import describe
 
-    technique = settings.shadows.technique
-    get_technique(technique)  # unknown names fail before any work
+    technique = describe(settings.shadows.technique)  # unknown names fail before any work
     if (sun_azimuth is None) != (sun_elevation is None):
         raise UsageError("give both --sun-azimuth and --sun-elevation")
     if sun_azimuth is not None and time_text is not None:
@@ -82,16 +79,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     check_frame_outputs(cam.kind, exr=output, png=png, mask=mask, georef=geotiff)  # the view
     strip_rows_for(cam, technique, settings.shadows, strip_rows)  # refused before any work
     scene = scene_for_camera(scene, cam, technique)
-    if sun_azimuth is not None:
-        sun = sun_from_angles(sun_azimuth, sun_elevation, scene.crs, scene.origin_m)
-    else:
-        # pvlib (and pandas) load only here: a render with explicit angles never needs them.
-        from cityshade.geo.sun import sun_from_instant
-
-        spa = settings.sun
-        if no_refraction:
-            spa = dataclasses.replace(spa, refraction=False)
-        sun = sun_from_instant(user_date.instant_utc, scene.crs, scene.origin_m, spa)
+    sun = _sun(scene, sun_azimuth, sun_elevation, user_date, settings, no_refraction)
     frame = render_frame(scene, cam, user_date.city_days, sun, technique, settings.shadows,
                          sky=not no_sky, ground=ground, measure=verbose, strip_rows=strip_rows)
     for warning in frame.warnings:
@@ -107,25 +95,48 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
         warn_geotiff_without_crs(scene, geotiff)
     write_s = time.perf_counter() - t1
     if verbose:
-        timings = {"load_s": load_s, **frame.timings_s, "write_s": write_s}
-        click.echo("timings  " + "  ".join(f"{k[:-2]} {v * 1000:.1f} ms" for k, v in timings.items()),
-                   err=True)
-        click.echo(f"sun      azimuth {sun.azimuth_true_deg:.3f}° true / {sun.azimuth_grid_deg:.3f}° "
-                   f"grid (convergence {sun.convergence_deg:+.4f}°), elevation "
-                   f"{sun.elevation_deg:.3f}°", err=True)
-        if sun.instant_utc is not None:
-            click.echo(f"instant  {sun.instant_utc} UTC, ΔT {sun.delta_t_s:.2f} s, refraction "
-                       f"{'on' if sun.refraction else 'off'}, {sun.source} at "
-                       f"{sun.latitude_deg:.6f}° N {sun.longitude_deg:.6f}° E "
-                       f"{sun.height_m:.1f} m", err=True)
-        for key, value in frame.diagnostics.lines():
-            click.echo(f"{key:<8} {value}", err=True)
-        tiled = getattr(scene, "tiled", None)
-        if tiled is not None:
-            click.echo(f"tiles    {len(scene.tile_ids)} of {len(tiled.tiles)} in view, "
-                       f"{len(tiled.tiles_mapped)} mapped (shadow rays reach the rest)",
-                       err=True)
+        _report(scene, frame, {"load_s": load_s, **frame.timings_s, "write_s": write_s})
     click.echo(" ".join(str(p) for p in written))
+
+
+def _sun(scene, sun_azimuth, sun_elevation, user_date, settings, no_refraction):
+    """The sun of the flags: the given angles, else SPA at the model's place for the date's
+    instant."""
+    import dataclasses
+
+    from cityshade.geo.sun import sun_from_angles
+
+    if sun_azimuth is not None:
+        return sun_from_angles(sun_azimuth, sun_elevation, scene.crs, scene.origin_m)
+    # pvlib (and pandas) load only here: a render with explicit angles never needs them.
+    from cityshade.geo.sun import sun_from_instant
+
+    spa = settings.sun
+    if no_refraction:
+        spa = dataclasses.replace(spa, refraction=False)
+    return sun_from_instant(user_date.instant_utc, scene.crs, scene.origin_m, spa)
+
+
+def _report(scene, frame, timings: dict[str, float]) -> None:
+    """``render -v``: stage timings, the sun, the frame's diagnostics, the tiles drawn."""
+    sun = frame.sun
+    click.echo("timings  " + "  ".join(f"{k[:-2]} {v * 1000:.1f} ms" for k, v in timings.items()),
+               err=True)
+    click.echo(f"sun      azimuth {sun.azimuth_true_deg:.3f}° true / {sun.azimuth_grid_deg:.3f}° "
+               f"grid (convergence {sun.convergence_deg:+.4f}°), elevation "
+               f"{sun.elevation_deg:.3f}°", err=True)
+    if sun.instant_utc is not None:
+        click.echo(f"instant  {sun.instant_utc} UTC, ΔT {sun.delta_t_s:.2f} s, refraction "
+                   f"{'on' if sun.refraction else 'off'}, {sun.source} at "
+                   f"{sun.latitude_deg:.6f}° N {sun.longitude_deg:.6f}° E "
+                   f"{sun.height_m:.1f} m", err=True)
+    for key, value in frame.diagnostics.lines():
+        click.echo(f"{key:<8} {value}", err=True)
+    if scene.is_tiled:
+        tiled = scene.tiling
+        click.echo(f"tiles    {len(tiled.tile_ids)} of {len(tiled.source.tiles)} in view, "
+                   f"{len(tiled.source.tiles_mapped)} mapped (shadow rays reach the rest)",
+                   err=True)
 
 
 def _with_time(date_text: str, time_text: str | None) -> str:

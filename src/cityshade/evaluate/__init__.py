@@ -14,13 +14,14 @@ from cityshade.evaluate.metrics import (LIT_THRESHOLD, Reference, compare, finit
 from cityshade.evaluate.plot import error_time_plot
 from cityshade.evaluate.report import (CSV_COLUMNS, diff_image, report_markdown, summary,
                                        write_csv, write_report)
-from cityshade.evaluate.run import (Case, EvaluateSettings, Evaluation, evaluate_frame,
-                                    expand_techniques, make_camera, open_scene, parse_suns,
-                                    run_evaluation, sun_label, suns_of_day, uses_map)
+from cityshade.evaluate.run import (Case, EvaluateSettings, Evaluation, FrameSetup,
+                                    evaluate_frame, expand_techniques, load_or_build_scene,
+                                    map_family, parse_suns, run_evaluation, sun_label,
+                                    suns_of_day, uses_map, view_camera)
 
 __all__ = ["LIT_THRESHOLD", "Reference", "compare", "finite_check", "make_reference",
            "nearest_feature", "pareto_front", "error_time_plot", "CSV_COLUMNS", "diff_image",
            "report_markdown", "summary", "write_csv", "write_report", "Case",
-           "EvaluateSettings", "Evaluation", "evaluate_frame", "expand_techniques",
-           "make_camera", "open_scene", "parse_suns", "run_evaluation", "sun_label",
-           "suns_of_day", "uses_map"]
+           "EvaluateSettings", "Evaluation", "FrameSetup", "evaluate_frame",
+           "expand_techniques", "load_or_build_scene", "map_family", "parse_suns",
+           "run_evaluation", "sun_label", "suns_of_day", "uses_map", "view_camera"]

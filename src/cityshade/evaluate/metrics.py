@@ -1,4 +1,4 @@
-"""Error of a technique against the exact reference on the same pixels (DESIGN §9).
+"""Error of a technique against the exact reference on the same pixels (docs/DESIGN.md §13).
 
 - misclassified pixels in % of the pixels that show a surface, split into false-lit (the
   technique says sun, the reference shadow) and false-shadow; a pixel counts as lit when its

@@ -24,10 +24,13 @@ OKABE_ITO = ((0, 0, 0), (230, 159, 0), (86, 180, 233), (0, 158, 115), (204, 121,
 
 def base_technique(technique: str) -> str:
     """The planner (or alias, or exact technique) a name is built on: the colour key."""
-    name = technique.partition("+")[0]
-    if name.startswith("hybrid"):
-        name = name.partition(":")[2] or "vsm"
-    return name.partition("/")[0].partition(":")[0]
+    from cityshade.evaluate.run import map_family
+    from cityshade.shadows import ALIASES, describe
+
+    spec = describe(map_family(technique))
+    if spec.family == "exact":
+        return spec.engine
+    return spec.name if spec.name in ALIASES else spec.planner
 
 
 def technique_colour(technique: str) -> tuple[int, int, int]:
@@ -45,13 +48,14 @@ def technique_colour(technique: str) -> tuple[int, int, int]:
 
 def _marker(technique: str) -> str:
     """Shape: plain o, +smooth square, hybrid triangle, exact techniques a diamond."""
-    from cityshade.shadows import exact_technique_names
+    from cityshade.shadows import describe
 
-    if technique.partition("+")[0] in exact_technique_names():
+    spec = describe(technique)
+    if spec.family == "exact":
         return "D"
-    if technique.startswith("hybrid"):
+    if spec.family == "hybrid":
         return "^"
-    return "s" if technique.endswith("+smooth") else "o"
+    return "s" if spec.smooth else "o"
 
 
 def error_time_plot(entries: Sequence[dict], title: str = "") -> np.ndarray | None:

@@ -28,9 +28,9 @@ if TYPE_CHECKING:
     from cityshade.raster.camera import Camera
     from cityshade.geo.sun import SunPosition
 
-__all__ = ["EvaluateSettings", "Case", "Evaluation", "expand_techniques", "uses_map",
-           "evaluate_frame", "TimedCameraPass", "timed_camera_pass", "run_evaluation",
-           "sun_label", "make_camera", "open_scene",
+__all__ = ["EvaluateSettings", "Case", "Evaluation", "expand_techniques", "map_family",
+           "uses_map", "FrameSetup", "evaluate_frame", "TimedCameraPass", "timed_camera_pass",
+           "run_evaluation", "sun_label", "view_camera", "load_or_build_scene",
            "parse_suns", "suns_of_day"]
 
 
@@ -45,7 +45,8 @@ def expand_techniques(spec: str | Sequence[str]) -> list[str]:
     listed.
     Unknown names raise the registry's :class:`~cityshade.errors.UsageError`.
     """
-    from cityshade.shadows import exact_technique_names, get_technique, map_technique_names
+    from cityshade.shadows import (describe, exact_technique_names, get_technique,
+                                   map_technique_names)
 
     names = [s.strip() for s in (spec.split(",") if isinstance(spec, str) else spec)]
     names = [n for n in names if n]
@@ -53,13 +54,13 @@ def expand_techniques(spec: str | Sequence[str]) -> list[str]:
         raise UsageError("--shadows needs 'all' or a comma-separated list of techniques")
     out: list[str] = []
     for name in names:
-        maps = [n for n in map_technique_names() if not n.startswith("csm:")]
+        maps = [n for n in map_technique_names() if describe(n).warp is None]
         every = [*exact_technique_names(), *maps, *(f"{n}+smooth" for n in maps),
                  *(f"hybrid:{n}" for n in maps)]
         if name == "all":
             group = every
         elif name == "all+smooth":
-            group = [n if n.endswith("+smooth") else f"{n}+smooth" for n in every]
+            group = [n if describe(n).smooth else f"{n}+smooth" for n in every]
         else:
             group = [name]
         for n in group:
@@ -72,16 +73,21 @@ def expand_techniques(spec: str | Sequence[str]) -> list[str]:
 
 
 def map_family(technique: str) -> str:
-    """The map technique whose depth maps ``technique`` draws (``hybrid:pcf+smooth`` → ``pcf``;
-    an exact technique is its own family)."""
-    return technique.partition("+")[0].removeprefix("hybrid:") or technique
+    """The map technique whose depth maps ``technique`` draws (``hybrid:pcf+smooth`` → ``pcf``,
+    ``hybrid`` → ``vsm``; an exact technique, smoothed or not, is its own family)."""
+    from cityshade.shadows import describe
+
+    spec = describe(technique)
+    if spec.smooth:
+        spec = describe(spec.base)
+    return spec.base if spec.family == "hybrid" else spec.name
 
 
 def uses_map(technique: str) -> bool:
     """Whether the technique draws shadow maps (so its ``map_px`` matters)."""
-    from cityshade.shadows import exact_technique_names
+    from cityshade.shadows import describe
 
-    return technique.partition("+")[0] not in exact_technique_names()
+    return describe(technique).family != "exact"
 
 
 @dataclass
@@ -129,18 +135,29 @@ def _stage_medians(diags: list[dict]) -> dict[str, float]:
     return {k: median_s(v) for k, v in keys.items()}
 
 
-def evaluate_frame(scene: "Scene", camera: "Camera", view: str, sun: "SunPosition", t_days: float,
-                   techniques: Sequence[str], sizes: Sequence[int], settings: EvaluateSettings,
-                   evaluation: Evaluation, shadows: ShadowSettings | None = None,
+@dataclass(frozen=True)
+class FrameSetup:
+    """One frame of an evaluation: a view's camera and one sun over a scene at a city time."""
+
+    scene: "Scene"
+    camera: "Camera"
+    view: str                   # the view's name (the rows' ``view``)
+    sun: "SunPosition"
+    t_days: float               # city time, days since 1970-01-01 UTC
+    ground: str | None = None   # ground plane, as ``render --ground``
+
+
+def evaluate_frame(frame: FrameSetup, techniques: Sequence[str], sizes: Sequence[int],
+                   settings: EvaluateSettings, evaluation: Evaluation,
+                   shadows: ShadowSettings | None = None,
                    progress: Callable[[str], None] | None = None,
                    reference_lit: np.ndarray | None = None,
-                   ground: str | None = None,
                    camera_runs: "TimedCameraPass | None" = None) -> dict[str, Any]:
     """Evaluate every technique and size on one view and sun; rows go into ``evaluation``.
 
-    The frame is the pipeline's (:func:`cityshade.frame.pipeline.camera_pass`, with ``ground`` like
-    ``render --ground``), timed ``repeat + 1`` times (or ``camera_runs``, the view's camera pass
-    timed once for all its suns); each technique runs through
+    The frame is the pipeline's (:func:`cityshade.frame.pipeline.camera_pass`, with
+    ``frame.ground`` like ``render --ground``), timed ``repeat + 1`` times (or ``camera_runs``,
+    the view's camera pass timed once for all its suns); each technique runs through
     :func:`cityshade.frame.pipeline.shadow_pass` on the same camera pass.
 
     Returns a dict with the frame's G-buffer, surfaces, reference lit fraction and the
@@ -148,55 +165,32 @@ def evaluate_frame(scene: "Scene", camera: "Camera", view: str, sun: "SunPositio
     set) that check more.
     """
     from cityshade.frame.diagnostics import skipped_work
-    from cityshade.frame.pipeline import shadow_pass
     from cityshade.shadows import get_technique
 
+    scene, camera, view, sun = frame.scene, frame.camera, frame.view, frame.sun
     runs = settings.repeat + 1
     shadows = shadows or ShadowSettings()
     if camera_runs is None:
-        camera_runs = timed_camera_pass(scene, camera, t_days, settings.repeat, ground)
-    cp, gbuffer_s, resolve_s = camera_runs.cp, camera_runs.gbuffer_s, camera_runs.resolve_s
+        camera_runs = timed_camera_pass(scene, camera, frame.t_days, settings.repeat,
+                                        frame.ground)
+    cp = camera_runs.cp
     gbuf, surfaces = cp.gbuffer, cp.surfaces
     label = sun_label(sun)
     common = {"view": view, "view_px": f"{camera.width_px}x{camera.height_px}",
               "camera": camera.kind, "sun": label,
               "sun_az_deg": round(float(sun.azimuth_true_deg), 6),
               "sun_el_deg": round(float(sun.elevation_deg), 6),
-              "gbuffer_s": gbuffer_s, "resolve_s": resolve_s}
-
+              "gbuffer_s": camera_runs.gbuffer_s, "resolve_s": camera_runs.resolve_s}
     reuse = DepthMapReuse()
-
-    def timed(tech, technique_settings):
-        """(seconds per run, diagnostics per run, the warm-up run's result) of ``runs`` shadow
-        passes. The warm-up run also takes the map techniques' per-frame measures (aliasing
-        m, texel size) for the row; the timed runs do what a frame does, no more. Depth maps
-        come from ``reuse`` when an earlier run drew the same one; each run is charged the
-        depth-pass time of the maps it reused, so its time is that of a frame of its own."""
-        seconds, diags, result = [], [], None
-        for k in range(runs):
-            with reuse:
-                sp = shadow_pass(cp, sun, tech, technique_settings, measure=(k == 0))
-                seconds.append(sp.seconds + reuse.take_reused_s())
-            diags.append(sp.result.diagnostics)
-            result = sp.result if k == 0 else result
-        return seconds, diags, result
 
     if progress:
         progress(f"{view} {label} raytrace")
-    secs, diags, ref_result = timed(get_technique("raytrace"), shadows)
+    secs, diags, ref_result = _timed_shadow_passes(cp, sun, get_technique("raytrace"), shadows,
+                                                   runs, reuse)
     ref_lit = ref_result.lit if reference_lit is None else reference_lit
     ref = make_reference(ref_lit, surfaces.valid, surfaces.position_m)
-    row = {**common, "technique": "raytrace", "map_px": "", "runs": settings.repeat,
-           "warmup_s": secs[0], "shadow_s": median_s(secs[1:]), "valid_px": int(ref.valid.sum()),
-           "wrong_px": 0, "misclassified_pct": 0.0, "false_lit_pct": 0.0,
-           "false_shadow_pct": 0.0, "lit_mae": 0.0, "edge_mean_m": 0.0, "edge_p95_m": 0.0,
-           "edge_max_m": 0.0, "aliasing_max_m": "", "aliasing_mean_m": "",
-           "traced_share": 1.0, "stages": _fmt_stages(_stage_medians(diags[1:])), "error": ""}
-    bad = finite_check(ref_result)
-    if bad:
-        row["error"] = bad
-    row["frame_s"] = gbuffer_s + resolve_s + row["shadow_s"]
-    evaluation.rows.append(row)
+    evaluation.rows.append(_reference_row(common, settings.repeat, secs, diags, ref,
+                                          ref_result))
     skipped = evaluation.skipped.setdefault(view, [])
     if not skipped:
         skipped += skipped_work(scene, gbuf.stats, ref_result.diagnostics, surfaces, sun)
@@ -221,7 +215,7 @@ def evaluate_frame(scene: "Scene", camera: "Camera", view: str, sun: "SunPositio
         row = {**common, "technique": name, "map_px": size or "", "runs": settings.repeat}
         rows[j] = row
         try:
-            secs, diags, result = timed(tech, sized)
+            secs, diags, result = _timed_shadow_passes(cp, sun, tech, sized, runs, reuse)
         except Exception as exc:  # a crash is a result of the evaluation, not its end
             row.update(error=f"{type(exc).__name__}: {exc}", warmup_s="", shadow_s="",
                        frame_s="")
@@ -229,23 +223,9 @@ def evaluate_frame(scene: "Scene", camera: "Camera", view: str, sun: "SunPositio
             continue
         results[(name, size)] = result
         err = compare(result.lit, ref, settings.edge_percentile)
-        d = result.diagnostics
-        alias = d.get("aliasing_m") or {}
-        if not (alias.get("max") or alias.get("mean")):
-            alias = {}   # not measured (e.g. hybrid's base, whose maps are only prepared)
-        row.update({
-            "warmup_s": secs[0], "shadow_s": median_s(secs[1:]),
-            "valid_px": err["valid_px"], "wrong_px": err["wrong_px"],
-            **{k: err[k] for k in ("misclassified_pct", "false_lit_pct", "false_shadow_pct",
-                                   "lit_mae", "edge_mean_m", "edge_p95_m", "edge_max_m")},
-            "aliasing_max_m": alias.get("max", ""), "aliasing_mean_m": alias.get("mean", ""),
-            "traced_share": d.get("traced_share", ""),
-            "stages": _fmt_stages(_stage_medians(diags[1:])),
-            "error": finite_check(result) or "",
-        })
-        row["frame_s"] = gbuffer_s + resolve_s + row["shadow_s"]
+        _fill_technique_row(row, secs, diags, result, err)
         if len(skipped) and not any(s.startswith(("shadow map", "hybrid")) for s in skipped):
-            skipped += [s for s in skipped_work(scene, None, d) if
+            skipped += [s for s in skipped_work(scene, None, result.diagnostics) if
                         s.startswith(("shadow map", "base shadow map", "hybrid"))]
         _keep_worst(evaluation, settings.worst_cases, Case(
             view, label, name, size, err["misclassified_pct"], err["false_lit"],
@@ -253,6 +233,62 @@ def evaluate_frame(scene: "Scene", camera: "Camera", view: str, sun: "SunPositio
     reuse.clear()
     evaluation.rows.extend(rows[j] for j in range(len(jobs)))
     return {"gbuffer": gbuf, "surfaces": surfaces, "reference": ref, "results": results}
+
+
+def _timed_shadow_passes(cp, sun, tech, technique_settings, runs: int, reuse: DepthMapReuse):
+    """(seconds per run, diagnostics per run, the warm-up run's result) of ``runs`` shadow
+    passes on the camera pass ``cp``. The warm-up run also takes the map techniques'
+    per-frame measures (aliasing m, texel size) for the row; the timed runs do what a frame
+    does, no more. Depth maps come from ``reuse`` when an earlier run drew the same one; each
+    run is charged the depth-pass time of the maps it reused, so its time is that of a frame
+    of its own."""
+    from cityshade.frame.pipeline import shadow_pass
+
+    seconds, diags, result = [], [], None
+    for k in range(runs):
+        with reuse:
+            sp = shadow_pass(cp, sun, tech, technique_settings, measure=(k == 0))
+            seconds.append(sp.seconds + reuse.take_reused_s())
+        diags.append(sp.result.diagnostics)
+        result = sp.result if k == 0 else result
+    return seconds, diags, result
+
+
+def _reference_row(common: dict[str, Any], repeat: int, secs: list[float], diags: list[dict],
+                   ref, ref_result) -> dict[str, Any]:
+    """The row of the reference (``raytrace``): no error by definition, its times."""
+    row = {**common, "technique": "raytrace", "map_px": "", "runs": repeat,
+           "warmup_s": secs[0], "shadow_s": median_s(secs[1:]), "valid_px": int(ref.valid.sum()),
+           "wrong_px": 0, "misclassified_pct": 0.0, "false_lit_pct": 0.0,
+           "false_shadow_pct": 0.0, "lit_mae": 0.0, "edge_mean_m": 0.0, "edge_p95_m": 0.0,
+           "edge_max_m": 0.0, "aliasing_max_m": "", "aliasing_mean_m": "",
+           "traced_share": 1.0, "stages": _fmt_stages(_stage_medians(diags[1:])), "error": ""}
+    bad = finite_check(ref_result)
+    if bad:
+        row["error"] = bad
+    row["frame_s"] = row["gbuffer_s"] + row["resolve_s"] + row["shadow_s"]
+    return row
+
+
+def _fill_technique_row(row: dict[str, Any], secs: list[float], diags: list[dict], result,
+                        err: dict[str, Any]) -> None:
+    """A technique's times, error against the reference (``err``, :func:`.metrics.compare`)
+    and measures into its ``row``."""
+    d = result.diagnostics
+    alias = d.get("aliasing_m") or {}
+    if not (alias.get("max") or alias.get("mean")):
+        alias = {}   # not measured (e.g. hybrid's base, whose maps are only prepared)
+    row.update({
+        "warmup_s": secs[0], "shadow_s": median_s(secs[1:]),
+        "valid_px": err["valid_px"], "wrong_px": err["wrong_px"],
+        **{k: err[k] for k in ("misclassified_pct", "false_lit_pct", "false_shadow_pct",
+                               "lit_mae", "edge_mean_m", "edge_p95_m", "edge_max_m")},
+        "aliasing_max_m": alias.get("max", ""), "aliasing_mean_m": alias.get("mean", ""),
+        "traced_share": d.get("traced_share", ""),
+        "stages": _fmt_stages(_stage_medians(diags[1:])),
+        "error": finite_check(result) or "",
+    })
+    row["frame_s"] = row["gbuffer_s"] + row["resolve_s"] + row["shadow_s"]
 
 
 @dataclass
@@ -304,7 +340,7 @@ def _keep_picture(scene, camera, gbuf, surfaces, ref_lit, sun, view, label, eval
     evaluation.pictures[(view, label)] = to_srgb8(rgb)
 
 
-def make_camera(scene, view: str, size: tuple[int, int] = (1280, 720),
+def view_camera(scene, view: str, size: tuple[int, int] = (1280, 720),
                 pixel_size_m: float | None = None, t_days: float | None = None,
                 cameras_file=None):
     """Camera of a view name: ``overview``, ``map`` or a shipped camera preset
@@ -351,7 +387,7 @@ def run_evaluation(scene: "Scene", views: Sequence[tuple[str, Any]], suns: Seque
     Evaluation
     """
     settings = settings or EvaluateSettings()
-    if scene.kdtree is None and getattr(scene, "tiled", None) is None:
+    if not scene.can_trace:
         raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
     if not views or not suns:
         raise UsageError("evaluate needs at least one view and one sun position")
@@ -371,8 +407,8 @@ def run_evaluation(scene: "Scene", views: Sequence[tuple[str, Any]], suns: Seque
         # The camera pass is the same for every sun: timed once per view.
         camera_runs = timed_camera_pass(scene, camera, t_days, settings.repeat, ground)
         for sun in suns:
-            evaluate_frame(scene, camera, view, sun, t_days, techniques, settings.sizes,
-                           settings, evaluation, shadows, step, ground=ground,
+            evaluate_frame(FrameSetup(scene, camera, view, sun, t_days, ground), techniques,
+                           settings.sizes, settings, evaluation, shadows, step,
                            camera_runs=camera_runs)
         del camera_runs   # its frame's memory, before the next view
     for row in evaluation.rows:
@@ -384,7 +420,7 @@ def run_evaluation(scene: "Scene", views: Sequence[tuple[str, Any]], suns: Seque
 
 # --- inputs of the command ----------------------------------------------------------------
 
-def open_scene(path, settings=None):
+def load_or_build_scene(path, settings=None):
     """A scene with its kd-tree: a ``.cityshade`` file is loaded, a tiled cache gives the view
     of all its tiles, a city model (CityGML, CityJSON: anything else) is built in memory
     (nothing written)."""

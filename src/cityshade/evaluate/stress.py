@@ -34,6 +34,7 @@ import numpy as np
 
 from cityshade.config import StressSettings
 from cityshade.errors import InputError
+from cityshade.shadows import describe
 
 #: Share of pixels (or rays) on which two exact methods must agree: 1 in 10^4 may differ on
 #: exact ties (a ray through a shared edge, decided by different watertight rules).
@@ -54,7 +55,7 @@ def error_bound_pct(technique: str, elevation_deg: float, map_px: int) -> float:
     whose edges cover many pixels) get larger bounds. ``hybrid`` must be exact
     (:data:`AGREEMENT`), so its bound is 0.01 %.
     """
-    if technique.startswith("hybrid"):
+    if describe(technique).family == "hybrid":
         return 100.0 * (1.0 - AGREEMENT)
     if elevation_deg <= 0.0:
         return 0.0                       # no sun: every technique must say shadow
@@ -191,7 +192,7 @@ def embree_agreement(scene, origins, directions, t_days: float) -> float | None:
         from embreex.mesh_construction import TriangleMesh
     except ImportError:
         return None
-    from cityshade.trace import occluded
+    from cityshade.shadows.visibility import occluded
 
     if len(origins) == 0:
         return 1.0
@@ -390,11 +391,11 @@ def case_elevation(scene, s: StressSettings, elevation_deg: float, t_days: float
                                                   else 100.0 * agree)
             if agree is not None and agree < AGREEMENT:
                 chk.fail(f"raytrace agrees with Embree on {100 * agree:.4f} % < 99.99 %")
-    map_worst = {k: v for k, v in worst.items() if not k.startswith("hybrid")}
+    map_worst = {k: v for k, v in worst.items() if describe(k).family != "hybrid"}
     if map_worst:
         k = max(map_worst, key=map_worst.get)
         chk.case.numbers["worst map technique"] = f"{k} {map_worst[k]:.3f} %"
-    hyb = [v for k, v in worst.items() if k.startswith("hybrid")]
+    hyb = [v for k, v in worst.items() if describe(k).family == "hybrid"]
     if hyb:
         chk.case.numbers["hybrid worst %"] = max(hyb)
     return chk.done()
@@ -482,7 +483,7 @@ def case_geometry(s: StressSettings) -> CaseResult:
                     if agree < AGREEMENT:
                         chk.fail(f"raytrace agrees with Embree on {100 * agree:.4f} %")
             for k, v in out["worst"].items():
-                key = "hybrid worst %" if k.startswith("hybrid") else "map worst %"
+                key = "hybrid worst %" if describe(k).family == "hybrid" else "map worst %"
                 chk.case.numbers[key] = max(chk.case.numbers.get(key, 0.0), v)
     return chk.done()
 
@@ -574,7 +575,8 @@ def case_time_slices(scene, s: StressSettings) -> CaseResult:
             dirs = -n[ok]
             firsts = firsts[ok]
             for t, present in ((d, expect_on), (d - 1.0, not expect_on)):
-                _, hit, _, _ = intersect(scene, origins, dirs, t, tmax=np.full(len(origins), 0.1))
+                _, hit, _, _ = intersect(scene.kdtree, origins, dirs, t,
+                                         tmax=np.full(len(origins), 0.1))
                 probes += len(origins)
                 wrong = int(((hit == firsts) != present).sum())
                 if wrong:
@@ -658,10 +660,10 @@ def case_street(scene, s: StressSettings, t_days: float) -> CaseResult:
 def _model_source(path: Path) -> tuple[Any, Path | None]:
     """(scene, CityGML source) of FILE: a .gml is built in memory, a .cityshade is loaded and
     its recorded source used for the shift case (None when that file is gone)."""
-    from cityshade.evaluate.run import open_scene
+    from cityshade.evaluate.run import load_or_build_scene
 
     path = Path(path)
-    scene = open_scene(path)
+    scene = load_or_build_scene(path)
     if path.suffix.lower() in (".gml", ".xml"):
         return scene, path
     src = (scene.header or {}).get("source", {}).get("path")

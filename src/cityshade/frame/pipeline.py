@@ -26,6 +26,7 @@ import numpy as np
 from cityshade.config import ShadowSettings
 from cityshade.frame.diagnostics import FrameDiagnostics, GroundInfo, skipped_work
 from cityshade.errors import ContractError, UsageError
+from cityshade.shadows import TechniqueSpec, describe, get_technique
 
 if TYPE_CHECKING:
     from cityshade.geometry.scene import Scene
@@ -107,24 +108,19 @@ BATCH_BYTES_PER_PX = 290
 MAP_BYTES_PER_TEXEL = 24
 
 
-def frame_bytes(camera: "Camera", technique: str | None = None,
+def frame_bytes(camera: "Camera", technique: str | TechniqueSpec | None = None,
                 settings: ShadowSettings | None = None, *, batch: bool = False
                 ) -> tuple[int, int]:
     """(estimated peak bytes, bytes per pixel) of a frame of ``camera`` with ``technique``
-    (None: the camera pass alone), or of a batch (per receiver pixel) with ``batch``."""
-    from cityshade.shadows import exact_technique_names
-
+    (a name or its :class:`~cityshade.shadows.TechniqueSpec`; None: the camera pass alone),
+    or of a batch (per receiver pixel, whatever the technique) with ``batch``."""
     pixels = int(camera.width_px) * int(camera.height_px)
-    name = technique or "raytrace"
-    core = name.removeprefix("hybrid:").split("+")[0]
-    family = ("hybrid" if name.startswith("hybrid:")
-              else "exact" if core in exact_technique_names() else "map")
-    per_px = BATCH_BYTES_PER_PX if batch else FRAME_BYTES_PER_PX[family]
-    texels = 0
-    if family != "exact" and not batch:
-        s = settings or ShadowSettings()
-        maps = s.cascades.count if core.startswith("csm") else 1
-        texels = maps * int(s.map.px) ** 2
+    if batch:
+        return pixels * BATCH_BYTES_PER_PX, BATCH_BYTES_PER_PX
+    spec = describe(technique or "raytrace")
+    s = settings or ShadowSettings()
+    per_px = FRAME_BYTES_PER_PX[spec.family]
+    texels = spec.maps_per_frame(s) * int(s.map.px) ** 2
     return pixels * per_px + texels * MAP_BYTES_PER_TEXEL, per_px
 def available_memory_bytes() -> int | None:
     """The memory the system can give without swapping (``MemAvailable``), None if unknown."""
@@ -142,8 +138,8 @@ def available_memory_bytes() -> int | None:
 
 
 def check_frame_memory(camera: "Camera", available_bytes: int | None = None, *,
-                       technique: str | None = None, settings: ShadowSettings | None = None,
-                       batch: bool = False) -> int:
+                       technique: str | TechniqueSpec | None = None,
+                       settings: ShadowSettings | None = None, batch: bool = False) -> int:
     """The estimated peak bytes of a frame (or a batch) of ``camera`` (:func:`frame_bytes`);
     refuse one that does not fit in the available memory, before anything is allocated.
 
@@ -161,7 +157,7 @@ def check_frame_memory(camera: "Camera", available_bytes: int | None = None, *,
             hint += " or --tile-px N (the map in tiles of N × N pixels)"
         what = "sun-hour map" if batch else "picture"
         per = f"{per_px} bytes per {'receiver pixel' if batch else 'pixel'}"
-        per += f" for {technique}" if technique and not batch else ""
+        per += f" for {describe(technique).name}" if technique and not batch else ""
         raise UsageError(f"the {what} of {camera.width_px} × {camera.height_px} pixels needs "
                          f"about {need / 1e9:.1f} GB ({per}) but {have / 1e9:.1f} GB are "
                          f"available: use {hint}")
@@ -197,7 +193,7 @@ def camera_pass(scene: "Scene", camera: "Camera", t_days: float, *, ground: str 
     from cityshade.raster.rasterize import rasterize
     from cityshade.shadows import oriented_normals
 
-    if getattr(scene, "kdtree", None) is None and getattr(scene, "tiled", None) is None:
+    if not scene.can_trace:
         raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
     if not hasattr(camera, "kind"):
         raise ContractError(f"camera_pass needs a Camera, not {type(camera).__name__}")
@@ -249,16 +245,17 @@ class ShadowPass:
                                  cp.surfaces, self.sun))
 
 
-def shadow_pass(cp: CameraPass, sun: "SunPosition", technique: "str | Technique",
+def shadow_pass(cp: CameraPass, sun: "SunPosition",
+                technique: "str | TechniqueSpec | Technique",
                 settings: ShadowSettings | None = None, measure: bool = False) -> ShadowPass:
-    """Run one shadow technique (a registry name or an instance) for one sun on ``cp``
-    (``measure``: with the map techniques' per-frame measures, :class:`ShadowContext`)."""
-    from cityshade.shadows import get_technique
-
+    """Run one shadow technique (a registry name, its :class:`~cityshade.shadows.TechniqueSpec`
+    or an instance) for one sun on ``cp`` (``measure``: with the map techniques' per-frame
+    measures, :class:`ShadowContext`)."""
     if settings is not None and not isinstance(settings, ShadowSettings):
         raise ContractError(f"shadow settings must be a ShadowSettings, not "
                             f"{type(settings).__name__}")
-    tech = get_technique(technique) if isinstance(technique, str) else technique
+    tech = (get_technique(technique) if isinstance(technique, (str, TechniqueSpec))
+            else technique)
     ctx = cp.context(sun, settings, measure)
     t = time.perf_counter()
     result = tech.run(ctx)

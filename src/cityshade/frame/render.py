@@ -19,6 +19,7 @@ from cityshade import __version__
 from cityshade.config import ShadowSettings
 from cityshade.frame.diagnostics import FrameDiagnostics
 from cityshade.errors import UsageError
+from cityshade.shadows import TechniqueSpec, describe, get_technique
 
 if TYPE_CHECKING:
     from cityshade.geometry.scene import Scene
@@ -92,7 +93,7 @@ STRIP_KEPT_BYTES_PER_PX = sum(n * np.dtype(dtype).itemsize for _, dtype, n in _S
 STRIP_WRITE_BYTES_PER_PX = 4
 
 
-def strip_rows_for(camera: "Camera", technique: str = "raytrace",
+def strip_rows_for(camera: "Camera", technique: str | TechniqueSpec = "raytrace",
                    settings: ShadowSettings | None = None, strip_rows: int | None = None
                    ) -> int | None:
     """Rows per strip of a frame, or None for the whole frame at once.
@@ -109,30 +110,30 @@ def strip_rows_for(camera: "Camera", technique: str = "raytrace",
         ``strip_rows`` below 1, for a perspective view or a technique that is not exact.
     """
     from cityshade.frame.pipeline import frame_bytes
-    from cityshade.shadows import exact_technique_names
 
-    exact = technique in exact_technique_names()
+    spec = describe(technique)
     height, width = camera.shape
     if strip_rows is not None:
         if int(strip_rows) < 1:
             raise UsageError(f"--strip-rows must be at least 1, not {strip_rows}")
         if camera.kind != "map":
             raise UsageError("--strip-rows needs the map view (--camera map)")
-        if not exact:
+        if not spec.exact:
             raise UsageError(f"--strip-rows needs an exact technique (raytrace or izb), not "
-                             f"{technique}: a shadow map is fitted to the whole view")
+                             f"{spec.name}: a shadow map is fitted to the whole view")
         return None if int(strip_rows) >= height else int(strip_rows)
-    if camera.kind != "map" or not exact:
+    if camera.kind != "map" or not spec.exact:
         return None
-    need, per_px = frame_bytes(camera, technique, settings)
+    need, per_px = frame_bytes(camera, spec, settings)
     if need <= STRIP_FRAME_BYTES:
         return None
     return max(1, min(height, STRIP_BYTES // (width * per_px)))
 
 
 def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosition",
-                 technique: str = "raytrace", settings: ShadowSettings | None = None,
-                 sky: bool = True, ground: str | None = None, measure: bool = False,
+                 technique: str | TechniqueSpec = "raytrace",
+                 settings: ShadowSettings | None = None, sky: bool = True,
+                 ground: str | None = None, measure: bool = False,
                  strip_rows: int | None = None) -> Frame:
     """Render one frame: the pipeline's camera pass and shadow pass, then shading.
 
@@ -144,8 +145,8 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
     t_days : float
         City time, days since 1970-01-01 UTC.
     sun : cityshade.geo.sun.SunPosition
-    technique : str
-        A name of the shadow registry (:func:`cityshade.shadows.get_technique`).
+    technique : str or TechniqueSpec
+        A name of the shadow registry, or its parsed :func:`cityshade.shadows.describe`.
     settings : ShadowSettings, optional
         The techniques' tunables (``[shadows]`` of the settings file).
     ground : str, optional
@@ -165,16 +166,16 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
     """
     from cityshade.frame.pipeline import camera_pass, check_frame_memory, shadow_pass
     from cityshade.frame.shading import shade
-    from cityshade.shadows import get_technique
 
-    if scene.kdtree is None and getattr(scene, "tiled", None) is None:
+    if not scene.can_trace:
         raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
-    tech = get_technique(technique)
-    rows = strip_rows_for(camera, technique, settings, strip_rows)
+    spec = describe(technique)
+    tech = get_technique(spec)
+    rows = strip_rows_for(camera, spec, settings, strip_rows)
     if rows is None:
-        check_frame_memory(camera, technique=technique, settings=settings)  # before allocating
+        check_frame_memory(camera, technique=spec, settings=settings)  # before allocating
     else:
-        check_strip_memory(camera, rows, technique, settings)
+        check_strip_memory(camera, rows, spec, settings)
     warnings: list[str] = []
     if not sun.above_horizon:
         warnings.append(f"the sun is at or below the horizon (elevation {sun.elevation_deg:g}°): "
@@ -187,7 +188,7 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
         warnings.append(f"the date is outside the model's time range ({_range_text(rng)}): "
                         f"nothing stands then")
     if rows is not None:
-        return _render_strips(scene, camera, t_days, sun, technique, tech, settings, sky,
+        return _render_strips(scene, camera, t_days, sun, spec.name, tech, settings, sky,
                               ground, measure, rows, warnings)
     cp = camera_pass(scene, camera, t_days, ground=ground)
     timings: dict[str, float] = dict(cp.timings_s)
@@ -200,12 +201,12 @@ def render_frame(scene: "Scene", camera: "Camera", t_days: float, sun: "SunPosit
     timings["shade_s"] = time.perf_counter() - t
     warnings += list(shade_report.get("texture_warnings", []))
     return Frame(camera=camera, gbuffer=cp.gbuffer, surfaces=cp.surfaces, lit=sp.lit, rgb=rgb,
-                 sun=sun, t_days=t_days, technique=technique, timings_s=timings,
+                 sun=sun, t_days=t_days, technique=spec.name, timings_s=timings,
                  diagnostics=sp.diagnostics(cp), warnings=warnings,
                  extra_channels=dict(sp.result.extra_channels))
 
 
-def check_strip_memory(camera: "Camera", rows: int, technique: str,
+def check_strip_memory(camera: "Camera", rows: int, technique: str | TechniqueSpec,
                        settings: ShadowSettings | None = None) -> int:
     """The estimated peak bytes of a strip-wise frame (one strip's work plus the writers' whole
     mask: the whole-map arrays go to a temporary file); refuse one that does not fit in the
@@ -365,7 +366,7 @@ def shadow_mask(frame: Frame) -> np.ndarray:
 
 
 def frame_metadata(frame: Frame, scene, date_text: str) -> dict[str, Any]:
-    """Provenance recorded in every output (DESIGN §13.10)."""
+    """Provenance recorded in every output (docs/DESIGN.md §15)."""
     from cityshade.geo.temporal import days_to_iso
 
     header = scene.header or {}
@@ -462,11 +463,9 @@ def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef) ->
             "N.z": lazy(s.normal[..., 2], 0.0, s.normal, s.valid),   # the last reader
             "primid": frame.gbuffer.prim_id, "objid": s.obj_id,
         }
-        if getattr(scene, "tiled", None) is not None:  # a tiled cache's view: the global ids
-            from cityshade.store.tiled import to_global
-
-            channels["primid"] = to_global(scene.global_tri, frame.gbuffer.prim_id)
-            channels["objid"] = to_global(scene.global_obj, s.obj_id)
+        # A tiled cache's view writes the whole city's ids.
+        channels["primid"] = scene.global_triangle_ids(frame.gbuffer.prim_id)
+        channels["objid"] = scene.global_object_ids(s.obj_id)
         for name, values in frame.extra_channels.items():
             channels[name] = np.asarray(values, dtype=np.float32)
         imageio.write_exr(exr, channels, meta)

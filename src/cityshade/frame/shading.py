@@ -293,7 +293,7 @@ def albedo_of_surfaces(scene, surfaces, *, settings: ShadingSettings | None = No
         np.zeros(1, np.int32) if polygon is None else np.asarray(polygon), mode, n_tex,
         tex_ids, group, used)
     if n_textured == 0:
-        return albedo  # no texture work when no visible pixel needs it (DESIGN §2)
+        return albedo  # no texture work when no visible pixel needs it (docs/DESIGN.md §10)
     tex_set = _texture_set(textures, used)
     if report is not None:
         report["texture_warnings"] = list(tex_set.warnings)

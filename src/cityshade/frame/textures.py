@@ -274,7 +274,8 @@ def load_mip_pyramid(path: str | os.PathLike) -> MipPyramid:
     cityshade.imageio.ImageIOError
         The file is missing, unreadable, not an image, or has an unsupported pixel type.
     """
-    from cityshade.imageio import ImageIOError, read_image
+    from cityshade.errors import ImageIOError
+    from cityshade.imageio import read_image
 
     path = Path(path).absolute()
     try:
@@ -361,7 +362,7 @@ def load_texture_set(textures: list[dict], used: np.ndarray | None = None) -> Te
         A texture that cannot be read is never an error: it gets no levels, a line in
         ``warnings`` and a count in ``counters["failed"]``.
     """
-    from cityshade.imageio import ImageIOError
+    from cityshade.errors import ImageIOError
 
     n = len(textures)
     used = np.ones(n, bool) if used is None else np.asarray(used, bool)

@@ -1,8 +1,8 @@
 """Coordinate reference systems of CityGML files: parsing ``srsName``, choosing a file's CRS,
 projecting geographic coordinates and the meridian convergence for sun azimuths.
 
-Conventions (DESIGN §3)
------------------------
+Conventions (docs/DESIGN.md §1)
+-------------------------------
 * Projected coordinates are always read **easting first** (x east, y north), whatever axis
   order the EPSG registry declares: Gauss-Krüger codes such as EPSG:31468 are northing-first in
   the registry, but every CityGML file writes easting first. All pyproj calls therefore use
@@ -111,7 +111,7 @@ class CrsInfo:
         return cls(**{key: d[key] for key in expected})
 
 
-#: What a file without any srsName gets (DESIGN §3: renders with an explicit sun only).
+#: What a file without any srsName gets (docs/DESIGN.md §1: renders with an explicit sun only).
 NO_CRS = CrsInfo(srs_name=None, horizontal_epsg=None, vertical_epsg=None, is_geographic=False,
                  local=True, name="none")
 
@@ -289,7 +289,7 @@ def _parse_cached(srs_name: str) -> tuple[CrsInfo, tuple[str, ...]]:
     if h_crs.is_projected:
         units = {axis.unit_name for axis in h_crs.axis_info}
         if units != {"metre"}:
-            # The scene is in metres (DESIGN §3); silently scaling feet would be worse.
+            # The scene is in metres (docs/DESIGN.md §1); silently scaling feet would be worse.
             raise CRSError(f"CRS {srs_name!r} ({h_crs.name}) has axis unit(s) "
                            f"{', '.join(sorted(units))}; cityshade supports metre-based "
                            f"projected CRSs and geographic CRSs only")
@@ -379,7 +379,7 @@ def resolve_model_crs_detailed(srs_names: Iterable[str],
         by_crs.setdefault(info.horizontal_epsg, Counter())[name] += count
     if not by_crs:
         if unknown:
-            # Build anyway (DESIGN §3): what needs no geodesy works; the rest names --crs.
+            # Build anyway (docs/DESIGN.md §1): what needs no geodesy works; the rest names --crs.
             name = unknown.most_common(1)[0][0]
             why = str(unknown_errors[name]).removesuffix(f"; {_CRS_HINT}")
             warnings = [f"the CRS of the file is unknown: {why}; building in its coordinates "
@@ -572,7 +572,7 @@ class GeographicProjector:
     The zone (EPSG:326zz north, 327zz south) is the one of the centre of the sample's bounding
     box. Heights are kept as written.
 
-    The axis order is decided, in this order (DESIGN §3):
+    The axis order is decided, in this order (docs/DESIGN.md §1):
 
     1. ``axis_order`` (the user's ``--axis-order lonlat|latlon``), when given;
     2. the value ranges, where they decide: |value| > 90 can only be a longitude; a reading

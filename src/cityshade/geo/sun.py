@@ -1,7 +1,7 @@
 """The sun as a direction in render space.
 
-Convention (DESIGN §3): azimuth in degrees clockwise from TRUE north, elevation in degrees above
-the horizon. Render space has grid north (+y of the projected CRS), which differs from true
+Convention (docs/DESIGN.md §1): azimuth in degrees clockwise from TRUE north, elevation in
+degrees above the horizon. Render space has grid north (+y of the projected CRS), which differs from true
 north by the meridian convergence γ at the model's origin: ``azimuth_grid = azimuth_true − γ``
 (γ > 0 where grid north lies east of true north; :func:`cityshade.geo.crs.grid_convergence_deg`).
 The sun is a direction, never a far-away point: float32 far points broke a peer (HORAYZON #12).
@@ -130,7 +130,7 @@ def sun_from_angles(azimuth_true_deg: float, elevation_deg: float, crs=None,
 
 #: Proleptic Gregorian ordinal of 1970-01-01 (Unix time 0).
 _EPOCH_ORDINAL = 719_163
-#: Years the product promises (DESIGN §3) and pvlib's ΔT polynomials cover well.
+#: Years the product promises (docs/DESIGN.md §1) and pvlib's ΔT polynomials cover well.
 SPA_YEAR_RANGE = (1000, 3000)
 
 

@@ -1,7 +1,7 @@
 """Time of the city: XSD date/time values, validity intervals of city objects, ``--date``.
 
-Conventions (DESIGN §3)
------------------------
+Conventions (docs/DESIGN.md §1)
+-------------------------------
 * A point in time is a float64 number of **days since 1970-01-01T00:00:00 UTC** in the
   proleptic Gregorian calendar (negative before 1970). Day counts come from
   :meth:`datetime.date.toordinal`, never from POSIX timestamps, so years 1..9999 work (the
@@ -204,7 +204,7 @@ _FAMILIES = {
                      ("dateOfDemolition", "yearOfDemolition")),
     "creation": (("creationDate",), ("terminationDate",)),
 }
-#: Order in which ``source='auto'`` tries the families (DESIGN §3). ``creationDate`` and
+#: Order in which ``source='auto'`` tries the families (docs/DESIGN.md §1). ``creationDate`` and
 #: ``terminationDate`` are database times (CityGML 2.0 §6.1, 3.0 Core: when the feature was
 #: entered into or removed from the database), not the life of a building: 3DCityDB stamps
 #: the import day on every object, so only ``source='creation'`` uses them.

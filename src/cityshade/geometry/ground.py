@@ -1,4 +1,4 @@
-"""An optional flat ground plane for models without terrain (DESIGN §14).
+"""An optional flat ground plane for models without terrain (docs/DESIGN.md §10).
 
 Most real files have no terrain: a map of the TUM campus is mostly empty pixels, and shadows
 fall on nothing. ``--ground`` adds a horizontal plane that receives shadows (it casts none and
@@ -28,9 +28,8 @@ GROUND_MARGIN_REL = 0.5
 
 def ground_height_m(scene, mode: str) -> float:
     """Render-space z of the ground plane for ``mode`` ("min", "auto" or a CRS height)."""
-    tiled = getattr(scene, "tiled", None)
-    if tiled is not None and mode in ("min", "auto"):  # a view of some tiles: the whole city's
-        return float(tiled.index["ground_m"][mode])
+    if scene.is_tiled and mode in ("min", "auto"):  # a view of some tiles: the whole city's
+        return float(scene.tiling.source.ground_m[mode])
     # float32 heights: their minima cast to float64 are the same numbers, without the float64
     # copies of every vertex and triangle corner (1.0 GB for the 10^7-triangle city).
     z = np.asarray(scene.vertices)[:, 2]
@@ -52,14 +51,7 @@ def ground_height_m(scene, mode: str) -> float:
 def ground_box_m(scene) -> tuple[np.ndarray, np.ndarray]:
     """(lo (3,), hi (3,)) float64: the box the ground plane is limited to (the whole city's for
     a view of some tiles)."""
-    tiled = getattr(scene, "tiled", None)
-    if tiled is not None:
-        lo, hi = (np.asarray(b, np.float64) for b in tiled.index["box_m"])
-        return lo, hi
-    # float32 extremes cast to float64: the same box (the cast is exact and monotone)
-    # without a float64 copy of every vertex.
-    vertices = np.asarray(scene.vertices)
-    return vertices.min(axis=0).astype(np.float64), vertices.max(axis=0).astype(np.float64)
+    return scene.city_box_m()
 
 
 def add_ground_plane(scene, camera, surfaces, z_m: float, box_m=None):

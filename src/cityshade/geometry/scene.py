@@ -1,7 +1,7 @@
 """The triangulated scene: flat arrays in render space, plus object/polygon/material tables.
 
-Render space (DESIGN §3): x east, y north, z up, metres, float32, relative to a float64 origin
-(the rounded centre of the model's bounding box). Everything before the final cast — parsing,
+Render space (docs/DESIGN.md §1): x east, y north, z up, metres, float32, relative to a float64
+origin (the rounded centre of the model's bounding box). Everything before the final cast — parsing,
 projection, triangulation, areas and normals — is float64.
 
 :func:`build_scene` turns a :class:`~cityshade.citygml.reader.RawModel` into a :class:`Scene`:
@@ -16,7 +16,7 @@ from collections import Counter
 from dataclasses import dataclass, field
 from itertools import repeat
 from pathlib import Path
-from typing import Any
+from typing import Any, Callable, NamedTuple, Protocol
 
 import numpy as np
 from numba import njit
@@ -29,7 +29,7 @@ from cityshade.citygml.reader import RawModel
 from cityshade.geo.temporal import (choose_interval, days_to_iso, has_creation_dates,
                                         parse_time_attribute)
 from cityshade.config import BuildSettings
-from cityshade.errors import EmptyModelError, UsageError
+from cityshade.errors import ContractError, EmptyModelError, UsageError
 from cityshade.geometry.bounds import used_vertex_box
 
 #: Time-source codes stored per object (uint8); new sources are appended (codes are stored).
@@ -118,6 +118,9 @@ class Scene:
     kdtree: Any = None
     #: Header of the file the scene was loaded from (empty for a freshly built scene).
     header: dict[str, Any] = field(default_factory=dict)
+    #: Set on a tiled cache's view (:meth:`cityshade.store.tiled.TiledCache.view`): the tiles it
+    #: gathers and where its ids sit in the whole city. None for a scene of its own.
+    tiling: "TiledParts | None" = None
 
     #: Array attributes stored in the cache (name → attribute).
     ARRAY_FIELDS = ("origin_m", "vertices", "uv", "triangles", "tri_object", "tri_polygon",
@@ -140,12 +143,108 @@ class Scene:
         """Render-space points (N, 3) → model CRS coordinates, float64."""
         return np.asarray(xyz, dtype=np.float64) + self.origin_m
 
+    # --- the scene as a view: one scene of its own, or some tiles of a tiled cache -----------
+
+    @property
+    def is_tiled(self) -> bool:
+        """Whether this is a view of some tiles of a tiled cache (:attr:`tiling`)."""
+        return self.tiling is not None
+
+    @property
+    def can_trace(self) -> bool:
+        """Whether shadow rays can be traced: a kd-tree of its own, or the tiles' trees."""
+        return self.kdtree is not None or self.tiling is not None
+
+    def global_triangle_ids(self, ids: np.ndarray) -> np.ndarray:
+        """Triangle ids of this scene (-1: none) as the whole city's: themselves for a scene of
+        its own, the one-cache ids for a tiled view (same dtype and shape)."""
+        return ids if self.tiling is None else _to_global(self.tiling.global_tri, ids)
+
+    def global_object_ids(self, ids: np.ndarray) -> np.ndarray:
+        """Object ids of this scene (-1: none) as the whole city's (see
+        :meth:`global_triangle_ids`)."""
+        return ids if self.tiling is None else _to_global(self.tiling.global_obj, ids)
+
+    def city_box_m(self) -> tuple[np.ndarray, np.ndarray]:
+        """(lo (3,), hi (3,)) float64 render-space box of the whole city: the tiled cache's for
+        a view of some of its tiles, else this scene's vertices' (float32 extremes cast to
+        float64: exact, without a float64 copy of every vertex)."""
+        if self.tiling is not None:
+            lo, hi = (np.asarray(b, np.float64) for b in self.tiling.source.box_m)
+            return lo, hi
+        vertices = np.asarray(self.vertices)
+        return vertices.min(axis=0).astype(np.float64), vertices.max(axis=0).astype(np.float64)
+
+    def any_hit(self, origins: np.ndarray, directions: np.ndarray,
+                hit: Callable[[Any, Any], np.ndarray]) -> np.ndarray:
+        """(N,) bool: which rays are blocked, by ``hit(kdtree, rays)``, an exact any-hit test of
+        the rays ``rays`` (an index array, or ``slice(None)`` for all) against one kd-tree.
+
+        A scene of its own asks its own tree once. A tiled view asks each tile that the rays
+        can reach (:meth:`TileSource.tiles_reaching`) for the rays not yet blocked, and ORs
+        the answers: each tile's answer is exact, so the OR is the one tree's answer."""
+        if self.tiling is None:
+            if self.kdtree is None:
+                raise ContractError("the scene has no kd-tree: nothing to trace rays through")
+            return hit(self.kdtree, slice(None))
+        origins = np.asarray(origins, np.float64).reshape(-1, 3)
+        dirs = np.asarray(directions, np.float64).reshape(-1, 3)
+        blocked = np.zeros(len(origins), bool)
+        if len(dirs) > 1 and (dirs == dirs[0]).all():
+            dirs = dirs[:1]
+        source = self.tiling.source
+        for i in source.tiles_reaching(origins, dirs):
+            todo = np.flatnonzero(~blocked)
+            if len(todo) == 0:
+                break
+            blocked[todo] |= hit(source.tile(i).kdtree, todo)
+        return blocked
+
+
+class TileSource(Protocol):
+    """What a tiled view needs of its tiled cache (:class:`cityshade.store.tiled.TiledCache`)."""
+
+    #: Render-space box of the whole city, [[x, y, z], [x, y, z]] metres.
+    box_m: Any
+    #: The whole city's ground heights by mode (``{"min": z, "auto": z}``, render space).
+    ground_m: dict[str, float]
+    #: One entry per tile of the cache.
+    tiles: list
+
+    def tile(self, i: int) -> "Scene":
+        """Tile ``i`` as a scene with its own kd-tree (memory-mapped on first use)."""
+
+    def tiles_reaching(self, origins: np.ndarray, directions: np.ndarray) -> list[int]:
+        """The tiles a ray from ``origins`` along ``directions`` ((1, 3) or (N, 3)) can hit."""
+
+    @property
+    def tiles_mapped(self) -> list[int]:
+        """The tiles memory-mapped so far."""
+
+
+@dataclass(frozen=True, eq=False)
+class TiledParts:
+    """What makes a :class:`Scene` a view of some tiles of a tiled cache."""
+
+    source: TileSource
+    #: The tiles gathered in the view, ascending.
+    tile_ids: list[int]
+    #: (T,) / (O,) int: the whole city's id of each triangle / object of the view.
+    global_tri: np.ndarray
+    global_obj: np.ndarray
+
+
+def _to_global(global_index: np.ndarray, ids: np.ndarray) -> np.ndarray:
+    """A view's ids (-1: none) as the one cache's ids, in ``ids``' dtype and shape."""
+    ids = np.asarray(ids)
+    return np.where(ids >= 0, np.asarray(global_index)[np.maximum(ids, 0)], -1).astype(ids.dtype)
+
 
 # ---------------------------------------------------------------------------------------------
 def _object_intervals(raw: RawModel, source: str, counters: Counter,
                       time_attribute: str | None = None):
     """Validity intervals per object, the source code of each, and the number of objects whose
-    creation/termination dates were left unused (database times, DESIGN §3)."""
+    creation/termination dates were left unused (database times, docs/DESIGN.md §1)."""
     n = len(raw.obj_ids)
     begin = np.full(n, -np.inf)
     end = np.full(n, np.inf)
@@ -338,6 +437,47 @@ def render_origin(lo_m: np.ndarray, hi_m: np.ndarray) -> np.ndarray:
     return np.round(0.5 * (np.asarray(lo_m) + np.asarray(hi_m)))
 
 
+@dataclass
+class _BuildLog:
+    """What a build finds on the way, for the scene's report: filled stage by stage."""
+
+    counters: Counter
+    warnings: list[str]
+    #: reason → gml:ids of skipped polygons.
+    skipped_ids: dict[str, list[str]] = field(default_factory=dict)
+    #: reason → polygons skipped for it.
+    skipped: Counter = field(default_factory=Counter)
+    #: repair name → polygons repaired so.
+    repairs: Counter = field(default_factory=Counter)
+    #: Inner shells of solids (cavities), read but not drawn.
+    cavities: int = 0
+    source_crs: CrsInfo | None = None
+    axis_order: str | None = None
+    theme: str | None = None
+
+
+class _Validity(NamedTuple):
+    """Validity intervals per object (days since 1970-01-01 UTC, open ends ±inf)."""
+
+    begin_days: np.ndarray
+    end_days: np.ndarray
+    source: np.ndarray          # TIME_SOURCE_NAMES code per object
+    creation_unused: int        # objects whose only dates are creation/termination dates
+
+
+@dataclass
+class _Selection:
+    """The polygons drawn once each at the chosen LoD of every object."""
+
+    polys: np.ndarray           # (P,) original polygon index, ascending
+    p_obj: np.ndarray           # (P,) object of each
+    p_flip: np.ndarray          # (P,) OrientableSurface "-" of each
+    poly_cls: np.ndarray        # (n_polygons,) thematic class, upgraded from references
+    obj_max_lod: np.ndarray     # (n_obj,) highest LoD code of each object (-1: none)
+    chosen: np.ndarray          # (n_obj,) LoD code drawn
+    lod_table: dict[int, int]   # LoD code → objects having it
+
+
 def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
                 target_crs: CrsInfo | None = None, render_space: bool = True,
                 consume_raw: bool = False) -> Scene:
@@ -365,20 +505,88 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
     CRSError
         The CRS cannot be resolved (unknown srsName, bad ``settings.crs``).
     """
-    from cityshade.geometry.triangulate import REPAIR_NAMES, SKIP_REASONS, triangulate_polygons
-
     settings = settings or BuildSettings()
-    counters: Counter = Counter(raw.counters)
-    warnings = list(raw.warnings)
-    n_poly_all = raw.n_polygons
+    log = _BuildLog(Counter(raw.counters), list(raw.warnings))
+    times = _validity_intervals(raw, settings, log)                       # 1.
+    sel = _select_polygons(raw, settings, log.counters)                   # 2.–4.
+    rings, coords, ring_offsets, poly_ring_offsets = _gather_rings(       # 5.
+        raw, sel, log, consume_raw)
+    coords, crs = _to_model_crs(raw, settings, target_crs, coords, ring_offsets, log)  # 6.
+    triangles, tri_poly_local, tri_area_m2, tri_repairs, normals, ok = _triangulate(  # 7.
+        raw, settings, coords, (ring_offsets, poly_ring_offsets), sel, log)
 
-    # 1. Validity intervals.
+    # 8. Keep drawn polygons only and renumber; compact the vertices.
+    drawn = np.nonzero(ok)[0]
+    # int32 renumbering tables: the per-triangle results come out in the stored dtype.
+    remap_poly = np.full(len(sel.polys), -1, np.int32)
+    remap_poly[drawn] = np.arange(len(drawn))
+    tri_polygon = remap_poly[tri_poly_local]
+    del tri_poly_local
+    box = np.empty((2, 3))  # of the points drawn (one pass; numpy's min/max took 1.6 s)
+    used_vertex_box(triangles, coords, box)
+    if not crs.is_geographic:
+        # A wrong CRS (or a 10^7 m offset) puts the model somewhere else on Earth: say so.
+        area_warning = area_of_use_warning(crs, box[0], box[1])
+        if area_warning:
+            log.warnings.append(area_warning)
+    used = np.zeros(len(coords), bool)
+    used[triangles.ravel()] = True
+    used_points = np.nonzero(used)[0]
+    new_index = np.cumsum(used, dtype=np.int32) - 1
+    del used
+    triangles = new_index[triangles]
+    del new_index
+    if render_space:
+        origin = render_origin(box[0], box[1])
+        vertices = _render_vertices(coords, used_points, origin)
+    else:
+        origin, vertices = np.zeros(3), coords[used_points]
+
+    # 9. Appearance of the chosen theme.
+    look = _theme_appearance(raw, settings, drawn, sel.polys, rings,
+                             (ring_offsets, poly_ring_offsets), coords, used_points, log)
+    del coords, used_points
+
+    # 10. Tables.
+    orig_poly = sel.polys[drawn]
+    p_obj_drawn = sel.p_obj[drawn].astype(np.int32)
+    tri_object = p_obj_drawn[tri_polygon]
+    poly_class = sel.poly_cls[orig_poly].astype(np.uint8)
+    obj_lod_code = np.where(sel.obj_max_lod >= 0, sel.chosen, -1)
+    # The cache keeps the whole LoD (0–4) in both formats; the report spells the codes.
+    obj_lod = np.where(obj_lod_code >= 0, obj_lod_code // raw.lod_scale, -1).astype(np.int8)
+    report = _build_report(raw, settings, log, times, sel.lod_table, obj_lod_code, len(drawn))
+    poly_ids = raw.poly_ids
+    openings = _opening_groups(getattr(raw, "openings", ()), orig_poly)
+    if openings:
+        report["openings"] = openings
+    obj_begin, obj_end = times.begin_days, times.end_days
+    return Scene(
+        origin_m=origin.astype(np.float64), crs=crs, vertices=vertices, uv=look.uv,
+        triangles=triangles, tri_object=tri_object, tri_polygon=tri_polygon,
+        tri_class=poly_class[tri_polygon],
+        tri_material=look.poly_material[tri_polygon],
+        tri_texture=look.poly_texture[tri_polygon],
+        tri_t_begin_days=obj_begin[tri_object], tri_t_end_days=obj_end[tri_object],
+        obj_ids=[i or "" for i in raw.obj_ids], obj_types=list(raw.obj_types),
+        obj_parent=np.asarray(raw.obj_parent, np.int32), obj_t_begin_days=obj_begin,
+        obj_t_end_days=obj_end, obj_time_source=times.source, obj_lod=obj_lod,
+        poly_ids=[poly_ids[p] or "" for p in orig_poly.tolist()],
+        poly_object=p_obj_drawn, poly_class=poly_class,
+        poly_area_m2=np.asarray(tri_area_m2, np.float64)[drawn],
+        poly_normal=normals[drawn].astype(np.float32),
+        poly_repairs=np.asarray(tri_repairs, np.uint16)[drawn],
+        materials=look.materials, textures=look.textures, report=report)
+
+
+def _validity_intervals(raw: RawModel, settings: BuildSettings, log: _BuildLog) -> _Validity:
+    """Stage 1: every object's validity interval, with the warnings on unused dates."""
     obj_begin, obj_end, obj_source, creation_unused = _object_intervals(
-        raw, settings.time_source, counters, settings.time_attribute)
+        raw, settings.time_source, log.counters, settings.time_attribute)
     dated = np.isin(obj_source, [TIME_SOURCE_NAMES.index(n)
                                  for n in ("valid", "construction", "attribute")])
     if creation_unused and not dated.any():
-        warnings.append(
+        log.warnings.append(
             f"the only dates in the file are creationDate/terminationDate ({creation_unused} "
             f"objects): they are database times (when a feature entered or left the database), "
             f"not the life of the buildings, so every object stands at every date; "
@@ -386,9 +594,21 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
             f"from a generic attribute")
     if settings.time_attribute and not (obj_source == TIME_SOURCE_NAMES.index("attribute")).any():
         begin_name = parse_time_attribute(settings.time_attribute)[0]
-        warnings.append(f"no object has the generic attribute {begin_name!r} named by "
-                        f"--time-attribute (or no value of it is a year or date)")
+        log.warnings.append(f"no object has the generic attribute {begin_name!r} named by "
+                            f"--time-attribute (or no value of it is a year or date)")
+    return _Validity(obj_begin, obj_end, obj_source, creation_unused)
 
+
+def _select_polygons(raw: RawModel, settings: BuildSettings, counters: Counter) -> _Selection:
+    """Stages 2–4: every polygon where it is defined and where it is referenced, the LoD of
+    each object, each polygon once.
+
+    Raises
+    ------
+    EmptyModelError
+        No polygon is left at the chosen LoDs.
+    """
+    n_poly_all = raw.n_polygons
     # 2. Items: every polygon where it is defined, and where it is referenced.
     ref_items = _resolve_references(raw, counters)
     own_obj = np.asarray(raw.poly_obj, np.int64)
@@ -404,7 +624,38 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
     upgrade = (poly_cls[ref_items[1]] == 0) & (ref_cls != 0)
     poly_cls[ref_items[1][upgrade]] = ref_cls[upgrade]
 
-    # 3. LoD per object: the highest it has within the requested range, else the highest.
+    # 3. LoD per object.
+    obj_max_lod, chosen, lod_table = _choose_lods(raw, settings, item_obj, item_lod, counters)
+    selected = (item_lod == chosen[item_obj]) | (item_lod < 0)
+    sel_idx = np.nonzero(selected)[0]
+    # 4. Each polygon once: own definitions come first in the item order, so they win
+    # (assigning in reverse order leaves the first selected item of each polygon).
+    first_item = np.full(n_poly_all, -1, np.int64)
+    first_item[item_poly[sel_idx[::-1]]] = sel_idx[::-1]
+    keep = first_item[first_item >= 0]  # ordered by polygon index
+    polys = item_poly[keep]
+    counters["polygons_not_selected_lod"] = int(n_poly_all - len(polys))
+    if len(polys) == 0:
+        lod_msg = f" at LoD {settings.lod}" if settings.lod is not None else ""
+        raise EmptyModelError(f"the model has no surface geometry{lod_msg} "
+                              f"({len(raw.obj_ids)} objects, {n_poly_all} polygons read)",
+                              path=str(raw.path))
+    return _Selection(polys, item_obj[keep], item_flip[keep], poly_cls, obj_max_lod, chosen,
+                      lod_table)
+
+
+def _choose_lods(raw: RawModel, settings: BuildSettings, item_obj: np.ndarray,
+                 item_lod: np.ndarray, counters: Counter):
+    """Stage 3: the LoD code of every object, the highest it has within the requested range,
+    else the highest.
+
+    Returns
+    -------
+    obj_max_lod, chosen : (n_obj,) int64
+        Highest LoD code of each object (-1: none) and the one drawn.
+    lod_table : dict
+        LoD code → objects having it (an object with LoD 1 and 2 counts under both).
+    """
     n_obj = len(raw.obj_ids)
     obj_max_lod = np.full(n_obj, -1, np.int64)
     np.maximum.at(obj_max_lod, item_obj, item_lod)
@@ -429,22 +680,25 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
         missing = int((has_geometry & ~has_lod).sum())
         if missing:
             counters["objects_without_requested_lod"] = missing
-    selected = (item_lod == chosen[item_obj]) | (item_lod < 0)
-    sel_idx = np.nonzero(selected)[0]
-    # 4. Each polygon once: own definitions come first in the item order, so they win
-    # (assigning in reverse order leaves the first selected item of each polygon).
-    first_item = np.full(n_poly_all, -1, np.int64)
-    first_item[item_poly[sel_idx[::-1]]] = sel_idx[::-1]
-    keep = first_item[first_item >= 0]  # ordered by polygon index
-    polys = item_poly[keep]
-    p_obj, p_flip = item_obj[keep], item_flip[keep]
-    counters["polygons_not_selected_lod"] = int(n_poly_all - len(polys))
-    if len(polys) == 0:
-        lod_msg = f" at LoD {settings.lod}" if settings.lod is not None else ""
-        raise EmptyModelError(f"the model has no surface geometry{lod_msg} "
-                              f"({n_obj} objects, {n_poly_all} polygons read)", path=str(raw.path))
+    return obj_max_lod, chosen, lod_table
 
-    # 5. Gather the rings of the selected polygons into contiguous arrays.
+
+def _gather_rings(raw: RawModel, sel: _Selection, log: _BuildLog, consume_raw: bool):
+    """Stage 5: the rings of the selected polygons gathered into contiguous arrays; polygons
+    with bad coordinates are dropped from ``sel``.
+
+    Returns
+    -------
+    rings : (R,) int64
+        Original ring index of every gathered ring.
+    coords : (N, 3) float64
+        Gathered points, ring after ring (``raw.xyz`` itself when every point is used).
+    ring_offsets : (R + 1,) int64
+        First point of every ring in ``coords``.
+    poly_ring_offsets : (P + 1,) int64
+        First ring of every selected polygon.
+    """
+    polys = sel.polys
     poly_ring0 = np.append(raw.poly_ring0, len(raw.ring_points)).astype(np.int64)
     ring_start = np.concatenate([[0], np.cumsum(raw.ring_points)])
     p_nrings = poly_ring0[polys + 1] - poly_ring0[polys]
@@ -453,12 +707,12 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
     poly_of_ring = np.repeat(np.arange(len(polys)), p_nrings)
     bad_poly = np.zeros(len(polys), bool)
     bad_poly[poly_of_ring[bad_ring]] = True
-    skipped_ids: dict[str, list[str]] = {}
     if bad_poly.any():
-        counters["skipped_bad_coordinates"] = int(bad_poly.sum())
-        _note_ids(skipped_ids, "bad_coordinates", raw, polys[bad_poly])
+        log.counters["skipped_bad_coordinates"] = int(bad_poly.sum())
+        _note_ids(log.skipped_ids, "bad_coordinates", raw, polys[bad_poly])
         good = ~bad_poly
-        polys, p_obj, p_flip, p_nrings = polys[good], p_obj[good], p_flip[good], p_nrings[good]
+        sel.polys, sel.p_obj, sel.p_flip = polys[good], sel.p_obj[good], sel.p_flip[good]
+        polys, p_nrings = sel.polys, p_nrings[good]
         rings = _expand_ranges(poly_ring0[polys], p_nrings)
     ring_len = raw.ring_points[rings]
     if raw.point_vertex is None and int(ring_len.sum()) == len(raw.xyz):
@@ -472,11 +726,22 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
         coords = raw.xyz[point_idx]
         del point_idx
     if consume_raw:
-        raw.xyz = None  # gathered (or the very array): freed with coords after step 9
+        raw.xyz = None  # gathered (or the very array): freed with coords after stage 9
     ring_offsets = np.concatenate([[0], np.cumsum(ring_len)]).astype(np.int64)
     poly_ring_offsets = np.concatenate([[0], np.cumsum(p_nrings)]).astype(np.int64)
+    return rings, coords, ring_offsets, poly_ring_offsets
 
-    # 6. CRS; geographic coordinates are projected to metres first.
+
+def _to_model_crs(raw: RawModel, settings: BuildSettings, target_crs: CrsInfo | None,
+                  coords: np.ndarray, ring_offsets: np.ndarray, log: _BuildLog):
+    """Stage 6: the scene's CRS, and ``coords`` in it (geographic coordinates projected to
+    metres, a tile of a multi-file build reprojected to ``target_crs``). The file's own CRS
+    and axis order go to ``log``.
+
+    Returns
+    -------
+    coords : (N, 3) float64, crs : CrsInfo
+    """
     resolution = resolve_model_crs_detailed(raw.srs_names.elements(),
                                             settings.crs if target_crs is None else None)
     crs = resolution.crs
@@ -484,46 +749,65 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
         # A tile without a (known) CRS is taken to be in the one named for all tiles.
         crs = target_crs
     else:
-        warnings += list(resolution.warnings)
-    source_crs = crs
-    axis_order = None
+        log.warnings += list(resolution.warnings)
+    log.source_crs = crs
     if crs.is_geographic:
         projector = GeographicProjector(crs, coords, axis_order=settings.axis_order,
                                         ring_offsets=ring_offsets, target=(
                                             None if target_crs is None or target_crs.is_geographic
                                             else target_crs))
-        warnings.append(projector.warning)
-        axis_order = "latlon" if projector.axis_lat_first else "lonlat"
+        log.warnings.append(projector.warning)
+        log.axis_order = "latlon" if projector.axis_lat_first else "lonlat"
         coords = projector.project(coords)
         crs = projector.target
     elif target_crs is not None and crs.horizontal_epsg != target_crs.horizontal_epsg:
         coords = reproject_horizontal(coords, crs, target_crs)
         crs = target_crs
     elif settings.axis_order is not None:
-        warnings.append(f"--axis-order {settings.axis_order} ignored: {crs.name} is not a "
-                        f"geographic CRS (its coordinates are read easting first)")
+        log.warnings.append(f"--axis-order {settings.axis_order} ignored: {crs.name} is not a "
+                            f"geographic CRS (its coordinates are read easting first)")
+    return coords, crs
 
-    # 7. Triangulate in float64.
+
+def _triangulate(raw: RawModel, settings: BuildSettings, coords: np.ndarray,
+                 offsets: tuple[np.ndarray, np.ndarray], sel: _Selection, log: _BuildLog):
+    """Stage 7: the selected polygons triangulated in float64, OrientableSurface flips
+    applied; skips and repairs counted in ``log``.
+
+    ``offsets`` is (ring_offsets, poly_ring_offsets) of :func:`_gather_rings`.
+
+    Returns
+    -------
+    triangles : (T, 3) int, tri_poly_local : (T,) int (selected-polygon index),
+    area_m2 : (P,), repairs : (P,), normals : (P, 3) float64 (flipped), ok : (P,) bool
+
+    Raises
+    ------
+    EmptyModelError
+        No polygon could be triangulated.
+    """
+    from cityshade.geometry.triangulate import REPAIR_NAMES, SKIP_REASONS, triangulate_polygons
+
+    ring_offsets, poly_ring_offsets = offsets
+    polys, p_flip, counters, skipped = sel.polys, sel.p_flip, log.counters, log.skipped
     tri = triangulate_polygons(
         coords, ring_offsets, poly_ring_offsets, merge_distance_m=settings.merge_distance_m,
         collinear_rel_tol=settings.collinear_rel_tol, area_rel_tol=settings.area_rel_tol,
         min_rel_area=settings.min_rel_area, nonplanar_rel_tol=settings.nonplanar_rel_tol)
-    skipped = Counter()
     for code, count in zip(*np.unique(tri.status, return_counts=True)):
         if code != 0:
             skipped[SKIP_REASONS[int(code)]] += int(count)
-            _note_ids(skipped_ids, SKIP_REASONS[int(code)], raw,
+            _note_ids(log.skipped_ids, SKIP_REASONS[int(code)], raw,
                       polys[np.asarray(tri.status) == code])
     if counters.get("skipped_bad_coordinates"):
         skipped["bad_coordinates"] += counters.pop("skipped_bad_coordinates")
-    cavities = counters.pop("cavity_polygons", 0)
-    if cavities:
-        skipped["solid_cavity_shell"] += cavities
-    repairs = Counter()
+    log.cavities = counters.pop("cavity_polygons", 0)
+    if log.cavities:
+        skipped["solid_cavity_shell"] += log.cavities
     for bit, name in REPAIR_NAMES.items():
         n = int(((tri.repairs & bit) != 0).sum())
         if n:
-            repairs[name] = n
+            log.repairs[name] = n
     ok = tri.status == 0
     if not ok.any():
         raise EmptyModelError(f"no polygon could be triangulated ({dict(skipped)})",
@@ -538,75 +822,63 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
     flip_tri = np.nonzero(p_flip[tri_poly_local] != 0)[0]
     triangles[flip_tri] = triangles[flip_tri][:, ::-1]
     del flip_tri
+    return triangles, tri_poly_local, tri_area_m2, tri_repairs, normals, ok
 
-    # 8. Keep drawn polygons only and renumber; compact the vertices.
-    drawn = np.nonzero(ok)[0]
-    # int32 renumbering tables: the per-triangle results come out in the stored dtype.
-    remap_poly = np.full(len(polys), -1, np.int32)
-    remap_poly[drawn] = np.arange(len(drawn))
-    tri_polygon = remap_poly[tri_poly_local]
-    del tri_poly_local
-    box = np.empty((2, 3))  # of the points drawn (one pass; numpy's min/max took 1.6 s)
-    used_vertex_box(triangles, coords, box)
-    if not crs.is_geographic:
-        # A wrong CRS (or a 10^7 m offset) puts the model somewhere else on Earth: say so.
-        area_warning = area_of_use_warning(crs, box[0], box[1])
-        if area_warning:
-            warnings.append(area_warning)
-    used = np.zeros(len(coords), bool)
-    used[triangles.ravel()] = True
-    used_points = np.nonzero(used)[0]
-    new_index = np.cumsum(used, dtype=np.int32) - 1
-    del used
-    triangles = new_index[triangles]
-    del new_index
-    if render_space:
-        origin = render_origin(box[0], box[1])
-        vertices = _render_vertices(coords, used_points, origin)
-    else:
-        origin, vertices = np.zeros(3), coords[used_points]
 
-    # 9. Appearance of the chosen theme.
+@dataclass
+class _Appearance:
+    """Materials and textures of the drawn polygons (per polygon: -1 = none)."""
+
+    poly_material: np.ndarray   # (P,) int32 index into ``materials``
+    poly_texture: np.ndarray    # (P,) int32 index into ``textures``
+    point_uv: np.ndarray        # (N, 2) float32 texture coordinates of the gathered points
+    materials: list[dict] = field(default_factory=list)
+    textures: list[dict] = field(default_factory=list)
+    uv: np.ndarray | None = None  # (V, 2) float32 of the scene's vertices
+
+
+def _theme_appearance(raw: RawModel, settings: BuildSettings, drawn: np.ndarray,
+                      polys: np.ndarray, rings: np.ndarray,
+                      offsets: tuple[np.ndarray, np.ndarray], coords: np.ndarray,
+                      used_points: np.ndarray, log: _BuildLog) -> _Appearance:
+    """Stage 9: the appearance of the chosen theme (``settings.theme``, else the file's
+    first), resolved into per-polygon material/texture and per-vertex texture coordinates."""
     theme = raw.appearance.choose_theme(settings.theme)
+    log.theme = theme
     if settings.theme is not None and theme is None:
-        warnings.append(f"appearance theme {settings.theme!r} not found; themes in the file: "
-                        f"{', '.join(repr(t) for t in raw.appearance.themes()) or 'none'}")
-    orig_poly = polys[drawn]
-    poly_material = np.full(len(drawn), -1, np.int32)
-    poly_texture = np.full(len(drawn), -1, np.int32)
+        names = ", ".join(repr(t) for t in raw.appearance.themes()) or "none"
+        log.warnings.append(f"appearance theme {settings.theme!r} not found; themes in the "
+                            f"file: {names}")
     # float32: each texture coordinate is rounded once either way (the cache stores float32).
-    point_uv = np.zeros((len(coords) if theme is not None else 0, 2), np.float32)
-    materials: list[dict] = []
-    textures: list[dict] = []
+    look = _Appearance(np.full(len(drawn), -1, np.int32), np.full(len(drawn), -1, np.int32),
+                       np.zeros((len(coords) if theme is not None else 0, 2), np.float32))
     if theme is not None:
-        _apply_appearance(raw, theme, drawn, polys, rings, ring_offsets,
-                          poly_ring_offsets, coords, poly_material, poly_texture, point_uv,
-                          materials, textures, warnings, counters)
-    uv = point_uv[used_points] if theme is not None else np.zeros((len(used_points), 2),
-                                                                   np.float32)
-    del point_uv, coords, used_points
+        _apply_appearance(raw, theme, drawn, polys, rings, offsets, coords, look, log)
+    look.uv = (look.point_uv[used_points] if theme is not None
+               else np.zeros((len(used_points), 2), np.float32))
+    look.point_uv = None
+    return look
 
-    # 10. Tables.
-    p_obj_drawn = p_obj[drawn].astype(np.int32)
-    tri_object = p_obj_drawn[tri_polygon]
-    poly_class = poly_cls[orig_poly].astype(np.uint8)
-    obj_lod_code = np.where(obj_max_lod >= 0, chosen, -1)
-    # The cache keeps the whole LoD (0–4) in both formats; the report spells the codes.
-    obj_lod = np.where(obj_lod_code >= 0, obj_lod_code // raw.lod_scale, -1).astype(np.int8)
+
+def _build_report(raw: RawModel, settings: BuildSettings, log: _BuildLog, times: _Validity,
+                  lod_table: dict[int, int], obj_lod_code: np.ndarray, n_drawn: int) -> dict:
+    """Stage 10: the scene's build report (what was read, drawn, skipped, repaired, chosen)."""
+    obj_begin, obj_end = times.begin_days, times.end_days
     finite = np.concatenate([obj_begin[np.isfinite(obj_begin)], obj_end[np.isfinite(obj_end)]])
     time_range = ([days_to_iso(float(finite.min())), days_to_iso(float(finite.max()))]
                   if finite.size else None)
-    sources = Counter(TIME_SOURCE_NAMES[int(c)] for c in obj_source)
-    report = {
+    sources = Counter(TIME_SOURCE_NAMES[int(c)] for c in times.source)
+    counters, skipped = log.counters, log.skipped
+    return {
         "format": raw.format,
         "versions": sorted(raw.versions),
         "objects_by_type": dict(sorted(Counter(raw.obj_types).items())),
-        "polygons": {"read": n_poly_all + cavities, "drawn": int(len(drawn)),
+        "polygons": {"read": raw.n_polygons + log.cavities, "drawn": int(n_drawn),
                      "skipped": int(sum(skipped.values())),
                      "not_selected_lod": counters.pop("polygons_not_selected_lod")},
         "skipped": dict(sorted(skipped.items())),
-        "skipped_ids": dict(sorted(skipped_ids.items())),
-        "repairs": dict(sorted(repairs.items())),
+        "skipped_ids": dict(sorted(log.skipped_ids.items())),
+        "repairs": dict(sorted(log.repairs.items())),
         "lods": {lod_label(raw, k): v for k, v in sorted(lod_table.items())},
         "lods_drawn": {lod_label(raw, int(k)): int(v) for k, v in zip(
             *np.unique(obj_lod_code[obj_lod_code >= 0], return_counts=True))},
@@ -614,34 +886,15 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
         "time_source": settings.time_source,
         "time_sources_used": dict(sorted(sources.items())),
         "time_attribute": settings.time_attribute,
-        "creation_dates_unused": int(creation_unused),
+        "creation_dates_unused": int(times.creation_unused),
         "time_range": time_range,
-        "theme": theme,
+        "theme": log.theme,
         "themes": raw.appearance.themes(),
-        "source_crs": source_crs.to_json(),
-        "axis_order": axis_order,
+        "source_crs": log.source_crs.to_json(),
+        "axis_order": log.axis_order,
         "counters": {k: int(v) for k, v in sorted(counters.items())},
-        "warnings": warnings,
+        "warnings": log.warnings,
     }
-    poly_ids = raw.poly_ids
-    openings = _opening_groups(getattr(raw, "openings", ()), orig_poly)
-    if openings:
-        report["openings"] = openings
-    return Scene(
-        origin_m=origin.astype(np.float64), crs=crs, vertices=vertices, uv=uv,
-        triangles=triangles, tri_object=tri_object, tri_polygon=tri_polygon,
-        tri_class=poly_class[tri_polygon],
-        tri_material=poly_material[tri_polygon], tri_texture=poly_texture[tri_polygon],
-        tri_t_begin_days=obj_begin[tri_object], tri_t_end_days=obj_end[tri_object],
-        obj_ids=[i or "" for i in raw.obj_ids], obj_types=list(raw.obj_types),
-        obj_parent=np.asarray(raw.obj_parent, np.int32), obj_t_begin_days=obj_begin,
-        obj_t_end_days=obj_end, obj_time_source=obj_source, obj_lod=obj_lod,
-        poly_ids=[poly_ids[p] or "" for p in orig_poly.tolist()],
-        poly_object=p_obj_drawn, poly_class=poly_class,
-        poly_area_m2=np.asarray(tri_area_m2, np.float64)[drawn],
-        poly_normal=normals[drawn].astype(np.float32),
-        poly_repairs=np.asarray(tri_repairs, np.uint16)[drawn],
-        materials=materials, textures=textures, report=report)
 
 
 def _opening_groups(openings, orig_poly) -> list:
@@ -661,10 +914,17 @@ def _opening_groups(openings, orig_poly) -> list:
     return [[openings[k][0], groups[k]] for k in sorted(groups)]
 
 
-def _apply_appearance(raw, theme, drawn, polys, rings, ring_offsets,
-                      poly_ring_offsets, coords, poly_material, poly_texture, point_uv,
-                      materials, textures, warnings, counters) -> None:
-    """Fill per-polygon material/texture indices and per-point uv for one theme."""
+def _apply_appearance(raw, theme, drawn, polys, rings, offsets, coords, look: _Appearance,
+                      log: _BuildLog) -> None:
+    """Fill ``look``'s per-polygon material/texture indices and per-point uv for one theme.
+
+    ``offsets`` is (ring_offsets, poly_ring_offsets) of :func:`_gather_rings`; refused
+    textures and bad texture coordinates are counted (and a few said) in ``log``.
+    """
+    ring_offsets, poly_ring_offsets = offsets
+    poly_material, poly_texture, point_uv = look.poly_material, look.poly_texture, look.point_uv
+    materials, textures = look.materials, look.textures
+    warnings, counters = log.warnings, log.counters
     app = raw.appearance
     # Gathered point range of every original ring (-1: not gathered), and the drawn-polygon
     # index of every original polygon (-1: not drawn).

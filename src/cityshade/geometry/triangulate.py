@@ -1,4 +1,4 @@
-"""Polygon triangulation in float64, with sure repairs and counted skips (DESIGN §2, §10).
+"""Polygon triangulation in float64, with sure repairs and counted skips (docs/DESIGN.md §3, §14).
 
 The CityGML reader hands over every polygon of a batch as flat arrays (points, ring offsets,
 polygon → ring offsets); :func:`triangulate_polygons` triangulates the whole batch in one Numba
@@ -42,7 +42,7 @@ import numpy as np
 import numba
 from numba import njit, prange
 
-from cityshade.errors import InputError
+from cityshade.errors import TriangulationInputError
 
 # ---------------------------------------------------------------------------------------------
 # Status codes (one per polygon) and repair bits.
@@ -101,14 +101,6 @@ REPAIR_NAMES = {
 #: O(n²) edge-crossing test: 256 points are 32 640 edge pairs, well under a millisecond, and
 #: real CityGML polygons above that size are rare enough to rely on the area check alone.
 SEGMENT_TEST_MAX_POINTS = 256
-
-
-class TriangulationInputError(InputError, ValueError):
-    """Arrays handed to :func:`triangulate_polygons` that do not describe polygons.
-
-    This is a programming error of the caller (wrong shape, dtype or offsets), not bad geometry:
-    bad geometry is never an error, it is skipped and counted.
-    """
 
 
 @dataclass(frozen=True)

@@ -29,8 +29,8 @@ from cityshade.trace.bricks import one_thread_when_small
 from cityshade.lightspace import kernels as K
 from cityshade.runtime.threadpool import run_chunks
 from cityshade.runtime.memory import Recycler, Scratch
-from cityshade.trace import (UNIT_LENGTH_TOL, TraceInputError, tree_of, shadow_offset_m,
-                             shadow_rays_from_surface)
+from cityshade.trace import UNIT_LENGTH_TOL, tree_of, shadow_offset_m, shadow_rays_from_surface
+from cityshade.errors import TraceInputError
 
 __all__ = ["occluded", "sunlit", "Casters", "casters_of", "forget_casters", "SurfaceReceivers",
            "MARGIN_REL", "caster_order"]
@@ -198,7 +198,7 @@ _CASTERS: "weakref.WeakKeyDictionary[KdTree, Casters]" = weakref.WeakKeyDictiona
 
 
 def casters_of(tree) -> Casters:
-    """The :class:`Casters` of a tree (or scene), made once per tree and kept with it."""
+    """The :class:`Casters` of a tree, made once per tree and kept with it."""
     kd = tree_of(tree)
     c = _CASTERS.get(kd)
     if c is None:
@@ -282,7 +282,7 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
 
     Parameters
     ----------
-    tree : KdTree or scene with ``.kdtree``
+    tree : KdTree
     origins : (N, 3) float array
         Shadow-ray origins, render-space metres (from
         :func:`cityshade.trace.shadow_rays_from_surface`).
@@ -304,12 +304,6 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
     TraceInputError
         Wrong shapes, non-finite values, a non-unit sun direction, a NaN time.
     """
-    if getattr(tree, "tiled", None) is not None:  # a tiled cache's view: per tile, ORed
-        from cityshade.store.tiled import occluded_over_tiles
-
-        o = np.ascontiguousarray(origins, dtype=np.float64)
-        return occluded_over_tiles(tree, o, sun_direction, lambda part, rays: occluded(
-            part, o[rays], sun_direction, t_days, stats=stats, cell_m=cell_m))
     kd = tree_of(tree)
     origins = np.ascontiguousarray(origins, dtype=np.float64)
     if origins.ndim != 2 or origins.shape[1] != 3:
@@ -515,7 +509,7 @@ def sunlit(tree, points, normals, sun_direction, t_days: float = 0.0, *,
 
     Parameters
     ----------
-    tree : KdTree or scene with ``.kdtree``
+    tree : KdTree
     points, normals : (N, 3) float arrays
         Surface points (render space, metres) and unit normals on the side facing the sun.
     sun_direction : (3,) float array

@@ -1,4 +1,4 @@
-"""Numba kernels of the light-space sun engine: project, bin, query (DESIGN §6b).
+"""Numba kernels of the light-space sun engine: project, bin, query (docs/DESIGN.md §7).
 
 All rays of one sun share the direction d, so the watertight test's permutation and shear
 (:func:`cityshade.trace.kernels.ray_shear`: axes kx, ky, kz and sx, sy, sz) are the same for

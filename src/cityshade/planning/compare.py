@@ -3,7 +3,7 @@
 Two states are either two dates of one time-dependent model (a proposed building carries a
 ``validFrom`` in the future) or the existing model and the same model with a proposal added
 (:func:`merge_scenes`; the existing objects, polygons and triangles keep their indices, so a
-receiver means the same surface in both). :func:`compare_states` runs :func:`cityshade.sunhours.run.sun_hours`
+receiver means the same surface in both). :func:`compare_states` runs :func:`cityshade.sunhours.accumulate.sun_hours`
 once per state over the same steps, camera and surface samples, with the sunlit stretches
 (:mod:`cityshade.sunhours.stretches`) of every receiver, and derives the loss. Pixels whose surface is not
 the same in both states (a new building stands there, or an old one is gone) are *changed*:
@@ -23,8 +23,8 @@ import numpy as np
 
 from cityshade.errors import UsageError
 
-__all__ = ["Opening", "Comparison", "merge_scenes", "openings_of", "compare_states",
-           "write_comparison", "SURFACE_COLUMNS", "OPENING_COLUMNS"]
+__all__ = ["Opening", "Comparison", "Receivers", "merge_scenes", "openings_of",
+           "compare_states", "write_comparison", "SURFACE_COLUMNS", "OPENING_COLUMNS"]
 
 #: Sample density on openings (points per m²): a 1.2 m² window gets ~36 points.
 OPENING_SAMPLES_PER_M2 = 30.0
@@ -179,11 +179,32 @@ def _loss_pct(before, after):
         return np.where(before > 0, 100.0 * (before - after) / before, np.nan)
 
 
+@dataclass(frozen=True, eq=False)
+class Receivers:
+    """The surface receivers of :func:`compare_states` and how their stretches count.
+
+    Attributes
+    ----------
+    samples_per_m2 : float or None
+        Sample density on the polygons standing before (None: no surface receivers except
+        the openings).
+    opening_samples_per_m2 : float
+        Density on windows and doors (0: like the other polygons).
+    polygons : (P,) bool, optional
+        Only these polygons are surface receivers (rules that look at some surfaces only).
+    min_stretch_h : float
+        Stretches shorter than this do not count toward the ``qualified`` hours.
+    """
+
+    samples_per_m2: float | None = 1.0
+    opening_samples_per_m2: float = OPENING_SAMPLES_PER_M2
+    polygons: np.ndarray | None = None
+    min_stretch_h: float = 0.0
+
+
 def compare_states(scene_before, t_before_days: float, scene_after, t_after_days: float,
-                   camera, steps: Sequence, *, technique: str = "izb", settings=None,
-                   ground: str | None = None, suns=None, samples_per_m2: float | None = 1.0,
-                   opening_samples_per_m2: float = OPENING_SAMPLES_PER_M2,
-                   polygons: np.ndarray | None = None, min_stretch_h: float = 0.0,
+                   camera, steps: Sequence, receivers: Receivers | None = None, *,
+                   technique: str = "izb", settings=None, ground: str | None = None, suns=None,
                    on_step: Callable[[int, int], None] | None = None) -> Comparison:
     """Sun-hours before and after, on the same receivers.
 
@@ -195,27 +216,33 @@ def compare_states(scene_before, t_before_days: float, scene_after, t_after_days
         City times of the two states.
     camera : Camera or None
         Pixel receivers (the same view in both states); None: surfaces only.
-    steps : sequence of cityshade.sunhours.run.Step
-        Time steps (:func:`cityshade.sunhours.run.plan_steps`).
-    samples_per_m2 : float or None
-        Sample density on the polygons standing before (None: no surface receivers except
-        the openings).
-    opening_samples_per_m2 : float
-        Density on windows and doors (0: like the other polygons).
-    polygons : (P,) bool, optional
-        Only these polygons are surface receivers (rules that look at some surfaces only).
-    min_stretch_h : float
-        Stretches shorter than this do not count toward the ``qualified`` hours.
+    steps : sequence of cityshade.sunhours.plan.Step
+        Time steps (:func:`cityshade.sunhours.plan.plan_steps`).
+    receivers : Receivers, optional
+        Surface samples (default: 1 per m² on every polygon standing before, denser on the
+        openings) and the shortest stretch that counts.
+    technique : str
+        An exact technique.
+    settings : cityshade.config.Settings, optional
+        ``[shadows]``, ``[sun]`` (when ``suns`` is None) and ``[batch]`` (``reuse_rays``).
+    ground : str, optional
+        Ground plane (``auto``, ``min``, metres), placed once from ``scene_before``.
+    suns : sequence of Sun, optional
+        One per step (default: the sun at the steps' centres).
     on_step : callable(done, total), optional
         Progress over both states' sun positions.
     """
-    from cityshade.sunhours.run import plan_units, sun_hours
+    from cityshade.sunhours.accumulate import sun_hours
+    from cityshade.sunhours.plan import plan_units
     from cityshade.config import Settings
     from cityshade.sunhours.stretches import Stretches
     from cityshade.geo.sun import suns_from_instants
     from cityshade.sunhours.surfaces import sample_surfaces
 
     settings = settings or Settings()
+    receivers = receivers or Receivers()
+    samples_per_m2, polygons = receivers.samples_per_m2, receivers.polygons
+    opening_samples_per_m2 = receivers.opening_samples_per_m2
     if not steps:
         raise UsageError("a comparison needs at least one time step")
     instants = [s.centre_utc for s in steps]
@@ -255,9 +282,9 @@ def compare_states(scene_before, t_before_days: float, scene_after, t_after_days
 
         results.append(sun_hours(
             scene, camera, instants, float(t), weights_h=weights, technique=technique,
-            settings=settings.shadows, ground=ground, suns=suns, samples=samples,
+            shadows=settings.shadows, ground=ground, suns=suns, samples=samples,
             reuse_rays=settings.batch.reuse_rays, on_step=progress,
-            stretches=Stretches.for_steps(steps, min_stretch_h)))
+            stretches=Stretches.for_steps(steps, receivers.min_stretch_h)))
     before, after = results
     comp = Comparison(before=before, after=after, camera=camera, scene_before=scene_before,
                       scene_after=scene_after, t_before_days=float(t_before_days),
@@ -374,7 +401,7 @@ def surface_rows(comp: Comparison):
 def loss_picture(comp: Comparison) -> np.ndarray:
     """(H + legend, W, 3) uint8: the loss in hours colour-mapped with its legend (gains shown as
     0), changed pixels grey."""
-    from cityshade.sunhours.run import colour_map_png
+    from cityshade.sunhours.outputs import colour_map_png
 
     loss = np.where(np.isfinite(comp.loss_h), np.maximum(comp.loss_h, 0.0), np.nan)
     img = colour_map_png(loss)
@@ -389,7 +416,7 @@ def write_comparison(outdir, comp: Comparison, meta: dict[str, Any]) -> list[Pat
     map views ``before_h/after_h/loss_h/loss_pct.tif`` (+ .tfw, .prj), ``surfaces.csv`` and
     ``openings.csv``. Returns the paths written."""
     from cityshade import imageio
-    from cityshade.sunhours.run import colour_map_png
+    from cityshade.sunhours.outputs import colour_map_png
     from cityshade.util import atomic_write
 
     outdir = Path(outdir)

@@ -2,7 +2,7 @@
 
 Conventions
 -----------
-* Render space (DESIGN §3): x east, y north, z up, metres, relative to the scene origin.
+* Render space (docs/DESIGN.md §1): x east, y north, z up, metres, relative to the scene origin.
 * Pixel ``(col, row)`` has its centre at ``col + 0.5``, ``row + 0.5``; row 0 is the top of the
   image (north for maps). Images are row-major, ``(H, W)``.
 * Perspective: the camera frame is ``right``, ``up`` (true up, orthogonal to the view) and
@@ -28,7 +28,7 @@ from pathlib import Path
 
 import numpy as np
 
-from cityshade.errors import ConfigError, UsageError
+from cityshade.errors import UnknownPresetError, UsageError
 from cityshade.raster.presets import PRESETS_RESOURCE, load_presets  # noqa: F401 (re-exported)
 
 #: Fraction of the image the fitted model box may fill (a thin border around the city).
@@ -45,10 +45,6 @@ MIN_NEAR_M = 1e-3
 #: Margin of the map camera plane above the highest point, relative to the model size (plus
 #: one metre), so that no surface lies on the camera plane.
 MAP_EYE_MARGIN_REL = 0.01
-
-
-class UnknownPresetError(ConfigError):
-    """A camera preset name that the shipped presets (and ``--cameras``) do not define."""
 
 
 @dataclass(frozen=True, eq=False)

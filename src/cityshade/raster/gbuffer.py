@@ -232,7 +232,7 @@ def gbuffer_by_raycasting(scene, camera, t_days: float) -> GBuffer:
         start = camera.near_m / cos
         tmax = camera.far_m / cos - start
         origins = origins + directions * start[:, None]
-    dist, tri, u, v = intersect(scene, origins, directions, t_days, tmax)
+    dist, tri, u, v = intersect(scene.kdtree, origins, directions, t_days, tmax)
     depth = np.where(tri >= 0, dist + start, np.inf).astype(np.float32)
     bary = np.stack([u, v], axis=-1).astype(np.float32).reshape(h, w, 2)
     return GBuffer(camera=camera, prim_id=tri.astype(np.int32).reshape(h, w), bary=bary,

@@ -19,7 +19,7 @@ A map technique is a light-view planner (:mod:`cityshade.shadows.planners`) plus
 (:mod:`cityshade.shadows.lookups`), every planner with every lookup; ``+smooth`` adds the
 screen-space post-filter to any technique; ``hybrid:`` refines any map technique with exact rays.
 
-Shared rule (DESIGN §14): a surface facing away from the sun (N·L ≤ 0, with N turned towards
+Shared rule (docs/DESIGN.md §9): a surface facing away from the sun (N·L ≤ 0, with N turned towards
 the viewer) is in shadow without any test, in every technique, so techniques agree there. It is
 computed once per frame and sun (:attr:`ShadowContext.faces`).
 """
@@ -236,7 +236,7 @@ class Technique(Protocol):
 
 
 def technique_names() -> list[str]:
-    """The names of the product (DESIGN §8), each usable with ``hybrid:`` and ``+smooth``;
+    """The names of the product (docs/DESIGN.md §9), each usable with ``hybrid:`` and ``+smooth``;
     any planner also takes ``/pcf`` or ``/vsm`` (the module docstring's grammar)."""
     return [*TECHNIQUES, *map_technique_names()]
 
@@ -303,9 +303,12 @@ class TechniqueSpec:
         return 1
 
 
-def describe(name: str) -> TechniqueSpec:
-    """The :class:`TechniqueSpec` of ``name``: the one parser of technique names. Unknown
-    names raise a :class:`UsageError` listing the valid ones."""
+def describe(name: "str | TechniqueSpec") -> TechniqueSpec:
+    """The :class:`TechniqueSpec` of ``name``: the one parser of technique names (a spec is
+    returned as it is, so functions take either at their public edge). Unknown names raise a
+    :class:`UsageError` listing the valid ones."""
+    if isinstance(name, TechniqueSpec):
+        return name
     return _describe(name)
 
 
@@ -318,11 +321,8 @@ def _describe(name: str) -> TechniqueSpec:
         return dataclasses.replace(_describe(base), name=name, base=base, smooth=True)
     if name == "hybrid" or name.startswith("hybrid:"):
         inner_name = name.partition(":")[2] or "vsm"
-        if inner_name.startswith("hybrid") or inner_name in TECHNIQUES or "+" in inner_name:
-            raise UsageError(f"hybrid needs a shadow-map base technique, not {inner_name!r}; "
-                             "valid: " + ", ".join(map_technique_names()) + " (or PLANNER/LOOKUP)")
-        inner = _describe(inner_name)
-        return dataclasses.replace(inner, name=name, family="hybrid", base=inner_name)
+        return dataclasses.replace(hybrid_base(inner_name), name=name, family="hybrid",
+                                   base=inner_name)
     if name in TECHNIQUES:
         return TechniqueSpec(name=name, family="exact", engine=name)
     spec = ALIASES.get(name, name)
@@ -338,10 +338,19 @@ def _describe(name: str) -> TechniqueSpec:
                          lookup=lookup_name or "hard")
 
 
+def hybrid_base(name: str) -> TechniqueSpec:
+    """The :class:`TechniqueSpec` of ``name`` as the base of ``hybrid:NAME``: a map technique
+    (not smoothed, not itself a hybrid); a :class:`UsageError` for anything else."""
+    if name.startswith("hybrid") or name in TECHNIQUES or "+" in name:
+        raise UsageError(f"hybrid needs a shadow-map base technique, not {name!r}; "
+                         "valid: " + ", ".join(map_technique_names()) + " (or PLANNER/LOOKUP)")
+    return _describe(name)
+
+
 def get_technique(name: "str | TechniqueSpec") -> Technique:
     """The technique registered under ``name`` (an instance ready to run), by the grammar of
     the module docstring."""
-    spec = name if isinstance(name, TechniqueSpec) else describe(name)
+    spec = describe(name)
     if spec.smooth:
         from cityshade.shadows.filtering import Smoothed
 

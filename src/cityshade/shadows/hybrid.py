@@ -42,8 +42,7 @@ import time
 import numpy as np
 from numba import njit, prange
 
-from cityshade.errors import UsageError
-from cityshade.shadows import (TECHNIQUES, ShadowContext, ShadowResult, TechniqueDiagnostics,
+from cityshade.shadows import (ShadowContext, ShadowResult, TechniqueDiagnostics, hybrid_base,
                                take_pixels)
 from cityshade.shadows.shadowmap import clip_point, plane_depth_gradient
 from cityshade.trace.kernels import hit_triangle, on_axes, ray_shear
@@ -666,15 +665,14 @@ IZB_REFINE_MIN_RAYS = 600_000
 
 def refine_engine(n_rays: int):
     """(name, sunlit function) of the exact engine that refines ``n_rays`` uncertain pixels:
-    :func:`cityshade.lightspace.sunlit` from :data:`IZB_REFINE_MIN_RAYS` on, else
-    :func:`cityshade.trace.sunlit` (the same answer either way)."""
-    if n_rays >= IZB_REFINE_MIN_RAYS:
-        from cityshade.lightspace import sunlit
+    ``izb`` from :data:`IZB_REFINE_MIN_RAYS` on, else ``raytrace``
+    (:func:`cityshade.shadows.visibility.sunlit`: the same answer either way)."""
+    import functools
 
-        return "izb", sunlit
-    from cityshade.trace import sunlit
+    from cityshade.shadows.visibility import sunlit
 
-    return "raytrace", sunlit
+    name = "izb" if n_rays >= IZB_REFINE_MIN_RAYS else "raytrace"
+    return name, functools.partial(sunlit, engine=name)
 
 
 @njit(cache=True, inline="always")
@@ -773,11 +771,9 @@ class Hybrid:
     """``hybrid:BASE``: BASE's map(s) classify, exact rays decide the uncertain pixels."""
 
     def __init__(self, base: str = "vsm"):
-        from cityshade.shadows import get_map_technique, map_technique_names
+        from cityshade.shadows import get_map_technique
 
-        if base.startswith("hybrid") or base in TECHNIQUES or "+" in base:
-            raise UsageError(f"hybrid needs a shadow-map base technique, not {base!r}; valid: "
-                             + ", ".join(map_technique_names()) + " (or PLANNER/LOOKUP)")
+        hybrid_base(base)  # the registry refuses a base that is not a map technique
         self.base_name = base
         self.base = get_map_technique(base)
         self.name = f"hybrid:{base}"

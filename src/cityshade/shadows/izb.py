@@ -15,9 +15,9 @@ class LightSpace(RayTraced):
     name = "izb"
 
     def sunlit(self, scene, points, normals, sun_direction, t_days, diagnostics) -> np.ndarray:
-        from cityshade.lightspace import sunlit
+        from cityshade.shadows.visibility import sunlit
 
         engine: dict = {}
-        lit = sunlit(scene, points, normals, sun_direction, t_days, stats=engine)
+        lit = sunlit(scene, points, normals, sun_direction, t_days, engine="izb", stats=engine)
         diagnostics.engine = engine
         return lit

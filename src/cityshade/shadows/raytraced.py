@@ -36,6 +36,6 @@ class RayTraced:
     def sunlit(self, scene, points, normals, sun_direction, t_days,
                diagnostics: TechniqueDiagnostics) -> np.ndarray:
         """(N,) bool: the exact per-point decision (here one kd-tree shadow ray per point)."""
-        from cityshade.trace import sunlit
+        from cityshade.shadows.visibility import sunlit
 
-        return sunlit(scene, points, normals, sun_direction, t_days)
+        return sunlit(scene, points, normals, sun_direction, t_days, engine="raytrace")

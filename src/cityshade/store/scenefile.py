@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -16,6 +16,9 @@ from cityshade.store.cache import FORMAT_VERSION, PackedStrings, open_cache, pac
 from cityshade.geo.crs import CrsInfo
 from cityshade.errors import CacheError
 from cityshade.geometry.scene import Scene
+
+if TYPE_CHECKING:
+    from cityshade.shadows import TechniqueSpec
 
 _KDTREE_PREFIX = "kdtree/"
 
@@ -134,19 +137,21 @@ def open_scene(path: str | os.PathLike):
     return open_tiled(path) if Path(path).is_dir() else load_scene(path)
 
 
-def scene_for_camera(scene, camera, technique: str | None = None):
+def scene_for_camera(scene, camera, technique: "str | TechniqueSpec | None" = None):
     """The scene a frame of ``camera`` draws: ``scene`` itself, or for a tiled cache the view
-    of the tiles the camera's frustum reaches (all tiles for ``camera`` None, and for the map
-    techniques, whose depth pass draws the casters from the scene: a caster outside the
-    frustum still shades what is in it, and the light view is fitted to the whole city)."""
+    of the tiles the camera's frustum reaches (all tiles for ``camera`` None, and for the
+    techniques that are not :attr:`~cityshade.shadows.TechniqueSpec.tileable`, whose depth
+    pass draws the casters from the scene: a caster outside the frustum still shades what is
+    in it, and the light view is fitted to the whole city). ``technique``: a name or its
+    :func:`~cityshade.shadows.describe`."""
     from cityshade.store.tiled import TiledCache
 
     if not isinstance(scene, TiledCache):
         return scene
     if technique is not None:
-        from cityshade.shadows import exact_technique_names
+        from cityshade.shadows import describe
 
-        if technique not in exact_technique_names():
+        if not describe(technique).tileable:
             return scene.view()
     return scene.view(None if camera is None else scene.tiles_in_view(camera))
 

@@ -16,8 +16,8 @@ it is needed. A frame or batch uses a *view* (:meth:`TiledCache.view`): the tile
 frustum reaches, gathered into one in-memory :class:`~cityshade.geometry.scene.Scene` in the
 global order (a view of all tiles is the one-cache scene array for array), so the camera
 pass, shading and outputs run unchanged and ids and ties are those of the one cache. A view
-has no kd-tree of its own: its shadow rays (:func:`occluded_over_tiles`, called by
-``trace.occluded`` and ``lightspace.occluded``) run per tile through the tile's own tree and
+has no kd-tree of its own: its shadow rays (:meth:`~cityshade.geometry.scene.Scene.any_hit`,
+called by :mod:`cityshade.shadows.visibility`) run per tile through the tile's own tree and
 are ORed; a tile whose box the receivers' box swept toward the sun cannot reach is skipped
 without being mapped. Each tile's answer is exact, so the OR is the one tree's answer.
 """
@@ -31,7 +31,7 @@ from typing import Any, Callable
 import numpy as np
 
 from cityshade.errors import CacheCorruptError, CacheError, InputError, UsageError
-from cityshade.geometry.scene import Scene
+from cityshade.geometry.scene import Scene, TiledParts
 
 INDEX_NAME = "index.json"
 INDEX_KIND = "cityshade-tiled"
@@ -157,6 +157,24 @@ class TiledCache:
         self._open: dict[int, Scene] = {}
         self._globals: dict[int, dict[str, np.ndarray]] = {}
         self.kdtree = None
+        # As a stand-in for a scene it is no view of tiles and traces nothing itself.
+        self.tiling = None
+        self.is_tiled = self.can_trace = False
+
+    @property
+    def box_m(self) -> list:
+        """Render-space box of the whole city, [[x, y, z], [x, y, z]] metres."""
+        return self.index["box_m"]
+
+    def city_box_m(self) -> tuple[np.ndarray, np.ndarray]:
+        """As a stand-in scene: the box of its corner vertices (float32, as a scene's box)."""
+        return (self.vertices.min(axis=0).astype(np.float64),
+                self.vertices.max(axis=0).astype(np.float64))
+
+    @property
+    def ground_m(self) -> dict[str, float]:
+        """The whole city's ground heights (``min``, ``auto``; render space, metres)."""
+        return self.index["ground_m"]
 
     @property
     def n_triangles(self) -> int:
@@ -215,9 +233,10 @@ class TiledCache:
 
     def view(self, tile_ids: list[int] | None = None) -> Scene:
         """The tiles ``tile_ids`` (all when None) as one in-memory scene in the global order
-        (see the module docstring): ``tiled`` (this cache), ``tile_ids`` and
-        ``global_tri``/``global_obj`` (the one-cache index of each of its triangles and
-        objects) are set; ``kdtree`` is None (shadow rays go through the tiles' trees)."""
+        (see the module docstring), its :attr:`~cityshade.geometry.scene.Scene.tiling` set
+        (this cache, the tiles, the one-cache index of each of its triangles and objects);
+        ``kdtree`` is None (:meth:`~cityshade.geometry.scene.Scene.any_hit` traces shadow
+        rays through the tiles' trees)."""
         ids = list(range(len(self.tiles))) if tile_ids is None else sorted(set(tile_ids))
         parts = [self.tile(i) for i in ids]
         if not parts:
@@ -274,10 +293,9 @@ class TiledCache:
                       materials=self.materials, textures=self.textures, report=self.report,
                       **fields)
         scene.header = dict(self.header)
-        scene.tiled = self
-        scene.tile_ids = ids
-        scene.global_tri = np.concatenate(glob["tri"])[order["tri"]]
-        scene.global_obj = np.concatenate(glob["obj"])[order["obj"]]
+        scene.tiling = TiledParts(source=self, tile_ids=ids,
+                                  global_tri=np.concatenate(glob["tri"])[order["tri"]],
+                                  global_obj=np.concatenate(glob["obj"])[order["obj"]])
         return scene
 
     def tiles_reaching(self, origins: np.ndarray, sun_direction: np.ndarray) -> list[int]:
@@ -305,29 +323,6 @@ class TiledCache:
         pad = 1e-6 * max(1.0, float(np.max(np.abs(self.boxes)))) if len(self.boxes) else 0.0
         reach_lo, reach_hi = sweep_lo - pad, sweep_hi + pad
         return self.tree.query(lambda lo, hi: bool((lo <= reach_hi).all() and (hi >= reach_lo).all()))
-
-
-def to_global(global_index: np.ndarray, ids: np.ndarray) -> np.ndarray:
-    """A view's ids (-1: none) as the one cache's ids, in ``ids``' dtype and shape."""
-    ids = np.asarray(ids)
-    return np.where(ids >= 0, np.asarray(global_index)[np.maximum(ids, 0)], -1).astype(ids.dtype)
-
-
-def occluded_over_tiles(view, origins, directions, engine: Callable) -> np.ndarray:
-    """Shadow rays of a tiled view (``directions``: (3,) shared or (N, 3)): ``engine(tile_scene,
-    rays)`` (an exact any-hit test of the rays with those indices) on every tile the rays can
-    reach, ORed; rays already blocked are not traced again."""
-    origins = np.asarray(origins, np.float64).reshape(-1, 3)
-    dirs = np.asarray(directions, np.float64).reshape(-1, 3)
-    blocked = np.zeros(len(origins), bool)
-    if len(dirs) > 1 and (dirs == dirs[0]).all():
-        dirs = dirs[:1]
-    for i in view.tiled.tiles_reaching(origins, dirs):
-        todo = np.flatnonzero(~blocked)
-        if len(todo) == 0:
-            break
-        blocked[todo] |= engine(view.tiled.tile(i), todo)
-    return blocked
 
 
 def open_tiled(path: str | os.PathLike) -> TiledCache:

@@ -1,8 +1,7 @@
-"""Tiled batches run here or on Dask: ``cityshade batch … --tile-px N --scheduler local:N``.
+"""The Dask executor of tiled batches: ``cityshade batch … --tile-px N --scheduler local:N``.
 
-:func:`run_tiled` is what :func:`cityshade.sunhours.run.run_batch` calls for a tiled, distributed or
-monthly run: it keeps the manifest's finished steps up to date as tasks are added and hands
-the tasks (:mod:`cityshade.sunhours.tiled`) to a :class:`DaskExecutor` when a scheduler is given.
+:func:`cityshade.sunhours.tiled.run_tiled` hands the tasks (:mod:`cityshade.sunhours.tiled`) to a
+:class:`DaskExecutor` when a scheduler is given.
 
 A Dask run ships no scene: the driver writes the receivers once to ``OUTDIR/receivers.npy``
 and every worker memory-maps that file and the scene's cache file from their paths (on a
@@ -19,7 +18,6 @@ from __future__ import annotations
 import contextlib
 import os
 import threading
-import time
 from pathlib import Path
 from typing import Any, Callable, Sequence
 
@@ -27,15 +25,11 @@ import numpy as np
 
 from cityshade.errors import CityshadeError, UsageError
 
-__all__ = ["run_tiled", "DaskExecutor", "parse_scheduler", "write_tiled_extras"]
+__all__ = ["DaskExecutor", "DistributedError", "parse_scheduler"]
 
 
 #: Environment of a local worker process (replaces Dask's ``pre-spawn-environ``).
 WORKER_ENVIRON = {"OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1"}
-
-
-#: Seconds between two writes of the manifest's progress in a batch (plain or tiled).
-MANIFEST_EVERY_S = 1.0
 
 
 class DistributedError(CityshadeError):
@@ -333,104 +327,3 @@ class DaskExecutor:
         finally:
             self.close()
             recv.unlink(missing_ok=True)
-
-
-def run_tiled(scene, camera, instants, t_days: float, *, weights_h, suns, units, technique,
-              ground, samples_per_m2, checkpoint, tile_px, scheduler, scene_path, step_month,
-              workdir, frames: bool, finished: list, manifest: dict,
-              write_manifest: Callable[[], Any], on_step=None, executor=None,
-              stretches=None):
-    """The tiled run of :func:`cityshade.sunhours.run.run_batch`: (SunHours, TiledRun)."""
-    from cityshade.sunhours.tiled import tiled_sun_hours
-
-    if frames:
-        raise UsageError("--frames cannot be combined with --tile-px, --scheduler or "
-                         "--monthly; run the frames without them")
-    if scheduler is not None and not isinstance(scheduler, str):
-        executor, scheduler = scheduler, getattr(scheduler, "spec", "executor")
-    if executor is None and scheduler is not None:
-        if scene_path is None:
-            raise UsageError("a distributed batch needs the scene's cache file path")
-        sha = (scene.header or {}).get("source", {}).get("sha256", "")
-        executor = DaskExecutor(scheduler, scene_path, sha)
-
-    last_write = [time.perf_counter()]
-
-    def on_task(done, total, newly):
-        for u in newly:
-            finished.extend(units[u].steps)
-        if newly:
-            manifest["finished_steps"] = sorted(finished)
-            manifest["sun_positions_done"] = newly[-1] + 1
-        manifest["tasks_done"] = done
-        manifest["tasks_total"] = total
-        if checkpoint is not None and checkpoint.sha256 is not None:
-            manifest["state_sha256"] = [checkpoint.sha256]
-        # Written every MANIFEST_EVERY_S, at the end and when the run stops (below): the
-        # driver adds every task's result, and the indented JSON of a day's steps costs
-        # 25-30 ms, a year's far more; resuming reads the state, not this progress.
-        if done == total or time.perf_counter() - last_write[0] >= MANIFEST_EVERY_S:
-            write_manifest()
-            last_write[0] = time.perf_counter()
-        if on_step is not None:
-            on_step(done, total, None)
-
-    if hasattr(executor, "start"):
-        first = units[0].sun.direction if units else None
-        executor.start(scene, first, float(t_days), technique)
-    elif hasattr(executor, "connect"):
-        executor.connect()
-    try:
-        result, run = tiled_sun_hours(scene, camera, instants, t_days, weights_h=weights_h,
-                                      suns=suns, technique=technique, ground=ground,
-                                      samples_per_m2=samples_per_m2, checkpoint=checkpoint,
-                                      tile_px=tile_px, step_month=step_month,
-                                      workdir=workdir, executor=executor, on_task=on_task,
-                                      stretches=stretches)
-    except BaseException:
-        with contextlib.suppress(OSError, CityshadeError):  # the first error is the one told
-            write_manifest()  # the progress of a stopped run, as far as it got
-        raise
-    finally:
-        if hasattr(executor, "close"):
-            executor.close()
-    if executor is not None:
-        result.diagnostics["tiles"]["scheduler"] = scheduler
-        result.diagnostics["tiles"]["workers"] = getattr(executor, "workers", 0)
-        result.diagnostics["tiles"]["tasks_on_driver"] = getattr(executor, "tasks_on_driver", 0)
-    return result, run
-
-
-def write_tiled_extras(outdir, run, result, scene, camera, meta: dict[str, Any]) -> list[Path]:
-    """Per-month outputs of a ``--monthly`` run: ``monthly/sun_hours_YYYY-MM.exr`` (and
-    ``.tif``, a COG, for a map view; ``surfaces_YYYY-MM.csv`` with ``--surfaces``)."""
-    from cityshade import imageio
-
-    written: list[Path] = []
-    months = sorted(set(run.month_hours) | set(run.month_sample_hours))
-    if not months:
-        return written
-    from cityshade.util import make_folder
-
-    folder = make_folder(Path(outdir) / "monthly")
-    for month in months:
-        attrs = {**meta, "cityshade:month": month}
-        hours = run.month_hours.get(month)
-        if hours is not None:
-            exr = folder / f"sun_hours_{month}.exr"
-            imageio.write_exr(exr, {"sun_hours": hours,
-                                    "objid": np.asarray(result.surfaces.obj_id)}, attrs)
-            written.append(exr)
-            if camera.kind == "map":
-                written += imageio.write_cog(folder / f"sun_hours_{month}.tif", hours,
-                                             camera.geotransform(scene.origin_m),
-                                             epsg=scene.crs.horizontal_epsg,
-                                             nodata=float("nan"),
-                                             attributes={k: str(v) for k, v in attrs.items()})
-        poly = run.month_sample_hours.get(month)
-        if poly is not None:
-            from cityshade.sunhours.surfaces import write_surface_csv
-
-            written.append(write_surface_csv(folder / f"surfaces_{month}.csv", scene,
-                                             result.samples, poly))
-    return written

@@ -10,7 +10,7 @@ Step length: a stretch begins and ends where the sun changes at some instant ins
 but the midpoint rule classifies each step by its centre, so a stretch's length is off by up
 to half a step at each end, i.e. up to one step in all (10-minute steps: ±10 min).
 
-Steps arrive grouped by sun position (:class:`cityshade.sunhours.run.Unit`, first-occurrence order);
+Steps arrive grouped by sun position (:class:`cityshade.sunhours.plan.Unit`, first-occurrence order);
 :class:`Stretches` replays them in time order, keeping a unit's lit flags only while a later
 step still shares its sun. Sums are float64 in step order, the same for any thread count.
 """
@@ -113,7 +113,7 @@ class Stretches:
 
     @classmethod
     def for_steps(cls, steps, min_stretch_h: float = 0.0) -> "Stretches":
-        """From :class:`cityshade.sunhours.run.Step` objects."""
+        """From :class:`cityshade.sunhours.plan.Step` objects."""
         return cls([s.start_utc.timestamp() for s in steps],
                    [s.end_utc.timestamp() for s in steps], min_stretch_h)
 

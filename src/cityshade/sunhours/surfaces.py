@@ -8,7 +8,7 @@ density)))``: the midpoint subdivision), and the centroid of each is a sample ca
 every polygon gets at least one point per triangle and the area-weighted mean of a constant is
 exact. A sample is lit when its outward normal (the polygon's winding, CityGML's convention)
 faces the sun and its shadow ray through the kd-tree is free: the same facing rule and ray
-offset as the per-pixel techniques (DESIGN §14).
+offset as the per-pixel techniques (docs/DESIGN.md §9).
 """
 from __future__ import annotations
 
@@ -195,10 +195,7 @@ def samples_lit(scene, samples: SurfaceSamples, sun, t_days: float,
     ``izb`` (:func:`cityshade.lightspace.sunlit`) or ``raytrace``
     (:func:`cityshade.trace.sunlit`), the same answer.
     """
-    if engine == "raytrace":
-        from cityshade.trace import sunlit
-    else:
-        from cityshade.lightspace import sunlit
+    from cityshade.shadows.visibility import sunlit
 
     lit = np.zeros(samples.n, bool)
     if not sun.above_horizon or samples.n == 0:
@@ -207,7 +204,7 @@ def samples_lit(scene, samples: SurfaceSamples, sun, t_days: float,
     faces = np.flatnonzero(samples.normals @ direction > 0.0)
     if len(faces):
         lit[faces] = sunlit(scene, samples.points_m[faces], samples.normals[faces], direction,
-                            t_days)
+                            t_days, engine=engine)
     return lit
 
 

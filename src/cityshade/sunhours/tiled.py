@@ -2,7 +2,7 @@
 
 A batch's receivers are the surface points whose sun-hours it sums: the map's pixels (the
 camera pass, done once) and the surface samples of ``--surfaces``. Both get the same exact
-per-step rule as the untiled run (:class:`cityshade.sunhours.run._PixelRays`,
+per-step rule as the untiled run (:func:`cityshade.sunhours.accumulate.compute`,
 :func:`cityshade.sunhours.surfaces.samples_lit`): a receiver is lit when its oriented normal faces the
 sun and its shadow ray is free. That rule reads one receiver at a time, so any split of the
 receivers gives the same booleans; the sums are float64 added in the order of the sun
@@ -27,22 +27,19 @@ from __future__ import annotations
 import math
 import time
 from dataclasses import dataclass, field
-from typing import Any, Callable, Sequence
+from typing import Callable, Sequence
 
 import numpy as np
 from numba import njit
 
 from cityshade.errors import UsageError
+from cityshade.sunhours.checkpoint import SaveThrottle
+from cityshade.sunhours.request import SunHoursRequest
 
 __all__ = ["TilePlan", "plan_tiles", "receiver_lit", "task_lit", "accumulate", "add_lit", "halo_m",
-           "tiled_sun_hours", "RECEIVERS_NAME", "EXACT_ENGINES"]
+           "tiled_sun_hours", "run_tiled", "RECEIVERS_NAME"]
 
 RECEIVERS_NAME = "receivers.npy"
-#: Techniques whose per-receiver answer does not depend on the other receivers.
-EXACT_ENGINES = ("izb", "raytrace")
-#: Sun positions per task by default: enough work per task (tens of ms each) that the
-#: scheduling cost of a distributed run stays small, few enough for a steady progress bar.
-DEFAULT_BLOCK = 8
 
 
 @dataclass
@@ -169,15 +166,9 @@ def receiver_lit(scene, points: np.ndarray, normals: np.ndarray, direction: np.n
             origins = receivers.origins(direction, faces)
         else:
             origins = shadow_rays_from_surface(points[faces], normals[faces], direction)
-        if engine == "izb":
-            from cityshade import lightspace
+        from cityshade.shadows.visibility import occluded
 
-            blocked = lightspace.occluded(scene, origins, direction, t_days)
-        else:
-            from cityshade.trace import occluded
-
-            blocked = occluded(scene, origins, direction, t_days)
-        lit[faces] = ~blocked
+        lit[faces] = ~occluded(scene, origins, direction, t_days, engine=engine)
     return lit
 
 
@@ -247,10 +238,10 @@ def halo_m(scene, lowest_receiver_z_m: float, elevations_deg: Sequence[float]) -
     """Horizontal reach of a receiver's shadow rays over the run: (highest caster − lowest
     receiver) / tan(lowest sun elevation above the horizon); 0 without a sun up."""
     up = [float(e) for e in elevations_deg if e > 0.0]
-    tiled = getattr(scene, "tiled", None)  # a tiled cache's view: the whole city's top
-    if not up or (scene.kdtree is None and tiled is None):
+    if not up or not scene.can_trace:
         return 0.0
-    hi = tiled.index["box_m"][1] if tiled is not None else scene.kdtree.box_scale_m()[1]
+    # A tiled cache's view: the whole city's top.
+    hi = scene.tiling.source.box_m[1] if scene.is_tiled else scene.kdtree.box_scale_m()[1]
     rise = max(0.0, float(hi[2]) - float(lowest_receiver_z_m))
     return rise / math.tan(math.radians(min(up)))
 
@@ -268,7 +259,7 @@ class TiledState:
 
 
 def _load_state(checkpoint, n_tiles: int, n_units: int, shape: tuple[int, int]):
-    """A saved tiled state that fits, else None (see :class:`cityshade.sunhours.run.Checkpoint`)."""
+    """A saved tiled state that fits, else None (see :class:`cityshade.sunhours.checkpoint.Checkpoint`)."""
     import zipfile
 
     if checkpoint is None or not checkpoint.path.exists():
@@ -298,7 +289,7 @@ def _load_state(checkpoint, n_tiles: int, n_units: int, shape: tuple[int, int]):
 
 def _save_state(checkpoint, state: TiledState, parts=None) -> None:
     """Atomically, the manifest told the new checksum first; ``units_done`` is what every
-    tile has added (what :meth:`cityshade.sunhours.run.Checkpoint.units_done` reads); with
+    tile has added (what :meth:`cityshade.sunhours.checkpoint.Checkpoint.units_done` reads); with
     ``parts``, each tile's sunlit stretches as ``st{tile}_{name}``."""
     done = int(state.tile_done.min()) if state.tile_done.size else 0
     extra = {f"st{t}_{k}": v for t, part in enumerate(parts or ())
@@ -308,7 +299,7 @@ def _save_state(checkpoint, state: TiledState, parts=None) -> None:
 
 @dataclass
 class TiledRun:
-    """What :func:`tiled_sun_hours` adds to :class:`cityshade.sunhours.run.SunHours`."""
+    """What :func:`tiled_sun_hours` adds to :class:`cityshade.sunhours.accumulate.SunHours`."""
 
     plan: TilePlan
     month_hours: dict[str, np.ndarray] = field(default_factory=dict)
@@ -318,91 +309,28 @@ class TiledRun:
     halo_m: float = 0.0
 
 
-def unit_month_weights(units, weights_h: np.ndarray, step_month: Sequence[str] | None
-                       ) -> tuple[list[str], np.ndarray]:
-    """(month labels, (U, 1 + M) weights): column 0 the unit's total weight (its own), then
-    its weight in each month (its steps' weights there, added in step order)."""
-    months = sorted(set(step_month)) if step_month is not None else []
-    col = {m: i + 1 for i, m in enumerate(months)}
-    w = np.zeros((len(units), 1 + len(months)), np.float64)
-    for u, unit in enumerate(units):
-        w[u, 0] = unit.weight_h
-        if step_month is not None:
-            per: dict[int, float] = {}
-            for i in unit.steps:
-                c = col[step_month[i]]
-                per[c] = per[c] + float(weights_h[i]) if c in per else float(weights_h[i])
-            for c, v in per.items():
-                w[u, c] = v
-    return months, w
+def _resume(checkpoint, plan: TilePlan, units, n_rows: int, pixel_shape, stretches):
+    """The run's state (saved, or zeros) and each tile's sunlit stretches (None without)."""
+    n_tiles = plan.n_tiles
+    state = _load_state(checkpoint, n_tiles, len(units), (n_rows, plan.n_slots))
+    if state is None:
+        state = TiledState(np.zeros(n_tiles, np.int64), np.zeros((n_rows, plan.n_slots),
+                                                                   np.float64))
+    parts = None
+    if stretches is not None:
+        stretches.plan(units, pixel_shape, plan.n_samples)
+        parts = [stretches.part(int(plan.start[t + 1] - plan.start[t]))
+                 for t in range(n_tiles)]
+        for t, part in enumerate(parts):
+            if state.tile_done[t]:
+                part.restore(state.stretches.get(t, {}))
+    return state, parts
 
 
-def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, suns,
-                    technique: str = "izb", ground: str | None = None,
-                    samples_per_m2: float | None = None, checkpoint=None,
-                    tile_px: int | None = None, block: int = DEFAULT_BLOCK,
-                    step_month: Sequence[str] | None = None, workdir=None,
-                    executor=None, save_every_s: float = 10.0,
-                    on_plan: Callable[[int], None] | None = None,
-                    on_task: Callable[[int, int, list], None] | None = None,
-                    stretches=None):
-    """:func:`cityshade.sunhours.run.sun_hours` over tiles of receivers (and optionally per month).
-
-    Parameters
-    ----------
-    scene, camera, instants_utc, t_days, weights_h, suns, technique, ground, samples_per_m2
-        As for :func:`cityshade.sunhours.run.sun_hours` (``suns`` required; ``technique`` exact).
-    checkpoint : cityshade.sunhours.run.Checkpoint, optional
-        Saved every ``save_every_s`` seconds and when the run stops (Ctrl-C included).
-    tile_px : int, optional
-        Tile side in pixels; None: one tile.
-    block : int
-        Sun positions per task.
-    step_month : sequence of str, optional
-        A label (YYYY-MM) per step: also sum per month.
-    workdir : path-like, optional
-        Where ``receivers.npy`` is written for the workers of ``executor``.
-    executor : cityshade.sunhours.distributed.Executor, optional
-        Runs the tasks elsewhere; default: here, in order.
-    on_plan : callable(tasks_to_run)
-    on_task : callable(tasks_done, tasks_total, units_finished)
-        After each task is added; ``units_finished`` lists the sun positions (indices into
-        the run's units) that every tile has now added.
-    stretches : cityshade.sunhours.stretches.Stretches, optional
-        Also keep the sunlit stretches, as :func:`cityshade.sunhours.run.sun_hours` does: each tile
-        replays its own receivers' steps in time order (its blocks arrive in sun-position
-        order), so every receiver sees the steps of the untiled run; merged at the end
-        (``result.stretches``). Kept for the whole run, not per month.
-
-    Returns
-    -------
-    (SunHours, TiledRun)
-    """
-    from cityshade.sunhours.run import SunHours, step_weights, plan_run, receivers_pass
-
-    if technique not in EXACT_ENGINES:
-        raise UsageError(f"tiled and distributed batches need an exact technique "
-                         f"({', '.join(EXACT_ENGINES)}), not {technique!r}: the others fit "
-                         f"their maps to the receivers, so tiles would change the answer")
-    if block < 1:
-        raise UsageError(f"a task needs at least one sun position, not {block}")
-    if camera is None and samples_per_m2 is None:
-        raise UsageError("nothing to compute: give a camera, samples_per_m2, or both")
-    if scene.kdtree is None and getattr(scene, "tiled", None) is None:
-        raise UsageError("the scene file has no kd-tree; rebuild it with `cityshade build`")
-    t_start = time.perf_counter()
-    instants = list(instants_utc)
-    weights = step_weights(instants, weights_h)
-    suns = list(suns)
-    timings = dict.fromkeys(("suns_s", "camera_s", "samples_s", "shadow_s", "accumulate_s",
-                             "checkpoint_s"), 0.0)
-    warnings: list[str] = []
-    units, below, duplicates = plan_run(scene, instants, t_days, suns, weights, warnings)
-    months, unit_w = unit_month_weights(units, weights, step_month)
-
-    diagnostics: dict[str, Any] = {}
-    cp, samples = receivers_pass(scene, camera, t_days, ground, samples_per_m2, timings,
-                                 diagnostics)
+def _plan_receivers(scene, request: SunHoursRequest, prep) -> tuple[TilePlan, float]:
+    """The receivers of a prepared run in tiles, and the reach of their shadow rays."""
+    cp, samples = prep.cp, prep.samples
+    camera, tile_px = request.camera, request.tile_px
     pixel_m = float(camera.pixel_size_m) if camera is not None and camera.kind == "map" else 1.0
     plan = plan_tiles(None if cp is None else cp.valid,
                       None if cp is None else cp.surfaces.position_m,
@@ -411,116 +339,27 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
                       None if samples is None else samples.normals,
                       tile_px, (tile_px or 1) * pixel_m)
     low_z = float(plan.data[:, 2].min()) if plan.data.shape[0] else 0.0
-    reach = halo_m(scene, low_z, [u.sun.elevation_deg for u in units])
+    return plan, halo_m(scene, low_z, [u.sun.elevation_deg for u in prep.units])
 
-    n_tiles, n_units = plan.n_tiles, len(units)
-    state = _load_state(checkpoint, n_tiles, n_units, (1 + len(months), plan.n_slots))
-    if state is None:
-        state = TiledState(np.zeros(n_tiles, np.int64),
-                           np.zeros((1 + len(months), plan.n_slots), np.float64))
-    parts = None
-    if stretches is not None:
-        stretches.plan(units, plan.pixel_shape if cp is not None else None, plan.n_samples)
-        parts = [stretches.part(int(plan.start[t + 1] - plan.start[t]))
-                 for t in range(n_tiles)]
-        for t, part in enumerate(parts):
-            if state.tile_done[t]:
-                part.restore(state.stretches.get(t, {}))
-    directions = np.array([np.asarray(u.sun.direction, np.float64) for u in units]
-                          ).reshape(n_units, 3)
-    blocks = sun_blocks(directions, block)
-    # Tasks of a tile whose first sun positions are saved resume at the saved count. Block by
-    # block over the tiles: the light-space engine re-sorts its casters when the sun's dominant
-    # axis changes, i.e. a few times a day in sun order, but that many times per tile if each
-    # tile ran through the day alone (12 sorts instead of 3 for 4 tiles of the 1M city); and
-    # no block crosses such a change (sun_blocks).
-    tasks = [(t, max(lo, int(state.tile_done[t])), hi) for lo, hi in blocks
-             for t in range(n_tiles) if hi > state.tile_done[t]]
-    total = sum(1 for t in range(n_tiles) for lo, hi in blocks)
-    resumed_tasks = total - len(tasks)
-    if on_plan is not None:
-        on_plan(len(tasks))
-    units_resumed = int(state.tile_done.min()) if n_tiles else n_units
 
-    finished_units = units_resumed
-    done_tasks = resumed_tasks
-    last_save = time.perf_counter()
-    pending: dict[int, dict[int, np.ndarray]] = {t: {} for t in range(n_tiles)}
+def _tiled_result(prep, run: TiledRun, state: TiledState, months: list[str], parts,
+                  stretches, units_resumed: int):
+    """The SunHours of a finished tiled run (and ``run``'s per-month hours); the stretches of
+    the tiles merged."""
+    from cityshade.sunhours.accumulate import make_result
 
-    consistent = True  # False while a sun position is half added (then nothing is saved)
-
-    def add(t: int, lo: int, bits: np.ndarray) -> None:
-        nonlocal consistent
-        a, b = int(plan.start[t]), int(plan.start[t + 1])
-        slots = plan.slot[a:b]
-        for k in range(bits.shape[0]):
-            lit = np.unpackbits(bits[k], count=b - a).view(np.bool_)
-            consistent = False
-            accumulate(state.sums, slots, unit_w[lo + k], lit)
-            if parts is not None:
-                parts[t].add(lo + k, lit, None)
-            state.tile_done[t] = lo + k + 1
-            consistent = True
-
-    def finished(t: int, lo: int, bits: np.ndarray) -> None:
-        # Blocks of one tile are added in sun-position order; a block that comes early waits.
-        nonlocal finished_units, done_tasks, last_save
-        pending[t][lo] = bits
-        while int(state.tile_done[t]) in pending[t]:
-            start = int(state.tile_done[t])
-            t0 = time.perf_counter()
-            add(t, start, pending[t].pop(start))
-            timings["accumulate_s"] += time.perf_counter() - t0
-            done_tasks += 1
-            now_done = int(state.tile_done.min())
-            newly = list(range(finished_units, now_done))
-            finished_units = now_done
-            if checkpoint is not None and time.perf_counter() - last_save >= save_every_s:
-                t0 = time.perf_counter()
-                _save_state(checkpoint, state, parts)
-                timings["checkpoint_s"] += time.perf_counter() - t0
-                last_save = time.perf_counter()
-            if on_task is not None:
-                on_task(done_tasks, total, newly)
-
-    t0 = time.perf_counter()
-    completed = False
-    try:
-        if executor is None:
-            for t, lo, hi in tasks:
-                a, b = int(plan.start[t]), int(plan.start[t + 1])
-                finished(t, lo, task_lit(scene, plan.data, a, b, directions[lo:hi],
-                                         float(t_days), technique))
-        else:
-            executor.run(plan, tasks, directions, float(t_days), technique, workdir,
-                         finished)
-        completed = True
-    finally:
-        timings["shadow_s"] = time.perf_counter() - t0
-        if checkpoint is not None and consistent and (tasks or not completed):
-            t1 = time.perf_counter()
-            _save_state(checkpoint, state, parts)
-            timings["checkpoint_s"] += time.perf_counter() - t1
-
+    plan, cp, samples = run.plan, prep.cp, prep.samples
     n_px = plan.pixel_shape[0] * plan.pixel_shape[1]
 
     def pixels(row):
         return np.where(cp.valid, row[:n_px].reshape(plan.pixel_shape), np.nan
                         ).astype(np.float32)
 
-    hours = pixels(state.sums[0]) if cp is not None else None
     if parts is not None:
         for part in parts:
             part.finish()
         stretches.merge(parts, [plan.slot[plan.start[t]:plan.start[t + 1]]
-                                for t in range(n_tiles)])
-    sample_hours = polygon_hours = None
-    run = TiledRun(plan=plan, tasks=total, tasks_resumed=resumed_tasks, halo_m=reach)
-    if samples is not None:
-        from cityshade.sunhours.surfaces import polygon_means
-
-        sample_hours = state.sums[0, n_px:].copy()
-        polygon_hours = polygon_means(samples, sample_hours)
+                                for t in range(plan.n_tiles)])
     for m, month in enumerate(months):
         if cp is not None:
             run.month_hours[month] = pixels(state.sums[1 + m])
@@ -528,19 +367,182 @@ def tiled_sun_hours(scene, camera, instants_utc, t_days: float, *, weights_h, su
             from cityshade.sunhours.surfaces import polygon_means
 
             run.month_sample_hours[month] = polygon_means(samples, state.sums[1 + m, n_px:])
-    timings["total_s"] = time.perf_counter() - t_start
-    diagnostics["tiles"] = {"tiles": n_tiles, "tile_px": plan.tile_px, "tasks": total,
-                            "sun_positions_per_task": block, "halo_m": reach,
-                            "receivers": int(plan.data.shape[0])}
-    below_set = set(below)
-    result = SunHours(hours=hours, valid=None if cp is None else cp.valid,
-                      surfaces=None if cp is None else cp.surfaces, samples=samples,
-                      sample_hours=sample_hours, polygon_hours=polygon_hours, steps=len(suns),
-                      steps_below_horizon=len(below), steps_duplicate=duplicates,
-                      units=n_units, units_resumed=units_resumed,
-                      hours_total=float(weights.sum()),
-                      hours_sun_up=float(sum(w for i, w in enumerate(weights)
-                                             if i not in below_set)),
-                      suns=suns, timings_s=timings, diagnostics=diagnostics, warnings=warnings,
-                      stretches=stretches)
+    return make_result(prep, pixels(state.sums[0]) if cp is not None else None,
+                       state.sums[0, n_px:].copy() if samples is not None else None,
+                       units_resumed, stretches)
+
+
+def tiled_sun_hours(scene, request: SunHoursRequest, *, checkpoint=None, executor=None,
+                    workdir=None, on_plan: Callable[[int], None] | None = None,
+                    on_task: Callable[[int, int, list, int], None] | None = None,
+                    stretches=None, save_every_s: float | None = None):
+    """:func:`cityshade.sunhours.accumulate.sun_hours` over tiles of receivers (and optionally
+    per month): ``request.tile_px`` (None: one tile), ``request.block`` sun positions per task,
+    ``request.step_month`` (a YYYY-MM label per step: also sum per month); the technique must
+    be exact.
+
+    Parameters
+    ----------
+    scene : Scene
+    request : cityshade.sunhours.request.SunHoursRequest
+    checkpoint : cityshade.sunhours.checkpoint.Checkpoint, optional
+        Saved every ``save_every_s`` seconds (default ``CHECKPOINT_EVERY_S``) and when the
+        run stops (Ctrl-C included).
+    executor : cityshade.sunhours.distributed.DaskExecutor, optional
+        Runs the tasks elsewhere; default: here, in order.
+    workdir : path-like, optional
+        Where ``receivers.npy`` is written for the workers of ``executor``.
+    on_plan : callable(tasks_to_run)
+    on_task : callable(tasks_done, tasks_total, units_finished, units_done)
+        After each task is added; ``units_finished`` lists the sun positions (Unit) that
+        every tile has now added, ``units_done`` counts them all.
+    stretches : cityshade.sunhours.stretches.Stretches, optional
+        Also keep the sunlit stretches: each tile replays its own receivers' steps in time
+        order (its blocks arrive in sun-position order), so every receiver sees the steps of
+        the untiled run; merged at the end (``result.stretches``). Kept for the whole run,
+        not per month.
+
+    Returns
+    -------
+    (SunHours, TiledRun)
+    """
+    from cityshade.sunhours.accumulate import prepare
+    from cityshade.sunhours.plan import unit_month_weights
+    from cityshade.sunhours.request import exact_engine
+
+    engine = exact_engine(request.technique, "--tile-px, --scheduler and --monthly")
+    prep = prepare(scene, request, ("suns_s", "camera_s", "samples_s", "shadow_s",
+                                    "accumulate_s", "checkpoint_s"))
+    cp, units, t_days = prep.cp, prep.units, float(request.t_days)
+    months, unit_w = unit_month_weights(units, prep.weights, request.step_month)
+    plan, reach = _plan_receivers(scene, request, prep)
+    n_tiles, n_units = plan.n_tiles, len(units)
+    state, parts = _resume(checkpoint, plan, units, 1 + len(months),
+                           None if cp is None else plan.pixel_shape, stretches)
+    directions = np.array([np.asarray(u.sun.direction, np.float64) for u in units]
+                          ).reshape(n_units, 3)
+    blocks = sun_blocks(directions, request.block)
+    # Tasks of a tile whose first sun positions are saved resume at the saved count. Block by
+    # block over the tiles: the light-space engine re-sorts its casters when the sun's dominant
+    # axis changes, i.e. a few times a day in sun order, but that many times per tile if each
+    # tile ran through the day alone (12 sorts instead of 3 for 4 tiles of the 1M city); and
+    # no block crosses such a change (sun_blocks).
+    tasks = [(t, max(lo, int(state.tile_done[t])), hi) for lo, hi in blocks
+             for t in range(n_tiles) if hi > state.tile_done[t]]
+    total = n_tiles * len(blocks)
+    resumed_tasks = total - len(tasks)
+    if on_plan is not None:
+        on_plan(len(tasks))
+    units_resumed = int(state.tile_done.min()) if n_tiles else n_units
+    progress = {"units": units_resumed, "tasks": resumed_tasks}
+    pending: dict[int, dict[int, np.ndarray]] = {t: {} for t in range(n_tiles)}
+    throttle = SaveThrottle(None if checkpoint is None else
+                            (lambda: _save_state(checkpoint, state, parts)),
+                            prep.timings, save_every_s)
+
+    def add(t: int, lo: int, bits: np.ndarray) -> None:
+        a, b = int(plan.start[t]), int(plan.start[t + 1])
+        for k in range(bits.shape[0]):
+            lit = np.unpackbits(bits[k], count=b - a).view(np.bool_)
+            throttle.consistent = False  # a sun position half added: nothing is saved
+            accumulate(state.sums, plan.slot[a:b], unit_w[lo + k], lit)
+            if parts is not None:
+                parts[t].add(lo + k, lit, None)
+            state.tile_done[t] = lo + k + 1
+            throttle.consistent = True
+
+    def finished(t: int, lo: int, bits: np.ndarray) -> None:
+        # Blocks of one tile are added in sun-position order; a block that comes early waits.
+        pending[t][lo] = bits
+        while int(state.tile_done[t]) in pending[t]:
+            start = int(state.tile_done[t])
+            t0 = time.perf_counter()
+            add(t, start, pending[t].pop(start))
+            prep.timings["accumulate_s"] += time.perf_counter() - t0
+            progress["tasks"] += 1
+            now_done = int(state.tile_done.min())
+            newly = units[progress["units"]:now_done]
+            progress["units"] = now_done
+            throttle.maybe()
+            if on_task is not None:
+                on_task(progress["tasks"], total, newly, now_done)
+
+    t0 = time.perf_counter()
+    completed = False
+    try:
+        if executor is None:
+            for t, lo, hi in tasks:
+                a, b = int(plan.start[t]), int(plan.start[t + 1])
+                finished(t, lo, task_lit(scene, plan.data, a, b, directions[lo:hi], t_days,
+                                         engine))
+        else:
+            executor.run(plan, tasks, directions, t_days, engine, workdir, finished)
+        completed = True
+    finally:
+        prep.timings["shadow_s"] = time.perf_counter() - t0
+        if throttle.consistent and (tasks or not completed):
+            throttle.save()
+
+    run = TiledRun(plan=plan, tasks=total, tasks_resumed=resumed_tasks, halo_m=reach)
+    prep.diagnostics["tiles"] = {"tiles": n_tiles, "tile_px": plan.tile_px, "tasks": total,
+                                 "sun_positions_per_task": request.block, "halo_m": reach,
+                                 "receivers": int(plan.data.shape[0])}
+    result = _tiled_result(prep, run, state, months, parts, stretches, units_resumed)
+    return result, run
+
+
+def run_tiled(scene, request: SunHoursRequest, *, checkpoint=None, progress=None,
+              workdir=None, on_step=None, stretches=None):
+    """The tiled run of :func:`cityshade.sunhours.run.run_batch`, here or on Dask
+    (``request.scheduler``): (SunHours, TiledRun).
+
+    Parameters
+    ----------
+    progress : cityshade.sunhours.checkpoint.ManifestProgress, optional
+        Told each task's finished sun positions; written when the run stops.
+    on_step : callable(tasks_done, tasks_total, None), optional
+    """
+    import contextlib
+
+    from cityshade.errors import CityshadeError
+
+    request.check(scene)
+    scheduler, executor = request.scheduler, None
+    if scheduler is not None and not isinstance(scheduler, str):
+        executor, scheduler = scheduler, getattr(scheduler, "spec", "executor")
+    elif scheduler is not None:
+        from cityshade.sunhours.distributed import DaskExecutor
+
+        if request.scene_path is None:
+            raise UsageError("a distributed batch needs the scene's cache file path")
+        sha = (scene.header or {}).get("source", {}).get("sha256", "")
+        executor = DaskExecutor(scheduler, request.scene_path, sha)
+
+    def on_task(done, total, newly, units_done):
+        if progress is not None:
+            progress.advance(done, total, [i for u in newly for i in u.steps],
+                             units_done if newly else None, tasks=True)
+        if on_step is not None:
+            on_step(done, total, None)
+
+    if hasattr(executor, "start"):
+        first = next((s.direction for s in request.suns or () if s.above_horizon), None)
+        executor.start(scene, first, float(request.t_days), request.technique)
+    elif hasattr(executor, "connect"):
+        executor.connect()
+    try:
+        result, run = tiled_sun_hours(scene, request, checkpoint=checkpoint, executor=executor,
+                                      workdir=workdir, on_task=on_task, stretches=stretches)
+    except BaseException:
+        if progress is not None:
+            with contextlib.suppress(OSError, CityshadeError):  # the first error is told
+                progress.write()  # the progress of a stopped run, as far as it got
+        raise
+    finally:
+        if hasattr(executor, "close"):
+            executor.close()
+    if executor is not None:
+        result.diagnostics["tiles"]["scheduler"] = scheduler
+        result.diagnostics["tiles"]["workers"] = getattr(executor, "workers", 0)
+        result.diagnostics["tiles"]["tasks_on_driver"] = getattr(executor, "tasks_on_driver", 0)
     return result, run

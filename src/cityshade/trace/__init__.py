@@ -10,10 +10,10 @@ from __future__ import annotations
 import numpy as np
 
 from cityshade.accel.kdtree_layout import KdTree
-from cityshade.errors import UsageError
+from cityshade.errors import TraceInputError
 from cityshade.trace import bricks
-from cityshade.trace.bricks import (DEFAULT_BRICK_SIZE, intersect_bricks, occluded_bricks,
-                                    tile_order)
+from cityshade.trace.bricks import (DEFAULT_BRICK_SIZE, ClosestHits, intersect_bricks,
+                                    occluded_bricks, tile_order)
 from cityshade.runtime.memory import Recycler
 from cityshade.util import check_t_days
 
@@ -34,23 +34,17 @@ UNIT_LENGTH_TOL = 1e-4
 BOX_PAD_REL = 1e-6
 
 
-class TraceInputError(UsageError):
-    """Rays handed to the tracing API of the wrong shape or with non-finite values."""
-
-
 #: The shadow-ray origins' memory, used again once the caller has let go of them (a map
 #: frame's are 81 MB: fresh pages cost 15-150 ms on a loaded machine).
 _ORIGINS = Recycler(keep=2)
 
 
 def tree_of(tree) -> KdTree:
-    """Accept a KdTree or anything holding one as ``.kdtree`` (the Scene)."""
+    """``tree`` checked to be one :class:`KdTree` (a scene, tiled or not, traces through
+    :mod:`cityshade.shadows.visibility`, which hands each tree to the engines)."""
     if isinstance(tree, KdTree):
         return tree
-    inner = getattr(tree, "kdtree", None)
-    if isinstance(inner, KdTree):
-        return inner
-    raise TraceInputError(f"expected a KdTree or a scene with a .kdtree, not {type(tree).__name__}")
+    raise TraceInputError(f"expected a KdTree, not {type(tree).__name__}")
 
 
 def _padded_box(tree: KdTree) -> tuple[np.ndarray, np.ndarray]:
@@ -106,11 +100,6 @@ def _explain_bad_rays(origins, directions):
                           f"{length[worst]:.6g})")
 
 
-def _subset(rays_or_shared, rays):
-    """The rows ``rays`` of a per-ray array, or the array itself when it has one row for all."""
-    return rays_or_shared if rays_or_shared.shape[0] == 1 else rays_or_shared[rays]
-
-
 def _brick(brick_size) -> int:
     b = int(brick_size)
     if b < 1:
@@ -124,7 +113,7 @@ def occluded(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
 
     Parameters
     ----------
-    tree : KdTree or scene with ``.kdtree``
+    tree : KdTree
         The 4-D kd-tree.
     origins : (N, 3) float array
         Ray origins, render-space metres. For shadow rays use
@@ -149,12 +138,6 @@ def occluded(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     TraceInputError
         Wrong shapes, non-finite values, non-unit directions, negative or NaN ``tmax``.
     """
-    if getattr(tree, "tiled", None) is not None:  # a tiled cache's view: per tile, ORed
-        from cityshade.store.tiled import occluded_over_tiles
-
-        o, d, tm = _rays(origins, directions, tmax)
-        return occluded_over_tiles(tree, o, d, lambda part, rays: occluded(
-            part, o[rays], _subset(d, rays), t_days, _subset(tm, rays), brick_size=brick_size))
     kd = tree_of(tree)
     origins, directions, tmax_arr = _rays(origins, directions, tmax)
     t = check_t_days(t_days, TraceInputError)
@@ -198,8 +181,8 @@ def intersect(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     if n == 0 or kd.tri_records.shape[0] == 0:
         return dist, tri, u, v
     lo, hi = _padded_box(kd)
-    intersect_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, dist, tri,
-                     u, v)
+    intersect_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick,
+                     ClosestHits(dist, tri, u, v))
     return dist, tri, u, v
 
 
@@ -236,7 +219,7 @@ def shadow_rays_from_surface(points, normals, sun_dir) -> np.ndarray:
         the ray itself puts it in front of any surface it crosses there (a surface it crosses
         at t = 0 it leaves for t > 0, whichever way that surface faces). Points whose normal
         faces away from the sun are offset all the same; callers treat those as
-        self-shadowed (DESIGN §14).
+        self-shadowed (docs/DESIGN.md §9).
     """
     points = np.ascontiguousarray(points, dtype=np.float64)
     normals = np.ascontiguousarray(normals, dtype=np.float64)
@@ -273,7 +256,7 @@ def sunlit(tree, points, normals, sun_direction, t_days: float = 0.0) -> np.ndar
 
     Parameters
     ----------
-    tree : KdTree or scene with ``.kdtree``
+    tree : KdTree
     points, normals : (N, 3) float arrays
         Surface points (render space, metres) and their unit normals on the side facing the sun.
     sun_direction : (3,) float array

@@ -11,8 +11,10 @@ raster, and a thread takes neighbouring bricks one after the other.
 """
 from __future__ import annotations
 
-import numpy as np
 import contextlib
+from typing import NamedTuple
+
+import numpy as np
 
 import numba
 from numba import njit, prange
@@ -151,13 +153,27 @@ def occluded_bricks(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_day
                _NO_F32, _NO_F32)
 
 
+class ClosestHits(NamedTuple):
+    """Per-ray output arrays of :func:`intersect_bricks`, filled in place."""
+
+    #: (N,) float64 distance in metres to the hit (``inf`` on a miss).
+    dist: np.ndarray
+    #: (N,) int32 triangle id (-1 on a miss).
+    tri: np.ndarray
+    #: (N,) float32 barycentric u of the hit (0 on a miss).
+    u: np.ndarray
+    #: (N,) float32 barycentric v of the hit (0 on a miss).
+    v: np.ndarray
+
+
 def intersect_bricks(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_days, brick_size,
-                     out_t, out_tri, out_u, out_v):
-    """Closest hits of all rays; misses get ``t = inf``, ``tri = -1``, ``u = v = 0``."""
+                     out: ClosestHits):
+    """Closest hits of all rays into ``out``; misses get ``t = inf``, ``tri = -1``,
+    ``u = v = 0``. The rays are as for :func:`occluded_bricks`."""
     n_bricks = (origins.shape[0] + brick_size - 1) // brick_size
     run_chunks(trace_range, n_bricks, BRICKS_PER_CHUNK, tree, box_lo, box_hi, origins,
-               directions, tmin, tmax, t_days, brick_size, True, _NO_BOOL, out_t, out_tri,
-               out_u, out_v)
+               directions, tmin, tmax, t_days, brick_size, True, _NO_BOOL, out.dist, out.tri,
+               out.u, out.v)
 
 
 #: :func:`shadow_origins` check codes, in the order the wrapper reports them.

@@ -1,0 +1,91 @@
+"""Exact visibility on a scene: which rays are blocked, which points see the sun.
+
+The engines take one :class:`~cityshade.accel.KdTree` each: :mod:`cityshade.trace` (kd-tree
+rays, ``raytrace``) and :mod:`cityshade.lightspace` (``izb``), the same answer on every ray. A
+scene is one tree of its own or a tiled cache's view, whose rays go through every tile they can
+reach (:meth:`~cityshade.geometry.scene.Scene.any_hit`). This module joins the two, so no engine
+knows about tiles and no caller about engines' trees.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from cityshade.errors import ContractError
+
+
+def _engine(name: str):
+    """The any-hit function of the exact engine ``name`` (a :class:`TechniqueSpec`'s
+    ``engine``): ``(tree, origins, directions, t_days, **options) -> (N,) bool``."""
+    if name == "izb":
+        from cityshade.lightspace import occluded
+
+        return occluded
+    if name == "raytrace":
+        from cityshade.trace import occluded
+
+        return occluded
+    raise ContractError(f"no exact engine named {name!r}")
+
+
+def occluded(scene, origins, directions, t_days: float = 0.0, *, engine: str = "raytrace",
+             **options) -> np.ndarray:
+    """(N,) bool: whether each ray from ``origins`` along ``directions`` is blocked by a
+    triangle present at city time ``t_days``.
+
+    Parameters
+    ----------
+    scene : Scene
+        A scene with its own kd-tree or a tiled cache's view.
+    origins : (N, 3) float array
+        Render-space metres (shadow rays: from
+        :func:`cityshade.trace.shadow_rays_from_surface`).
+    directions : (3,) or (N, 3) float array
+        Unit directions; ``izb`` takes one shared (3,) sun direction.
+    t_days : float
+        City time, days since 1970-01-01 UTC.
+    engine : str
+        ``raytrace`` or ``izb`` (:attr:`cityshade.shadows.TechniqueSpec.engine`).
+    **options
+        Passed to the engine: ``tmax`` and ``brick_size`` (``raytrace``), ``stats`` and
+        ``cell_m`` (``izb``).
+    """
+    run = _engine(engine)
+    origins = np.ascontiguousarray(origins, dtype=np.float64)
+    tmax = options.pop("tmax", None)
+    shared = np.asarray(directions).shape == (3,)
+
+    def hit(tree, rays):
+        d = directions if shared else _take(directions, rays)
+        extra = dict(options)
+        if tmax is not None:
+            extra["tmax"] = _take_per_ray(tmax, rays, len(origins))
+        return run(tree, _take(origins, rays), d, t_days, **extra)
+
+    return scene.any_hit(origins, directions, hit)
+
+
+def _take(arr, rays):
+    return arr if isinstance(rays, slice) else np.asarray(arr)[rays]
+
+
+def _take_per_ray(tmax, rays, n: int):
+    """``tmax`` for the rays ``rays``: a shared value as it is, a per-ray (N,) array's rows."""
+    arr = np.asarray(tmax, dtype=np.float64)
+    if isinstance(rays, slice) or arr.ndim == 0 or arr.shape == (1,) or n == 1:
+        return tmax
+    return arr[rays]
+
+
+def sunlit(scene, points, normals, sun_direction, t_days: float = 0.0, *,
+           engine: str = "raytrace", stats: dict | None = None) -> np.ndarray:
+    """(N,) bool: whether each surface point sees the sun, by one shadow ray from the point
+    pushed off its surface (:func:`cityshade.trace.shadow_rays_from_surface`).
+
+    ``points``, ``normals``: (N, 3) render-space metres and unit normals on the side facing the
+    sun; ``stats`` (``izb``): filled with the engine's profile."""
+    from cityshade.trace import shadow_rays_from_surface
+
+    sun = np.asarray(sun_direction, dtype=np.float64)
+    origins = shadow_rays_from_surface(points, normals, sun)
+    options = {} if stats is None else {"stats": stats}
+    return ~occluded(scene, origins, sun, t_days, engine=engine, **options)
