@@ -1,6 +1,10 @@
 """Small hand-written CityGML documents for reader tests."""
 from __future__ import annotations
 
+import copy
+
+from lxml import etree
+
 CG2 = ('xmlns="http://www.opengis.net/citygml/2.0" xmlns:gml="http://www.opengis.net/gml" '
        'xmlns:bldg="http://www.opengis.net/citygml/building/2.0" '
        'xmlns:app="http://www.opengis.net/citygml/appearance/2.0" '
@@ -63,3 +67,24 @@ def ground(x0, y0, x1, y1, z=0.0, gid="ground") -> str:
     return (f'<luse:LandUse gml:id="{gid}"><luse:lod1MultiSurface><gml:MultiSurface>'
             f"<gml:surfaceMember>{polygon(pts, gid + '_poly')}</gml:surfaceMember>"
             f"</gml:MultiSurface></luse:lod1MultiSurface></luse:LandUse>")
+
+
+def split_citygml(path, out_dir, n_tiles: int, overlap: int = 0) -> list:
+    """Write ``path`` as ``n_tiles`` files of consecutive cityObjectMembers, each tile but the
+    first repeating the last ``overlap`` members of the one before (a border duplicate);
+    every tile keeps the document's other children (envelope, appearances)."""
+    root = etree.parse(str(path)).getroot()
+    members = [c for c in root if isinstance(c.tag, str)
+               and etree.QName(c).localname == "cityObjectMember"]
+    for m in members:
+        root.remove(m)
+    cut = [round(i * len(members) / n_tiles) for i in range(n_tiles + 1)]
+    out = []
+    for t in range(n_tiles):
+        tile = copy.deepcopy(root)
+        for m in members[max(0, cut[t] - (overlap if t else 0)):cut[t + 1]]:
+            tile.append(copy.deepcopy(m))
+        name = out_dir / f"tile_{t}.gml"
+        etree.ElementTree(tile).write(str(name), xml_declaration=True, encoding="UTF-8")
+        out.append(name)
+    return out

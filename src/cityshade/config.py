@@ -142,7 +142,7 @@ class BiasSettings:
     """``[shadows.bias]``: the receiver-side bias of every map lookup (shadows/shadowmap.py).
 
     The defaults keep acne and peter-panning low on the sample city and on a box at 3° sun
-    elevation (tests/test_shadowmap.py).
+    elevation (tests/shadows/test_shadowmap.py).
     """
 
     #: Constant offset of receivers toward the sun, metres: covers float32 rounding of the

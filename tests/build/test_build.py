@@ -3,42 +3,19 @@ scene of the one file; duplicates across tile borders are kept once and counted;
 CityJSON tiles mix; mixed CRSs are refused unless --crs names the target."""
 from __future__ import annotations
 
-import copy
 import json
 import shutil
 
 import numpy as np
 import pytest
 from click.testing import CliRunner
-from lxml import etree
 
-from citygml_snippets import box_polygons, building, city
+from citygml_snippets import box_polygons, building, city, split_citygml
 from conftest import REPO, shared_file
 
 from cityshade.cli.main import cli
 
 SAMPLE = REPO / "sample_data" / "sample_city.gml"
-
-
-def split_citygml(path, out_dir, n_tiles: int, overlap: int = 0) -> list:
-    """Write ``path`` as ``n_tiles`` files of consecutive cityObjectMembers, each tile but the
-    first repeating the last ``overlap`` members of the one before (a border duplicate);
-    every tile keeps the document's other children (envelope, appearances)."""
-    root = etree.parse(str(path)).getroot()
-    members = [c for c in root if isinstance(c.tag, str)
-               and etree.QName(c).localname == "cityObjectMember"]
-    for m in members:
-        root.remove(m)
-    cut = [round(i * len(members) / n_tiles) for i in range(n_tiles + 1)]
-    out = []
-    for t in range(n_tiles):
-        tile = copy.deepcopy(root)
-        for m in members[max(0, cut[t] - (overlap if t else 0)):cut[t + 1]]:
-            tile.append(copy.deepcopy(m))
-        name = out_dir / f"tile_{t}.gml"
-        etree.ElementTree(tile).write(str(name), xml_declaration=True, encoding="UTF-8")
-        out.append(name)
-    return out
 
 
 @pytest.fixture(scope="module")

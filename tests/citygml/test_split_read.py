@@ -18,7 +18,7 @@ from cityshade.citygml import split
 from cityshade.citygml.reader import RawModel, _root_of, read_citygml
 from cityshade.errors import CityshadeError, XMLSyntaxError
 
-SAMPLE = Path(__file__).resolve().parents[1] / "sample_data" / "sample_city.gml"
+SAMPLE = Path(__file__).resolve().parents[2] / "sample_data" / "sample_city.gml"
 
 
 def assert_same_model(a: RawModel, b: RawModel, where: str = "") -> None:

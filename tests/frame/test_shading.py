@@ -11,7 +11,7 @@ from cityshade.citygml.namespaces import SURFACE_CLASSES, SURFACE_CODE
 from cityshade.frame.shading import (DEFAULT_PALETTE_SRGB8, ShadingError, ShadingSettings, shade,
                                to_srgb8)
 
-REPO = Path(__file__).parents[1]
+REPO = Path(__file__).parents[2]
 FACADE = REPO / "sample_data" / "sample_city_facade.png"
 
 

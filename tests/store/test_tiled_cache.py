@@ -207,7 +207,7 @@ def test_bad_input_one_line(built, tmp_path):
 def test_real_file_in_tiles(tmp_path):
     """The TUM campus, read as 3 files with border duplicates, built as a tiled cache of
     100 m tiles, renders the map of the same files built as one cache bit for bit."""
-    from test_tiles import split_citygml
+    from citygml_snippets import split_citygml
 
     from cityshade.build import build_file
     from cityshade.raster import camera as cams
@@ -288,7 +288,7 @@ def test_tiles_from_many_files_spilled_equal_the_assembled_city(tmp_path):
     assert not list(tmp_path.glob(".*.tmp"))  # the spill went with the temporary folder
 
     # The sample city in 3 files with border duplicates, in 60 m tiles.
-    from test_tiles import split_citygml
+    from citygml_snippets import split_citygml
 
     shutil.copy(REPO / "sample_data" / "sample_city_facade.png", tmp_path)
     files = split_citygml(SAMPLE, tmp_path, 3, overlap=2)

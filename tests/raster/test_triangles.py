@@ -12,7 +12,7 @@ from cityshade.raster import camera as cams
 from cityshade.raster import triangles as tc
 from cityshade.raster.depthpass import box_planes, projection_centre
 from cityshade.shadows import shadowmap as sm
-from test_kdtree import box_city
+from synthetic import box_city
 from test_rasterize import mini_scene
 
 

@@ -11,12 +11,8 @@ from cityshade.errors import TraceInputError
 from cityshade.trace import intersect, occluded, shadow_rays_from_surface, tile_order
 from conftest import run_with_and_without_jit, shared_file
 from reference import reference_closest_hit, reference_ray_hits
-from test_kdtree import BOX_FACES, box_city
-
-
-def unit(v):
-    v = np.asarray(v, dtype=np.float64)
-    return v / np.linalg.norm(v, axis=-1, keepdims=True)
+from synthetic import (BOX_FACES, box_city, closed_box_tree, edge_and_vertex_targets,
+                       unit)
 
 
 @pytest.fixture(scope="module")
@@ -85,31 +81,6 @@ def test_results_do_not_depend_on_thread_count_or_brick_size(tree):
                     occluded(tree, origins, directions, 0.0, brick_size=brick), occ_ref)
     finally:
         numba.set_num_threads(default)
-
-
-def closed_box_tree(lo=(1.0, 2.0, 3.0), size=(4.0, 5.0, 6.0), rotation_seed=None):
-    corners = np.array([(0, 0, 0), (1, 0, 0), (1, 1, 0), (0, 1, 0),
-                        (0, 0, 1), (1, 0, 1), (1, 1, 1), (0, 1, 1)], np.float64)
-    verts = np.asarray(lo) + corners * np.asarray(size)
-    if rotation_seed is not None:
-        q, _ = np.linalg.qr(np.random.default_rng(rotation_seed).normal(size=(3, 3)))
-        verts = verts @ q.T * 3.7 + 1234.5
-    verts = verts.astype(np.float32)
-    n = 12
-    tree = build_kdtree(verts, BOX_FACES.astype(np.int32), np.full(n, -np.inf),
-                        np.full(n, np.inf), np.zeros(n, np.int32))
-    return verts, tree
-
-
-def edge_and_vertex_targets(verts, triangles, fractions=(0.5, 0.25, 1 / 3, 0.9)):
-    """Every vertex and points on every edge of a mesh (float64)."""
-    v = verts.astype(np.float64)
-    targets = [v]
-    for a, b, c in triangles:
-        for i, j in ((a, b), (b, c), (c, a)):
-            for f in fractions:
-                targets.append([(1 - f) * v[i] + f * v[j]])
-    return np.vstack(targets)
 
 
 @pytest.mark.parametrize("rotation_seed", [None, 1, 2, 3])
@@ -326,7 +297,7 @@ def test_kernels_run_without_jit():
     script = r"""
 import json, numpy as np, sys
 sys.path.insert(0, sys.argv[1])
-from test_kdtree import box_city
+from synthetic import box_city
 from cityshade.accel import build_kdtree
 from cityshade.trace import intersect, occluded
 city = box_city(4, seed=9, extent_m=30.0)

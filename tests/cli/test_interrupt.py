@@ -19,7 +19,7 @@ import pytest
 #: here) and a render (about 2 s) are still running at every delay below on a fast machine
 #: (the 1,386-triangle sample city builds in half a second with warm kernels).
 CITY_TRIANGLES = 100_000
-SAMPLE = Path(__file__).resolve().parents[1] / "sample_data" / "sample_city.gml"
+SAMPLE = Path(__file__).resolve().parents[2] / "sample_data" / "sample_city.gml"
 #: Seconds after the start at which SIGINT is sent: after Python's start-up (the handler is
 #: installed first thing in main()), then spread over imports, reading, kernels and writing.
 DELAYS_S = (0.6, 1.1, 1.7)

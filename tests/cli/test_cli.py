@@ -311,7 +311,7 @@ def test_a_non_editable_install_reads_its_presets_settings_and_rules(tmp_path):
     install, and ``default.toml`` was not installed at all; both are package data now."""
     import shutil
 
-    repo = Path(__file__).resolve().parents[1]
+    repo = Path(__file__).resolve().parents[2]
     shutil.copytree(repo / "src" / "cityshade", tmp_path / "src" / "cityshade",
                     ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
     for name in ("pyproject.toml", "README.md"):

@@ -39,7 +39,7 @@ def files(tmp_path_factory):
                         building("a", box_polygons(X0 - 5, Y0 - 5, Z0, 10, 10, 20.0, "a")),
                         building("b", box_polygons(X0 + 20, Y0 + 8, Z0, 6, 12, 9.0, "b"))))
     boxes, _, _ = build_file(src, tmp / "boxes.cityshade")
-    sample, _, _ = build_file(Path(__file__).parents[1] / REPO_SAMPLE, tmp / "sample.cityshade")
+    sample, _, _ = build_file(Path(__file__).parents[2] / REPO_SAMPLE, tmp / "sample.cityshade")
     return boxes, sample
 
 

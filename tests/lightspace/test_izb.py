@@ -16,8 +16,8 @@ import pytest
 
 from conftest import REPO, run_with_and_without_jit, shared_file
 from reference import reference_ray_hits
-from test_kdtree import BOX_FACES, box_city
-from test_trace import closed_box_tree, edge_and_vertex_targets, unit
+from synthetic import BOX_FACES, box_city
+from synthetic import closed_box_tree, edge_and_vertex_targets, unit
 
 from cityshade import lightspace
 from cityshade.accel import build_kdtree
@@ -270,7 +270,7 @@ def test_kernels_run_without_jit():
     script = r"""
 import json, numpy as np, sys
 sys.path.insert(0, sys.argv[1])
-from test_kdtree import box_city
+from synthetic import box_city
 from cityshade.accel import build_kdtree
 from cityshade import lightspace
 tree = build_kdtree(*box_city(4, seed=9, extent_m=30.0))

@@ -310,7 +310,7 @@ def test_consumed_model_builds_the_same_scene():
 
     from cityshade.geometry.scene import Scene
 
-    path = Path(__file__).resolve().parents[1] / "sample_data" / "sample_city.gml"
+    path = Path(__file__).resolve().parents[2] / "sample_data" / "sample_city.gml"
     kept = build_scene(read_citygml(path))
     raw = read_citygml(path)
     consumed = build_scene(raw, consume_raw=True)
@@ -340,7 +340,7 @@ def test_batches_parsed_on_a_second_thread_give_the_same_model(tmp_path, monkeyp
                building("B3", box_polygons(20, 0, 0, 5, 5, 5, prefix="q")))
     bad_path = tmp_path / "bad.gml"
     bad_path.write_text(bad)
-    sample = Path(__file__).resolve().parents[1] / "sample_data" / "sample_city.gml"
+    sample = Path(__file__).resolve().parents[2] / "sample_data" / "sample_city.gml"
     for path in (sample, bad_path):
         whole = read_citygml(path)
         monkeypatch.setattr(reader, "_PARSE_BATCH_CHARS", batch_chars)

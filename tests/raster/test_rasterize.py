@@ -16,7 +16,7 @@ from cityshade.raster.gbuffer import gbuffer_by_raycasting, resolve
 from cityshade.raster.rasterize import rasterize
 from conftest import run_with_and_without_jit, shared_file
 from reference import reference_rasterize, reference_ray_hits
-from test_kdtree import box_city
+from synthetic import box_city
 
 #: Pixels where rasterizer and ray casting may disagree: only on triangle edges (the fill rule
 #: against the watertight test's both-sides rule, and float32 vertex rounding of edge ties).
@@ -353,7 +353,7 @@ import json, sys
 import numpy as np
 sys.path.insert(0, sys.argv[1])
 from test_rasterize import mini_scene, low_view
-from test_kdtree import box_city
+from synthetic import box_city
 from cityshade.raster.rasterize import rasterize
 v, t, b, e, _ = box_city(6, seed=2, extent_m=40.0)
 scene = mini_scene(v, t, b, e)

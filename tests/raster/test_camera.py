@@ -153,7 +153,7 @@ def test_nice_pixel_sizes():
 
 def test_shipped_presets_and_unknown_names_fail(tmp_path):
     # The presets are the package's configs/cameras.toml (one copy; an installed package reads
-    # it through importlib.resources, tests/test_cli.py checks that on a built wheel).
+    # it through importlib.resources, tests/cli/test_cli.py checks that on a built wheel).
     shipped = Path(cams.__file__).resolve().parents[1] / "configs" / "cameras.toml"
     with shipped.open("rb") as fh:
         assert cams.load_presets() == tomllib.load(fh)

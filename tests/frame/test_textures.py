@@ -10,7 +10,7 @@ from cityshade.frame import textures as T
 from cityshade.imageio import write_image
 from reference import reference_mip_reduce, reference_sample_texture
 
-REPO = Path(__file__).parents[1]
+REPO = Path(__file__).parents[2]
 
 
 def _checkerboard(h, w, cell=1):

@@ -1,0 +1,86 @@
+"""Sunlit stretches (cityshade.sunhours.stretches): run lengths against the reference."""
+
+from __future__ import annotations
+
+from types import SimpleNamespace
+
+import numpy as np
+
+from reference import reference_stretches
+
+
+
+# --- run lengths --------------------------------------------------------------------------------
+
+def _units(order_of_step):
+    """Units like plan_units: sun positions in first-occurrence order, -1 = below horizon."""
+    units = {}
+    for i, u in enumerate(order_of_step):
+        if u >= 0:
+            units.setdefault(u, []).append(i)
+    return [SimpleNamespace(steps=tuple(units[k])) for k in sorted(units)]
+
+
+def test_stretches_match_the_reference_with_gaps_duplicates_and_resume():
+    from cityshade.sunhours.stretches import Stretches
+
+    rng = np.random.default_rng(7)
+    n_steps, n = 40, 25
+    starts, ends = [], []
+    t = 1e9
+    for i in range(n_steps):
+        t += 1800.0 if rng.random() < 0.15 else 0.0  # a gap: another window or day
+        starts.append(t)
+        t += float(rng.choice([600.0, 300.0]))
+        ends.append(t)
+    # Sun positions in first-occurrence order; some steps share an earlier one (also far
+    # apart), some have the sun down (-1).
+    unit_of_step, n_units = [], 0
+    for i in range(n_steps):
+        r = rng.random()
+        if r < 0.15:
+            unit_of_step.append(-1)
+        elif r < 0.3 and n_units:
+            unit_of_step.append(int(rng.integers(n_units)))
+        else:
+            unit_of_step.append(n_units)
+            n_units += 1
+    units = _units(unit_of_step)
+    lit_unit = rng.random((len(units), n)) < 0.6
+    lit_steps = np.array([lit_unit[u] if u >= 0 else np.zeros(n, bool) for u in unit_of_step])
+    longest, qualified = reference_stretches(lit_steps, starts, ends, min_stretch_h=0.4)
+    assert longest.max() > 0.5 and 0 < (qualified > 0).sum() < n
+
+    st = Stretches(starts, ends, min_stretch_h=0.4)
+    st.plan(units, None, n)
+    for k in range(len(units)):
+        st.add(k, None, lit_unit[k])
+    st.finish()
+    assert np.array_equal(st.samples.longest_h, longest)
+    assert np.array_equal(st.samples.qualified_h, qualified)
+
+    # Interrupted after unit 12 and restored from the saved state: the same numbers.
+    a = Stretches(starts, ends, min_stretch_h=0.4)
+    a.plan(units, None, n)
+    for k in range(12):
+        a.add(k, None, lit_unit[k])
+    saved = {key: np.array(v) for key, v in a.state().items()}
+    b = Stretches(starts, ends, min_stretch_h=0.4)
+    b.plan(units, None, n)
+    b.restore(saved)
+    for k in range(12, len(units)):
+        b.add(k, None, lit_unit[k])
+    b.finish()
+    assert np.array_equal(b.samples.longest_h, longest)
+    assert np.array_equal(b.samples.qualified_h, qualified)
+
+
+def test_stretch_kernels_by_hand():
+    from cityshade.sunhours.stretches import close_stretches, update_stretches
+
+    cur, lng, q = np.zeros(2), np.zeros(2), np.zeros(2)
+    for lit in ([1, 0], [1, 1], [0, 1], [1, 1]):
+        update_stretches(np.array(lit, np.uint8), 0.5, cur, lng, q, 0.75)
+    close_stretches(cur, lng, q, 0.75)
+    # receiver 0: 1.0 h then 0.5 h; receiver 1: 1.5 h.
+    assert lng.tolist() == [1.0, 1.5] and q.tolist() == [1.0, 1.5] and cur.tolist() == [0, 0]
