@@ -351,7 +351,7 @@ def test_kernels_run_without_jit():
     script = r"""
 import json, sys
 import numpy as np
-sys.path.insert(0, sys.argv[1])
+sys.path[:0] = [sys.argv[1], sys.argv[1] + "/raster"]
 from test_rasterize import mini_scene, low_view
 from synthetic import box_city
 from cityshade.raster.rasterize import rasterize
