@@ -163,6 +163,22 @@ def test_cli_batch_and_info(built, tmp_path):
     assert d["triangles"] == 1386 and d["tiled"]["tiles"] >= 4
 
 
+def test_batch_in_local_mean_time_opens_a_tiled_cache_like_a_file(built, tmp_path):
+    """``--tz local-mean`` takes the model's longitude from the opened scene (once), so a tiled
+    folder works as a file does and gives the same sun-hours."""
+    one, tiled = built
+    out = {}
+    for label, path in (("one", one), ("tiled", tiled)):
+        out[label] = tmp_path / label
+        r = CliRunner().invoke(cli, [
+            "batch", str(path), "--date", "1850-06-21", "--from", "09:00", "--to", "15:00",
+            "--every", "2h", "--tz", "local-mean", "--pixel-size", "4", "-o", str(out[label])])
+        assert r.exit_code == 0, r.output
+    a, b = _exr(out["one"] / "sun_hours.exr"), _exr(out["tiled"] / "sun_hours.exr")
+    assert np.array_equal(a["sun_hours"], b["sun_hours"], equal_nan=True)
+    assert np.nanmax(a["sun_hours"]) > 0
+
+
 def test_bad_input_one_line(built, tmp_path):
     one, tiled = built
     runner = CliRunner()
