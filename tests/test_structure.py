@@ -169,3 +169,19 @@ def test_click_command_bodies_are_thin():
              for path, node, _, command in _functions()
              if command and node.end_lineno - node.body[0].lineno + 1 > 80]
     assert thick == []
+
+
+def test_every_error_class_lives_in_errors_py():
+    """The library's error classes are declared in one place (the CLI's own exit signals
+    excepted)."""
+    stray = []
+    for path in sorted(SRC.rglob("*.py")):
+        rel = path.relative_to(SRC).as_posix()
+        if rel == "errors.py" or rel.startswith("cli/"):
+            continue
+        for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ClassDef) and any(
+                    ast.unparse(b).split(".")[-1].endswith(("Error", "Exception"))
+                    for b in node.bases):
+                stray.append(f"{rel}:{node.lineno} {node.name}")
+    assert stray == []

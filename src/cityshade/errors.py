@@ -125,3 +125,15 @@ class UnknownPresetError(ConfigError):
 
 class ImageIOError(CityshadeError):
     """An image that cannot be written or read (carries the path)."""
+
+
+class KdTreeInputError(UsageError):
+    """Arrays handed to :func:`build_kdtree` of the wrong shape, type or content."""
+
+
+class ShadingError(CityshadeError):
+    """Inputs to :func:`shade` that do not fit together (shapes, NaN lit fractions, sun)."""
+
+
+class DistributedError(CityshadeError):
+    """The Dask cluster cannot be reached or lost the work (workers died repeatedly)."""

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from cityshade.citygml.namespaces import SURFACE_CLASSES, SURFACE_CODE
-from cityshade.frame.shading import (DEFAULT_PALETTE_SRGB8, ShadingError, ShadingSettings, shade,
-                               to_srgb8)
+from cityshade.frame.shading import DEFAULT_PALETTE_SRGB8, ShadingSettings, shade, to_srgb8
+from cityshade.errors import ShadingError
 
 REPO = Path(__file__).parents[2]
 FACADE = REPO / "sample_data" / "sample_city_facade.png"

@@ -36,7 +36,7 @@ from numba.typed import List
 
 from cityshade.accel.kdtree_layout import (LEAF_CODE, TIME_AXIS, KdTree, pack_nodes,
                                            triangle_records)
-from cityshade.errors import ConfigError, UsageError
+from cityshade.errors import ConfigError, KdTreeInputError
 from cityshade.runtime.memory import release_freed_memory
 
 #: Axis code of a placeholder node whose subtree is built separately (never stored).
@@ -44,10 +44,6 @@ DEFERRED = -1
 #: Deepest tree the layout and the fixed traversal stack support (the stack holds one entry
 #: per level, see ``cityshade.trace.kernels.STACK_SIZE``).
 MAX_DEPTH_LIMIT = 60
-
-
-class KdTreeInputError(UsageError):
-    """Arrays handed to :func:`build_kdtree` of the wrong shape, type or content."""
 
 
 @dataclass(frozen=True)

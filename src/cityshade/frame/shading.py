@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 from numba import njit, prange
 
-from cityshade.errors import CityshadeError
+from cityshade.errors import ShadingError
 from cityshade.trace.bricks import dynamic_bricks
 from cityshade.frame.textures import (TextureSet, composite_textures, load_texture_set,
                                 lod_from_uv_neighbours, srgb_to_linear)
@@ -74,10 +74,6 @@ DEFAULT_PALETTE_SRGB8: dict[str, tuple[int, int, int]] = {
     "installation": (178, 168, 158),
     "marking": (240, 240, 240),
 }
-
-
-class ShadingError(CityshadeError):
-    """Inputs to :func:`shade` that do not fit together (shapes, NaN lit fractions, sun)."""
 
 
 #: The memory of the albedo, texture inputs and shaded images of earlier frames, used again

@@ -23,17 +23,13 @@ from typing import Any, Callable, Sequence
 
 import numpy as np
 
-from cityshade.errors import CityshadeError, UsageError
+from cityshade.errors import DistributedError, UsageError
 
 __all__ = ["DaskExecutor", "DistributedError", "parse_scheduler"]
 
 
 #: Environment of a local worker process (replaces Dask's ``pre-spawn-environ``).
 WORKER_ENVIRON = {"OMP_NUM_THREADS": "1", "MKL_NUM_THREADS": "1", "OPENBLAS_NUM_THREADS": "1"}
-
-
-class DistributedError(CityshadeError):
-    """The Dask cluster cannot be reached or lost the work (workers died repeatedly)."""
 
 
 def parse_scheduler(spec: str) -> tuple[str, int | str]:
