@@ -125,3 +125,8 @@ class UnknownPresetError(ConfigError):
 
 class ImageIOError(CityshadeError):
     """An image that cannot be written or read (carries the path)."""
+
+
+class WeatherFileError(InputError):
+    """A weather file (EPW, TMY2, TMY3) that cannot be used: missing, of an unknown kind, or
+    with garbled or missing columns (carries the path, and the line where it is known)."""
