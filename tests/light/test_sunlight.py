@@ -23,38 +23,43 @@ def _utm31(lon_deg, lat_deg):
                                                                                       lat_deg)
 
 
+def _true_south(lon_deg, lat_deg):
+    """The UTM 31N (render-space) direction of true south at a place, from two points of its
+    meridian projected with pyproj (independent of the library's meridian convergence)."""
+    (xn, yn), (xs, ys) = _utm31(lon_deg, lat_deg + 0.001), _utm31(lon_deg, lat_deg - 0.001)
+    v = np.array([xs - xn, ys - yn, 0.0])
+    return v / np.linalg.norm(v)
+
+
+def _turned(faces, x0, y0, south):
+    """Box faces turned about (x0, y0) so that the face whose normal was -y faces ``south``."""
+    angle = math.atan2(south[1], south[0]) - math.atan2(-1.0, 0.0)
+    c, s = math.cos(angle), math.sin(angle)
+    return [(cls, pid, [(x0 + c * (x - x0) - s * (y - y0), y0 + s * (x - x0) + c * (y - y0), z)
+                        for x, y, z in pts]) for cls, pid, pts in faces]
+
+
 @pytest.fixture(scope="module")
 def london_house(tmp_path_factory):
-    """A 20 x 10 x 20 m house at London City Airport (UTM 31N), and a copy with a 30 m high,
-    200 m long block 15 m south of it."""
+    """A 20 x 10 x 20 m house at London City Airport (UTM 31N) whose south wall faces true
+    south, and a copy with a 30 m high, 200 m long block 15 m south of it."""
     from cityshade.build import build_scene_from_file
 
     if not LONDON.is_file():
         pytest.skip(f"real data not available: {LONDON} is absent")
     x0, y0 = (round(v) for v in _utm31(0.055, 51.505))
+    south = _true_south(0.055, 51.505)
     tmp = tmp_path_factory.mktemp("london")
-    house = building("H", box_polygons(x0 - 10.0, y0, 0.0, 20.0, 10.0, 20.0, "h"),
-                     srs="EPSG:32631")
-    block = building("B", box_polygons(x0 - 100.0, y0 - 25.0, 0.0, 200.0, 10.0, 30.0, "b"),
-                     srs="EPSG:32631")
+    house = building("H", _turned(box_polygons(x0 - 10.0, y0, 0.0, 20.0, 10.0, 20.0, "h"),
+                                  x0, y0, south), srs="EPSG:32631")
+    block = building("B", _turned(box_polygons(x0 - 100.0, y0 - 25.0, 0.0, 200.0, 10.0, 30.0,
+                                               "b"), x0, y0, south), srs="EPSG:32631")
     scenes = []
     for name, members in (("free.gml", (house,)), ("blocked.gml", (house, block))):
         path = tmp / name
         path.write_text(city(*members))
         scenes.append(build_scene_from_file(path))
-    return (x0, y0), scenes
-
-
-def _true_south_normal(scene):
-    """The render-space direction of true south at the origin, from two points of its
-    meridian projected with pyproj (independent of the library's convergence)."""
-    from pyproj import Transformer
-
-    to_wgs = Transformer.from_crs("EPSG:32631", "EPSG:4326", always_xy=True)
-    lon, lat = to_wgs.transform(scene.origin_m[0], scene.origin_m[1])
-    (xn, yn), (xs, ys) = _utm31(lon, lat + 0.001), _utm31(lon, lat - 0.001)
-    v = np.array([xs - xn, ys - yn, 0.0])
-    return v / np.linalg.norm(v), (lat, lon)
+    return (x0, y0), south, scenes
 
 
 def test_apsh_of_a_free_south_window_is_the_independent_count(london_house):
@@ -62,8 +67,11 @@ def test_apsh_of_a_free_south_window_is_the_independent_count(london_house):
 
     from cityshade.light import probable_sunlight, read_weather
 
-    (x0, y0), (free, blocked) = london_house
-    normal, (lat, lon) = _true_south_normal(free)
+    from pyproj import Transformer
+
+    (x0, y0), normal, (free, blocked) = london_house
+    lon, lat = Transformer.from_crs("EPSG:32631", "EPSG:4326", always_xy=True).transform(
+        free.origin_m[0], free.origin_m[1])
     point = np.array([x0, y0, 5.0]) - free.origin_m
     weather = read_weather(LONDON)
     ps = probable_sunlight(free, point[None], normal[None], weather)
