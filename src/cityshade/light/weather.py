@@ -112,7 +112,7 @@ class Weather:
         --------
         >>> w = read_weather("London.epw")                  # doctest: +SKIP
         >>> int(w.sunny().sum())                            # doctest: +SKIP
-        1208
+        2755
         """
         return self.dni_w_m2 >= float(threshold_w_m2)
 
@@ -265,7 +265,7 @@ def distance_km(location: WeatherLocation, latitude_deg: float, longitude_deg: f
     --------
     >>> station = WeatherLocation(51.505, 0.055, 5.8, 0.0, "London.City.AP")
     >>> round(distance_km(station, 51.5007, -0.1246))           # Westminster
-    13
+    12
     """
     from pyproj import Geod
 
