@@ -134,14 +134,15 @@ def test_engines_give_the_same_bits_on_the_sample_city(sample_city_scene):
     _assert_same_bits(scene, samples.points_m[rows], samples.normals[rows], sky, t)
 
 
-def test_engines_give_the_same_bits_on_the_berlin_buildings():
+@pytest.mark.parametrize("relative", ["berlin-lichtenberg-trees/lod2_buildings_berlin_test_area.gml",
+                                      "munich-tum-campus-lod2/TUM Munich.gml"])
+def test_engines_give_the_same_bits_on_real_buildings(relative):
     from cityshade.build import build_scene_from_file
     from cityshade.geo.sun import sun_from_angles
     from cityshade.light import sky_for_scene
     from cityshade.sunhours.surfaces import sample_surfaces
 
-    scene = build_scene_from_file(
-        shared_file("berlin-lichtenberg-trees/lod2_buildings_berlin_test_area.gml"))
+    scene = build_scene_from_file(shared_file(relative))
     sky = sky_for_scene(scene, "tregenza")
     # The sky is turned like the sun: by the meridian convergence at the origin.
     assert sky.convergence_deg == sun_from_angles(0.0, 30.0, scene.crs,
