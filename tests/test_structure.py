@@ -50,6 +50,7 @@ TIERS: list[set[str]] = [
     {"frame"},
     {"build"},
     {"sunhours"},
+    {"light"},
     {"planning"},
     {"evaluate", "samplegen"},
     {"cli"},

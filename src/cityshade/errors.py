@@ -137,3 +137,8 @@ class ShadingError(CityshadeError):
 
 class DistributedError(CityshadeError):
     """The Dask cluster cannot be reached or lost the work (workers died repeatedly)."""
+
+
+class WeatherFileError(InputError):
+    """A weather file (EPW, TMY2, TMY3) that cannot be used: missing, of an unknown kind, or
+    with garbled or missing columns (carries the path, and the line where it is known)."""

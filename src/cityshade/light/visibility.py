@@ -1,0 +1,219 @@
+"""Which sky directions each receiver sees: one bit per receiver and direction, traced once.
+
+A receiver is a point on a surface with its unit normal (a map pixel, a surface sample, an
+opening's reference point). For every direction of a :class:`~cityshade.light.sky.Sky` in front
+of the receiver's plane (:func:`~cityshade.light.sky.in_front`) one shadow ray leaves the point,
+pushed off its surface (:func:`cityshade.trace.shadow_rays_from_surface`), and the exact engine
+says whether it is blocked (:func:`cityshade.shadows.visibility.occluded`: ``izb`` or
+``raytrace``, the same bits). Directions behind or in the plane are not traced and count as not
+visible. The bits are kept packed (``np.packbits`` along the directions), so one tracing serves
+the sky view factor, the vertical sky component and every hour of a year (daylight
+coefficients): :mod:`cityshade.light.metrics` is arithmetic on them.
+
+Memory: the result holds ``ceil(P / 8)`` bytes per receiver for P directions (19 B for
+Tregenza's 145, 73 B for 577, 289 B for 2,305) plus the receivers' float64 normals (24 B).
+While tracing, one block of ``block`` directions is held unpacked (``block`` bytes per
+receiver, 64 by default) with one direction's ray origins (24 B per receiver) and the engine's
+own work arrays (docs/DESIGN.md §7, §6).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from cityshade.errors import UsageError
+
+#: The exact engines a sky can be traced with (:func:`cityshade.shadows.visibility.occluded`).
+ENGINES = ("izb", "raytrace")
+
+#: Directions traced per block before they are packed: a multiple of 8 (whole bytes); 64 keeps
+#: the unpacked block at 64 B per receiver, a third of the packed 2,305-direction result.
+DEFAULT_BLOCK = 64
+
+
+@dataclass(frozen=True)
+class SkyVisibility:
+    """The visibility bits of N receivers towards the P directions of a sky.
+
+    Attributes
+    ----------
+    sky : Sky
+        The directions (render space, grid north).
+    bits : (N, ceil(P / 8)) uint8
+        ``np.packbits(visible, axis=1)`` (big bit order): bit ``p`` of row ``i`` is 1 when
+        receiver ``i`` sees direction ``p``; 0 when blocked or behind the receiver's plane.
+    normals : (N, 3) float64
+        The receivers' unit normals (the metrics weight the directions by them).
+    t_days : float
+        City time the bits were traced at, days since 1970-01-01 UTC.
+    engine : str
+        ``izb`` or ``raytrace``.
+    """
+
+    sky: object
+    bits: np.ndarray
+    normals: np.ndarray
+    t_days: float
+    engine: str
+
+    @property
+    def n_receivers(self) -> int:
+        return int(self.bits.shape[0])
+
+    def visible(self, rows=slice(None)) -> np.ndarray:
+        """(n, P) bool: the unpacked bits of receivers ``rows`` (index array or slice); it
+        costs P bytes per receiver, so unpack a block of rows at a time for large N."""
+        return np.unpackbits(self.bits[rows], axis=1, count=self.sky.n).astype(bool)
+
+    def nbytes_per_receiver(self) -> int:
+        """Bytes kept per receiver: the packed bits and the normal."""
+        return int(self.bits.shape[1]) + 24
+
+
+def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: str = "izb",
+                   block: int = DEFAULT_BLOCK, progress=None) -> SkyVisibility:
+    """Trace every sky direction in front of every receiver through an exact engine.
+
+    Parameters
+    ----------
+    scene : Scene
+        A scene with its own kd-tree or a tiled cache's view.
+    points : (N, 3) float array
+        Receivers on surfaces, render-space metres.
+    normals : (N, 3) float array
+        Their unit normals, on the side the sky is seen from (outward).
+    sky : Sky
+        The directions (:func:`cityshade.light.sky.sky_for_scene`).
+    t_days : float
+        City time, days since 1970-01-01 UTC (the objects standing then block).
+    engine : str
+        ``izb`` (default; one light-space pass per direction) or ``raytrace``; both give the
+        same bits.
+    block : int
+        Directions traced before a pack (a multiple of 8): memory ``block`` bytes per receiver.
+    progress : callable, optional
+        Called as ``progress(done, total)`` directions after each block.
+
+    Returns
+    -------
+    SkyVisibility
+        Memory: ``ceil(P / 8) + 24`` bytes per receiver (see the module's docstring).
+
+    Raises
+    ------
+    UsageError
+        An unknown engine, a bad block, or points and normals of different shapes.
+
+    Examples
+    --------
+    >>> from cityshade.light.sky import named_sky
+    >>> vis = sky_visibility(scene, [[0.0, 0.0, 0.0]], [[0.0, 0.0, 1.0]],
+    ...                      named_sky("tregenza"))                    # doctest: +SKIP
+    >>> vis.visible().sum()                          # open ground sees all 145 # doctest: +SKIP
+    145
+    """
+    from cityshade.light.sky import in_front
+    from cityshade.shadows.visibility import occluded
+    from cityshade.trace import shadow_rays_from_surface
+
+    if engine not in ENGINES:
+        raise UsageError(f"sky visibility is traced with {' or '.join(ENGINES)}, not {engine!r}")
+    if not (isinstance(block, (int, np.integer)) and block >= 8 and block % 8 == 0):
+        raise UsageError(f"the block of directions must be a positive multiple of 8, not {block}")
+    pts = np.ascontiguousarray(points, dtype=np.float64).reshape(-1, 3)
+    nrm = np.ascontiguousarray(normals, dtype=np.float64).reshape(-1, 3)
+    if pts.shape != nrm.shape:
+        raise UsageError(f"points {pts.shape} and normals {nrm.shape} differ in shape")
+    n, p_total = len(pts), sky.n
+    bits = np.zeros((n, (p_total + 7) // 8), np.uint8)
+    work = np.zeros((n, int(block)), bool)
+    for start in range(0, p_total, int(block)):
+        stop = min(start + int(block), p_total)
+        work[:] = False
+        dirs = sky.directions[start:stop]
+        front = in_front(nrm, dirs)
+        for j, d in enumerate(dirs):
+            rows = np.flatnonzero(front[:, j])
+            if len(rows):
+                origins = shadow_rays_from_surface(pts[rows], nrm[rows], d)
+                work[rows, j] = ~occluded(scene, origins, d, t_days, engine=engine)
+        bits[:, start // 8:(stop + 7) // 8] = np.packbits(work[:, :stop - start], axis=1)
+        if progress is not None:
+            progress(stop, p_total)
+    return SkyVisibility(sky=sky, bits=bits, normals=nrm, t_days=float(t_days), engine=engine)
+
+
+def map_receivers(camera_pass) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The receivers of a map or view: its pixels that show a surface.
+
+    Parameters
+    ----------
+    camera_pass : CameraPass
+        :func:`cityshade.frame.pipeline.camera_pass` of the scene and camera.
+
+    Returns
+    -------
+    points : (N, 3) float64
+        Render-space positions of the pixels with a surface, row-major.
+    normals : (N, 3) float64
+        Their normals turned to the side the camera sees.
+    pixels : (N,) int64
+        Flat pixel indices (``row * W + col``), to put per-receiver values back in a map.
+
+    Examples
+    --------
+    >>> cp = camera_pass(scene, map_view(scene, 1.0), t_days)      # doctest: +SKIP
+    >>> points, normals, pixels = map_receivers(cp)                # doctest: +SKIP
+    """
+    surf = camera_pass.surfaces
+    pixels = np.flatnonzero(np.asarray(surf.valid).ravel())
+    points = np.asarray(surf.position_m, np.float64).reshape(-1, 3)[pixels]
+    normals = np.asarray(camera_pass.normal, np.float64).reshape(-1, 3)[pixels]
+    return points, normals, pixels
+
+
+def polygon_reference_points(scene, polygon_groups) -> tuple[np.ndarray, np.ndarray]:
+    """One receiver per group of polygons (an opening): its area centroid and mean normal.
+
+    BRE 209 takes a window's vertical sky component at the centre of the window on its outer
+    face: the area-weighted centroid of the opening's triangles, which lies on the face of a
+    flat opening (a group's polygons are coplanar in practice; the centroid of a bent group
+    is the mean, off its surfaces by the bend).
+
+    Parameters
+    ----------
+    scene : Scene
+    polygon_groups : sequence of sequences of int
+        Polygon indices per receiver (e.g. ``Opening.polygons`` of
+        :func:`cityshade.planning.compare.openings_of`).
+
+    Returns
+    -------
+    points : (G, 3) float64
+        Render-space centroids (NaN for a group without triangles).
+    normals : (G, 3) float64
+        Unit area-weighted normals of the groups' triangles (outward by the winding).
+
+    Examples
+    --------
+    >>> points, normals = polygon_reference_points(scene, [o.polygons for o in openings_of(scene)])  # doctest: +SKIP
+    """
+    verts = np.asarray(scene.vertices, np.float64)
+    tri = np.asarray(scene.triangles)
+    tri_poly = np.asarray(scene.tri_polygon)
+    points = np.full((len(polygon_groups), 3), np.nan)
+    normals = np.full((len(polygon_groups), 3), np.nan)
+    for g, polys in enumerate(polygon_groups):
+        t = tri[np.isin(tri_poly, np.asarray(list(polys), np.int64))]
+        if not len(t):
+            continue
+        a, b, c = verts[t[:, 0]], verts[t[:, 1]], verts[t[:, 2]]
+        cross = np.cross(b - a, c - a)              # twice the area, along the normal
+        area = np.linalg.norm(cross, axis=1)
+        if area.sum() <= 0.0:
+            continue
+        points[g] = ((a + b + c) / 3.0 * area[:, None]).sum(axis=0) / area.sum()
+        s = cross.sum(axis=0)
+        normals[g] = s / np.linalg.norm(s)
+    return points, normals

@@ -1,0 +1,167 @@
+"""Sky view factor and vertical sky component against closed forms and published values, the
+visibility bits of both exact engines, and the receivers of openings and maps."""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from citygml_snippets import box_polygons, building, city
+from conftest import shared_file
+
+from cityshade.light import (DEFAULT_SKY, named_sky, polygon_reference_points, sky_view_factor,
+                             sky_visibility, vertical_sky_component)
+
+
+def _build(tmp_path, *members, name="m.gml"):
+    from cityshade.build import build_scene_from_file
+
+    path = tmp_path / name
+    path.write_text(city(*members))
+    return build_scene_from_file(path)
+
+
+def _render(scene, world_points):
+    return np.asarray(world_points, np.float64) - scene.origin_m
+
+
+H_M = W_M = 10.0
+
+
+@pytest.fixture(scope="module")
+def canyon(tmp_path_factory):
+    """Two 10 m high, 400 m (40 H) long blocks along y, 10 m apart (H/W = 1)."""
+    tmp = tmp_path_factory.mktemp("canyon")
+    long_m = 40 * H_M
+    west = building("W", box_polygons(-W_M / 2 - 10, -long_m / 2, 0.0, 10.0, long_m, H_M, "w"))
+    east = building("E", box_polygons(W_M / 2, -long_m / 2, 0.0, 10.0, long_m, H_M, "e"))
+    return _build(tmp, west, east)
+
+
+def test_street_canyon_floor_takes_oke_s_sky_view_factor(canyon):
+    """SVF at the floor centre of a long canyon = cos(arctan(2H/W)) (Oke 1988): 0.447 for
+    H/W = 1; with the sky laid out around a north 30° off the canyon's axis as well."""
+    expected = math.cos(math.atan(2 * H_M / W_M))
+    assert round(expected, 3) == 0.447
+    for gamma in (0.0, 30.0):
+        sky = named_sky(DEFAULT_SKY, gamma)
+        vis = sky_visibility(canyon, _render(canyon, [[0.0, 0.0, 0.0]]), [[0.0, 0.0, 1.0]], sky)
+        assert sky_view_factor(vis)[0] == pytest.approx(expected, abs=0.005)
+
+
+def test_open_ground_and_a_free_wall(canyon):
+    sky = named_sky()
+    # A roof point with nothing above it: open horizontal ground.
+    vis = sky_visibility(canyon, _render(canyon, [[-10.0, 0.0, H_M]]), [[0.0, 0.0, 1.0]], sky)
+    assert vis.visible().all()
+    assert sky_view_factor(vis)[0] == pytest.approx(1.0, abs=1e-9)
+    # The outer walls of the canyon see nothing of the city: half the sky. The east-facing
+    # wall's plane cuts the patches centred on north and south through their centres.
+    pts = _render(canyon, [[-W_M / 2 - 10, 0.0, 5.0], [W_M / 2 + 10, 0.0, 5.0],
+                           [-10.0, -20 * H_M, 5.0]])
+    nrm = [[-1.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, -1.0, 0.0]]
+    for name in ("tregenza", DEFAULT_SKY):
+        svf = sky_view_factor(sky_visibility(canyon, pts, nrm, named_sky(name)))
+        np.testing.assert_allclose(svf, 0.5, atol=0.005)
+    # Inside the canyon, a wall's foot sees less than half.
+    inner = sky_visibility(canyon, _render(canyon, [[-W_M / 2, 0.0, 0.5]]), [[1.0, 0.0, 0.0]],
+                           sky)
+    assert sky_view_factor(inner)[0] < 0.4
+
+
+@pytest.fixture(scope="module")
+def windows(tmp_path_factory):
+    """A 20 x 10 x 20 m house whose south wall holds the window centre at (0, 0, 5), and the
+    long obstructions south of it (2 km along the window, 20 m away) that subtend 25° and 45°
+    above the window centre at right angles to the window."""
+    tmp = tmp_path_factory.mktemp("vsc")
+    house = building("H", box_polygons(-10.0, 0.0, 0.0, 20.0, 10.0, 20.0, "h"))
+    scenes = {None: _build(tmp, house, name="free.gml")}
+    for angle in (25, 45):
+        top = 5.0 + 20.0 * math.tan(math.radians(angle))
+        block = building(f"B{angle}", box_polygons(-1000.0, -30.0, 0.0, 2000.0, 10.0, top, "b"))
+        scenes[angle] = _build(tmp, house, block, name=f"b{angle}.gml")
+    return scenes
+
+
+@pytest.mark.parametrize("angle,published_pct", [(None, 39.6), (25, 27.3), (45, 15.4)])
+def test_vertical_sky_component_of_bre209(windows, angle, published_pct):
+    """BRE 209: 39.6 % for an unobstructed vertical window (its maximum), 27.3 % facing a long
+    obstruction at 25° (the case the 27 % criterion comes from), 15.4 % at 45°."""
+    scene = windows[angle]
+    vis = sky_visibility(scene, _render(scene, [[0.0, 0.0, 5.0]]), [[0.0, -1.0, 0.0]],
+                         named_sky())
+    assert 100 * vertical_sky_component(vis)[0] == pytest.approx(published_pct, abs=0.2)
+
+
+def test_reference_point_of_a_polygon_is_its_centre_on_the_outer_face(windows):
+    scene = windows[None]
+    south = scene.poly_ids.index("hs")
+    pts, nrm = polygon_reference_points(scene, [(south,), ()])
+    np.testing.assert_allclose(pts[0] + scene.origin_m, [0.0, 0.0, 10.0], atol=1e-4)
+    np.testing.assert_allclose(nrm[0], [0.0, -1.0, 0.0], atol=1e-6)
+    assert np.isnan(pts[1]).all()
+
+
+def _assert_same_bits(scene, points, normals, sky, t_days):
+    a = sky_visibility(scene, points, normals, sky, t_days, engine="izb")
+    b = sky_visibility(scene, points, normals, sky, t_days, engine="raytrace", block=8)
+    np.testing.assert_array_equal(a.bits, b.bits)
+    seen = a.visible()
+    assert 0.05 < seen.mean() < 0.95           # a real mix of seen and blocked directions
+    return a
+
+
+def test_engines_give_the_same_bits_on_the_sample_city(sample_city_scene):
+    from cityshade.frame.pipeline import camera_pass
+    from cityshade.geo.temporal import parse_user_date
+    from cityshade.light import map_receivers
+    from cityshade.raster.camera import map_view
+    from cityshade.sunhours.surfaces import sample_surfaces
+
+    scene = sample_city_scene
+    t = parse_user_date("1990").city_days
+    sky = named_sky("tregenza")
+    cp = camera_pass(scene, map_view(scene, 6.0), t)
+    points, normals, pixels = map_receivers(cp)
+    assert len(pixels) > 500 and np.isfinite(points).all()
+    vis = _assert_same_bits(scene, points, normals, sky, t)
+    svf = sky_view_factor(vis)
+    assert ((svf > 0.0) & (svf <= 1.0 + 1e-9)).all() and svf.min() < 0.9
+    samples = sample_surfaces(scene, 0.05, t)
+    rows = np.random.default_rng(0).choice(samples.n, min(samples.n, 1500), replace=False)
+    _assert_same_bits(scene, samples.points_m[rows], samples.normals[rows], sky, t)
+
+
+@pytest.mark.parametrize("relative", ["berlin-lichtenberg-trees/lod2_buildings_berlin_test_area.gml",
+                                      "munich-tum-campus-lod2/TUM Munich.gml"])
+def test_engines_give_the_same_bits_on_real_buildings(relative):
+    from cityshade.build import build_scene_from_file
+    from cityshade.geo.sun import sun_from_angles
+    from cityshade.light import sky_for_scene
+    from cityshade.sunhours.surfaces import sample_surfaces
+
+    scene = build_scene_from_file(shared_file(relative))
+    sky = sky_for_scene(scene, "tregenza")
+    # The sky is turned like the sun: by the meridian convergence at the origin.
+    assert sky.convergence_deg == sun_from_angles(0.0, 30.0, scene.crs,
+                                                  scene.origin_m).convergence_deg
+    assert sky.convergence_deg != 0.0
+    t = 20_000.0
+    samples = sample_surfaces(scene, 0.05, t)
+    rows = np.random.default_rng(1).choice(samples.n, min(samples.n, 2000), replace=False)
+    _assert_same_bits(scene, samples.points_m[rows], samples.normals[rows], sky, t)
+
+
+def test_bad_requests(canyon):
+    from cityshade.errors import UsageError
+
+    with pytest.raises(UsageError, match="izb or raytrace"):
+        sky_visibility(canyon, [[0.0, 0.0, 0.0]], [[0.0, 0.0, 1.0]], named_sky("tregenza"),
+                       engine="shadowmap")
+    with pytest.raises(UsageError, match="multiple of 8"):
+        sky_visibility(canyon, [[0.0, 0.0, 0.0]], [[0.0, 0.0, 1.0]], named_sky("tregenza"),
+                       block=12)
+    vis = sky_visibility(canyon, np.zeros((0, 3)), np.zeros((0, 3)), named_sky("tregenza"))
+    assert vis.bits.shape == (0, 19) and sky_view_factor(vis).shape == (0,)
