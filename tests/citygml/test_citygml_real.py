@@ -117,9 +117,12 @@ def test_real_file_builds_with_independent_counts(path):
     assert len(scene.obj_ids) == objects, "object count differs from the independent XML count"
     rep = scene.report
     assert rep["polygons"]["read"] == polygons, "polygon count differs from the XML count"
-    # Each polygon is drawn, skipped with a reason, or belongs to an LoD not drawn.
+    # Each polygon is drawn, skipped with a reason, belongs to an LoD not drawn, or is left
+    # out by rule (ClosureSurfaces, virtual).
     assert (rep["polygons"]["drawn"] + rep["polygons"]["skipped"]
-            + rep["polygons"]["not_selected_lod"]) == polygons
+            + rep["polygons"]["not_selected_lod"] + rep["polygons"]["left_out"]) == polygons
+    assert rep["polygons"]["left_out"] == sum(
+        v for k, v in rep["left_out"].items() if k.endswith("_polygons"))
     assert rep["polygons"]["skipped"] == sum(rep["skipped"].values())
     assert scene.n_triangles > 0
     assert np.isfinite(scene.vertices).all(), "NaN/inf in the scene"

@@ -102,10 +102,12 @@ def test_inline_and_xlinked_prototypes_are_placed_exactly(tmp_path):
     assert d.min(axis=1).max() < 1e-4 and d.min(axis=0).max() < 1e-4
     classes = set(np.asarray(scene.tri_class).tolist())
     assert classes == {SURFACE_CODE["vegetation"]}
-    # The mirrored tree's normal points the other way of the unmirrored one's (in x).
+    # The mirrored tree's normal is the mirror image of the shifted one's, (0, -1, 1)/√2 (its
+    # ring read as written would face the other way, (0, 1, -1)/√2).
     normals = np.asarray(scene.poly_normal, np.float64)
     by_obj = {int(o): normals[i] for i, o in enumerate(np.asarray(scene.poly_object))}
-    assert by_obj[0][0] == pytest.approx(-by_obj[2][0], abs=1e-6)
+    np.testing.assert_allclose(by_obj[0], np.array([0, -1, 1]) / np.sqrt(2), atol=1e-6)
+    np.testing.assert_allclose(by_obj[2], by_obj[0] * [-1, 1, 1], atol=1e-6)
 
 
 def test_citygml3_relative_geometry(tmp_path):

@@ -111,7 +111,8 @@ def _text(d: dict) -> str:
     add(f"objects       {d['objects']['total']:,} ({objs})")
     p = d["polygons"]
     add(f"polygons      {p['read']:,} read, {p['drawn']:,} drawn, {p['skipped']:,} skipped, "
-        f"{p['not_selected_lod']:,} of other LoDs")
+        f"{p['not_selected_lod']:,} of other LoDs"
+        + (f", {p['left_out']:,} left out" if p.get("left_out") else ""))
     if d["skipped"]:
         add("  skipped     " + ", ".join(f"{k} {v}" for k, v in d["skipped"].items()))
     if d["repairs"]:
