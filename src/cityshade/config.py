@@ -22,6 +22,9 @@ from cityshade.errors import ConfigError, UsageError
 
 TIME_SOURCES = ("auto", "valid", "construction", "attribute", "creation")
 AXIS_ORDERS = ("lonlat", "latlon")
+#: What a build does with ClosureSurfaces (virtual surfaces closing a solid): leave them out
+#: (they neither cast nor receive) or keep them as walls of their building.
+CLOSURE_SURFACES = ("omit", "keep")
 
 #: A LoD as text: whole (CityGML and CityJSON) or refined (CityJSON "2.2").
 _LOD_TEXT = re.compile(r"^[0-4](\.[0-9])?$")
@@ -60,8 +63,15 @@ class BuildSettings:
     #: Distance (relative to polygon size) beyond which a polygon counts as non-planar in the
     #: report; it is still triangulated (the triangles keep the true 3-D vertices).
     nonplanar_rel_tol: float = 1e-3
+    #: "omit": ClosureSurfaces (CityGML bldg:/con:ClosureSurface, WaterClosureSurface,
+    #: HoleSurface, CityJSON "ClosureSurface"; surface class "closure") are virtual and left
+    #: out of the scene, counted in the report; "keep": drawn like walls (the old behaviour).
+    closure_surfaces: str = "omit"
 
     def __post_init__(self) -> None:
+        if self.closure_surfaces not in CLOSURE_SURFACES:
+            raise ConfigError(f"closure_surfaces must be one of {', '.join(CLOSURE_SURFACES)}, "
+                              f"not {self.closure_surfaces!r}")
         if self.time_source not in TIME_SOURCES:
             raise ConfigError(f"time_source must be one of {', '.join(TIME_SOURCES)}, "
                               f"not {self.time_source!r}")

@@ -38,9 +38,6 @@ EXPECTED_FAILURES = {
     "val3dity-testdata/gml/csol1b.gml": (NotCityGMLError, "not a CityGML file"),
     "sig3d-citygml2-examples/ade/noise-ade/railway_example.gml": (EmptyModelError, "no surface geometry"),
     "sig3d-citygml2-examples/ade/noise-ade/road_example.gml": (EmptyModelError, "no surface geometry"),
-    # Every tree is an ImplicitGeometry, which the reader does not place yet (issue 38).
-    "berlin-lichtenberg-trees/semantic_3D_tree_model_berlin_test_area.gml":
-        (EmptyModelError, "no surface geometry (288 objects, 0 polygons read)"),
 }
 
 
@@ -50,12 +47,21 @@ def _citygml_ns(namespace: str) -> bool:
         and not any(m in namespace for m in SKIPPED_MODULES)
 
 
+def _polygons_in(el) -> int:
+    return sum(1 for p in el.iter() if isinstance(p.tag, str)
+               and etree.QName(p).localname in POLYGON_TAGS)
+
+
 def independent_counts(path):
-    """(city objects, polygons) counted by a full-tree walk that skips ADE subtrees."""
+    """(city objects, polygons) counted by a full-tree walk that skips ADE subtrees. An
+    ImplicitGeometry counts its prototype's polygons once per instance (an inline prototype
+    where it stands, an xlinked one by the gml:id it points at)."""
     parser = etree.XMLParser(resolve_entities=False, no_network=True, recover=True,
                              huge_tree=True)
     root = etree.parse(str(path), parser).getroot()
     objects = polygons = 0
+    prototype_polygons: dict[str, int] = {}
+    links: list[str] = []
     stack = [root]
     while stack:
         el = stack.pop()
@@ -71,9 +77,20 @@ def independent_counts(path):
             elif _citygml_ns(namespace):
                 if local in OBJECT_TYPES:
                     objects += 1
+                if local in ("relativeGMLGeometry", "relativeGeometry"):
+                    href = child.get("{http://www.w3.org/1999/xlink}href")
+                    if href is not None:
+                        links.append(href.lstrip("#"))
+                    for geom in child:
+                        n = _polygons_in(geom)
+                        polygons += n
+                        for gid in (geom.get("{%s}id" % g) for g in GML):
+                            if gid:
+                                prototype_polygons[gid] = n
+                    continue
                 stack.append(child)
             # anything else is an ADE (or a skipped module): not descended
-    return objects, polygons
+    return objects, polygons + sum(prototype_polygons[t] for t in links)
 
 
 def gml_files():
@@ -100,9 +117,12 @@ def test_real_file_builds_with_independent_counts(path):
     assert len(scene.obj_ids) == objects, "object count differs from the independent XML count"
     rep = scene.report
     assert rep["polygons"]["read"] == polygons, "polygon count differs from the XML count"
-    # Each polygon is drawn, skipped with a reason, or belongs to an LoD not drawn.
+    # Each polygon is drawn, skipped with a reason, belongs to an LoD not drawn, or is left
+    # out by rule (ClosureSurfaces, virtual).
     assert (rep["polygons"]["drawn"] + rep["polygons"]["skipped"]
-            + rep["polygons"]["not_selected_lod"]) == polygons
+            + rep["polygons"]["not_selected_lod"] + rep["polygons"]["left_out"]) == polygons
+    assert rep["polygons"]["left_out"] == sum(
+        v for k, v in rep["left_out"].items() if k.endswith("_polygons"))
     assert rep["polygons"]["skipped"] == sum(rep["skipped"].values())
     assert scene.n_triangles > 0
     assert np.isfinite(scene.vertices).all(), "NaN/inf in the scene"

@@ -34,7 +34,8 @@ def test_box_with_forward_references_is_closed_and_outward(tmp_path):
     faces = box_polygons(*BASE, 10, 8, 6)
     scene = scene_of(tmp_path, city(building("b1", faces)))
     assert scene.n_triangles == 12
-    assert scene.report["polygons"] == {"read": 6, "drawn": 6, "skipped": 0, "not_selected_lod": 0}
+    assert scene.report["polygons"] == {"read": 6, "drawn": 6, "skipped": 0, "not_selected_lod": 0,
+                                       "left_out": 0}
     # Outward winding: the enclosed volume is positive and equals 10 * 8 * 6.
     assert signed_volume(scene) == pytest.approx(480.0, rel=1e-6)
     assert scene.crs.horizontal_epsg == 25832

@@ -15,6 +15,7 @@ from citygml_snippets import box_polygons, building, polygon
 from conftest import SHARED_DATA
 
 from cityshade.citygml import split
+from cityshade.citygml.implicit import place_instances
 from cityshade.citygml.reader import RawModel, _root_of, read_citygml
 from cityshade.errors import CityshadeError, XMLSyntaxError
 
@@ -48,6 +49,7 @@ def two_part_model(path: Path, plan: split.Plan) -> RawModel | None:
         return None
     tail = split.read_tail(path, plan, root_ns, None, frozenset())
     split.merge(head, tail)
+    place_instances(head)  # as read_citygml does after the parts are merged
     return head
 
 

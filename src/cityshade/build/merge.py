@@ -26,7 +26,7 @@ _POLY_FIELDS = ("poly_object", "poly_class", "poly_area_m2", "poly_normal", "pol
 _TRI_FIELDS = ("triangles", "tri_object", "tri_polygon", "tri_class", "tri_material",
                "tri_texture", "tri_t_begin_days", "tri_t_end_days")
 #: Report counters that add up over files.
-_SUMMED = ("skipped", "repairs", "lods", "lods_drawn", "counters")
+_SUMMED = ("skipped", "left_out", "repairs", "lods", "lods_drawn", "counters")
 
 
 def _crs_key(crs) -> tuple:

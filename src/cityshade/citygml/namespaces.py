@@ -119,7 +119,7 @@ SKIPPED_CITYGML = frozenset("""
     relatedCityObjects groupMember parent
 """.split())
 
-#: Implicit geometries are counted as skipped: no file in the test data uses them.
+#: Implicit geometries: prototypes placed by matrix and reference point (citygml/implicit.py).
 IMPLICIT_PROPERTIES = frozenset(f"lod{n}ImplicitRepresentation" for n in range(5))
 
 #: Attributes that give an object's validity interval (docs/DESIGN.md §1).

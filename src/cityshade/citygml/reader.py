@@ -37,6 +37,7 @@ import numpy as np
 from cityshade.citygml import namespaces as ns
 from cityshade.citygml.appearance import AppearanceCollector
 from cityshade.citygml.geometry import RingParser
+from cityshade.citygml.implicit import ImplicitRecords, parse_numbers, place_instances, point_text
 from cityshade.citygml.namespaces import XLINK_HREF
 from cityshade.errors import EmptyModelError, InputError, NotCityGMLError, XMLSyntaxError
 
@@ -108,6 +109,9 @@ class RawModel:
     #: Tags of Application Domain Extension elements met (each skipped with its subtree);
     #: ``counters["ade_elements_skipped"]`` counts them.
     ade_tags: set[str] = field(default_factory=set)
+    #: ImplicitGeometry prototypes and instances while reading; placed (as ordinary polygons)
+    #: and set to None when the whole file is read (:mod:`cityshade.citygml.implicit`).
+    implicit: ImplicitRecords | None = None
 
     @property
     def n_polygons(self) -> int:
@@ -176,6 +180,10 @@ class _Walker:
         self.uniform_tags = {t + n for t in gml_tags
                              for n in ("MultiSurface", "CompositeSurface", "Shell")}
         self.compile_member_paths()
+        #: The walker of ImplicitGeometry prototypes (into a model of their own), made when
+        #: the first one is met; None in that walker itself.
+        self.templates: _Walker | None = None
+        self.is_template = False
     # -- classification -------------------------------------------------------------------
     def kind(self, tag: str) -> tuple[int, object]:
         """(kind, payload) of an element tag, cached: payload is a LoD, class code or type."""
@@ -209,7 +217,7 @@ class _Walker:
             elif local in ns.THEMATIC_SURFACES:
                 result = (K_THEMATIC, ns.SURFACE_CODE[ns.THEMATIC_SURFACES[local]])
             elif local in ns.IMPLICIT_PROPERTIES:
-                result = (K_IMPLICIT, None)
+                result = (K_IMPLICIT, int(local[3]))
             elif local in ns.SKIPPED_CITYGML or local in ns.TIME_ATTRIBUTES:
                 result = (K_SKIP, None)
             elif local in ("appearance", "Appearance", "appearanceMember"):
@@ -408,11 +416,91 @@ class _Walker:
                         if srs is not None:
                             m.srs_names[srs] += 1
             elif kind == K_IMPLICIT:
-                m.counters["implicit_geometries_skipped"] += 1
+                self.implicit(child, obj, payload)
             elif kind == K_CAVITY:
                 m.counters["cavity_polygons"] += sum(
                     1 for p in child.iter() if isinstance(p.tag, str)
                     and p.tag[p.tag.rfind("}") + 1:] in ns.POLYGON_ELEMENTS)
+
+    def implicit(self, el, obj: int, lod: int) -> None:
+        """An ``lodNImplicitRepresentation``: its ImplicitGeometry recorded as an instance
+        (placed after the read, :func:`cityshade.citygml.implicit.place_instances`)."""
+        m = self.m
+        if self.is_template or el.get(XLINK_HREF) is not None:
+            # A prototype holding instances, or a property pointing at another object's
+            # ImplicitGeometry (the same geometry at the same place): nothing new to draw.
+            m.counters["implicit_geometries_skipped"] += 1
+            return
+        for geom in el:
+            if isinstance(geom.tag, str) and geom.tag.endswith("ImplicitGeometry"):
+                self.implicit_geometry(geom, obj, lod)
+
+    def implicit_geometry(self, geom, obj: int, lod: int) -> None:
+        m = self.m
+        if m.implicit is None:
+            m.implicit = ImplicitRecords()
+        matrix, ref, proto, target = None, None, -1, None
+        for child in geom:
+            tag = child.tag
+            if not isinstance(tag, str):
+                continue
+            local = tag[tag.rfind("}") + 1:]
+            if local == "transformationMatrix":
+                matrix = parse_numbers(child.text, 16)
+                if matrix is None:
+                    raise self.implicit_error(geom, obj, "a transformationMatrix that is not "
+                                                        "16 numbers")
+            elif local in ("relativeGMLGeometry", "relativeGeometry"):
+                href = child.get(XLINK_HREF)
+                if href is not None:
+                    target = _href_target(href)
+                else:
+                    proto = self.prototype(child)
+            elif local == "referencePoint":
+                text, srs = point_text(child)
+                ref = parse_numbers(text, 3) or parse_numbers(text, 2)
+                if ref is None:
+                    raise self.implicit_error(geom, obj, "a referencePoint that is not a "
+                                                        "gml:Point of 2 or 3 numbers")
+                if srs is not None:
+                    m.srs_names[srs] += 1
+        if ref is None or (proto < 0 and target is None):
+            m.counters["implicit_geometries_incomplete"] += 1
+            return
+        ref = (ref + [0.0])[:3]
+        matrix = matrix or [1.0, 0, 0, 0, 0, 1.0, 0, 0, 0, 0, 1.0, 0, 0, 0, 0, 1.0]
+        m.implicit.instances.append((obj, lod, matrix, ref, proto, target))
+
+    def implicit_error(self, geom, obj: int, what: str) -> InputError:
+        return InputError(f"an ImplicitGeometry has {what}", path=str(self.m.path),
+                          line=_start_line(geom, self.lines_skewed), gml_id=self.m.obj_ids[obj])
+
+    def prototype(self, prop) -> int:
+        """Read an inline prototype geometry into the template model; its index."""
+        tw = self.templates
+        if tw is None:
+            tw = self.templates = _Walker(RawModel(path=self.m.path))
+            tw.gml_ns, tw.gml_id, tw.other_gml_id = self.gml_ns, self.gml_id, self.other_gml_id
+            tw.compile_member_paths()
+            tw.lines_skewed, tw.is_template = self.lines_skewed, True
+            self.m.implicit.templates.append(tw.m)
+        rec = self.m.implicit
+        p0 = len(tw.polys)
+        tw.walk(prop, 0, 0, -1, 0)
+        index = len(rec.protos)
+        rec.protos.append((0, p0, len(tw.polys)))
+        for geom in prop:
+            gid = self.element_id(geom) if isinstance(geom.tag, str) else None
+            if gid is not None:
+                rec.proto_ids.setdefault(gid, index)
+        self.m.counters["implicit_prototypes"] += 1
+        return index
+
+    def close(self) -> None:
+        """Wait for the ring parsers (a failed read calls it too, so no thread lingers)."""
+        self.parser.close()
+        if self.templates is not None:
+            self.templates.parser.close()
 
     def uniform_members(self, el, obj: int, cls: int, lod: int, flip: int) -> bool:
         """Read a surface aggregate whose members are all alike in bulk; False if they are not.
@@ -566,6 +654,8 @@ class _Walker:
         self.polys, self.refs = [], []
         if m.ade_tags:
             m.counters["ade_elements_skipped"] = len(m.ade_tags)
+        if self.templates is not None:
+            self.templates.finish()
 
 
 @functools.cache
@@ -716,6 +806,7 @@ def _read(path: Path, root_ns: str, progress, recover: bool,
             model = read_stream(fh, total, path, root_ns, progress, recover, generic)
     if model.counters["members"] == 0 or not model.obj_ids:
         raise EmptyModelError("the CityGML model contains no city objects", path=str(path))
+    place_instances(model)  # after the whole file (and both parts of a split read)
     if progress is not None:
         progress(total, total)
     return model
@@ -768,7 +859,7 @@ def read_stream(fh, total: int, path: Path, root_ns: str, progress, recover: boo
             msg = f"malformed XML: {msg}"
         raise XMLSyntaxError(msg, path=str(path), line=exc.lineno) from None
     finally:
-        walker.parser.close()
+        walker.close()
     walker.finish()
     model.counters["members"] = members
     return model

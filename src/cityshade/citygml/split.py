@@ -257,6 +257,9 @@ def merge(a, b) -> None:
     if a.ade_tags:  # distinct tags, not the sum of the two parts' counts
         a.counters["ade_elements_skipped"] = len(a.ade_tags)
     a.warnings += b.warnings
+    from cityshade.citygml.implicit import merge_records
+
+    a.implicit = merge_records(a.implicit, b.implicit, n_obj)
 
 
 class _Child:

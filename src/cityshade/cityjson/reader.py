@@ -341,6 +341,8 @@ class _Reader:
                 raise self.error("\"vertices-templates\" must be a list of [x, y, z]",
                                  line) from None
             self.template_vertices = tv
+            if self.templates:
+                self.m.counters["implicit_prototypes"] = len(self.templates)
 
     def vertices(self, raw: msgspec.Raw, line: int | None, what: str) -> np.ndarray:
         """The real (scaled, translated, float64) coordinates of a raw ``vertices`` array."""
@@ -696,7 +698,7 @@ class _Reader:
         placed = h / w[:, None] + self.block_vertices[ref]
         resume = self.blocks[-1]
         self.begin_block(self.add_vertices(placed), len(placed), obj)
-        self.m.counters["geometry_instances"] += 1
+        self.m.counters["implicit_instances"] += 1
         self.geometry(self.templates[t], obj, default_cls, app, template=True)
         self.begin_block(resume[1], resume[2], resume[3])
 

@@ -6,7 +6,7 @@ from pathlib import Path
 import click
 
 from cityshade.cli.options import AXIS_ORDER_HELP, CRS_HELP, TIME_ATTRIBUTE_HELP
-from cityshade.config import AXIS_ORDERS, TIME_SOURCES
+from cityshade.config import AXIS_ORDERS, CLOSURE_SURFACES, TIME_SOURCES
 
 
 def _lod_option(ctx, param, value: str | None) -> int | float | None:
@@ -45,12 +45,17 @@ def _lod_option(ctx, param, value: str | None) -> int | float | None:
                    "construction/demolition, else --time-attribute; creation = the database "
                    "dates creationDate/terminationDate (only when asked for).")
 @click.option("--time-attribute", help=TIME_ATTRIBUTE_HELP)
+@click.option("--closure-surfaces", type=click.Choice(CLOSURE_SURFACES),
+              help="ClosureSurfaces are virtual (they close a solid between building parts or "
+                   "across a passage): omit (the default, [build] closure_surfaces) leaves them "
+                   "out, so they neither cast nor receive; keep draws them like walls.")
 @click.option("--config", "config_path", type=click.Path(dir_okay=False, path_type=Path),
               help="TOML settings file ([build], [kdtree] tables).")
 @click.option("-q", "--quiet", is_flag=True, help="No progress display and no summary.")
 def build(city: tuple[Path, ...], output: Path | None, lod: int | float | None, theme: str | None,
           crs: str | None, axis_order: str | None, time_source: str, time_attribute: str | None,
-          config_path: Path | None, quiet: bool, tile_m: float | None) -> None:
+          config_path: Path | None, quiet: bool, tile_m: float | None,
+          closure_surfaces: str | None) -> None:
     """Read CITY (CityGML 1.0/2.0/3.0, CityJSON 1.0/1.1/2.0 or CityJSONSeq, told apart by
     the content), triangulate it, build its kd-tree, and write one versioned,
     memory-mappable .cityshade file.
@@ -67,7 +72,8 @@ def build(city: tuple[Path, ...], output: Path | None, lod: int | float | None, 
 
     settings = load_settings(config_path) if config_path else Settings()
     overrides = {k: v for k, v in (("lod", lod), ("theme", theme), ("crs", crs),
-                                   ("axis_order", axis_order), ("time_attribute", time_attribute))
+                                   ("axis_order", axis_order), ("time_attribute", time_attribute),
+                                   ("closure_surfaces", closure_surfaces))
                  if v is not None}
     if time_source != "auto":
         overrides["time_source"] = time_source

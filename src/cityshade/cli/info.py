@@ -77,6 +77,9 @@ def describe_report(rep: dict, header: dict, counts: dict) -> dict:
         "triangles": counts["triangles"], "vertices": counts["vertices"],
         "objects": {"total": counts["objects"], "by_type": rep["objects_by_type"]},
         "polygons": rep["polygons"], "skipped": rep["skipped"],
+        "left_out": rep.get("left_out", {}), "closure_surfaces": rep.get("closure_surfaces"),
+        "implicit": {k: rep.get("counters", {}).get("implicit_" + k, 0)
+                     for k in ("prototypes", "instances", "references_unresolved")},
         "skipped_ids": rep.get("skipped_ids", {}), "repairs": rep["repairs"],
         "lods": rep["lods"], "lods_drawn": rep.get("lods_drawn", {}),
         "lod_requested": rep.get("lod_requested"),
@@ -108,11 +111,22 @@ def _text(d: dict) -> str:
     add(f"objects       {d['objects']['total']:,} ({objs})")
     p = d["polygons"]
     add(f"polygons      {p['read']:,} read, {p['drawn']:,} drawn, {p['skipped']:,} skipped, "
-        f"{p['not_selected_lod']:,} of other LoDs")
+        f"{p['not_selected_lod']:,} of other LoDs"
+        + (f", {p['left_out']:,} left out" if p.get("left_out") else ""))
     if d["skipped"]:
         add("  skipped     " + ", ".join(f"{k} {v}" for k, v in d["skipped"].items()))
     if d["repairs"]:
         add("  repaired    " + ", ".join(f"{k} {v}" for k, v in d["repairs"].items()))
+    left = d.get("left_out") or {}
+    if left.get("closure_polygons"):
+        add(f"  left out    {left['closure_polygons']:,} ClosureSurface polygons "
+            f"({left['closure_triangles']:,} triangles): virtual surfaces, neither cast nor "
+            f"receive (build --closure-surfaces keep draws them)")
+    imp = d.get("implicit") or {}
+    if imp.get("prototypes") or imp.get("instances"):
+        unresolved = imp.get("references_unresolved")
+        add(f"implicit      {imp['prototypes']:,} prototypes, {imp['instances']:,} instances "
+            f"placed" + (f", {unresolved:,} references unresolved" if unresolved else ""))
     add(f"triangles     {d['triangles']:,} ({d['vertices']:,} vertices)")
     add("surfaces      " + ", ".join(f"{k} {v:,}" for k, v in d["surface_classes"].items()))
     lods = ", ".join(f"LoD{k}: {v}" for k, v in d["lods"].items()) or "none"

@@ -25,6 +25,7 @@ from cityshade.citygml.appearance import (georeferenced_uv, read_world_file,
                                           resolve_image_path)
 from cityshade.geo.crs import (CrsInfo, GeographicProjector, area_of_use_warning,
                                    reproject_horizontal, resolve_model_crs_detailed)
+from cityshade.citygml.namespaces import SURFACE_CODE
 from cityshade.citygml.reader import RawModel
 from cityshade.geo.temporal import (choose_interval, days_to_iso, has_creation_dates,
                                         parse_time_attribute)
@@ -454,6 +455,8 @@ class _BuildLog:
     source_crs: CrsInfo | None = None
     axis_order: str | None = None
     theme: str | None = None
+    #: Triangulated polygons and triangles left out by reason (``closure_polygons``, ...).
+    left_out: Counter = field(default_factory=Counter)
 
 
 class _Validity(NamedTuple):
@@ -514,6 +517,9 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
     coords, crs = _to_model_crs(raw, settings, target_crs, coords, ring_offsets, log)  # 6.
     triangles, tri_poly_local, tri_area_m2, tri_repairs, normals, ok = _triangulate(  # 7.
         raw, settings, coords, (ring_offsets, poly_ring_offsets), sel, log)
+    if settings.closure_surfaces == "omit":
+        triangles, tri_poly_local, ok = _leave_out_closures(
+            raw, sel, (triangles, tri_poly_local), ok, log)
 
     # 8. Keep drawn polygons only and renumber; compact the vertices.
     drawn = np.nonzero(ok)[0]
@@ -769,6 +775,34 @@ def _to_model_crs(raw: RawModel, settings: BuildSettings, target_crs: CrsInfo | 
     return coords, crs
 
 
+def _leave_out_closures(raw: RawModel, sel: _Selection, tris: tuple[np.ndarray, np.ndarray],
+                        ok: np.ndarray, log: _BuildLog):
+    """Stage 7b: ClosureSurfaces (class ``closure``) are virtual: they close a solid where no
+    wall stands (between building parts, across a passage), so they neither cast nor receive.
+    Their triangles are dropped and counted (``log.left_out``) after the triangulation, so the
+    counts are those a kept build would draw.
+
+    ``tris`` is (triangles (T, 3), tri_poly_local (T,)) of :func:`_triangulate`.
+
+    Returns
+    -------
+    triangles, tri_poly_local, ok : without the closure polygons' triangles.
+    """
+    triangles, tri_poly_local = tris
+    is_closure = sel.poly_cls[sel.polys] == SURFACE_CODE["closure"]
+    if not is_closure.any():
+        return triangles, tri_poly_local, ok
+    keep_tri = ~is_closure[tri_poly_local]
+    n_left = len(keep_tri) - int(np.count_nonzero(keep_tri))
+    if n_left == len(keep_tri):
+        raise EmptyModelError("the model has only ClosureSurfaces, which are virtual and left "
+                              "out (build --closure-surfaces keep draws them)",
+                              path=str(raw.path))
+    log.left_out["closure_polygons"] += int(np.count_nonzero(ok & is_closure))
+    log.left_out["closure_triangles"] += n_left
+    return triangles[keep_tri], tri_poly_local[keep_tri], ok & ~is_closure
+
+
 def _triangulate(raw: RawModel, settings: BuildSettings, coords: np.ndarray,
                  offsets: tuple[np.ndarray, np.ndarray], sel: _Selection, log: _BuildLog):
     """Stage 7: the selected polygons triangulated in float64, OrientableSurface flips
@@ -875,8 +909,11 @@ def _build_report(raw: RawModel, settings: BuildSettings, log: _BuildLog, times:
         "objects_by_type": dict(sorted(Counter(raw.obj_types).items())),
         "polygons": {"read": raw.n_polygons + log.cavities, "drawn": int(n_drawn),
                      "skipped": int(sum(skipped.values())),
-                     "not_selected_lod": counters.pop("polygons_not_selected_lod")},
+                     "not_selected_lod": counters.pop("polygons_not_selected_lod"),
+                     "left_out": int(log.left_out["closure_polygons"])},
         "skipped": dict(sorted(skipped.items())),
+        "left_out": dict(sorted(log.left_out.items())),
+        "closure_surfaces": settings.closure_surfaces,
         "skipped_ids": dict(sorted(log.skipped_ids.items())),
         "repairs": dict(sorted(log.repairs.items())),
         "lods": {lod_label(raw, k): v for k, v in sorted(lod_table.items())},
