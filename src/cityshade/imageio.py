@@ -540,7 +540,7 @@ def write_png_rgb(path: str | os.PathLike, rgb8: np.ndarray,
     path = Path(path)
     rgb8 = np.asarray(rgb8)
     if path.suffix.lower() != ".png":
-        raise ImageIOError(f"write_png_rgb needs a .png path", path=str(path))
+        raise ImageIOError("write_png_rgb needs a .png path", path=str(path))
     if rgb8.ndim != 3 or rgb8.shape[2] != 3 or rgb8.dtype != np.uint8:
         raise ImageIOError(f"an RGB picture must be (H, W, 3) uint8, not {rgb8.shape} "
                            f"{rgb8.dtype}", path=str(path))
