@@ -27,7 +27,7 @@ import numpy as np
 
 from cityshade.errors import OutputError
 
-__all__ = ["Layer", "polygon_outlines", "building_footprints", "building_of_object",
+__all__ = ["Layer", "polygon_outlines", "building_footprints",
            "surface_layer", "building_layer", "write_gis", "finite_or_none",
            "rows_to_columns", "GEOPACKAGE_NAME"]
 
@@ -127,27 +127,15 @@ def polygon_outlines(scene, groups: Sequence[Sequence[int]]) -> list:
     return out
 
 
-def building_of_object(scene) -> np.ndarray:
-    """(O,) the top-level object of every object (a BuildingPart's building)."""
-    parent = np.asarray(scene.obj_parent, np.int64)
-    root = np.arange(len(parent))
-    for _ in range(64):  # nesting depth of CityGML parts; a cycle stops here
-        up = parent[root]
-        moved = up >= 0
-        if not moved.any():
-            break
-        root = np.where(moved, up, root)
-    return root
-
-
 def building_footprints(scene, buildings: Sequence[int]) -> tuple[list, list[str]]:
     """(2-D MultiPolygon or None, footprint source) per top-level object (see the module
     docstring)."""
     import shapely
 
     from cityshade.citygml.namespaces import SURFACE_CODE
+    from cityshade.geometry.scene import root_objects
 
-    root_of_poly = building_of_object(scene)[np.asarray(scene.poly_object, np.int64)]
+    root_of_poly = root_objects(scene.obj_parent)[np.asarray(scene.poly_object, np.int64)]
     poly_class = np.asarray(scene.poly_class)
     normal_z = np.asarray(scene.poly_normal, np.float64)[:, 2]
     order, starts = _triangles_by_polygon(scene)
@@ -318,8 +306,10 @@ def building_layer(scene, polygons: Sequence[int], means: dict[str, Sequence],
     means, maxima : mapping of name → (K,) float
         Values per polygon, in the order of ``polygons``.
     """
+    from cityshade.geometry.scene import root_objects
+
     polygons = np.asarray(polygons, np.int64)
-    root = building_of_object(scene)[np.asarray(scene.poly_object, np.int64)[polygons]]
+    root = root_objects(scene.obj_parent)[np.asarray(scene.poly_object, np.int64)[polygons]]
     types = [str(t) for t in scene.obj_types]
     keep = np.array(["Building" in types[r] for r in root], bool)
     if not keep.any():

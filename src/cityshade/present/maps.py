@@ -168,7 +168,7 @@ def _wrap(text: str, width_px: float, char_px: float) -> tuple[str, ...]:
 
 def _layout(shape: tuple[int, int], ctx: MapContext, text: Sequence[str]) -> _Layout:
     h, w = shape
-    font_pt = float(np.clip(max(w, MIN_WIDTH_PX) / 60.0, 8.0, 13.0))
+    font_pt = float(np.clip(max(w, MIN_WIDTH_PX) / 60.0, 8.0, 18.0))
     font_px = font_pt * 100.0 / 72.0
     pad = max(8, int(round(font_px)))
     width = max(w + 2 * pad, MIN_WIDTH_PX)
@@ -237,7 +237,9 @@ def decorate_map(rgb: np.ndarray, ctx: MapContext) -> Decorated:
     fig.add_artist(Rectangle((lay.map_col - 1, y_up(lay.map_row + h) - 1), w + 2, h + 2,
                              transform=px, facecolor="none", edgecolor="0.35", lw=0.75,
                              antialiased=False, zorder=-5))
-    fig.figimage(rgb, xo=lay.map_col, yo=height - (lay.map_row + h), origin="upper", zorder=5)
+    # At an integer offset, one picture pixel per canvas pixel, no resampling: copied as is.
+    fig.figimage(rgb, xo=lay.map_col, yo=height - (lay.map_row + h), origin="upper", zorder=5,
+                 interpolation="nearest", resample=False)
     if lay.title:
         fig.text(width / 2.0, y_up(lay.map_row / 2.0), "\n".join(lay.title), transform=px,
                  ha="center", va="center", fontsize=lay.font_pt * 1.15, weight="bold",
