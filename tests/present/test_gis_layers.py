@@ -36,8 +36,9 @@ def _window_house():
 
 @pytest.fixture(scope="module")
 def comparison(tmp_path_factory):
-    """A house with a window and an L-free box block 6 m south of it built in 2030, compared
-    2025 against 2031 under four explicit suns; the tables and the layers written."""
+    """A house with a window, a block 6 m south of it, and a small box built in 2030 right in
+    front of the window, compared 2025 against 2031 under four explicit suns; the tables and
+    the layers written."""
     from datetime import date, datetime, timedelta, timezone
 
     from cityshade.build import build_scene_from_file
@@ -49,10 +50,11 @@ def comparison(tmp_path_factory):
     from cityshade.sunhours.plan import Step
 
     tmp = tmp_path_factory.mktemp("gis")
-    block = building("BLOCK", box_polygons(X0 - 20.0, Y0 - 12.0, 0.0, 40.0, 6.0, 8.0, "b"),
-                     extra="<bldg:yearOfConstruction>2030</bldg:yearOfConstruction>")
+    block = building("BLOCK", box_polygons(X0 - 20.0, Y0 - 12.0, 0.0, 40.0, 6.0, 8.0, "b"))
+    new = building("NEW", box_polygons(X0 - 2.0, Y0 - 4.0, 0.0, 4.0, 1.0, 3.0, "n"),
+                   extra="<bldg:yearOfConstruction>2030</bldg:yearOfConstruction>")
     gml = tmp / "m.gml"
-    gml.write_text(city(_window_house(), block))
+    gml.write_text(city(_window_house(), block, new))
     scene = build_scene_from_file(gml)
     t0 = datetime(2025, 3, 21, 8, tzinfo=timezone.utc)
     steps = [Step(i, t0 + timedelta(hours=i), t0 + timedelta(hours=i + 1)) for i in range(4)]
@@ -93,7 +95,7 @@ def test_the_geopackage_reads_back_with_the_crs_and_the_csv_values(comparison):
     meta, _, geoms, values = pyogrio.raw.read(gpkg, layer="surfaces")
     fields = list(meta["fields"])
     rows = _csv(out / "surfaces.csv")
-    assert len(rows) == len(geoms) > 10
+    assert len(rows) == len(geoms) == 2 + 6  # the wall, the window and the block's faces
     for k, row in enumerate(rows):
         got = {name: values[i][k] for i, name in enumerate(fields)}
         for col in ("object_id", "polygon_id", "surface_class"):

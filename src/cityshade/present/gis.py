@@ -127,6 +127,18 @@ def polygon_outlines(scene, groups: Sequence[Sequence[int]]) -> list:
     return out
 
 
+def _as_multipolygon(geom):
+    """A MultiPolygon of the polygons in ``geom`` (lines and points of a collection dropped),
+    or None when there are none."""
+    import shapely
+
+    if geom is None:
+        return None
+    parts = [g for g in getattr(geom, "geoms", [geom]) if g.geom_type == "Polygon"
+             and not g.is_empty]
+    return shapely.MultiPolygon(parts) if parts else None
+
+
 def building_footprints(scene, buildings: Sequence[int]) -> tuple[list, list[str]]:
     """(2-D MultiPolygon or None, footprint source) per top-level object (see the module
     docstring)."""
@@ -165,12 +177,7 @@ def building_footprints(scene, buildings: Sequence[int]) -> tuple[list, list[str
                 hull = shapely.convex_hull(shapely.multipoints(xy[triangles[tris]].reshape(-1, 2)))
                 if hull.area > 0.0:
                     geom, source = hull, "convex_hull"
-        if geom is not None and geom.geom_type == "Polygon":
-            geom = shapely.MultiPolygon([geom])
-        elif geom is not None and geom.geom_type != "MultiPolygon":
-            geom = shapely.MultiPolygon([g for g in getattr(geom, "geoms", [])
-                                         if g.geom_type == "Polygon"]) or None
-        geoms.append(geom)
+        geoms.append(_as_multipolygon(geom))
         sources.append(source)
     return geoms, sources
 

@@ -294,8 +294,12 @@ def _north_arrows(fig, lay: _Layout, width: int, height: int, true_cw: float | N
     fig.add_artist(FancyArrow(x, base, 0.0, length, width=0.35 * lay.font_px,
                               head_width=1.1 * lay.font_px, head_length=0.9 * lay.font_px,
                               length_includes_head=True, transform=px, color="black"))
-    fig.text(x, base + length + 0.15 * lay.font_px, "N" if true_cw is None else "N (grid)",
-             transform=px, ha="center", va="bottom", fontsize=lay.font_pt, weight="bold")
+    if true_cw is None:
+        fig.text(x, base + length + 0.15 * lay.font_px, "N", transform=px, ha="center",
+                 va="bottom", fontsize=lay.font_pt, weight="bold")
+    else:  # beside the head: the true-north star stands above it
+        fig.text(x - 0.8 * lay.font_px, base + length - 0.45 * lay.font_px, "N (grid)",
+                 transform=px, ha="right", va="center", fontsize=lay.font_pt, weight="bold")
     if true_cw is not None:
         a = math.radians(true_cw)
         dx, dy = 1.25 * length * math.sin(a), 1.25 * length * math.cos(a)
@@ -312,8 +316,10 @@ def _crs_lines(ctx: MapContext, gt, shape, gamma) -> list[str]:
     x0, y1 = gt[0], gt[3]
     x1, y0 = x0 + w * gt[1], y1 + h * gt[5]
     name = ctx.crs.name if ctx.crs is not None else "unknown CRS"
-    lines = [f"{name}; x {x0:,.0f}–{x1:,.0f}, y {y0:,.0f}–{y1:,.0f} m; "
-             f"{gt[1]:g} m per pixel".replace(",", " ")]
+    def m(v: float) -> str:
+        return f"{v:,.0f}".replace(",", "\u2009")  # thin space between thousands
+
+    lines = [f"{name}; x {m(x0)}–{m(x1)}, y {m(y0)}–{m(y1)} m; {gt[1]:g} m per pixel"]
     if gamma is None:
         lines.append("Grid north up (true north unknown: no geodetic CRS).")
     elif abs(gamma) > TRUE_NORTH_MIN_DEG:
