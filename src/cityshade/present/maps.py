@@ -263,8 +263,9 @@ def decorate_map(rgb: np.ndarray, ctx: MapContext) -> Decorated:
 
 
 def _scale_bar(fig, lay: _Layout, height: int, bar_m: float, bar_px: float) -> tuple[int, int]:
-    """A black bar of ``bar_px`` pixels at the left of the scale row, labelled 0 and its length;
-    returns (row through its middle, first column)."""
+    """A black bar of ``bar_px`` pixels at the left of the scale row, its length written to
+    its right (a short bar has no room for labels at both ends); returns (row through its
+    middle, first column)."""
     from matplotlib.patches import Rectangle
     from matplotlib.transforms import IdentityTransform
 
@@ -275,9 +276,8 @@ def _scale_bar(fig, lay: _Layout, height: int, bar_m: float, bar_px: float) -> t
     # Whole pixels, no anti-aliasing: the bar covers exactly the columns of its length.
     fig.add_artist(Rectangle((col0, height - top - bar_h), bar_px, bar_h, transform=px,
                              facecolor="black", edgecolor="none", antialiased=False))
-    for x, text in ((col0, "0"), (col0 + bar_px, _length_label(bar_m))):
-        fig.text(x, height - top + 0.3 * lay.font_px, text, transform=px, ha="center",
-                 va="bottom", fontsize=lay.font_pt)
+    fig.text(col0 + bar_px + 0.5 * lay.font_px, height - top - bar_h / 2.0, _length_label(bar_m),
+             transform=px, ha="left", va="center", fontsize=lay.font_pt)
     return top + bar_h // 2, col0
 
 

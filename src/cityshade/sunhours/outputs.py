@@ -273,7 +273,7 @@ def batch_layers(result, scene) -> list:
 
 
 def batch_report_markdown(result, scene, meta: dict[str, Any], png: str | None,
-                          georeferenced: bool = False) -> str:
+                          georeferenced: bool = False, gis: bool = False) -> str:
     """A short report of a batch: what was computed, the map, and the per-surface sun-hours
     summed up per surface class (``report.html``'s text)."""
     from cityshade.sunhours.surfaces import surface_rows
@@ -295,7 +295,8 @@ def batch_report_markdown(result, scene, meta: dict[str, Any], png: str | None,
             by_class.setdefault(str(r[3]), []).append(r)
         lines += ["## Surfaces", "", f"{len(rows)} surfaces with sample points; sun-hours per "
                   "class (area-weighted mean of the surfaces' means). Every surface: "
-                  "`surfaces.csv`, and as GIS layers `results.gpkg`.", "",
+                  "`surfaces.csv`" + (", and as GIS layers `results.gpkg`" if gis else "")
+                  + ".", "",
                   "| class | surfaces | area m² | mean h | least h | most h |",
                   "|---|---:|---:|---:|---:|---:|"]
         for cls, rs in sorted(by_class.items(), key=lambda kv: -sum(r[4] for r in kv[1])):
@@ -307,5 +308,4 @@ def batch_report_markdown(result, scene, meta: dict[str, Any], png: str | None,
         lines.append("")
     for warning in result.warnings:
         lines += [f"> Warning: {warning}", ""]
-    lines += [f"Made by cityshade {__version__}.", ""]
     return "\n".join(lines)

@@ -170,14 +170,16 @@ def _write_presentation(outdir: Path, scene, request: SunHoursRequest, result: S
     from cityshade.sunhours.outputs import batch_layers, batch_report_markdown
 
     written: list[Path] = []
-    if request.gis and result.samples is not None and not scene.is_tiled:
+    gis = request.gis and result.samples is not None and not scene.is_tiled
+    if gis:
         from cityshade.present.gis import write_gis
 
         written += write_gis(outdir, batch_layers(result, scene), scene.crs)
     camera = request.camera
     text = batch_report_markdown(result, scene, meta,
                                  "sun_hours.png" if result.hours is not None else None,
-                                 georeferenced=camera is not None and camera.kind == "map")
+                                 georeferenced=camera is not None and camera.kind == "map",
+                                 gis=gis)
     written.append(write_report_html(outdir / "report.html", text, title="Sun-hours"))
     return written
 
