@@ -47,6 +47,7 @@ TIERS: list[set[str]] = [
     {"lightspace"},
     {"shadows"},
     {"store"},
+    {"present"},
     {"frame"},
     {"build"},
     {"sunhours"},

@@ -73,6 +73,17 @@ def _discard(paths) -> None:
                 p.unlink()
 
 
+def pending_path(path: str | os.PathLike) -> Path:
+    """Where the bytes of ``path`` are now: inside an :func:`output_group` a file written in the
+    group stays under its temporary name until the group ends, so a writer that reads an
+    earlier output of the same group (a report embedding its pictures) reads it there."""
+    path = Path(path)
+    for group in reversed(_GROUPS):
+        if path in group:
+            return group[path]
+    return path
+
+
 @contextlib.contextmanager
 def output_group(error: type[CityshadeError] = OutputError) -> Iterator[None]:
     """All of a command's outputs at once, or none of them.

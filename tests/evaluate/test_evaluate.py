@@ -170,6 +170,10 @@ def test_cli_evaluate_writes_the_report(box_file, tmp_path):
             assert float(r["misclassified_pct"]) < 5.0, r
     md = (out / "report.md").read_text()
     assert "Pareto front" in md and "no time dimension" in md and "| `raytrace` |" in md
+    # report.html: the same page with every picture embedded, nothing loaded from outside.
+    page = (out / "report.html").read_text()
+    assert page.count('<img src="data:image/png;base64,') == md.count("](") > 0
+    assert "http://" not in page and "https://" not in page and "Pareto front" in page
     img, _ = read_image(out / "error_vs_time_map.png")
     assert img.shape[:2] == (640, 1100)
 
@@ -210,7 +214,7 @@ def test_report_without_matplotlib_keeps_csv_and_markdown(box_file, tmp_path, mo
                                 parse_suns("135,30", scene), 0.0, ["shadowmap"],
                                 EvaluateSettings(repeat=1, sizes=(64,)))
     written = {p.name for p in write_report(evaluation, tmp_path / "r")}
-    assert {"results.csv", "report.md"} <= written
+    assert {"results.csv", "report.md", "report.html"} <= written
     assert not any(n.startswith("error_vs_time") for n in written)
     assert "plot skipped: matplotlib is not installed" in (tmp_path / "r" / "report.md").read_text()
 

@@ -365,7 +365,9 @@ def test_cli_batch_writes_everything(files, tmp_path):
                       _city_days("2024-06-21"), weights_h=[s.weight_h for s in steps])
     np.testing.assert_array_equal(np.nan_to_num(hours, nan=-1), np.nan_to_num(api.hours, nan=-1))
     png, _ = read_image(out / "sun_hours.png")
-    assert png.shape[0] > hours.shape[0] and png.shape[1] == max(64, hours.shape[1])
+    # Decorated by default (title, scale bar, north, CRS, colour bar in a margin): the map's
+    # values are checked in the GeoTIFF; the picture is larger than the map.
+    assert png.shape[0] > hours.shape[0] and png.shape[1] >= max(64, hours.shape[1])
     tif, _ = read_image(out / "sun_hours.tif")
     np.testing.assert_array_equal(np.nan_to_num(tif[..., 0], nan=-1),
                                   np.nan_to_num(hours, nan=-1))
@@ -378,6 +380,14 @@ def test_cli_batch_writes_everything(files, tmp_path):
     roof = next(r for r in rows if r["polygon_id"] == "br")
     assert roof["object_id"] == "box" and roof["surface_class"] == "roof"
     assert float(roof["area_m2"]) == pytest.approx(100.0) and float(roof["mean_sun_hours"]) == 16
+    # The same rows as GIS layers, and a report that opens in a browser.
+    pyogrio = pytest.importorskip("pyogrio")
+    meta, _, geoms, values = pyogrio.raw.read(out / "results.gpkg", layer="surfaces")
+    fields = list(meta["fields"])
+    assert [str(v) for v in values[fields.index("polygon_id")]] == [r["polygon_id"] for r in rows]
+    assert [f"{v:.4f}" for v in values[fields.index("mean_sun_hours")]] == \
+        [r["mean_sun_hours"] for r in rows]
+    assert "<img src=\"data:image/png;base64," in (out / "report.html").read_text()
     manifest = json.loads((out / "manifest.json").read_text())
     assert manifest["status"] == "finished" and manifest["finished_steps"] == list(range(16))
     assert manifest["params"]["tz"] == "Europe/Berlin" and len(manifest["key"]) == 64

@@ -17,22 +17,9 @@ import numpy as np
 
 from cityshade.errors import OutputError, UsageError
 from cityshade.build.merge import SceneMerger
-from cityshade.geometry.scene import Scene
+from cityshade.geometry.scene import Scene, root_objects
 from cityshade.store.tiled import (GLOBAL_PREFIX, INDEX_KIND, INDEX_NAME, INDEX_VERSION,
                                    OBJ_FIELDS, TILE_GROUPS, is_tiled_cache, POLY_FIELDS, TRI_FIELDS, VERT_FIELDS)
-
-
-def root_objects(obj_parent: np.ndarray) -> np.ndarray:
-    """(O,) int64: each object's top-level ancestor (itself for a top-level object)."""
-    root = np.arange(len(obj_parent), dtype=np.int64)
-    parent = np.asarray(obj_parent, np.int64)
-    for _ in range(64):  # nesting depth; real files nest 2-3 levels
-        up = parent[root]
-        step = up >= 0
-        if not step.any():
-            break
-        root = np.where(step, up, root)
-    return root
 
 
 def tile_keys(scene: Scene, tile_m: float) -> np.ndarray:

@@ -6,7 +6,8 @@ from pathlib import Path
 import click
 
 from cityshade.cli.options import (camera_options, ground_option, make_camera, parse_size,
-                                   parse_triple, shadow_options, time_plan_options)
+                                   parse_triple, presentation_options, shadow_options,
+                                   time_plan_options)
 
 
 @click.command("batch")
@@ -32,17 +33,18 @@ from cityshade.cli.options import (camera_options, ground_option, make_camera, p
               "Needs the [dask] extra.")
 @click.option("--monthly", is_flag=True, help="Also write the sun-hours of each month "
               "(local time in --tz) to OUTDIR/monthly/.")
+@presentation_options
 @click.option("-o", "--output", "outdir", type=click.Path(file_okay=False, path_type=Path),
               required=True, help="Output folder (created; holds manifest.json and the state).")
 @click.option("--overwrite", is_flag=True, help="Discard a run of other parameters in OUTDIR.")
 @click.option("-v", "--verbose", is_flag=True, help="Timings, counts and the sun of each end.")
 def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_text, every_day,
           city_date, camera, eye, target, fov, size, pixel_size, cameras_file, settings, ground,
-          no_refraction, frames, surfaces, samples_per_m2, tile_px, scheduler, monthly, outdir,
-          overwrite, verbose):
+          no_refraction, frames, surfaces, samples_per_m2, tile_px, scheduler, monthly,
+          no_decorate, no_gis, outdir, overwrite, verbose):
     """Sun-hours of FILE (a .cityshade scene) from --date, each day from --from to --to every
-    --every (local time in --tz): sun_hours.exr/.png (+ .tif for the map view), optional
-    frames and surfaces.csv in OUTDIR. Re-running the same command after an interruption
+    --every (local time in --tz): sun_hours.exr/.png (+ .tif for the map view), report.html,
+    optional frames, and with --surfaces surfaces.csv and results.gpkg in OUTDIR. Re-running the same command after an interruption
     continues where it stopped."""
     import dataclasses
     import time
@@ -99,6 +101,7 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     request = SunHoursRequest.from_settings(
         steps, city.city_days, settings, surfaces=surfaces, camera=cam, technique=technique,
         ground=ground, frames=frames, provenance=provenance, tile_px=tile_px,
+        decorate=not no_decorate, gis=not no_gis,
         scheduler=scheduler, scene_path=file,
         step_month=tuple(step_months(steps, zone)) if monthly else None)
     with Progress("tasks (tile × sun positions)" if request.tiled else "sun positions") as bar:

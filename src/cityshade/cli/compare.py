@@ -5,7 +5,8 @@ from pathlib import Path
 
 import click
 
-from cityshade.cli.options import camera_options, ground_option, shadow_options, time_plan_options
+from cityshade.cli.options import (camera_options, ground_option, presentation_options,
+                                   shadow_options, time_plan_options)
 
 
 @click.command("compare")
@@ -31,18 +32,19 @@ from cityshade.cli.options import camera_options, ground_option, shadow_options,
               "(bre209, en17037, china-sunshine); repeatable.")
 @click.option("--area", "area_text", help="Garden/amenity area x0,y0,x1,y1 (model CRS) for "
               "area rules that name none.")
+@presentation_options
 @click.option("-o", "--output", "outdir", type=click.Path(file_okay=False, path_type=Path),
               required=True, help="Output folder (created).")
 @click.option("-v", "--verbose", is_flag=True, help="Timings and counts.")
 def compare(file, before_text, after_text, proposal, date_text, from_text, to_text, every_text,
             tz, days, to_date_text, every_day, camera, eye, target, fov, size, pixel_size,
             cameras_file, settings, ground, no_refraction, no_surfaces, samples_per_m2,
-            min_stretch_text, rule_files, area_text, outdir, verbose):
+            min_stretch_text, rule_files, area_text, no_decorate, no_gis, outdir, verbose):
     """Sun-hours of the same receivers in two states of FILE (a .cityshade scene or a tiled
     cache folder): --before and --after dates of one model, or FILE with the proposal --with
     added. Writes before,
     after and loss maps (EXR, PNG, GeoTIFF for the map view), surfaces.csv, openings.csv,
-    the rule verdicts and report.md to OUTDIR."""
+    the rule verdicts, report.md and report.html, and results.gpkg (GIS layers) to OUTDIR."""
     import dataclasses
     import time
 
@@ -85,7 +87,7 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
         camera=lambda scene: make_camera(scene, view, eye, target, fov, size, pixel_size,
                                          cameras_file),
         surfaces=not no_surfaces, min_stretch_h=min_stretch_h, rules=rules, area=area,
-        outdir=outdir, provenance=provenance)
+        outdir=outdir, provenance=provenance, decorate=not no_decorate, gis=not no_gis)
     inputs = open_compare(request)
     warn_lmt([step.start_utc for step in inputs.steps[:1]], tz)
     result = run_compare(request, inputs, on_step=_progress("sun positions (before, after)"))

@@ -557,6 +557,16 @@ def ground_option(func):
                         help=GROUND_HELP)(func)
 
 
+def presentation_options(func):
+    """--no-decorate and --no-gis of batch and compare (docs/DESIGN.md §19)."""
+    func = click.option("--no-gis", is_flag=True, help="Do not write results.gpkg (surfaces, "
+                        "openings, buildings, rules as GIS layers in the model's CRS) and the "
+                        "results_*.geojson files (EPSG:4326).")(func)
+    return click.option("--no-decorate", is_flag=True, help="Plain PNG maps: no title, scale "
+                        "bar, north arrow, CRS or colour bar around a map view (GeoTIFF and "
+                        "EXR values are never decorated).")(func)
+
+
 # --- camera options shared by render, batch and evaluate ---------------------------------------
 
 def _preset_names() -> list[str]:

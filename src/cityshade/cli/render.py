@@ -31,6 +31,9 @@ from cityshade.cli.options import (camera_options, ground_option, make_camera, p
               help="8-bit shadow mask PNG: 255 sun, 0 shadow, 128 no surface.")
 @click.option("--geotiff", type=click.Path(dir_okay=False, path_type=Path),
               help="Map view: georeferenced mask (TIFF + world file + .prj) for QGIS/GDAL.")
+@click.option("--decorate", is_flag=True, help="Map view: --png and --mask as pictures for "
+              "people, in a margin with title, scale bar, north arrow, CRS and legend (the mask "
+              "then RGB; the EXR and GeoTIFF keep their values).")
 @ground_option
 @click.option("--strip-rows", type=int, help="Map view, raytrace or izb: render in strips of N "
               "rows (the same pixels in less memory; a map too large for memory as one frame "
@@ -39,7 +42,7 @@ from cityshade.cli.options import (camera_options, ground_option, make_camera, p
 @click.option("-v", "--verbose", is_flag=True, help="Stage timings and technique diagnostics.")
 def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_elevation, camera,
            eye, target, fov, size, pixel_size, cameras_file, settings, output, png, mask,
-           geotiff, ground, strip_rows, no_sky, verbose):
+           geotiff, decorate, ground, strip_rows, no_sky, verbose):
     """Render FILE (a .cityshade scene) as the city stood on --date, lit by the sun at
     --sun-azimuth/--sun-elevation or, for a --date with a time, by the sun computed for the
     model's place (NREL SPA), from a perspective camera or as a top-down map."""
@@ -77,6 +80,9 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
         click.echo(f"cityshade: warning: {warning}", err=True)
     cam = make_camera(scene, camera, eye, target, fov, size, pixel_size, cameras_file)
     check_frame_outputs(cam.kind, exr=output, png=png, mask=mask, georef=geotiff)  # the view
+    if decorate and cam.kind != "map":
+        raise UsageError("--decorate needs a map view (--camera map): a perspective picture "
+                         "has no single scale or north")
     strip_rows_for(cam, technique, settings.shadows, strip_rows)  # refused before any work
     scene = scene_for_camera(scene, cam, technique)
     sun = _sun(scene, sun_azimuth, sun_elevation, user_date, settings, no_refraction)
@@ -88,7 +94,8 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
 
     forget_casters(scene)  # this process renders one frame: the writers need the memory
     t1 = time.perf_counter()
-    written = write_frame(frame, scene, date_text, exr=output, png=png, mask=mask, georef=geotiff)
+    written = write_frame(frame, scene, date_text, exr=output, png=png, mask=mask, georef=geotiff,
+                          decorate=decorate)
     if geotiff is not None:
         from cityshade.cli.options import warn_geotiff_without_crs
 

@@ -166,7 +166,8 @@ def _safe(text: str) -> str:
 
 
 def write_report(evaluation: Evaluation, outdir, title: str | None = None) -> list[Path]:
-    """Write ``results.csv``, ``report.md``, ``error_vs_time_<view>.png`` (with matplotlib, the
+    """Write ``results.csv``, ``report.md`` and ``report.html`` (the same page, self-contained),
+    ``error_vs_time_<view>.png`` (with matplotlib, the
     ``[plot]`` extra; without it the report says the plot was skipped) and the worst cases'
     ``diff_<view>_<technique>_<size>.png`` into ``outdir`` (created), all renamed into place
     together at the end (a failing or interrupted write leaves none). Returns the paths."""
@@ -205,6 +206,11 @@ def _write_report(evaluation: Evaluation, outdir: Path, title: str | None) -> li
             written.append(png)
             images.setdefault(view, []).append(png.name)
     md = outdir / "report.md"
-    write_text_atomic(md, report_markdown(evaluation, images, title) + "\n", what="the report")
+    text = report_markdown(evaluation, images, title) + "\n"
+    write_text_atomic(md, text, what="the report")
     written.append(md)
+    from cityshade.present.html import write_report_html
+
+    written.append(write_report_html(outdir / "report.html", text,
+                                     title=title or "Shadow error against run time"))
     return written

@@ -423,18 +423,48 @@ def check_frame_outputs(camera_kind: str | None, **paths) -> None:
 
 def write_frame(frame: Frame, scene, date_text: str, exr: Path | None = None,
                 png: Path | None = None, mask: Path | None = None,
-                georef: Path | None = None) -> list[Path]:
+                georef: Path | None = None, decorate: bool = False) -> list[Path]:
     """Write the requested outputs, all of them renamed into place together at the end
     (:func:`cityshade.util.output_group`: a failing or interrupted write leaves none);
-    returns the paths written."""
+    returns the paths written. ``decorate`` (a map view): the PNG and the mask as RGB
+    pictures in a margin with title, scale bar, north arrow, CRS and (mask) legend
+    (:func:`decorated_picture`); the EXR and GeoTIFF keep their values.
+
+    Raises
+    ------
+    UsageError
+        ``decorate`` for a perspective view.
+    """
     from cityshade.util import output_group
 
     check_frame_outputs(frame.camera.kind, exr=exr, png=png, mask=mask, georef=georef)
+    if decorate and frame.camera.kind != "map":
+        raise UsageError("--decorate needs a map view (--camera map): a perspective picture "
+                         "has no single scale or north")
     with output_group():  # all the files appear together at the end, or none
-        return _write_frame(frame, scene, date_text, exr, png, mask, georef)
+        return _write_frame(frame, scene, date_text, exr, png, mask, georef, decorate)
 
 
-def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef) -> list[Path]:
+def decorated_picture(rgb: np.ndarray, frame: Frame, scene, date_text: str,
+                      mask: bool = False) -> np.ndarray:
+    """A map view's picture (or shadow mask as RGB) with title (date and sun), scale bar,
+    north arrow, CRS and, for a mask, the legend of its three values
+    (:func:`cityshade.present.maps.decorate_or_plain`; unchanged without matplotlib)."""
+    from cityshade import imageio
+    from cityshade.present.maps import Categories, MapContext, decorate_or_plain
+
+    sun = frame.sun
+    title = (f"{date_text}; sun azimuth {sun.azimuth_true_deg:.1f}° (true), elevation "
+             f"{sun.elevation_deg:.1f}°")
+    legend = Categories(((((imageio.MASK_LIT,) * 3), "sun"), (((imageio.MASK_SHADOW,) * 3),
+                         "shadow"), (((imageio.MASK_NODATA,) * 3), "no surface"))) \
+        if mask else None
+    return decorate_or_plain(rgb, MapContext(frame.camera.geotransform(scene.origin_m),
+                                             scene.crs, title, legend))
+
+
+def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef,
+                 decorate: bool = False) -> list[Path]:
     from cityshade import imageio
     from cityshade.runtime.memory import release_pages
     from cityshade.frame.shading import to_srgb8
@@ -471,11 +501,20 @@ def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef) ->
         imageio.write_exr(exr, channels, meta)
         written.append(Path(exr))
     if png is not None:
-        imageio.write_png_rgb(png, to_srgb8(frame.rgb), attributes=meta)
+        rgb8 = to_srgb8(frame.rgb)
+        if decorate:
+            rgb8 = decorated_picture(rgb8, frame, scene, date_text)
+        imageio.write_png_rgb(png, rgb8, attributes=meta)
         written.append(Path(png))
     mask_px = shadow_mask(frame)
     release_pages(frame.lit, s.valid)
-    if mask is not None:
+    if mask is not None and decorate:
+        grey = np.repeat(np.asarray(mask_px).reshape(mask_px.shape[0], mask_px.shape[1], 1), 3,
+                         axis=2)
+        imageio.write_png_rgb(mask, decorated_picture(grey, frame, scene, date_text, True),
+                              attributes=meta)
+        written.append(Path(mask))
+    elif mask is not None:
         imageio.write_mask_png(mask, mask_px, attributes=meta)
         written.append(Path(mask))
     if georef is not None:

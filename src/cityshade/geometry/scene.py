@@ -235,6 +235,20 @@ class TiledParts:
     global_obj: np.ndarray
 
 
+def root_objects(obj_parent: np.ndarray) -> np.ndarray:
+    """(O,) int64: each object's top-level ancestor (itself for a top-level object; a
+    BuildingPart's Building)."""
+    root = np.arange(len(obj_parent), dtype=np.int64)
+    parent = np.asarray(obj_parent, np.int64)
+    for _ in range(64):  # nesting depth; real files nest 2-3 levels
+        up = parent[root]
+        step = up >= 0
+        if not step.any():
+            break
+        root = np.where(step, up, root)
+    return root
+
+
 def _to_global(global_index: np.ndarray, ids: np.ndarray) -> np.ndarray:
     """A view's ids (-1: none) as the one cache's ids, in ``ids``' dtype and shape."""
     ids = np.asarray(ids)

@@ -24,7 +24,8 @@ import numpy as np
 from cityshade.errors import UsageError
 
 __all__ = ["Opening", "Comparison", "Receivers", "merge_scenes", "openings_of",
-           "compare_states", "write_comparison", "SURFACE_COLUMNS", "OPENING_COLUMNS"]
+           "compare_states", "write_comparison", "loss_percent", "loss_map", "SURFACE_COLUMNS",
+           "OPENING_COLUMNS"]
 
 #: Sample density on openings (points per m²): a 1.2 m² window gets ~36 points.
 OPENING_SAMPLES_PER_M2 = 30.0
@@ -174,7 +175,8 @@ def _standing(scene, t_days: float) -> np.ndarray:
             & (t_days < np.asarray(scene.obj_t_end_days)[obj]))
 
 
-def _loss_pct(before, after):
+def loss_percent(before, after):
+    """Loss in % of the hours before (NaN where there were none), elementwise."""
     with np.errstate(invalid="ignore", divide="ignore"):
         return np.where(before > 0, 100.0 * (before - after) / before, np.nan)
 
@@ -299,7 +301,7 @@ def compare_states(scene_before, t_before_days: float, scene_after, t_after_days
         b = np.where(same, before.hours, np.nan)
         a = np.where(same, after.hours, np.nan)
         comp.loss_h = (b - a).astype(np.float32)
-        comp.loss_pct = _loss_pct(b, a).astype(np.float32)
+        comp.loss_pct = loss_percent(b, a).astype(np.float32)
     if samples is not None:
         standing = _standing(scene_after, float(t_after_days))[:n_poly]
         comp.polygon_standing_after = standing
@@ -389,13 +391,28 @@ def surface_rows(comp: Comparison):
     counts = np.bincount(samples.polygon, minlength=len(scene.poly_ids))
     lb, la = polygon_longest(comp, "before"), polygon_longest(comp, "after")
     b, a = comp.polygon_before_h, comp.polygon_after_h
-    pct = _loss_pct(b, a)
+    pct = loss_percent(b, a)
     for p in np.flatnonzero(samples.sampled):
         cls = int(scene.poly_class[p])
         yield (scene.obj_ids[int(scene.poly_object[p])], scene.poly_ids[p], int(p),
                SURFACE_CLASSES[cls] if cls < len(SURFACE_CLASSES) else str(cls),
                float(scene.poly_area_m2[p]), int(counts[p]), b[p], a[p], b[p] - a[p], pct[p],
                lb[p], la[p])
+
+
+def loss_map(comp: Comparison) -> tuple[np.ndarray, float]:
+    """((H, W, 3) uint8 map of the loss in hours, gains shown as 0, changed pixels grey; the
+    top of its colour scale in hours)."""
+    from cityshade.sunhours.outputs import colour_mapped
+
+    loss = np.where(np.isfinite(comp.loss_h), np.maximum(comp.loss_h, 0.0), np.nan)
+    rgb, vmax_h = colour_mapped(loss)
+    rgb[comp.changed] = CHANGED_RGB
+    return rgb, vmax_h
+
+
+#: Pixels built over or demolished (no loss) in the loss maps.
+CHANGED_RGB = (150, 150, 150)
 
 
 def loss_picture(comp: Comparison) -> np.ndarray:
@@ -406,17 +423,39 @@ def loss_picture(comp: Comparison) -> np.ndarray:
     loss = np.where(np.isfinite(comp.loss_h), np.maximum(comp.loss_h, 0.0), np.nan)
     img = colour_map_png(loss)
     h, w = comp.changed.shape
-    img[:h, :w][comp.changed] = (150, 150, 150)  # built over or demolished: no loss
+    img[:h, :w][comp.changed] = CHANGED_RGB  # built over or demolished: no loss
     return img
 
 
-def write_comparison(outdir, comp: Comparison, meta: dict[str, Any]) -> list[Path]:
+def _pictures(comp: Comparison, meta: dict[str, Any], decorate: bool):
+    """(name, picture) of before.png, after.png (one colour scale) and loss.png: a map view
+    ``decorate``-d (:func:`cityshade.sunhours.outputs.map_picture`), else with legend bands."""
+    from cityshade.sunhours.outputs import colour_map_png, colour_mapped, map_picture
+
+    before, after = comp.before, comp.after
+    finite = np.concatenate([h[np.isfinite(h)] for h in (before.hours, after.hours)])
+    vmax = max(1.0, math.ceil(float(finite.max()))) if finite.size else 1.0
+    scene = comp.scene_before
+    cam = comp.camera if decorate else None
+    for name, hours in (("before", before.hours), ("after", after.hours)):
+        label = meta.get(f"cityshade:{name}", name)
+        picture = map_picture(colour_mapped(hours, vmax)[0], vmax, cam, scene,
+                              title=f"Sun-hours {name}: {label}")
+        yield name, colour_map_png(hours, vmax) if picture is None else picture
+    rgb, vmax_loss = loss_map(comp)
+    picture = map_picture(rgb, vmax_loss, cam, scene, label="loss of sun-hours (h)",
+                          title="Loss (before − after); grey: built over or demolished")
+    yield "loss", loss_picture(comp) if picture is None else picture
+
+
+def write_comparison(outdir, comp: Comparison, meta: dict[str, Any],
+                     decorate: bool = True) -> list[Path]:
     """Write ``compare.exr`` (before_h, after_h, loss_h, loss_pct, longest stretches, changed,
-    objid), ``before.png``/``after.png`` (one colour scale) and ``loss.png`` with legends, for
-    map views ``before_h/after_h/loss_h/loss_pct.tif`` (+ .tfw, .prj), ``surfaces.csv`` and
-    ``openings.csv``. Returns the paths written."""
+    objid), ``before.png``/``after.png`` (one colour scale) and ``loss.png`` (a map view
+    ``decorate``-d with title, scale bar, north, CRS and colour bar; else with legend bands),
+    for map views ``before_h/after_h/loss_h/loss_pct.tif`` (+ .tfw, .prj), ``surfaces.csv``
+    and ``openings.csv``. Returns the paths written."""
     from cityshade import imageio
-    from cityshade.sunhours.outputs import colour_map_png
     from cityshade.util import atomic_write
 
     outdir = Path(outdir)
@@ -435,15 +474,10 @@ def write_comparison(outdir, comp: Comparison, meta: dict[str, Any]) -> list[Pat
             "objid_before": np.asarray(before.surfaces.obj_id),
             "objid_after": np.asarray(after.surfaces.obj_id)}, meta)
         written.append(exr)
-        finite = np.concatenate([h[np.isfinite(h)] for h in (before.hours, after.hours)])
-        vmax = max(1.0, math.ceil(float(finite.max()))) if finite.size else 1.0
-        for name, hours in (("before", before.hours), ("after", after.hours)):
+        for name, picture in _pictures(comp, meta, decorate):
             png = outdir / f"{name}.png"
-            imageio.write_png_rgb(png, colour_map_png(hours, vmax), attributes=attrs)
+            imageio.write_png_rgb(png, picture, attributes=attrs)
             written.append(png)
-        png = outdir / "loss.png"
-        imageio.write_png_rgb(png, loss_picture(comp), attributes=attrs)
-        written.append(png)
         if cam.kind == "map":
             gt = cam.geotransform(comp.scene_before.origin_m)
             epsg = comp.scene_before.crs.horizontal_epsg
@@ -473,7 +507,7 @@ def write_comparison(outdir, comp: Comparison, meta: dict[str, Any]) -> list[Pat
                                  " ".join(scene.poly_ids[p] or str(p) for p in op.polygons),
                                  _f(o["area_m2"][k], 3), int(o["samples"][k]),
                                  _f(o["facing_deg"][k], 1), _f(b), _f(a), _f(b - a),
-                                 _f(_loss_pct(np.array(b), np.array(a))),
+                                 _f(loss_percent(np.array(b), np.array(a))),
                                  _f(o["ref_before_h"][k]), _f(o["ref_after_h"][k]),
                                  _f(o["ref_longest_before_h"][k]),
                                  _f(o["ref_longest_after_h"][k])])

@@ -43,34 +43,83 @@ def worst_surfaces(comp, n: int = 10) -> list[tuple]:
     return rows[:n]
 
 
-def _worst_picture(outdir: Path, comp, rows) -> Path | None:
-    """loss.png with the worst-hit surfaces' centres numbered (map view only)."""
-    from cityshade.plotting import agg_canvas, canvas_pixels, have_matplotlib
+def _worst_picture(outdir: Path, comp, rows, decorate: bool = True) -> Path | None:
+    """loss.png with the worst-hit surfaces' centres numbered (map view only); ``decorate``:
+    with scale bar, north, CRS and colour bar."""
+    from cityshade.plotting import have_matplotlib
 
     cam = comp.camera
     if cam is None or cam.kind != "map" or not rows or not have_matplotlib():
         return None
     from cityshade import imageio
-    from cityshade.planning.compare import loss_picture
+    from cityshade.planning.compare import loss_map, loss_picture
+    from cityshade.present.maps import Mark, annotate_map
+    from cityshade.sunhours.outputs import map_picture
 
-    img = loss_picture(comp)
-    h, w = img.shape[:2]
-    fig, canvas = agg_canvas(w, h)
-    ax = fig.add_axes((0.0, 0.0, 1.0, 1.0))
-    ax.imshow(img, interpolation="nearest")
-    ax.set_axis_off()
     samples = comp.samples
     origin = np.asarray(comp.scene_before.origin_m)
+    marks = []
     for k, row in enumerate(rows, 1):
         pts = samples.points_m[samples.polygon == row[2]]
         c = pts.mean(axis=0) + origin
         col, r = cam.pixel_of_world(c[None, :2], origin)[0]
-        ax.plot([col], [r], "o", ms=10, mfc="none", mec="red", mew=1.5)
-        ax.annotate(str(k), (col, r), xytext=(6, 6), textcoords="offset points", color="red",
-                    fontsize=max(7, min(12, w // 60)), weight="bold")
+        marks.append(Mark(float(col), float(r), str(k)))
+    picture = None
+    if decorate:
+        rgb, vmax_h = loss_map(comp)
+        picture = map_picture(annotate_map(rgb, marks), vmax_h, cam, comp.scene_before,
+                              label="loss of sun-hours (h)",
+                              title="The worst-hit surfaces (numbers as in the table)")
+    if picture is None:
+        picture = annotate_map(loss_picture(comp), marks)
     path = outdir / "worst.png"
-    imageio.write_png_rgb(path, canvas_pixels(canvas)[:h, :w])
+    imageio.write_png_rgb(path, picture)
     return path
+
+
+def _rule_figures(comp, verdicts: Sequence) -> dict[str, str]:
+    """Rule name → an HTML figure of the loss map with the rule's failing receivers ringed in
+    red (passing ones in green) and its area outlined (map view, matplotlib)."""
+    from cityshade.plotting import have_matplotlib
+
+    cam = comp.camera
+    if cam is None or cam.kind != "map" or not verdicts or not have_matplotlib():
+        return {}
+    from cityshade.planning.compare import loss_map
+    from cityshade.planning.gis import receiver_points, rule_places
+    from cityshade.present.html import figure_html
+    from cityshade.present.maps import Mark, annotate_map
+    from cityshade.sunhours.outputs import map_picture
+
+    origin = np.asarray(comp.scene_before.origin_m)
+    points = receiver_points(comp)
+    rgb, vmax_h = loss_map(comp)
+    out: dict[str, str] = {}
+    for v in verdicts:
+        fail, ok, area = rule_places(comp, v, points)
+        if not len(fail) and not len(ok) and area is None:
+            continue
+        marks = [Mark(float(c), float(r), str(k), "red") for k, (c, r) in
+                 enumerate(cam.pixel_of_world(fail[:, :2], origin), 1)] if len(fail) else []
+        marks += [Mark(float(c), float(r), "", "limegreen")
+                  for c, r in cam.pixel_of_world(ok[:, :2], origin)] if len(ok) else []
+        outlines = []
+        if area is not None:
+            corners = (area - origin[:2]) - [cam.x_left_m, cam.y_top_m]
+            px = np.column_stack([corners[:, 0], -corners[:, 1]]) / cam.pixel_size_m
+            outlines.append((px, "red" if v.status == "fail" else "limegreen"))
+        title = f"{v.rule.name}: {v.status.upper()}"
+        picture = map_picture(annotate_map(rgb, marks, outlines), vmax_h, cam,
+                              comp.scene_before, label="loss of sun-hours (h)", title=title)
+        if picture is None:
+            continue
+        what = (f"{len(fail)} failing receivers ringed in red and numbered in the order of "
+                f"the table" if len(fail) else "no failing receiver")
+        out[v.rule.name] = figure_html(picture, f"{title} — {what}"
+                                       + (f"; {len(ok)} passing in green" if len(ok) else "")
+                                       + ("; the area outlined" if area is not None else "")
+                                       + ", on the loss map.")
+    return out
 
 
 def _verdict_md(v) -> list[str]:
@@ -104,8 +153,9 @@ def _verdict_md(v) -> list[str]:
 
 
 def write_report(outdir, comp, verdicts: Sequence, request: dict[str, Any],
-                 steps: Sequence) -> list[Path]:
-    """Write ``report.md``, ``rules.json`` and (map view) ``worst.png``; returns the paths."""
+                 steps: Sequence, decorate: bool = True) -> list[Path]:
+    """Write ``report.md``, ``report.html`` (the same, self-contained, with each rule's map),
+    ``rules.json`` and (map view) ``worst.png``; returns the paths."""
     from cityshade.geo.temporal import days_to_iso
     from cityshade.util import write_text_atomic
 
@@ -146,7 +196,7 @@ def write_report(outdir, comp, verdicts: Sequence, request: dict[str, Any],
                       + f"; losing sun: {int(hit.sum())} ({100 * hit.mean():.1f} %); "
                       f"gaining: {int((loss < -0.5 * step_min / 60.0).sum())}.",
                       f"- Loss: mean {loss.mean():.2f} h, largest {loss.max():.2f} h.", ""]
-        pic = _worst_picture(outdir, comp, worst)
+        pic = _worst_picture(outdir, comp, worst, decorate)
         if pic is not None:
             written.append(pic)
             lines += ["The worst-hit surfaces (numbers as in the table below):", "",
@@ -195,5 +245,11 @@ def write_report(outdir, comp, verdicts: Sequence, request: dict[str, Any],
     for warning in comp.warnings:
         lines.append(f"> Warning: {warning}")
     lines += ["", f"Made by cityshade from `{json.dumps(request, sort_keys=True)}`.", ""]
-    written.append(write_text_atomic(outdir / "report.md", "\n".join(lines), what="the report"))
+    text = "\n".join(lines)
+    written.append(write_text_atomic(outdir / "report.md", text, what="the report"))
+    from cityshade.present.html import write_report_html
+
+    written.append(write_report_html(outdir / "report.html", text,
+                                     title="Sunlight before and after",
+                                     after_heading=_rule_figures(comp, verdicts)))
     return written

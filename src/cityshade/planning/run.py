@@ -179,6 +179,10 @@ class CompareRequest:
     provenance : mapping, optional
         What was asked, as the report prints it (``cityshade compare`` gives its options' own
         text); None: made from these fields.
+    decorate : bool
+        Map views' PNGs with title, scale bar, north arrow, CRS and colour bar.
+    gis : bool
+        ``results.gpkg`` (and GeoJSON) of the surfaces, openings, buildings and rules.
     """
 
     scene: Any
@@ -194,6 +198,8 @@ class CompareRequest:
     area: tuple[float, float, float, float] | None = None
     outdir: str | os.PathLike | None = None
     provenance: Mapping[str, Any] | None = None
+    decorate: bool = True
+    gis: bool = True
 
     def __post_init__(self) -> None:
         from cityshade.config import Settings
@@ -283,7 +289,8 @@ def run_compare(request: CompareRequest, inputs: CompareInputs | None = None, *,
                 on_step: Callable[[int, int], None] | None = None) -> CompareResult:
     """Sun-hours of the same receivers in two states of a city, the rules' verdicts, and the
     outputs (``compare.exr``, PNGs, GeoTIFFs of a map view, ``surfaces.csv``, ``openings.csv``,
-    ``rules.json``, ``report.md``), written together or not at all.
+    ``rules.json``, ``report.md``, ``report.html``, ``results.gpkg`` and GeoJSON), written
+    together or not at all.
 
     Parameters
     ----------
@@ -342,9 +349,15 @@ def run_compare(request: CompareRequest, inputs: CompareInputs | None = None, *,
     written: list[Path] = []
     if request.outdir is not None:
         with output_group():  # the rasters, tables and report appear together, or none of them
-            written = write_comparison(request.outdir, comp, _meta(request, inputs))
+            written = write_comparison(request.outdir, comp, _meta(request, inputs),
+                                       request.decorate)
             written += write_report(request.outdir, comp, verdicts, _provenance(request),
-                                    inputs.steps)
+                                    inputs.steps, request.decorate)
+            if request.gis and comp.samples is not None and not scene.is_tiled:
+                from cityshade.planning.gis import compare_layers
+                from cityshade.present.gis import write_gis
+
+                written += write_gis(request.outdir, compare_layers(comp, verdicts), scene.crs)
     return CompareResult(comp, verdicts, inputs.steps, written)
 
 

@@ -13,7 +13,8 @@ import numpy as np
 from cityshade import __version__
 from cityshade.errors import UsageError
 
-__all__ = ["colour_map_png", "legend_band", "run_metadata", "write_sun_hours",
+__all__ = ["batch_layers", "batch_report_markdown", "batch_title", "colour_map_png",
+           "colour_mapped", "viridis_ramp", "map_picture", "legend_band", "run_metadata", "write_sun_hours",
            "write_tiled_extras", "frame_name"]
 
 
@@ -61,22 +62,50 @@ def colour_map_png(hours: np.ndarray, vmax_h: float | None = None) -> np.ndarray
         bar from 0 to ``vmax_h`` with labels at 0, the middle and the top. Without matplotlib
         (the ``[plot]`` extra) the band is left out.
     """
-    hours = np.asarray(hours, dtype=np.float64)
-    if hours.ndim != 2:
-        raise UsageError(f"hours must be (H, W), not {hours.shape}")
-    if vmax_h is None:
-        finite = hours[np.isfinite(hours)]
-        vmax_h = max(1.0, math.ceil(float(finite.max()) if finite.size else 1.0))
-    h, w = hours.shape
+    rgb, vmax_h = colour_mapped(hours, vmax_h)
+    h, w = rgb.shape[:2]
     width = max(w, 64)
-    rgb = _colours(np.nan_to_num(hours / vmax_h, nan=0.0))
-    rgb[~np.isfinite(hours)] = _NODATA_RGB
     band = legend_band(width, float(vmax_h))
     img = np.full((h + (0 if band is None else band.shape[0]), width, 3), 255, np.uint8)
     img[:h, :w] = rgb
     if band is not None:
         img[h:] = band
     return img
+
+
+def colour_mapped(hours: np.ndarray, vmax_h: float | None = None) -> tuple[np.ndarray, float]:
+    """((H, W, 3) uint8 viridis picture of ``hours``, NaN white; the top of its scale in hours:
+    ``vmax_h`` or the largest value, at least 1 h, rounded up to a whole hour)."""
+    hours = np.asarray(hours, dtype=np.float64)
+    if hours.ndim != 2:
+        raise UsageError(f"hours must be (H, W), not {hours.shape}")
+    if vmax_h is None:
+        finite = hours[np.isfinite(hours)]
+        vmax_h = max(1.0, math.ceil(float(finite.max()) if finite.size else 1.0))
+    rgb = _colours(np.nan_to_num(hours / vmax_h, nan=0.0))
+    rgb[~np.isfinite(hours)] = _NODATA_RGB
+    return rgb, float(vmax_h)
+
+
+def viridis_ramp(n: int = 256) -> np.ndarray:
+    """(n, 3) uint8: the colours of :func:`colour_mapped` from 0 to the top of the scale."""
+    return _colours(np.linspace(0.0, 1.0, n))
+
+
+def map_picture(rgb: np.ndarray, vmax_h: float, camera, scene, *, title: str | None = None,
+                label: str = "sun-hours (h)") -> np.ndarray | None:
+    """A colour-mapped map view decorated for people (:func:`cityshade.present.maps.decorate_map`:
+    scale bar, north, CRS, title, a colour bar from 0 to ``vmax_h`` labelled ``label``); None
+    for a perspective view or without matplotlib (the caller writes the plain picture)."""
+    from cityshade.plotting import have_matplotlib
+
+    if camera is None or camera.kind != "map" or not have_matplotlib():
+        return None
+    from cityshade.present.maps import ColourBar, MapContext, decorate_map
+
+    ctx = MapContext(camera.geotransform(scene.origin_m), scene.crs, title,
+                     ColourBar(viridis_ramp(), 0.0, float(vmax_h), label))
+    return decorate_map(rgb, ctx).image
 
 
 def legend_band(width_px: int, vmax_h: float) -> np.ndarray | None:
@@ -129,12 +158,26 @@ def run_metadata(result, scene, params: dict[str, Any]) -> dict[str, Any]:
     return meta
 
 
+def batch_title(meta: dict[str, Any]) -> str:
+    """The title of a batch's map: its days and hours, from the run's provenance."""
+    params = json.loads(meta.get("cityshade:params", "{}"))
+    days = params.get("date", "")
+    if params.get("to_date"):
+        days += f" to {params['to_date']}"
+    elif (params.get("days") or 1) > 1:
+        days += f", {params['days']} days"
+    return (f"Sun-hours, {days}, {params.get('from', '')}–{params.get('to', '')} "
+            f"({params.get('tz', '')})")
+
+
 def write_sun_hours(outdir, result, scene, camera, meta: dict[str, Any],
-                    surfaces_csv: bool = False, cog: bool = False) -> list[Path]:
+                    surfaces_csv: bool = False, cog: bool = False,
+                    decorate: bool = True) -> list[Path]:
     """Write ``sun_hours.exr`` (channels ``sun_hours``, ``objid``), ``sun_hours.png``
-    (colour-mapped, legend), for map views ``sun_hours.tif`` (+ .tfw, .prj; float32, NaN
-    nodata; with ``cog`` a Cloud-Optimized GeoTIFF written by GDAL), and with ``surfaces_csv``
-    ``surfaces.csv``. Returns the paths written."""
+    (colour-mapped; a map view ``decorate``-d with scale bar, north, CRS, title and colour bar
+    (:func:`map_picture`), else with a legend band), for map views ``sun_hours.tif`` (+ .tfw,
+    .prj; float32, NaN nodata; with ``cog`` a Cloud-Optimized GeoTIFF written by GDAL), and
+    with ``surfaces_csv`` ``surfaces.csv``. Returns the paths written."""
     from cityshade import imageio
 
     outdir = Path(outdir)
@@ -150,7 +193,10 @@ def write_sun_hours(outdir, result, scene, camera, meta: dict[str, Any],
         imageio.write_exr(exr, channels, meta)
         written.append(exr)
         png = outdir / "sun_hours.png"
-        imageio.write_png_rgb(png, colour_map_png(result.hours),
+        rgb, vmax_h = colour_mapped(result.hours)
+        picture = map_picture(rgb, vmax_h, camera, scene, title=batch_title(meta)) \
+            if decorate else None
+        imageio.write_png_rgb(png, colour_map_png(result.hours) if picture is None else picture,
                               attributes={k: str(v) for k, v in meta.items()})
         written.append(png)
         if camera.kind == "map" and cog:
@@ -206,3 +252,60 @@ def write_tiled_extras(outdir, run, result, scene, camera, meta: dict[str, Any])
                                              result.samples, poly))
     return written
 
+
+
+def batch_layers(result, scene) -> list:
+    """The GIS layers of a batch with per-surface sun-hours (:mod:`cityshade.present.gis`):
+    ``surfaces`` (the rows of ``surfaces.csv``, each polygon's outline) and ``buildings``
+    (footprints, area-weighted mean and largest mean sun-hours of their surfaces)."""
+    from cityshade.present.gis import building_layer, surface_layer
+    from cityshade.sunhours.surfaces import CSV_COLUMNS, surface_rows
+
+    rows = list(surface_rows(scene, result.samples, result.polygon_hours))
+    columns = {name: [r[i] for r in rows] for i, name in enumerate(CSV_COLUMNS)}
+    polygons = columns["polygon_index"]
+    layers = [surface_layer(scene, polygons, columns)]
+    if rows:
+        hours = np.asarray(columns["mean_sun_hours"], np.float64)
+        layers.append(building_layer(scene, polygons, {"mean_sun_hours": hours},
+                                     {"max_sun_hours": hours}))
+    return layers
+
+
+def batch_report_markdown(result, scene, meta: dict[str, Any], png: str | None,
+                          georeferenced: bool = False, gis: bool = False) -> str:
+    """A short report of a batch: what was computed, the map, and the per-surface sun-hours
+    summed up per surface class (``report.html``'s text)."""
+    from cityshade.sunhours.surfaces import surface_rows
+
+    params = json.loads(meta.get("cityshade:params", "{}"))
+    lines = [f"# {batch_title(meta)}", "",
+             f"Model `{params.get('file', '')}` ({meta.get('cityshade:crs', '')}); "
+             f"{result.steps} steps, {result.steps_below_horizon} with the sun down, "
+             f"{result.hours_sun_up:.2f} h with the sun up; shadows "
+             f"`{params.get('technique', '')}`.", ""]
+    if png is not None:
+        lines += ["## Map", "", f"![sun-hours]({png})", "",
+                  "Sun-hours per pixel (white: no surface). Rasters: `sun_hours.exr`"
+                  + (", `sun_hours.tif` (georeferenced)" if georeferenced else "") + ".", ""]
+    if result.samples is not None and result.polygon_hours is not None:
+        rows = list(surface_rows(scene, result.samples, result.polygon_hours))
+        by_class: dict[str, list] = {}
+        for r in rows:
+            by_class.setdefault(str(r[3]), []).append(r)
+        lines += ["## Surfaces", "", f"{len(rows)} surfaces with sample points; sun-hours per "
+                  "class (area-weighted mean of the surfaces' means). Every surface: "
+                  "`surfaces.csv`" + (", and as GIS layers `results.gpkg`" if gis else "")
+                  + ".", "",
+                  "| class | surfaces | area m² | mean h | least h | most h |",
+                  "|---|---:|---:|---:|---:|---:|"]
+        for cls, rs in sorted(by_class.items(), key=lambda kv: -sum(r[4] for r in kv[1])):
+            area = np.array([r[4] for r in rs])
+            hours = np.array([r[6] for r in rs])
+            mean = float((area * hours).sum() / area.sum()) if area.sum() > 0 else float("nan")
+            lines.append(f"| {cls} | {len(rs)} | {area.sum():.0f} | {mean:.2f} | "
+                         f"{hours.min():.2f} | {hours.max():.2f} |")
+        lines.append("")
+    for warning in result.warnings:
+        lines += [f"> Warning: {warning}", ""]
+    return "\n".join(lines)

@@ -73,7 +73,10 @@ class SunHoursRequest:
         :func:`cityshade.sunhours.accumulate.sun_hours`).
     Outputs
         ``frames`` (every step's shadow mask), ``provenance`` (JSON-able description from the
-        caller: file, dates, zone...; part of the run's hash and manifest).
+        caller: file, dates, zone...; part of the run's hash and manifest), ``decorate``
+        (a map view's PNG with scale bar, north arrow, CRS and colour bar) and ``gis``
+        (``results.gpkg`` and GeoJSON beside ``surfaces.csv``); neither is part of the hash
+        (how the answers are shown does not change them).
     Execution
         ``tile_px`` (tiles of receivers), ``block`` (sun positions per task), ``scheduler``
         (``local[:N]``, ``tcp://HOST:PORT`` or an executor object) and ``scene_path`` (the
@@ -96,6 +99,8 @@ class SunHoursRequest:
     reuse_rays: bool = True
     frames: bool = False
     provenance: Mapping[str, Any] | None = None
+    decorate: bool = True
+    gis: bool = True
     tile_px: int | None = None
     block: int = DEFAULT_BLOCK
     scheduler: Any = None

@@ -155,9 +155,32 @@ def _write_outputs(outdir: Path, scene, request: SunHoursRequest, result: SunHou
     with output_group():
         written = write_sun_hours(outdir, result, scene, request.camera, meta,
                                   surfaces_csv=request.samples_per_m2 is not None,
-                                  cog=tiled is not None)
+                                  cog=tiled is not None, decorate=request.decorate)
         if tiled is not None:
             written += write_tiled_extras(outdir, tiled, result, scene, request.camera, meta)
+        written += _write_presentation(outdir, scene, request, result, meta)
+    return written
+
+
+def _write_presentation(outdir: Path, scene, request: SunHoursRequest, result: SunHours,
+                        meta: dict[str, Any]) -> list[Path]:
+    """``report.html`` and, with per-surface sun-hours and ``request.gis``, ``results.gpkg``
+    and its GeoJSON twins."""
+    from cityshade.present.html import write_report_html
+    from cityshade.sunhours.outputs import batch_layers, batch_report_markdown
+
+    written: list[Path] = []
+    gis = request.gis and result.samples is not None and not scene.is_tiled
+    if gis:
+        from cityshade.present.gis import write_gis
+
+        written += write_gis(outdir, batch_layers(result, scene), scene.crs)
+    camera = request.camera
+    text = batch_report_markdown(result, scene, meta,
+                                 "sun_hours.png" if result.hours is not None else None,
+                                 georeferenced=camera is not None and camera.kind == "map",
+                                 gis=gis)
+    written.append(write_report_html(outdir / "report.html", text, title="Sun-hours"))
     return written
 
 

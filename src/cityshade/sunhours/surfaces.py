@@ -24,7 +24,7 @@ from numba import njit
 from cityshade.errors import UsageError
 
 __all__ = ["SurfaceSamples", "SampleSettings", "sample_surfaces", "samples_lit",
-           "polygon_means", "write_surface_csv"]
+           "polygon_means", "surface_rows", "write_surface_csv", "CSV_COLUMNS"]
 
 
 @dataclass(frozen=True)
@@ -225,25 +225,30 @@ CSV_COLUMNS = ("object_id", "polygon_id", "polygon_index", "surface_class", "are
                "samples", "mean_sun_hours")
 
 
+def surface_rows(scene, samples: SurfaceSamples, polygon_hours: np.ndarray):
+    """Rows of ``surfaces.csv`` (:data:`CSV_COLUMNS`) as tuples, numbers unformatted: one per
+    sampled polygon."""
+    from cityshade.citygml.namespaces import SURFACE_CLASSES
+
+    counts = np.bincount(samples.polygon, minlength=samples.sampled.shape[0])
+    for p in np.flatnonzero(samples.sampled):
+        cls = int(scene.poly_class[p])
+        yield (scene.obj_ids[int(scene.poly_object[p])], scene.poly_ids[p], int(p),
+               SURFACE_CLASSES[cls] if cls < len(SURFACE_CLASSES) else cls,
+               float(scene.poly_area_m2[p]), int(counts[p]), float(polygon_hours[p]))
+
+
 def write_surface_csv(path: str | os.PathLike, scene, samples: SurfaceSamples,
                       polygon_hours: np.ndarray) -> Path:
     """Write one row per sampled polygon: object and polygon gml:id, surface class, area in m²
     (the polygon's, holes removed), number of samples and mean sun-hours. Written to a
     temporary name and renamed."""
-    from cityshade.citygml.namespaces import SURFACE_CLASSES
-
-    path = Path(path)
-    counts = np.bincount(samples.polygon, minlength=samples.sampled.shape[0])
     from cityshade.util import atomic_write
 
+    path = Path(path)
     with atomic_write(path, newline="", what="the surface table") as fh:
         writer = csv.writer(fh)
         writer.writerow(CSV_COLUMNS)
-        for p in np.flatnonzero(samples.sampled):
-            obj = int(scene.poly_object[p])
-            cls = int(scene.poly_class[p])
-            writer.writerow([scene.obj_ids[obj], scene.poly_ids[p], int(p),
-                             SURFACE_CLASSES[cls] if cls < len(SURFACE_CLASSES) else cls,
-                             f"{float(scene.poly_area_m2[p]):.3f}", int(counts[p]),
-                             f"{float(polygon_hours[p]):.4f}"])
+        for row in surface_rows(scene, samples, polygon_hours):
+            writer.writerow([*row[:4], f"{row[4]:.3f}", row[5], f"{row[6]:.4f}"])
     return path
