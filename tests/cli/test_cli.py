@@ -353,8 +353,8 @@ def test_a_bad_option_is_one_line(capsys, tmp_path):
               "1<=x<=170. (see 'cityshade render --help')"),
              (["render"], "cityshade: error: Missing argument 'FILE'. "
                           "(see 'cityshade render --help')"),
-             (["batch", tmp_path / "a.cityshade", "--nosuch"],
-              "cityshade: error: No such option '--nosuch'. (see 'cityshade batch --help')"),
+             (["batch", tmp_path / "a.cityshade", "--xyzzy"],
+              "cityshade: error: No such option '--xyzzy'. (see 'cityshade batch --help')"),
              (["nosuch"], "cityshade: error: No such command 'nosuch'. "
                           "(see 'cityshade --help')")]
     for args, line in cases:
