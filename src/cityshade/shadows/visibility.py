@@ -58,7 +58,7 @@ def occluded(scene, origins, directions, t_days: float = 0.0, *, engine: str = "
         d = directions if shared else _take(directions, rays)
         extra = dict(options)
         if tmax is not None:
-            extra["tmax"] = _take_per_ray(tmax, rays, len(origins))
+            extra["tmax"] = _take_per_ray(tmax, rays)
         return run(tree, _take(origins, rays), d, t_days, **extra)
 
     return scene.any_hit(origins, directions, hit)
@@ -68,10 +68,10 @@ def _take(arr, rays):
     return arr if isinstance(rays, slice) else np.asarray(arr)[rays]
 
 
-def _take_per_ray(tmax, rays, n: int):
+def _take_per_ray(tmax, rays):
     """``tmax`` for the rays ``rays``: a shared value as it is, a per-ray (N,) array's rows."""
     arr = np.asarray(tmax, dtype=np.float64)
-    if isinstance(rays, slice) or arr.ndim == 0 or arr.shape == (1,) or n == 1:
+    if isinstance(rays, slice) or arr.ndim == 0 or arr.shape == (1,):
         return tmax
     return arr[rays]
 

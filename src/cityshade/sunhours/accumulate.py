@@ -288,8 +288,11 @@ def sun_hours(scene: "Scene", camera: "Camera | None", instants_utc: Sequence[da
                    stretches=stretches)
 
 
-def _unit_lit(scene, prep: Prepared, request: SunHoursRequest, rays, unit: Unit):
-    """(pixel lit (H, W) float32 or None, sample lit (S,) bool or None) of one position."""
+def _unit_lit(scene, prep: Prepared, request: SunHoursRequest, unit: Unit, rays, tech,
+              sample_engine: str):
+    """(pixel lit (H, W) float32 or None, sample lit (S,) bool or None) of one position:
+    the pixels by ``rays`` (an exact engine's reused rays) or the technique ``tech``, the
+    surface samples by the exact ``sample_engine``."""
     lit = slit = None
     timings, t_days = prep.timings, float(request.t_days)
     if prep.cp is not None:
@@ -298,20 +301,14 @@ def _unit_lit(scene, prep: Prepared, request: SunHoursRequest, rays, unit: Unit)
             lit = rays.lit(scene, unit.sun, t_days)
         else:
             from cityshade.frame.pipeline import shadow_pass
-            from cityshade.shadows import get_technique
 
-            lit = shadow_pass(prep.cp, unit.sun, get_technique(request.technique),
-                              request.shadows).lit
+            lit = shadow_pass(prep.cp, unit.sun, tech, request.shadows).lit
         timings["shadow_s"] += time.perf_counter() - t0
     if prep.samples is not None:
-        from cityshade.shadows import describe
         from cityshade.sunhours.surfaces import samples_lit
 
         t0 = time.perf_counter()
-        spec = describe(request.technique)
-        slit = samples_lit(scene, prep.samples, unit.sun, t_days,
-                           engine="raytrace" if spec.exact and spec.engine == "raytrace"
-                           else "izb")
+        slit = samples_lit(scene, prep.samples, unit.sun, t_days, engine=sample_engine)
         timings["surface_rays_s"] += time.perf_counter() - t0
     return lit, slit
 
@@ -321,14 +318,18 @@ def compute(scene, request: SunHoursRequest, *, checkpoint: Checkpoint | None = 
             on_frame: Callable[[Unit, np.ndarray, np.ndarray], None] | None = None,
             stretches=None) -> SunHours:
     """The untiled run of ``request`` (:func:`sun_hours`'s parameters)."""
-    from cityshade.shadows import describe
+    from cityshade.shadows import describe, get_technique
 
     prep = prepare(scene, request, ("suns_s", "camera_s", "samples_s", "shadow_s",
                                     "surface_rays_s", "checkpoint_s"))
     cp, units = prep.cp, prep.units
     valid = cp.valid if cp is not None else None
-    rays = _PixelRays(cp, describe(request.technique).engine) \
-        if cp is not None and request.reuse_rays and describe(request.technique).exact else None
+    # What decides a position, made once for the whole run.
+    spec = describe(request.technique)
+    rays = _PixelRays(cp, spec.engine) if cp is not None and request.reuse_rays and spec.exact \
+        else None
+    tech = get_technique(spec) if cp is not None and rays is None else None
+    sample_engine = "raytrace" if spec.exact and spec.engine == "raytrace" else "izb"
 
     # Running float64 sums, restored from a saved state when there is one.
     pixel_shape = valid.shape if valid is not None else (0, 0)
@@ -355,7 +356,7 @@ def compute(scene, request: SunHoursRequest, *, checkpoint: Checkpoint | None = 
     try:
         for k in range(done, len(units)):
             unit = units[k]
-            lit, slit = _unit_lit(scene, prep, request, rays, unit)
+            lit, slit = _unit_lit(scene, prep, request, unit, rays, tech, sample_engine)
             # The sums change together: an interruption inside this block saves nothing.
             throttle.consistent = False
             if lit is not None:
