@@ -19,7 +19,7 @@ def _all_names() -> list[str]:
     return [*plain, *(f"{n}+smooth" for n in plain)]
 
 
-@pytest.mark.parametrize("name", ["raytrace", "izb"])
+@pytest.mark.parametrize("name", ["raytrace", "izb", "exact"])
 def test_exact_family(name):
     spec = describe(name)
     assert (spec.family, spec.engine, spec.planner, spec.lookup) == ("exact", name, None, None)

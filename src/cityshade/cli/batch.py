@@ -16,7 +16,7 @@ from cityshade.cli.options import (camera_options, ground_option, make_camera, p
 @click.option("--city-date", help="State of the city (default: --date); the city does not "
               "change during a run.")
 @camera_options("map")
-@shadow_options("izb")
+@shadow_options("exact")
 @ground_option
 @click.option("--no-refraction", is_flag=True, help="Geometric sun elevation (no refraction).")
 @click.option("--frames", is_flag=True, help="Also write every step's shadow mask (frames/).")

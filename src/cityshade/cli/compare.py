@@ -20,7 +20,7 @@ from cityshade.cli.options import (camera_options, ground_option, presentation_o
                    "for the state after.")
 @time_plan_options
 @camera_options("map")
-@shadow_options("izb")
+@shadow_options("exact")
 @ground_option
 @click.option("--no-refraction", is_flag=True, help="Geometric sun elevation (no refraction).")
 @click.option("--no-surfaces", is_flag=True, help="Skip the per-surface table (pixels and "

@@ -23,7 +23,7 @@ from cityshade.cli.options import (camera_options, ground_option, make_camera, p
 @click.option("--sun-azimuth", type=float, help="Degrees clockwise from true north.")
 @click.option("--sun-elevation", type=float, help="Degrees above the horizon.")
 @camera_options("overview")
-@shadow_options("raytrace")
+@shadow_options("exact")
 @click.option("-o", "--output", type=click.Path(dir_okay=False, path_type=Path), required=True,
               help="EXR with colour, shadow, Z, normals, primid, objid and provenance.")
 @click.option("--png", type=click.Path(dir_okay=False, path_type=Path), help="sRGB picture.")

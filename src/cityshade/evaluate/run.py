@@ -38,14 +38,14 @@ def expand_techniques(spec: str | Sequence[str]) -> list[str]:
     """Technique names of ``--shadows``: ``all``, or a comma list of registry names.
 
     ``all`` is every exact technique but the reference
-    (:func:`cityshade.shadows.exact_technique_names`: ``izb``), every map technique of the
+    (:func:`cityshade.shadows.exact_engine_names`: ``izb``), every map technique of the
     registry (:func:`cityshade.shadows.map_technique_names`), each ``+smooth``, and
     ``hybrid:NAME`` for each map technique; ``all+smooth`` (``--shadows all --smooth``) is
     each of those with the smoothing filter. ``raytrace`` is always the reference and is not
     listed.
     Unknown names raise the registry's :class:`~cityshade.errors.UsageError`.
     """
-    from cityshade.shadows import (describe, exact_technique_names, get_technique,
+    from cityshade.shadows import (describe, exact_engine_names, get_technique,
                                    map_technique_names)
 
     names = [s.strip() for s in (spec.split(",") if isinstance(spec, str) else spec)]
@@ -55,7 +55,7 @@ def expand_techniques(spec: str | Sequence[str]) -> list[str]:
     out: list[str] = []
     for name in names:
         maps = [n for n in map_technique_names() if describe(n).warp is None]
-        every = [*exact_technique_names(), *maps, *(f"{n}+smooth" for n in maps),
+        every = [*exact_engine_names(), *maps, *(f"{n}+smooth" for n in maps),
                  *(f"hybrid:{n}" for n in maps)]
         if name == "all":
             group = every

@@ -32,7 +32,8 @@ from cityshade.runtime.memory import Recycler, Scratch
 from cityshade.trace import UNIT_LENGTH_TOL, tree_of, shadow_offset_m, shadow_rays_from_surface
 from cityshade.errors import TraceInputError
 
-__all__ = ["occluded", "sunlit", "Casters", "casters_of", "forget_casters", "SurfaceReceivers",
+__all__ = ["occluded", "sunlit", "Casters", "casters_of", "casters_ready", "forget_casters",
+           "SurfaceReceivers",
            "MARGIN_REL", "caster_order"]
 
 #: Widening of every caster's light-plane box per metre of coordinate magnitude. The binning
@@ -323,6 +324,13 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
             return _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m)
     finally:
         ws.give_back()
+
+
+def casters_ready(tree, kz: int, sgn: float) -> bool:
+    """Whether this process already holds the tree's casters sorted for the key order
+    ``(kz, sgn)`` (:func:`caster_order`): a call then pays no gathering or sort."""
+    c = _CASTERS.get(tree_of(tree))
+    return c is not None and c._axis == (kz, sgn)
 
 
 def forget_casters(tree) -> None:

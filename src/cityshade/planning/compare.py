@@ -206,7 +206,7 @@ class Receivers:
 
 def compare_states(scene_before, t_before_days: float, scene_after, t_after_days: float,
                    camera, steps: Sequence, receivers: Receivers | None = None, *,
-                   technique: str = "izb", settings=None, ground: str | None = None, suns=None,
+                   technique: str = "exact", settings=None, ground: str | None = None, suns=None,
                    on_step: Callable[[int, int], None] | None = None) -> Comparison:
     """Sun-hours before and after, on the same receivers.
 

@@ -189,7 +189,7 @@ class CompareRequest:
     plan: TimePlan
     states: CompareStates
     camera: Any = fit_map_view
-    technique: str = "izb"
+    technique: str = "exact"
     settings: Any = None
     ground: str | None = "auto"
     surfaces: bool = True

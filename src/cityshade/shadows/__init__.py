@@ -48,6 +48,7 @@ if TYPE_CHECKING:
 TECHNIQUES: dict[str, str] = {
     "raytrace": "cityshade.shadows.raytraced:RayTraced",
     "izb": "cityshade.shadows.izb:LightSpace",
+    "exact": "cityshade.shadows.exact:Exact",
 }
 #: Light-view planners of the map techniques (:mod:`cityshade.shadows.planners`); ``csm`` takes
 #: an optional ``:WARP`` (one of the other planners but ``shadowmap``).
@@ -244,6 +245,17 @@ def technique_names() -> list[str]:
 def exact_technique_names() -> list[str]:
     """The exact techniques (:data:`TECHNIQUES`): no map, the same answer as ``raytrace``."""
     return list(TECHNIQUES)
+
+
+#: The exact technique that is no engine of its own: it picks one per call
+#: (:mod:`cityshade.shadows.exact`); the default of every command.
+DEFAULT_EXACT = "exact"
+
+
+def exact_engine_names() -> list[str]:
+    """The exact engines (``raytrace``, ``izb``): :func:`exact_technique_names` but the chooser
+    :data:`DEFAULT_EXACT`, e.g. the techniques ``evaluate --shadows all`` times."""
+    return [n for n in TECHNIQUES if n != DEFAULT_EXACT]
 
 
 def map_technique_names() -> list[str]:

@@ -44,22 +44,37 @@ def occluded(scene, origins, directions, t_days: float = 0.0, *, engine: str = "
     t_days : float
         City time, days since 1970-01-01 UTC.
     engine : str
-        ``raytrace`` or ``izb`` (:attr:`cityshade.shadows.TechniqueSpec.engine`).
+        ``raytrace``, ``izb`` or ``exact`` (:attr:`cityshade.shadows.TechniqueSpec.engine`):
+        the cheaper of the two for each tree the rays meet
+        (:func:`cityshade.shadows.exact.choose_for_tree`).
     **options
         Passed to the engine: ``tmax`` and ``brick_size`` (``raytrace``), ``stats`` and
-        ``cell_m`` (``izb``).
+        ``cell_m`` (``izb``); for ``exact``, ``calls`` (how many calls of this size share the
+        izb set-up: a batch's sun positions) and ``chosen`` (a list that gets each tree's
+        :class:`~cityshade.shadows.exact.EngineChoice`).
     """
-    run = _engine(engine)
     origins = np.ascontiguousarray(origins, dtype=np.float64)
     tmax = options.pop("tmax", None)
+    calls = options.pop("calls", 1)
+    chosen = options.pop("chosen", None)
     shared = np.asarray(directions).shape == (3,)
 
     def hit(tree, rays):
         d = directions if shared else _take(directions, rays)
-        extra = dict(options)
+        o = _take(origins, rays)
+        name, extra = engine, dict(options)
+        if engine == "exact":
+            from cityshade.shadows.exact import choose_for_tree
+
+            choice = choose_for_tree(tree, len(o), d, calls)
+            name = choice.engine
+            if chosen is not None:
+                chosen.append(choice)
+            if name == "raytrace":
+                extra.pop("stats", None)
         if tmax is not None:
             extra["tmax"] = _take_per_ray(tmax, rays)
-        return run(tree, _take(origins, rays), d, t_days, **extra)
+        return _engine(name)(tree, o, d, t_days, **extra)
 
     return scene.any_hit(origins, directions, hit)
 
@@ -77,15 +92,17 @@ def _take_per_ray(tmax, rays):
 
 
 def sunlit(scene, points, normals, sun_direction, t_days: float = 0.0, *,
-           engine: str = "raytrace", stats: dict | None = None) -> np.ndarray:
+           engine: str = "raytrace", stats: dict | None = None, **options) -> np.ndarray:
     """(N,) bool: whether each surface point sees the sun, by one shadow ray from the point
     pushed off its surface (:func:`cityshade.trace.shadow_rays_from_surface`).
 
     ``points``, ``normals``: (N, 3) render-space metres and unit normals on the side facing the
-    sun; ``stats`` (``izb``): filled with the engine's profile."""
+    sun; ``stats`` (``izb``): filled with the engine's profile; ``options``: as
+    :func:`occluded`'s (``calls``, ``chosen`` for ``exact``)."""
     from cityshade.trace import shadow_rays_from_surface
 
     sun = np.asarray(sun_direction, dtype=np.float64)
     origins = shadow_rays_from_surface(points, normals, sun)
-    options = {} if stats is None else {"stats": stats}
+    if stats is not None:
+        options["stats"] = stats
     return ~occluded(scene, origins, sun, t_days, engine=engine, **options)

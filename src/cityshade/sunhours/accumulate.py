@@ -90,12 +90,13 @@ class _PixelRays:
     toward the sun, so it is made per step), by the exact ``engine``: ``izb`` (rebinned per
     step) or ``raytrace`` (:func:`cityshade.shadows.visibility.occluded`), the same answer."""
 
-    def __init__(self, cp, engine: str = "izb"):
+    def __init__(self, cp, engine: str = "exact", calls: int = 1):
         from cityshade.lightspace import SurfaceReceivers
 
         self.cp = cp
         self.valid = cp.valid
         self.engine = engine
+        self.calls = calls      # sun positions sharing an izb set-up (``exact``'s choice)
         # The valid pixels' points, normals and offsets, checked once: per step one pass makes
         # the facing pixels' origins (the numpy gathers and temporaries cost more than izb's
         # binning on the 1M-triangle city).
@@ -111,7 +112,8 @@ class _PixelRays:
         if faces.any():
             direction = np.asarray(sun.direction, dtype=np.float64)
             origins = self.receivers.origins(direction, faces[self.valid])
-            blocked = occluded(scene, origins, direction, t_days, engine=self.engine)
+            extra = {"calls": self.calls} if self.engine == "exact" else {}
+            blocked = occluded(scene, origins, direction, t_days, engine=self.engine, **extra)
             lit[faces] = ~blocked
         return lit
 
@@ -326,10 +328,10 @@ def compute(scene, request: SunHoursRequest, *, checkpoint: Checkpoint | None = 
     valid = cp.valid if cp is not None else None
     # What decides a position, made once for the whole run.
     spec = describe(request.technique)
-    rays = _PixelRays(cp, spec.engine) if cp is not None and request.reuse_rays and spec.exact \
-        else None
+    rays = _PixelRays(cp, spec.engine, len(units)) \
+        if cp is not None and request.reuse_rays and spec.exact else None
     tech = get_technique(spec) if cp is not None and rays is None else None
-    sample_engine = "raytrace" if spec.exact and spec.engine == "raytrace" else "izb"
+    sample_engine = spec.engine if spec.exact else "exact"
 
     # Running float64 sums, restored from a saved state when there is one.
     pixel_shape = valid.shape if valid is not None else (0, 0)

@@ -93,7 +93,7 @@ class SunHoursRequest:
     camera: Any = None
     samples_per_m2: float | None = None
     samples: Any = None
-    technique: str = "izb"
+    technique: str = "exact"
     shadows: Any = None
     ground: str | None = None
     reuse_rays: bool = True

@@ -188,7 +188,7 @@ def sample_surfaces(scene, samples_per_m2: float = 1.0, t_days: float = 0.0,
 
 
 def samples_lit(scene, samples: SurfaceSamples, sun, t_days: float,
-                engine: str = "izb") -> np.ndarray:
+                engine: str = "exact") -> np.ndarray:
     """(N,) bool: sample faces the sun (N·L > 0) and its shadow ray is not blocked.
 
     A sun at or below the horizon lights nothing. ``engine`` decides the shadow rays:

@@ -431,6 +431,9 @@ def tiled_sun_hours(scene, request: SunHoursRequest, *, checkpoint=None, executo
              for t in range(n_tiles) if hi > state.tile_done[t]]
     total = n_tiles * len(blocks)
     resumed_tasks = total - len(tasks)
+    from cityshade.shadows.exact import engine_for_run
+
+    engine = engine_for_run(engine, scene, plan.n_slots // max(n_tiles, 1), max(len(tasks), 1))
     if on_plan is not None:
         on_plan(len(tasks))
     units_resumed = int(state.tile_done.min()) if n_tiles else n_units

@@ -1,0 +1,117 @@
+"""``exact``: the exact answer by whichever engine is cheaper for the call at hand.
+
+``raytrace`` (kd-tree rays) and ``izb`` (the light-space engine) give the same decision on every
+ray, so the choice is only about time, made per call and per kd-tree from a cost model:
+
+- ``raytrace`` costs about the same per ray whatever the rest of the call;
+- ``izb`` pays per sun for every caster it projects and bins, then little per receiver; and
+  once per process and tree it gathers the casters and sorts them for the sun's dominant axis
+  (:class:`cityshade.lightspace.Casters`), which a batch of many suns shares.
+
+So ``izb`` wins on many receivers with a warm caster copy (a batch, the later frames of an
+``evaluate``), ``raytrace`` on few receivers or a single frame of a large city in a fresh
+process (the 1M-triangle city's 1 m map: 2.12 s by ``raytrace`` against 2.82 s by ``izb`` as
+whole processes, though ``izb``'s warm query is faster).
+
+The constants are nanoseconds at two threads, from ``benchmarks/raytrace.py`` and the
+whole-process renders of the 1M-triangle city at cd5487c (docs/DESIGN.md §9, "exact");
+``python benchmarks/exact_choice.py`` reruns the workloads, times both engines and prints
+what the model chose against the faster one.
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from cityshade.shadows.raytraced import RayTraced
+
+#: kd-tree shadow ray, per ray (map 122 ns, 1080p overview 75 ns).
+RAYTRACE_NS_PER_RAY = 100.0
+#: izb per sun: projecting and binning a caster (map: 31 + 49 ms for the 1M city's casters).
+IZB_NS_PER_CASTER = 80.0
+#: izb per receiver: the query (map 142 ms for 4.1 M receivers, overview 20 ms for 1.49 M).
+IZB_NS_PER_RECEIVER = 30.0
+#: izb once per process, tree and dominant sun axis: gathering and sorting the casters and
+#: faulting in their pages (the whole-process map render: +0.70 s against raytrace where the
+#: warm engines differ by -0.28 s, for 1.0 M triangles).
+IZB_FIRST_USE_NS_PER_CASTER = 1000.0
+
+
+@dataclass(frozen=True)
+class EngineChoice:
+    """Which exact engine a call used and why (``render -v`` prints :attr:`reason`)."""
+
+    engine: str          # "izb" | "raytrace"
+    reason: str
+    izb_ms: float
+    raytrace_ms: float
+
+
+def choose_engine(n_rays: int, n_casters: int, *, shared_direction: bool = True,
+                  warm: bool = False, calls: int = 1) -> EngineChoice:
+    """The cheaper exact engine for ``n_rays`` rays against a tree of ``n_casters`` triangles.
+
+    ``shared_direction``: all rays go toward one sun (``izb`` needs it); ``warm``: the tree's
+    casters are already sorted for this sun's axis in this process; ``calls``: how many calls
+    of this size will share the first-use cost (a batch's sun positions).
+    """
+    n, m = max(int(n_rays), 0), max(int(n_casters), 0)
+    rt_ms = n * RAYTRACE_NS_PER_RAY * 1e-6
+    if not shared_direction:
+        return EngineChoice("raytrace", "rays in many directions (izb needs one sun)", float("inf"),
+                            rt_ms)
+    first = 0.0 if warm else m * IZB_FIRST_USE_NS_PER_CASTER / max(int(calls), 1)
+    izb_ms = (m * IZB_NS_PER_CASTER + n * IZB_NS_PER_RECEIVER + first) * 1e-6
+    engine = "izb" if izb_ms < rt_ms else "raytrace"
+    setup = "casters ready" if warm else (
+        f"caster sort shared by {calls} calls" if calls > 1 else "caster sort in this call")
+    reason = (f"{n:,} rays, {m:,} casters, {setup}: estimated izb {izb_ms:.3g} ms, "
+              f"raytrace {rt_ms:.3g} ms")
+    return EngineChoice(engine, reason, izb_ms, rt_ms)
+
+
+def choose_for_tree(tree, n_rays: int, directions, calls: int = 1) -> EngineChoice:
+    """:func:`choose_engine` for one kd-tree (a scene's or a tile's) and the rays' directions
+    ((3,) shared, or (N, 3))."""
+    import numpy as np
+
+    from cityshade.lightspace import caster_order, casters_ready
+
+    d = np.asarray(directions, np.float64)
+    shared = d.shape == (3,) or (d.ndim == 2 and len(d) > 0 and bool((d == d[0]).all()))
+    sun = d if d.shape == (3,) else (d[0] if shared else None)
+    warm = shared and casters_ready(tree, *caster_order(sun))
+    from cityshade.trace import tree_of
+
+    kd = tree_of(tree)
+    n_casters = int(kd.stats.get("triangles_valid", kd.tri_records.shape[0]))
+    return choose_engine(n_rays, n_casters, shared_direction=shared, warm=warm, calls=calls)
+
+
+class Exact(RayTraced):
+    """The ``exact`` technique: a frame's shadow rays by the engine :func:`choose_engine`
+    prefers for each kd-tree they meet (``raytrace``'s answer either way); the diagnostics
+    say which and why."""
+
+    name = "exact"
+
+    def sunlit(self, scene, points, normals, sun_direction, t_days, diagnostics):
+        from cityshade.shadows.visibility import sunlit
+
+        chosen: list[EngineChoice] = []
+        lit = sunlit(scene, points, normals, sun_direction, t_days, engine="exact",
+                     chosen=chosen)
+        if chosen:
+            engines = sorted({c.engine for c in chosen})
+            diagnostics.note = (f"exact engine {chosen[0].engine}: {chosen[0].reason}"
+                                if len(chosen) == 1 else
+                                f"exact engines {', '.join(engines)} over {len(chosen)} tiles")
+        return lit
+
+
+def engine_for_run(engine: str, scene, n_rays: int, calls: int) -> str:
+    """``engine`` as it is, or for ``exact`` the engine of a whole run of ``calls`` calls of
+    about ``n_rays`` rays each (a tiled or distributed batch: its tasks share one set-up per
+    worker, which a per-call choice in a fresh worker would never see as warm)."""
+    if engine != "exact":
+        return engine
+    return choose_engine(n_rays, scene.n_triangles, calls=calls).engine
