@@ -12,14 +12,18 @@ from conftest import REPO
 
 from cityshade.cli.main import cli
 
-DOCS = ("README.md", "docs/GUIDE.md")
+DOCS = ("README.md", "docs/GUIDE.md", "sample_data/demo.sh")
 
 
-def _command_lines(text: str) -> list[str]:
-    """``cityshade …`` commands of the ``sh`` code blocks: continuation lines joined, ``&&``
-    chains split, comments dropped."""
+def _command_lines(text: str, script: bool = False) -> list[str]:
+    """``cityshade …`` commands of the ``sh`` code blocks (of the whole text for a script):
+    continuation lines joined, ``&&`` chains split, comments dropped; a script's variables
+    stand for file names."""
     out = []
-    for block in re.findall(r"```sh\n(.*?)```", text, flags=re.S):
+    blocks = [text] if script else re.findall(r"```sh\n(.*?)```", text, flags=re.S)
+    for block in blocks:
+        if script:
+            block = re.sub(r"\$\{?(\w+)\}?", r"\1", block.replace('"', ""))
         joined = re.sub(r"\\\n\s*", " ", block)
         for line in joined.splitlines():
             for part in line.split("&&"):
@@ -32,7 +36,7 @@ def _command_lines(text: str) -> list[str]:
 def _cases():
     for name in DOCS:
         path = REPO / name
-        for line in _command_lines(path.read_text(encoding="utf-8")):
+        for line in _command_lines(path.read_text(encoding="utf-8"), name.endswith(".sh")):
             yield pytest.param(line, id=f"{name}:{line[:60]}")
 
 
