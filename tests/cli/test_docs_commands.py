@@ -1,4 +1,5 @@
-"""Every ``cityshade`` command line written in the README and the user guide parses: its
+"""Every ``cityshade`` command line written in the README, the user guide, the demo script and
+the examples of ``--help`` parses: its
 command exists and each option is one the command has, with its value (a renamed or removed
 option fails here, not in a reader's terminal)."""
 from __future__ import annotations
@@ -40,11 +41,19 @@ def _cases():
             yield pytest.param(line, id=f"{name}:{line[:60]}")
 
 
+def _help_examples():
+    from cityshade.cli.helpfmt import EXAMPLES
+
+    for name, lines in EXAMPLES.items():
+        for line in lines:
+            yield pytest.param(line, id=f"help {name}:{line[:50]}")
+
+
 def test_the_docs_have_commands():
     assert len(list(_cases())) >= 10
 
 
-@pytest.mark.parametrize("line", list(_cases()))
+@pytest.mark.parametrize("line", [*_cases(), *_help_examples()])
 def test_a_documented_command_parses(line):
     args = shlex.split(line)[1:]
     with cli.make_context("cityshade", list(args), resilient_parsing=True) as ctx:
@@ -56,3 +65,19 @@ def test_a_documented_command_parses(line):
         parser.parse_args(args=list(rest))
     except click.UsageError as e:           # unknown option, missing value
         pytest.fail(f"{line}: {e.format_message()}")
+
+
+def test_help_groups_every_option_under_a_heading():
+    from click.testing import CliRunner
+
+    from cityshade.cli.helpfmt import EXAMPLES, SECTIONS
+    from cityshade.cli.main import COMMANDS
+
+    for name in COMMANDS:
+        out = CliRunner().invoke(cli, [name, "--help"]).output
+        assert "Other options:" not in out, f"{name}: an option under no heading"
+        headings = [h for h in [*SECTIONS, "Help", "Examples"] if f"\n{h}:\n" in out]
+        positions = [out.index(f"\n{h}:\n") for h in headings]
+        assert positions == sorted(positions) and len(headings) >= 3, (name, headings)
+        assert "Help" in headings and "Examples" in headings, name
+        assert all(line in out for line in EXAMPLES[name]), name

@@ -5,12 +5,14 @@ from pathlib import Path
 
 import click
 
+from cityshade.cli.helpfmt import GroupedCommand
+
 from cityshade.cli.options import (camera_options, ground_option, make_camera, parse_size,
                                    parse_triple, presentation_options, shadow_options,
                                    time_plan_options)
 
 
-@click.command("batch")
+@click.command("batch", cls=GroupedCommand)
 @click.argument("file", type=click.Path(path_type=Path))
 @time_plan_options
 @click.option("--city-date", help="State of the city (default: --date); the city does not "

@@ -5,6 +5,8 @@ from pathlib import Path
 
 import click
 
+from cityshade.cli.helpfmt import GroupedCommand
+
 from cityshade.cli.options import AXIS_ORDER_HELP, CRS_HELP, TIME_ATTRIBUTE_HELP
 from cityshade.config import AXIS_ORDERS, CLOSURE_SURFACES, TIME_SOURCES
 
@@ -22,7 +24,7 @@ def _lod_option(ctx, param, value: str | None) -> int | float | None:
     return float(text) if dot else int(whole)
 
 
-@click.command("build")
+@click.command("build", cls=GroupedCommand)
 @click.argument("city", nargs=-1, required=True, type=click.Path(path_type=Path))
 @click.option("-o", "--output", type=click.Path(path_type=Path),
               help="Output file (default for one CITY file: CITY with suffix .cityshade; "

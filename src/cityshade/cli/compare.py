@@ -5,11 +5,13 @@ from pathlib import Path
 
 import click
 
+from cityshade.cli.helpfmt import GroupedCommand
+
 from cityshade.cli.options import (camera_options, ground_option, presentation_options,
                                    shadow_options, time_plan_options)
 
 
-@click.command("compare")
+@click.command("compare", cls=GroupedCommand)
 @click.argument("file", type=click.Path(path_type=Path))
 @click.option("--before", "before_text", help="State of the city before (date or year); "
               "default: --date.")

@@ -6,6 +6,8 @@ from pathlib import Path
 
 import click
 
+from cityshade.cli.helpfmt import GroupedCommand
+
 from cityshade.cli.options import crs_option, ground_option, shadow_options
 
 
@@ -47,7 +49,7 @@ def _int_list(text: str, what: str) -> tuple[int, ...]:
     return values
 
 
-@click.command("evaluate")
+@click.command("evaluate", cls=GroupedCommand)
 @click.argument("file", type=click.Path(path_type=Path))
 @click.option("--views", default="overview,map", show_default=True,
               help="Comma list: overview, map, or camera presets (render --help lists them).")

@@ -7,6 +7,8 @@ from pathlib import Path
 
 import click
 
+from cityshade.cli.helpfmt import GroupedCommand
+
 from cityshade.cli.options import crs_option
 
 
@@ -176,7 +178,7 @@ def _text(d: dict) -> str:
     return "\n".join(lines)
 
 
-@click.command("info")
+@click.command("info", cls=GroupedCommand)
 @click.argument("file", type=click.Path(path_type=Path))
 @click.option("--json", "as_json", is_flag=True, help="Print one JSON object.")
 @click.option("--verify", is_flag=True,

@@ -5,11 +5,13 @@ from pathlib import Path
 
 import click
 
+from cityshade.cli.helpfmt import GroupedCommand
+
 from cityshade.cli.options import (camera_options, ground_option, make_camera, parse_size,
                                    parse_triple, shadow_options)
 
 
-@click.command("render")
+@click.command("render", cls=GroupedCommand)
 @click.argument("file", type=click.Path(path_type=Path))
 @click.option("--date", "date_text", help="City state: 1850, 1850-06-21 or 1850-06-21T15:00+01:00 "
               "(default: today).")
