@@ -34,6 +34,10 @@ IZB_NS_PER_RECEIVER = 30.0
 #: faulting in their pages (the whole-process map render: +0.70 s against raytrace where the
 #: warm engines differ by -0.28 s, for 1.0 M triangles).
 IZB_FIRST_USE_NS_PER_CASTER = 1000.0
+#: izb is taken only when it saves at least this much over all the calls: below it nobody
+#: notices, while izb holds its sorted copy and work arrays (issue 41: +236 MB on the 1M map)
+#: and, on a fresh install, compiles its own kernels on top of the kd-tree's.
+IZB_MIN_SAVING_MS = 200.0
 
 
 @dataclass(frozen=True)
@@ -61,7 +65,8 @@ def choose_engine(n_rays: int, n_casters: int, *, shared_direction: bool = True,
                             rt_ms)
     first = 0.0 if warm else m * IZB_FIRST_USE_NS_PER_CASTER / max(int(calls), 1)
     izb_ms = (m * IZB_NS_PER_CASTER + n * IZB_NS_PER_RECEIVER + first) * 1e-6
-    engine = "izb" if izb_ms < rt_ms else "raytrace"
+    saving_ms = (rt_ms - izb_ms) * max(int(calls), 1)
+    engine = "izb" if saving_ms >= IZB_MIN_SAVING_MS else "raytrace"
     setup = "casters ready" if warm else (
         f"caster sort shared by {calls} calls" if calls > 1 else "caster sort in this call")
     reason = (f"{n:,} rays, {m:,} casters, {setup}: estimated izb {izb_ms:.3g} ms, "
