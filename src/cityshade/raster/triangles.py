@@ -128,12 +128,16 @@ class ClipView(NamedTuple):
 
 def clip_view(matrix, origin, to_px, xs, ys, *, w_clip: float = 0.0, near: float = 0.0,
               far: float = np.inf) -> ClipView:
-    """A :class:`ClipView` from a (4, 4) matrix, its origin and the pixel mapping."""
-    xs = np.ascontiguousarray(xs, np.float64)
-    ys = np.ascontiguousarray(ys, np.float64)
-    m = np.ascontiguousarray(np.asarray(matrix, np.float64).reshape(16))
-    return ClipView(m, np.ascontiguousarray(origin, np.float64),
-                    np.ascontiguousarray(to_px, np.float64), xs, ys, float(xs.shape[0]),
+    """A :class:`ClipView` from a (4, 4) matrix, its origin and the pixel mapping.
+
+    Every array is a fresh writable copy (a few numbers each): a read-only one (a camera's
+    origin from a memory-mapped scene) is another Numba type, so every kernel taking a view
+    would compile twice (``setup_triangles`` alone 20-70 s on a cold cache)."""
+    xs = np.array(xs, np.float64)
+    ys = np.array(ys, np.float64)
+    m = np.array(matrix, np.float64).reshape(16)
+    return ClipView(m, np.array(origin, np.float64).reshape(3),
+                    np.array(to_px, np.float64), xs, ys, float(xs.shape[0]),
                     float(ys.shape[0]), float(w_clip), float(near), float(far),
                     bool(np.array_equal(m[8:12], m[12:16])))
 
