@@ -114,7 +114,10 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
             click.echo(f"  {line}")
     if verbose:
         click.echo(f"timings  before {comp.before.timings_s['total_s']:.2f} s  after "
-                   f"{comp.after.timings_s['total_s']:.2f} s  command "
+                   f"{comp.after.timings_s['total_s']:.2f} s  "
+                   + "".join(f"{k[:-2]} {comp.light[k]:.2f} s  " for k in ("vsc_s", "apsh_s")
+                             if k in comp.light)
+                   + "command "
                    f"{time.perf_counter() - t_start:.2f} s", err=True)
     click.echo(" ".join(str(p) for p in result.written))
 

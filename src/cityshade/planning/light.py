@@ -10,10 +10,11 @@ not carry). The sky and the sun are traced from it through the scene of each sta
 state's city time, with an exact engine (:func:`cityshade.light.visibility.sky_visibility`,
 :func:`cityshade.light.sunlight.probable_sunlight`).
 
-The engine is ``raytrace`` unless asked otherwise: there is one receiver per opening, and the
+The engine is ``raytrace`` unless asked otherwise: there is one receiver per opening, and
+``raytrace`` takes all of a state's sky directions (or sunny hours) in one call, while the
 light-space engine (``izb``) builds a pass per direction that only pays back over many
-receivers (13 openings of FZK-Haus: 145 sky directions and ~2,700 sunny hours per state). Both
-give the same bits (tests/light).
+receivers (13 openings of FZK-Haus: 2,305 sky directions and ~2,700 sunny hours per state).
+Both give the same bits (tests/light).
 """
 from __future__ import annotations
 
@@ -41,7 +42,8 @@ def add_opening_light(comp, *, vsc: bool = True, weather=None, sky: str | None =
         Compute the probable sunlight hours (``apsh_before``/``_after`` and
         ``winter_apsh_before``/``_after``: shares of the place's annual probable sunny hours).
     sky : str, optional
-        Sky of the VSC (:func:`cityshade.light.sky.named_sky`; default Tregenza's 145).
+        Sky of the VSC (:func:`cityshade.light.sky.named_sky`; default
+        :data:`cityshade.light.sky.DEFAULT_SKY`, 2,305 patches).
     engine : str
         ``raytrace`` or ``izb``.
 
@@ -56,6 +58,7 @@ def add_opening_light(comp, *, vsc: bool = True, weather=None, sky: str | None =
         sky_for_scene,
         sky_visibility,
         vertical_sky_component,
+        weather_suns,
     )
 
     scene_b, scene_a = comp.scene_before, comp.scene_after
@@ -83,11 +86,12 @@ def add_opening_light(comp, *, vsc: bool = True, weather=None, sky: str | None =
     if weather is not None:
         t0 = time.perf_counter()
         info["weather"] = weather
+        suns = weather_suns(weather, scene_b)  # the same place in both states
         for tag, (scene, t_days, rows) in zip(("before", "after"), states):
             apsh, winter = np.full(n, np.nan), np.full(n, np.nan)
             if rows.any():
                 ps = probable_sunlight(scene, points[rows], normals[rows], weather, t_days,
-                                       engine=engine)
+                                       engine=engine, suns=suns)
                 apsh[rows], winter[rows] = ps.apsh, ps.winter_apsh
                 info["sunny_h"], info["winter_sunny_h"] = ps.total_h, ps.winter_total_h
             comp.opening[f"apsh_{tag}"] = apsh
