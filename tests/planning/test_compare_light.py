@@ -154,6 +154,6 @@ def test_compare_cli_without_weather_and_with_a_garbled_one(window_files, tmp_pa
     r = CliRunner().invoke(cli, args + ["--weather", str(bad), "-o", str(tmp_path / "b")])
     assert r.exit_code != 0
     assert r.output.strip().splitlines() == [(
-        f"cityshade: error: {bad}:11: DNI of record 9 is 'abc': not a number within 0 to 1500 W/m² "
+        f"cityshade: error: {bad}:11: dni of record 9 is 'abc': not a number within 0 to 1500 W/m² "
         f"(EPW writes 9999 for missing)")]
     assert not (tmp_path / "b").exists()
