@@ -88,3 +88,20 @@ def split_citygml(path, out_dir, n_tiles: int, overlap: int = 0) -> list:
         etree.ElementTree(tile).write(str(name), xml_declaration=True, encoding="UTF-8")
         out.append(name)
     return out
+
+
+def wall_with_window(at=lambda pts: pts, srs="EPSG:25832") -> str:
+    """A 10 m x 3 m wall facing -y (before ``at`` moves its points) with a 1 m x 0.2 m window
+    (gml:id WIN, z 1.0-1.2) in a hole of it: building HOUSE, wall WALL, polygons WALLPOLY and
+    WINPOLY. ``at(points) -> points`` places them (a shift, a turn)."""
+    wall = at([(-5.0, 0.0, 0.0), (5.0, 0.0, 0.0), (5.0, 0.0, 3.0), (-5.0, 0.0, 3.0)])
+    hole = at([(-0.5, 0.0, 1.0), (-0.5, 0.0, 1.2), (0.5, 0.0, 1.2), (0.5, 0.0, 1.0)])
+    win = at([(-0.5, 0.0, 1.0), (0.5, 0.0, 1.0), (0.5, 0.0, 1.2), (-0.5, 0.0, 1.2)])
+    return (
+        '<bldg:Building gml:id="HOUSE"><bldg:boundedBy><bldg:WallSurface gml:id="WALL">'
+        f'<bldg:lod3MultiSurface><gml:MultiSurface srsName="{srs}"><gml:surfaceMember>'
+        f"{polygon(wall, 'WALLPOLY', holes=[hole])}</gml:surfaceMember></gml:MultiSurface>"
+        "</bldg:lod3MultiSurface><bldg:opening><bldg:Window gml:id=\"WIN\">"
+        f"<bldg:lod3MultiSurface><gml:MultiSurface><gml:surfaceMember>{polygon(win, 'WINPOLY')}"
+        "</gml:surfaceMember></gml:MultiSurface></bldg:lod3MultiSurface></bldg:Window>"
+        "</bldg:opening></bldg:WallSurface></bldg:boundedBy></bldg:Building>")

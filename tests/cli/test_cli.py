@@ -327,7 +327,7 @@ def test_a_non_editable_install_reads_its_presets_settings_and_rules(tmp_path):
                           capture_output=True, text=True, timeout=120, env=env)
     assert done.returncode == 0, done.stderr
     assert done.stdout.splitlines() == [
-        "['bird', 'east', 'north', 'overview', 'south', 'tower', 'west']", "True", "2"]
+        "['bird', 'east', 'north', 'overview', 'south', 'tower', 'west']", "True", "3"]
     # pyproject.toml declares the package typed (PEP 561): the marker must be installed.
     assert (site / "cityshade" / "py.typed").is_file()
 

@@ -9,7 +9,7 @@ import math
 import numpy as np
 import pytest
 
-from citygml_snippets import box_polygons, building, city, polygon
+from citygml_snippets import box_polygons, building, city, wall_with_window
 
 pyogrio = pytest.importorskip("pyogrio")
 shapely = pytest.importorskip("shapely")
@@ -19,19 +19,7 @@ X0, Y0 = 690000.0, 5336000.0  # EPSG:25832, near Munich
 
 def _window_house():
     """A south wall at y = Y0 with a 1 m x 0.2 m window (gml:id WIN) in a hole of it."""
-    def at(pts):
-        return [(X0 + x, Y0 + y, z) for x, y, z in pts]
-    wall = at([(-5.0, 0.0, 0.0), (5.0, 0.0, 0.0), (5.0, 0.0, 3.0), (-5.0, 0.0, 3.0)])
-    hole = at([(-0.5, 0.0, 1.0), (-0.5, 0.0, 1.2), (0.5, 0.0, 1.2), (0.5, 0.0, 1.0)])
-    win = at([(-0.5, 0.0, 1.0), (0.5, 0.0, 1.0), (0.5, 0.0, 1.2), (-0.5, 0.0, 1.2)])
-    return (
-        '<bldg:Building gml:id="HOUSE"><bldg:boundedBy><bldg:WallSurface gml:id="WALL">'
-        f"<bldg:lod3MultiSurface><gml:MultiSurface srsName=\"EPSG:25832\"><gml:surfaceMember>"
-        f"{polygon(wall, 'WALLPOLY', holes=[hole])}</gml:surfaceMember></gml:MultiSurface>"
-        "</bldg:lod3MultiSurface><bldg:opening><bldg:Window gml:id=\"WIN\">"
-        f"<bldg:lod3MultiSurface><gml:MultiSurface><gml:surfaceMember>{polygon(win, 'WINPOLY')}"
-        "</gml:surfaceMember></gml:MultiSurface></bldg:lod3MultiSurface></bldg:Window>"
-        "</bldg:opening></bldg:WallSurface></bldg:boundedBy></bldg:Building>")
+    return wall_with_window(lambda pts: [(X0 + x, Y0 + y, z) for x, y, z in pts])
 
 
 @pytest.fixture(scope="module")

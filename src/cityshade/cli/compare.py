@@ -34,6 +34,10 @@ from cityshade.cli.options import (camera_options, ground_option, presentation_o
               "(bre209, en17037, china-sunshine); repeatable.")
 @click.option("--area", "area_text", help="Garden/amenity area x0,y0,x1,y1 (model CRS) for "
               "area rules that name none.")
+@click.option("--weather", "weather_file", type=click.Path(dir_okay=False, path_type=Path),
+              help="Weather file (EPW; TMY3 .csv; TMY2 .tm2): each window's annual probable "
+                   "sunlight hours before and after, and BRE 209's APSH test "
+                   "(bre209-window) assessed.")
 @presentation_options
 @click.option("-o", "--output", "outdir", type=click.Path(file_okay=False, path_type=Path),
               required=True, help="Output folder (created).")
@@ -41,17 +45,25 @@ from cityshade.cli.options import (camera_options, ground_option, presentation_o
 def compare(file, before_text, after_text, proposal, date_text, from_text, to_text, every_text,
             tz, days, to_date_text, every_day, camera, eye, target, fov, size, pixel_size,
             cameras_file, settings, ground, no_refraction, no_surfaces, samples_per_m2,
-            min_stretch_text, rule_files, area_text, no_decorate, no_gis, outdir, verbose):
+            min_stretch_text, rule_files, area_text, weather_file, no_decorate, no_gis, outdir,
+            verbose):
     """Sun-hours of the same receivers in two states of FILE (a .cityshade scene or a tiled
     cache folder): --before and --after dates of one model, or FILE with the proposal --with
     added. Writes before,
     after and loss maps (EXR, PNG, GeoTIFF for the map view), surfaces.csv, openings.csv,
-    the rule verdicts, report.md and report.html, and results.gpkg (GIS layers) to OUTDIR."""
+    the rule verdicts, report.md and report.html, and results.gpkg (GIS layers) to OUTDIR.
+
+    \b
+    Example (BRE 209 on an LoD3 house with a proposed block, a year of weather):
+      cityshade compare house.cityshade --with block.gml --rules bre209 \\
+          --weather London.epw --tz Europe/Berlin -o planning
+    """
     import dataclasses
     import time
 
     from cityshade.cli.batch import parse_day
     from cityshade.cli.options import make_camera, warn_lmt
+    from cityshade.planning.report import window_lines
     from cityshade.planning.rules import load_rules
     from cityshade.planning.run import (CompareRequest, CompareStates, TimePlan, open_compare,
                                         require_exact, run_compare)
@@ -82,14 +94,16 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
                   "every": every_text, "tz": tz, "days": days,
                   "to_date": to_date.isoformat() if to_date else None, "every_day": every_day,
                   "technique": technique, "camera": camera, "pixel_size": pixel_size,
-                  "ground": ground, "min_stretch": min_stretch_text, "rules": list(rule_files)}
+                  "ground": ground, "min_stretch": min_stretch_text, "rules": list(rule_files),
+                  "weather": str(weather_file) if weather_file else None}
     view = camera
     request = CompareRequest(
         file, plan, states, technique=technique, settings=settings, ground=ground,
         camera=lambda scene: make_camera(scene, view, eye, target, fov, size, pixel_size,
                                          cameras_file),
         surfaces=not no_surfaces, min_stretch_h=min_stretch_h, rules=rules, area=area,
-        outdir=outdir, provenance=provenance, decorate=not no_decorate, gis=not no_gis)
+        outdir=outdir, provenance=provenance, decorate=not no_decorate, gis=not no_gis,
+        weather=weather_file)
     inputs = open_compare(request)
     warn_lmt([step.start_utc for step in inputs.steps[:1]], tz)
     result = run_compare(request, inputs, on_step=_progress("sun positions (before, after)"))
@@ -98,9 +112,14 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
         click.echo(f"cityshade: warning: {warning}", err=True)
     for v in result.verdicts:
         click.echo(f"{v.rule.id}: {v.status.upper()} — {v.summary}")
+        for line in window_lines(v):
+            click.echo(f"  {line}")
     if verbose:
         click.echo(f"timings  before {comp.before.timings_s['total_s']:.2f} s  after "
-                   f"{comp.after.timings_s['total_s']:.2f} s  command "
+                   f"{comp.after.timings_s['total_s']:.2f} s  "
+                   + "".join(f"{k[:-2]} {comp.light[k]:.2f} s  " for k in ("vsc_s", "apsh_s")
+                             if k in comp.light)
+                   + "command "
                    f"{time.perf_counter() - t_start:.2f} s", err=True)
     click.echo(" ".join(str(p) for p in result.written))
 

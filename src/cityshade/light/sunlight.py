@@ -111,7 +111,7 @@ def winter_hours(weather) -> np.ndarray:
 
 def probable_sunlight(scene, points, normals, weather, t_days: float = 0.0, *,
                       engine: str = "izb", threshold_w_m2: float | None = None,
-                      settings=None) -> ProbableSunlight:
+                      settings=None, suns=None) -> ProbableSunlight:
     """Annual and winter probable sunlight hours of receivers (windows' reference points).
 
     Parameters
@@ -130,6 +130,9 @@ def probable_sunlight(scene, points, normals, weather, t_days: float = 0.0, *,
     threshold_w_m2 : float, optional
         Direct normal irradiance of a sunny hour (default WMO's 120 W/m²).
     settings : SpaSettings, optional
+    suns : (directions, elevation_deg), optional
+        :func:`weather_suns` of this weather and scene, when already computed (two states of
+        one place share them).
 
     Returns
     -------
@@ -143,7 +146,7 @@ def probable_sunlight(scene, points, normals, weather, t_days: float = 0.0, *,
     >>> ps.apsh >= 0.25, ps.winter_apsh >= 0.05                             # doctest: +SKIP
     """
     from cityshade.light.sky import in_front
-    from cityshade.light.visibility import ENGINES
+    from cityshade.light.visibility import BATCH_RAYS, ENGINES
     from cityshade.light.weather import SUNNY_DNI_W_M2
     from cityshade.shadows.visibility import occluded
     from cityshade.trace import shadow_rays_from_surface
@@ -155,22 +158,26 @@ def probable_sunlight(scene, points, normals, weather, t_days: float = 0.0, *,
     if pts.shape != nrm.shape:
         raise UsageError(f"points {pts.shape} and normals {nrm.shape} differ in shape")
     threshold = SUNNY_DNI_W_M2 if threshold_w_m2 is None else float(threshold_w_m2)
-    directions, elevation = weather_suns(weather, scene, settings)
+    directions, elevation = weather_suns(weather, scene, settings) if suns is None else suns
     sunny = weather.sunny(threshold) & (elevation > 0.0)
     winter = winter_hours(weather)
-    annual = np.zeros(len(pts))
-    win = np.zeros(len(pts))
-    front_h = np.zeros(len(pts))
-    for h in np.flatnonzero(sunny):
-        d = directions[h]
-        rows = np.flatnonzero(in_front(nrm, d[None])[:, 0])
+    n = len(pts)
+    annual, win, front_h = np.zeros(n), np.zeros(n), np.zeros(n)
+    hours = np.flatnonzero(sunny)
+    # izb: one light-space pass per hour; raytrace: many hours per call (a direction per ray,
+    # BATCH_RAYS rays at most), the same rays as hour by hour.
+    per = max(1, BATCH_RAYS // max(n, 1)) if engine == "raytrace" else 1
+    for s in range(0, len(hours), per):
+        hs = hours[s:s + per]
+        front = in_front(nrm, directions[hs])              # (N, hours of the chunk)
+        front_h += front.sum(axis=1)
+        rows, cols = np.nonzero(front)
         if not len(rows):
             continue
-        front_h[rows] += 1.0
+        d = directions[hs[0]] if len(hs) == 1 else np.ascontiguousarray(directions[hs[cols]])
         origins = shadow_rays_from_surface(pts[rows], nrm[rows], d)
-        lit = rows[~occluded(scene, origins, d, t_days, engine=engine)]
-        annual[lit] += 1.0
-        if winter[h]:
-            win[lit] += 1.0
+        lit = ~occluded(scene, origins, d, t_days, engine=engine)
+        annual += np.bincount(rows[lit], minlength=n)
+        win += np.bincount(rows[lit & winter[hs[cols]]], minlength=n)
     return ProbableSunlight(annual_h=annual, winter_h=win, total_h=float(sunny.sum()),
                             winter_total_h=float((sunny & winter).sum()), front_h=front_h)

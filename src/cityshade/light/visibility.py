@@ -31,6 +31,12 @@ ENGINES = ("izb", "raytrace")
 #: the unpacked block at 64 B per receiver, a third of the packed 2,305-direction result.
 DEFAULT_BLOCK = 64
 
+#: ``raytrace`` takes a direction per ray: up to this many rays (24 B of origins and 24 B of
+#: directions each) go to the engine in one call rather than one call per direction, which
+#: costs a few milliseconds each and dominates for a few receivers (a window's reference
+#: point). The rays are the same, so the bits are.
+BATCH_RAYS = 1 << 20
+
 
 @dataclass(frozen=True)
 class SkyVisibility:
@@ -133,11 +139,18 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
         work[:] = False
         dirs = sky.directions[start:stop]
         front = in_front(nrm, dirs)
-        for j, d in enumerate(dirs):
-            rows = np.flatnonzero(front[:, j])
+        if engine == "raytrace" and n * len(dirs) <= BATCH_RAYS:
+            rows, cols = np.nonzero(front)
             if len(rows):
+                d = np.ascontiguousarray(dirs[cols])
                 origins = shadow_rays_from_surface(pts[rows], nrm[rows], d)
-                work[rows, j] = ~occluded(scene, origins, d, t_days, engine=engine)
+                work[rows, cols] = ~occluded(scene, origins, d, t_days, engine=engine)
+        else:
+            for j, d in enumerate(dirs):
+                rows = np.flatnonzero(front[:, j])
+                if len(rows):
+                    origins = shadow_rays_from_surface(pts[rows], nrm[rows], d)
+                    work[rows, j] = ~occluded(scene, origins, d, t_days, engine=engine)
         bits[:, start // 8:(stop + 7) // 8] = np.packbits(work[:, :stop - start], axis=1)
         if progress is not None:
             progress(stop, p_total)

@@ -162,6 +162,7 @@ class Comparison:
     openings: list[Opening] = field(default_factory=list)
     opening: dict[str, np.ndarray] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
+    light: dict[str, Any] = field(default_factory=dict)
 
     @property
     def samples(self):
@@ -364,7 +365,21 @@ SURFACE_COLUMNS = ("object_id", "polygon_id", "polygon_index", "surface_class", 
 OPENING_COLUMNS = ("opening_id", "object_id", "surface_class", "polygon_ids", "area_m2",
                    "samples", "facing_deg", "hours_before", "hours_after", "loss_h", "loss_pct",
                    "ref_hours_before", "ref_hours_after", "ref_longest_before_h",
-                   "ref_longest_after_h")
+                   "ref_longest_after_h") + (
+                   "vsc_before_pct", "vsc_after_pct", "apsh_before_pct", "apsh_after_pct",
+                   "winter_apsh_before_pct", "winter_apsh_after_pct")
+#: The light columns of the openings (:mod:`cityshade.planning.light`, fractions in
+#: ``Comparison.opening``) and their percentage columns in openings.csv; empty when not computed.
+LIGHT_COLUMNS = {"vsc_before_pct": "vsc_before", "vsc_after_pct": "vsc_after",
+                 "apsh_before_pct": "apsh_before", "apsh_after_pct": "apsh_after",
+                 "winter_apsh_before_pct": "winter_apsh_before",
+                 "winter_apsh_after_pct": "winter_apsh_after"}
+
+
+def light_percent(comp, column: str) -> np.ndarray:
+    """(O,) an openings.csv light column (``vsc_before_pct``, ...) in %, NaN when not computed."""
+    values = comp.opening.get(LIGHT_COLUMNS[column])
+    return np.full(len(comp.openings), np.nan) if values is None else 100.0 * values
 
 
 def _f(v, digits=4) -> str:
@@ -501,6 +516,7 @@ def write_comparison(outdir, comp: Comparison, meta: dict[str, Any],
             writer.writerow(OPENING_COLUMNS)
             o = comp.opening
             scene = comp.scene_before
+            light = {c: light_percent(comp, c) for c in LIGHT_COLUMNS}
             for k, op in enumerate(comp.openings):
                 b, a = o["before_h"][k], o["after_h"][k]
                 writer.writerow([op.opening_id, scene.obj_ids[op.object_index], op.surface_class,
@@ -510,6 +526,7 @@ def write_comparison(outdir, comp: Comparison, meta: dict[str, Any],
                                  _f(loss_percent(np.array(b), np.array(a))),
                                  _f(o["ref_before_h"][k]), _f(o["ref_after_h"][k]),
                                  _f(o["ref_longest_before_h"][k]),
-                                 _f(o["ref_longest_after_h"][k])])
+                                 _f(o["ref_longest_after_h"][k])]
+                                + [_f(light[c][k], 2) for c in LIGHT_COLUMNS])
         written.append(path)
     return written

@@ -84,7 +84,12 @@ def _surface_layer(comp, verdicts):
 
 
 def _opening_layer(comp, verdicts):
-    from cityshade.planning.compare import OPENING_COLUMNS, loss_percent
+    from cityshade.planning.compare import (
+        LIGHT_COLUMNS,
+        OPENING_COLUMNS,
+        light_percent,
+        loss_percent,
+    )
     from cityshade.present.gis import Layer, finite_or_none, polygon_outlines
 
     scene, o = comp.scene_before, comp.opening
@@ -100,7 +105,8 @@ def _opening_layer(comp, verdicts):
         "facing_deg": o["facing_deg"], "hours_before": b, "hours_after": a, "loss_h": b - a,
         "loss_pct": pct, "ref_hours_before": o["ref_before_h"], "ref_hours_after": o["ref_after_h"],
         "ref_longest_before_h": o["ref_longest_before_h"],
-        "ref_longest_after_h": o["ref_longest_after_h"]}
+        "ref_longest_after_h": o["ref_longest_after_h"],
+        **{c: light_percent(comp, c) for c in LIGHT_COLUMNS}}
     columns = {name: values[name] for name in OPENING_COLUMNS}
     for name in OPENING_COLUMNS[4:]:
         if name != "samples":

@@ -11,7 +11,7 @@ from typing import Any, Sequence
 
 import numpy as np
 
-__all__ = ["write_report", "worst_surfaces"]
+__all__ = ["write_report", "worst_surfaces", "window_lines"]
 
 #: Surfaces smaller than this are left out of the worst-hit list (slivers say little).
 MIN_LISTED_AREA_M2 = 1.0
@@ -122,6 +122,66 @@ def _rule_figures(comp, verdicts: Sequence) -> dict[str, str]:
     return out
 
 
+def _p(v) -> str:
+    """A fraction as a percentage with one decimal ('–' when unknown)."""
+    return "–" if v is None or not np.isfinite(v) else f"{100.0 * float(v):.1f} %"
+
+
+def _x(v) -> str:
+    return "–" if v is None or not math.isfinite(v) else f"{float(v):.2f} ×"
+
+
+def _light_cells(v, d) -> list[str]:
+    """The numbers of one window of a light rule: value before, after, ratio (and for APSH the
+    winter share before, after, ratio and the annual loss)."""
+    m = v.rule.measure
+    cells = [_p(d.get(f"{m}_before")), _p(d[f"{m}_after"]), _x(d.get("ratio"))]
+    if m == "apsh":
+        cells += [_p(d.get("winter_before")), _p(d.get("winter_after")),
+                  _x(d.get("winter_ratio")), _p(d.get("loss"))]
+    return cells
+
+
+def window_lines(v) -> list[str]:
+    """One line per window of a ``vsc``/``apsh`` verdict with the numbers it rests on (the
+    CLI prints them under the verdict); no lines for other rules."""
+    if not v.rule.is_light:
+        return []
+    out = []
+    for d in v.details:
+        c = _light_cells(v, d)
+        text = f"{d['receiver']}: {v.rule.measure.upper()} {c[0]} → {c[1]} ({c[2]})"
+        if v.rule.measure == "apsh":
+            text += f", winter {c[3]} → {c[4]} ({c[5]}), loss {c[6]}"
+        out.append(f"{text}: {d['status'].upper()}")
+    return out
+
+
+def _light_md(v) -> list[str]:
+    m = v.rule.measure.upper()
+    nums = v.numbers
+    if v.rule.measure == "vsc":
+        where = (f"- Measured at each window's centre on its outer face, sky "
+                 f"`{nums.get('sky')}`, engine `{nums.get('engine')}`.")
+        out = [where, "",
+               f"| window | {m} before | {m} after | after/before | result |",
+               "|---|---:|---:|---:|---|"]
+    else:
+        weather = (f"- Weather `{nums.get('weather')}`: {nums.get('sunny_h', 0):.0f} probable "
+                   f"sunny hours in the year, {nums.get('winter_sunny_h', 0):.0f} of them from "
+                   f"21 September to 21 March; engine `{nums.get('engine')}`. Shares of the "
+                   "annual total; loss: APSH before − after.")
+        header = ("| window | APSH before | APSH after | after/before | winter before | "
+                  "winter after | after/before | loss | result |")
+        out = [weather, "", header, "|---|---:|---:|---:|---:|---:|---:|---:|---|"]
+    for d in v.details[:25]:
+        out.append(f"| `{d['receiver']}` | " + " | ".join(_light_cells(v, d))
+                   + f" | {d['status']} |")
+    if len(v.details) > 25:
+        out.append(f"| … {len(v.details) - 25} more in rules.json |")
+    return out
+
+
 def _verdict_md(v) -> list[str]:
     r = v.rule
     out = [f"### {r.name}", "", f"- **Verdict: {v.status.upper()}** — {v.summary}",
@@ -138,7 +198,9 @@ def _verdict_md(v) -> list[str]:
         out.append(f"- {r.notes}")
     for need in v.not_assessed:
         out.append(f"- *Not assessed:* {need}")
-    if v.details:
+    if v.details and r.is_light:
+        out += _light_md(v)
+    elif v.details:
         out += ["", "| receiver | before h | after h | after/before | grade | result |",
                 "|---|---:|---:|---:|---|---|"]
         for d in v.details[:25]:

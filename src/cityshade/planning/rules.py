@@ -2,14 +2,16 @@
 
 A rule names its receivers (pixels of an area, surfaces of some classes, or openings), the day
 and time window it is measured on, what is measured (total hours, the longest continuous
-stretch, or hours in stretches of a minimum length), the threshold, the share of the area that
-must reach it, and an "after >= k x before" comparison. The format and the shipped rules (BRE
-209 garden and window tests, EN 17037 sunlight exposure, a minimum continuous sunshine rule of
-the Chinese kind) are documented in ``docs/RULES.md``; the files are the package's
-``rules_data/*.toml``.
+stretch, hours in stretches of a minimum length; or, for windows, the vertical sky component
+``vsc`` or the probable sunlight hours ``apsh`` of a weather file), the threshold, the share of
+the area that must reach it, and an "after >= k x before" comparison. The format and the
+shipped rules (BRE 209 garden, VSC and APSH tests, EN 17037 sunlight exposure, a minimum
+continuous sunshine rule of the Chinese kind) are documented in ``docs/RULES.md``; the files
+are the package's ``rules_data/*.toml``.
 
-The engine (:func:`evaluate`) works on plain arrays (:class:`Measures`), so it is tested on
-synthetic hours; :func:`measures_from` takes them from a :class:`cityshade.planning.compare.Comparison`.
+The engine (:func:`evaluate`) works on plain arrays (:class:`Measures`, :class:`WindowMeasures`),
+so it is tested on synthetic values; :func:`measures_from` and :func:`window_measures_from` take
+them from a :class:`cityshade.planning.compare.Comparison`.
 """
 from __future__ import annotations
 
@@ -24,12 +26,17 @@ import numpy as np
 
 from cityshade.errors import ConfigError, UsageError
 
-__all__ = ["Rule", "Measures", "Verdict", "load_rules", "evaluate", "rule_day",
-           "measures_from", "RULES_DIR", "MEASURES"]
+__all__ = ["Rule", "Measures", "WindowMeasures", "Verdict", "load_rules", "evaluate",
+           "rule_day", "measures_from", "window_measures_from", "RULES_DIR", "MEASURES",
+           "LIGHT_MEASURES"]
 
 RULES_DIR = Path(__file__).resolve().parent / "rules_data"
-#: What a rule measures per receiver.
-MEASURES = ("total", "longest", "stretches")
+#: What a rule measures per receiver: hours of the sun over the rule's steps, or (openings
+#: only) a fraction 0-1 at each window's reference point: the vertical sky component (``vsc``)
+#: or the annual probable sunlight hours of a weather file (``apsh``, with its winter share).
+HOUR_MEASURES = ("total", "longest", "stretches")
+LIGHT_MEASURES = ("vsc", "apsh")
+MEASURES = HOUR_MEASURES + LIGHT_MEASURES
 _RECEIVERS = ("area", "surfaces", "openings")
 _KEYS = {
     "id": str, "name": str, "source": str, "receivers": str, "classes": list,
@@ -37,9 +44,15 @@ _KEYS = {
     "to": str, "tz": str, "every": str, "every_day": int, "to_date": str,
     "min_elevation_deg": (int, float), "measure": str, "min_stretch_min": (int, float),
     "min_hours": (int, float), "levels": dict, "share": (int, float),
-    "relative": (int, float), "relative_scope": str, "winter_from": str, "winter_min_share": (int, float),
-    "reference": str, "not_assessed": list, "notes": str,
+    "relative": (int, float), "reference": str, "not_assessed": list, "notes": str,
+    "min_fraction": (int, float), "min_winter_fraction": (int, float),
+    "max_loss_fraction": (int, float), "sky": str,
 }
+#: Keys that only the light measures read, and the hour-measure keys they do not.
+_LIGHT_KEYS = {"min_fraction", "min_winter_fraction", "max_loss_fraction", "sky"}
+_HOUR_ONLY_KEYS = {"date", "from", "to", "tz", "every", "every_day", "to_date",
+                   "min_elevation_deg", "min_stretch_min", "min_hours", "levels", "share",
+                   "reference"}
 
 
 @dataclass(frozen=True)
@@ -71,6 +84,15 @@ class Rule:
     reference: str = "mean"
     not_assessed: tuple[str, ...] = ()
     notes: str = ""
+    min_fraction: float | None = None
+    min_winter_fraction: float | None = None
+    max_loss_fraction: float | None = None
+    sky: str | None = None
+
+    @property
+    def is_light(self) -> bool:
+        """The rule measures light at windows (``vsc``/``apsh``), not hours over steps."""
+        return self.measure in LIGHT_MEASURES
 
     @property
     def min_stretch_h(self) -> float:
@@ -83,17 +105,23 @@ def _rule_from(table: dict, where: str) -> Rule:
             raise ConfigError(f"{where}: unknown key {key!r} (known: {', '.join(sorted(_KEYS))})")
         if not isinstance(value, _KEYS[key]) or isinstance(value, bool):
             raise ConfigError(f"{where}: {key} has the wrong type ({type(value).__name__})")
-    for key in ("id", "name", "source", "receivers", "date"):
+    measure = table.get("measure", "total")
+    if measure not in MEASURES:
+        raise ConfigError(f"{where}: measure must be one of {', '.join(MEASURES)}")
+    light = measure in LIGHT_MEASURES
+    for key in ("id", "name", "source", "receivers") + (() if light else ("date",)):
         if key not in table:
             raise ConfigError(f"{where}: a rule needs {key!r}")
     if table["receivers"] not in _RECEIVERS:
         raise ConfigError(f"{where}: receivers must be one of {', '.join(_RECEIVERS)}")
-    measure = table.get("measure", "total")
-    if measure not in MEASURES:
-        raise ConfigError(f"{where}: measure must be one of {', '.join(MEASURES)}")
+    if light:
+        _check_light_rule(table, measure, where)
+    elif set(table) & _LIGHT_KEYS:
+        raise ConfigError(f"{where}: {', '.join(sorted(set(table) & _LIGHT_KEYS))} belong to "
+                          f"the measures {' and '.join(LIGHT_MEASURES)}, not {measure!r}")
     levels = tuple(sorted(((str(k), float(v)) for k, v in table.get("levels", {}).items()),
                           key=lambda kv: kv[1]))
-    if "min_hours" not in table and not levels:
+    if not light and "min_hours" not in table and not levels:
         raise ConfigError(f"{where}: a rule needs min_hours or levels")
     bbox = table.get("area_bbox")
     if bbox is not None and (len(bbox) != 4 or not bbox[0] < bbox[2] or not bbox[1] < bbox[3]):
@@ -110,7 +138,7 @@ def _rule_from(table: dict, where: str) -> Rule:
             raise ConfigError(f"{where}: {key} must be in (0, 1], not {v}")
     return Rule(
         id=table["id"], name=table["name"], source=table["source"],
-        receivers=table["receivers"], date=table["date"], measure=measure,
+        receivers=table["receivers"], date=table.get("date", ""), measure=measure,
         min_hours=float(table.get("min_hours", levels[0][1] if levels else 0.0)),
         classes=tuple(table.get("classes", ())),
         area_bbox=tuple(float(v) for v in bbox) if bbox else None,
@@ -125,7 +153,33 @@ def _rule_from(table: dict, where: str) -> Rule:
         relative=float(table["relative"]) if "relative" in table else None,
         reference=table.get("reference", "mean"),
         not_assessed=tuple(str(v) for v in table.get("not_assessed", ())),
-        notes=table.get("notes", ""))
+        notes=table.get("notes", ""),
+        **{k: (float(table[k]) if k != "sky" else table[k]) for k in _LIGHT_KEYS if k in table})
+
+
+def _check_light_rule(table: dict, measure: str, where: str) -> None:
+    """A ``vsc``/``apsh`` rule: windows, a ``min_fraction``, only the keys its measure reads."""
+    if table["receivers"] != "openings":
+        raise ConfigError(f"{where}: measure {measure!r} is measured at openings "
+                          f"(receivers = \"openings\")")
+    if "min_fraction" not in table:
+        raise ConfigError(f"{where}: a {measure!r} rule needs min_fraction")
+    foreign = set(table) & (_HOUR_ONLY_KEYS | ({"min_winter_fraction", "max_loss_fraction"}
+                                               if measure == "vsc" else {"sky"}))
+    if foreign:
+        raise ConfigError(f"{where}: measure {measure!r} does not read "
+                          f"{', '.join(sorted(foreign))}")
+    for key in ("min_fraction", "min_winter_fraction", "max_loss_fraction"):
+        v = table.get(key)
+        if v is not None and not 0.0 <= float(v) <= 1.0:
+            raise ConfigError(f"{where}: {key} is a fraction in [0, 1], not {v}")
+    if "sky" in table:
+        from cityshade.light.sky import named_sky
+
+        try:
+            named_sky(table["sky"])
+        except UsageError as exc:
+            raise ConfigError(f"{where}: {exc}") from None
 
 
 def load_rules(path) -> list[Rule]:
@@ -197,6 +251,21 @@ class Measures:
 
 
 @dataclass
+class WindowMeasures:
+    """What a light rule (``vsc``/``apsh``) looks at, per window, in one state: fractions 0–1.
+
+    value : (N,) float — the vertical sky component, or the annual probable sunlight hours as a
+    share of the place's (APSH). winter : (N,) float, optional — the winter (21 September to
+    21 March) probable sunlight hours as a share of the same ANNUAL total (BRE 209).
+    labels : the windows' gml:ids.
+    """
+
+    value: np.ndarray
+    labels: list[str] = field(default_factory=list)
+    winter: np.ndarray | None = None
+
+
+@dataclass
 class Verdict:
     """A rule's answer. ``status``: ``pass``, ``fail`` or ``not assessed``; ``numbers``: the
     measured values the verdict rests on; ``details``: one line per receiver for point rules."""
@@ -235,6 +304,8 @@ def evaluate(rule: Rule, after: Measures, before: Measures | None = None) -> Ver
     receiver's value must reach ``min_hours`` (``levels`` grade it), or, with ``relative``,
     at least ``relative`` × its former value.
     """
+    if rule.is_light:
+        return _evaluate_light(rule, after, before)
     needs = tuple(rule.not_assessed)
     value_a = after.value(rule.measure)
     value_b = before.value(rule.measure) if before is not None else None
@@ -302,6 +373,78 @@ def evaluate(rule: Rule, after: Measures, before: Measures | None = None) -> Ver
             text += f" or keep ≥ {rule.relative:g} × their former value"
     return Verdict(rule, status, text, {"receivers": n, "passing": n_ok,
                                         "min_hours": rule.min_hours}, details, needs)
+
+
+# Fractions are compared with a tolerance of 1e-12: an APSH of 683 of 2732 hours is 0.25 exactly in
+# the decimal sense but may round below it in binary.
+_EPS_FRACTION = 1e-12
+
+
+def _pct1(v: float) -> str:
+    return f"{100.0 * v:.1f} %"
+
+
+def _light_row(rule: Rule, i: int, after: WindowMeasures, before: WindowMeasures | None):
+    """One window of a light rule: its numbers and whether it passes (BRE 209's tests)."""
+    eps, k = _EPS_FRACTION, rule.relative
+    va = float(after.value[i])
+    row: dict[str, Any] = {"receiver": after.labels[i] if i < len(after.labels) else str(i),
+                           f"{rule.measure}_after": va}
+    low = va < rule.min_fraction - eps
+    wa = None
+    if after.winter is not None:
+        wa = float(after.winter[i])
+        row["winter_after"] = wa
+        low |= rule.min_winter_fraction is not None and wa < rule.min_winter_fraction - eps
+    if before is None:
+        row["status"] = "fail" if low else "pass"
+        return row
+    vb = float(before.value[i])
+    row[f"{rule.measure}_before"] = vb
+    row["ratio"] = va / vb if vb > 0 else math.inf
+    kept = k is None or va >= k * vb - eps
+    if before.winter is not None and wa is not None:
+        wb = float(before.winter[i])
+        row["winter_before"] = wb
+        row["winter_ratio"] = wa / wb if wb > 0 else math.inf
+        # BRE 209: less than 0.8 times its former sunlight hours during EITHER period.
+        kept &= k is None or wa >= k * wb - eps
+    fails = low and not kept
+    if rule.max_loss_fraction is not None:
+        row["loss"] = vb - va
+        fails &= vb - va > rule.max_loss_fraction + eps
+    row["status"] = "fail" if fails else "pass"
+    return row
+
+
+def _evaluate_light(rule: Rule, after: WindowMeasures, before: WindowMeasures | None) -> Verdict:
+    """Per window: fails when below the absolute thresholds (``min_fraction``, and
+    ``min_winter_fraction`` for APSH) AND below ``relative`` × its former value (in either
+    period) AND, with ``max_loss_fraction``, losing more than that share over the year."""
+    n = int(np.asarray(after.value).size)
+    if n == 0:
+        return Verdict(rule, "not assessed", "no window of this rule in the model",
+                       not_assessed=rule.not_assessed)
+    details = [_light_row(rule, i, after, before) for i in range(n)]
+    n_ok = sum(d["status"] == "pass" for d in details)
+    what = {"vsc": f"VSC ≥ {_pct1(rule.min_fraction)}",
+            "apsh": f"APSH ≥ {_pct1(rule.min_fraction)}"
+            + (f" and winter APSH ≥ {_pct1(rule.min_winter_fraction)}"
+               if rule.min_winter_fraction is not None else "")}[rule.measure]
+    text = f"{n_ok} of {n} windows keep {what}"
+    if rule.relative is not None and before is not None:
+        text += f", or ≥ {rule.relative:g} × their former value"
+        if rule.max_loss_fraction is not None:
+            text += f", or lose at most {_pct1(rule.max_loss_fraction)} of APSH over the year"
+    key = f"{rule.measure}_after"
+    worst = min(details, key=lambda d: d[key])
+    text += f" (lowest after: {_pct1(worst[key])} at {worst['receiver']})"
+    numbers = {"receivers": n, "passing": n_ok, "min_fraction": rule.min_fraction}
+    for name in ("min_winter_fraction", "max_loss_fraction", "relative"):
+        if getattr(rule, name) is not None:
+            numbers[name] = getattr(rule, name)
+    return Verdict(rule, "pass" if n_ok == n else "fail", text, numbers, details,
+                   rule.not_assessed)
 
 
 # --- receivers of a rule in a comparison --------------------------------------------------------
@@ -412,4 +555,31 @@ def measures_from(rule: Rule, comp) -> tuple[Measures, Measures]:
             if rule.min_stretch_h > 0 else res.polygon_hours
         out.append(Measures(res.polygon_hours[keep], polygon_longest(comp, tag)[keep],
                             q[keep], area, labels))
+    return out[0], out[1]
+
+
+def window_measures_from(rule: Rule, comp) -> tuple[WindowMeasures, WindowMeasures]:
+    """(before, after) :class:`WindowMeasures` of a light rule's openings in a comparison whose
+    ``opening`` holds the light columns (:func:`cityshade.planning.light.add_opening_light`):
+    the openings of the rule's classes (default windows and doors) facing its sector, standing
+    in both states.
+
+    Raises
+    ------
+    UsageError
+        The comparison has no values of the rule's measure (``apsh`` without a weather file).
+    """
+    o = comp.opening
+    key = rule.measure
+    if f"{key}_before" not in o:
+        raise UsageError(f"rule {rule.id}: the comparison has no {key} of its openings")
+    classes = rule.classes or ("window", "door")
+    keep = (np.isin([op.surface_class for op in comp.openings], classes)
+            & _facing_ok(rule, o["facing_deg"]) & np.isfinite(o[f"{key}_before"])
+            & np.isfinite(o[f"{key}_after"]))
+    labels = [op.opening_id for op, k in zip(comp.openings, keep) if k]
+    out = []
+    for tag in ("before", "after"):
+        winter = o[f"winter_{key}_{tag}"][keep] if f"winter_{key}_{tag}" in o else None
+        out.append(WindowMeasures(o[f"{key}_{tag}"][keep], labels, winter))
     return out[0], out[1]

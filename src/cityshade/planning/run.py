@@ -183,6 +183,10 @@ class CompareRequest:
         Map views' PNGs with title, scale bar, north arrow, CRS and colour bar.
     gis : bool
         ``results.gpkg`` (and GeoJSON) of the surfaces, openings, buildings and rules.
+    weather : path or Weather, optional
+        An EPW, TMY3 or TMY2 file (:func:`cityshade.light.weather.read_weather`): the
+        openings' probable sunlight hours (APSH) before and after, and the ``apsh`` rules
+        assessed; without it those rules are not assessed.
     """
 
     scene: Any
@@ -200,6 +204,7 @@ class CompareRequest:
     provenance: Mapping[str, Any] | None = None
     decorate: bool = True
     gis: bool = True
+    weather: Any = None
 
     def __post_init__(self) -> None:
         from cityshade.config import Settings
@@ -214,12 +219,14 @@ class CompareRequest:
 @dataclass(frozen=True)
 class CompareInputs:
     """The opened model of a request (:func:`open_compare`): the scene, the two states' dates
-    (:class:`cityshade.geo.temporal.UserDate`) and the time plan's steps."""
+    (:class:`cityshade.geo.temporal.UserDate`), the time plan's steps and the weather file
+    read (:class:`cityshade.light.weather.Weather`, or None)."""
 
     scene: Any
     before: Any
     after: Any
     steps: list
+    weather: Any = None
 
 
 @dataclass
@@ -280,9 +287,14 @@ def open_compare(request: CompareRequest) -> CompareInputs:
     before, after = request.states.dates(request.plan.first_day)
     if request.outdir is not None:
         check_outputs(("-o", request.outdir, None))  # once the request is valid, before any work
+    weather = request.weather
+    if _is_path(weather):  # a garbled file is refused before the model is read
+        from cityshade.light.weather import read_weather
+
+        weather = read_weather(weather)
     # A tiled cache: the view of all its tiles.
     scene = whole_scene(request.scene) if _is_path(request.scene) else request.scene
-    return CompareInputs(scene, before, after, request.plan.steps(scene))
+    return CompareInputs(scene, before, after, request.plan.steps(scene), weather)
 
 
 def run_compare(request: CompareRequest, inputs: CompareInputs | None = None, *,
@@ -345,7 +357,9 @@ def run_compare(request: CompareRequest, inputs: CompareInputs | None = None, *,
     comp = compare_states(scene, inputs.before.city_days, scene_after, inputs.after.city_days,
                           camera, inputs.steps, receivers, technique=request.technique,
                           settings=settings, ground=request.ground, on_step=on_step)
-    verdicts = [run_rule(rule, request, inputs, scene_after, camera) for rule in request.rules]
+    _add_light(comp, request, inputs)
+    verdicts = [run_rule(rule, request, inputs, scene_after, camera, comp)
+                for rule in request.rules]
     written: list[Path] = []
     if request.outdir is not None:
         with output_group():  # the rasters, tables and report appear together, or none of them
@@ -359,6 +373,22 @@ def run_compare(request: CompareRequest, inputs: CompareInputs | None = None, *,
 
                 written += write_gis(request.outdir, compare_layers(comp, verdicts), scene.crs)
     return CompareResult(comp, verdicts, inputs.steps, written)
+
+
+def _add_light(comp, request: CompareRequest, inputs: CompareInputs) -> None:
+    """The openings' VSC (when a rule measures it) and probable sunlight hours (with a weather
+    file), and the weather file's distance warning."""
+    from cityshade.light.weather import scene_location_warning
+    from cityshade.planning.light import add_opening_light
+
+    if inputs.weather is not None:
+        warning = scene_location_warning(inputs.weather, inputs.scene)
+        if warning:
+            comp.warnings.append(warning)
+    vsc_rules = [r for r in request.rules if r.measure == "vsc"]
+    if comp.openings and (vsc_rules or inputs.weather is not None):
+        add_opening_light(comp, vsc=bool(vsc_rules), weather=inputs.weather,
+                          sky=vsc_rules[0].sky if vsc_rules else None)
 
 
 def _meta(request: CompareRequest, inputs: CompareInputs) -> dict[str, Any]:
@@ -453,13 +483,50 @@ def _rule_area(rule, request: CompareRequest, scene, scene_after, camera):
                           bbox=(box[0] - o[0], box[1] - o[1], box[2] - o[0], box[3] - o[1]))
 
 
-def run_rule(rule, request: CompareRequest, inputs: CompareInputs, scene_after, camera):
+#: Why an ``apsh`` rule is not assessed without a weather file.
+NEEDS_WEATHER = ("needs --weather FILE: annual probable sunlight hours are the sunny hours "
+                 "(direct normal irradiance ≥ 120 W/m²) of a typical-year weather file "
+                 "(EPW, TMY3 or TMY2) that reach each window")
+
+
+def _light_verdict(rule, inputs: CompareInputs, comp):
+    """A ``vsc``/``apsh`` rule's verdict from the openings' light columns of ``comp``."""
+    from pathlib import Path
+
+    from cityshade.planning.rules import Verdict, evaluate, window_measures_from
+
+    if rule.measure == "apsh" and inputs.weather is None:
+        return Verdict(rule, "not assessed", NEEDS_WEATHER, not_assessed=rule.not_assessed)
+    polygons = _rule_polygons(rule, inputs.scene)
+    if isinstance(polygons, Verdict):
+        return polygons
+    if comp is None or not comp.openings:
+        return Verdict(rule, "not assessed", "the comparison sampled no openings",
+                       not_assessed=rule.not_assessed)
+    before, after = window_measures_from(rule, comp)
+    verdict = evaluate(rule, after, before)
+    info = comp.light
+    verdict.numbers["engine"] = info.get("engine")
+    if rule.measure == "vsc":
+        verdict.numbers["sky"] = info.get("sky")
+    else:
+        verdict.numbers.update(weather=Path(inputs.weather.path).name,
+                               sunny_h=info.get("sunny_h"),
+                               winter_sunny_h=info.get("winter_sunny_h"))
+    return verdict
+
+
+def run_rule(rule, request: CompareRequest, inputs: CompareInputs, scene_after, camera,
+             comp=None):
     """The rule's own day, window and receivers, before and after → its
     :class:`cityshade.planning.rules.Verdict` (``camera``: the request's, whose map pixels an
-    area rule keeps)."""
+    area rule keeps; ``comp``: the request's comparison, whose openings' light columns a
+    ``vsc``/``apsh`` rule reads)."""
     from cityshade.planning.compare import OPENING_SAMPLES_PER_M2, Receivers, compare_states
     from cityshade.planning.rules import Verdict, evaluate, measures_from
 
+    if rule.is_light:
+        return _light_verdict(rule, inputs, comp)
     scene = inputs.scene
     plan, steps, suns = _rule_plan(rule, request, scene)
     polygons = _rule_polygons(rule, scene)
