@@ -17,6 +17,7 @@ SECTIONS: dict[str, tuple[str, ...]] = {
     "Sun and time": ("time_text", "tz", "sun_azimuth", "sun_elevation", "from_text",
                      "to_text", "every_text", "days", "to_date_text", "every_day", "times", "sun_text",
                      "no_refraction"),
+    "Weather and sky": ("weather_file",),
     "Place": ("crs", "axis_order"),
     "Camera and extent": ("camera", "eye", "target", "fov", "size", "pixel_size", "cameras_file",
                           "views", "ground", "no_sky"),
