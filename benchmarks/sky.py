@@ -70,7 +70,7 @@ def main(argv=None) -> dict:
     ap.add_argument("--weather", type=Path)
     ap.add_argument("--hours", type=int, default=8760)
     ap.add_argument("--skip-year", action="store_true")
-        ap.add_argument("--json", type=Path)
+    ap.add_argument("--json", type=Path)
     args = ap.parse_args(argv)
 
     import numba
