@@ -137,6 +137,8 @@ def test_bad_requests_say_one_line(small_file, tmp_path, extra, line):
     result = run("sky", small_file, "-o", tmp_path / "out", *extra)
     if line is None:
         assert result.exit_code == 0, result.output
+        assert "cityshade: warning: --weather without --irradiance: the weather file is not " \
+               "read" in result.output
         return
     assert result.exit_code == (1 if "MISSING" in line else 2)  # 2: a bad request
     assert result.output.splitlines() == [line]

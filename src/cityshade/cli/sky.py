@@ -80,6 +80,9 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
         raise UsageError("--no-map leaves nothing to compute without --surfaces")
     if not svf and not irradiance:
         raise UsageError("nothing to write: --no-svf without --irradiance")
+    if weather is not None and not irradiance:
+        click.echo("cityshade: warning: --weather without --irradiance: the weather file is "
+                   "not read", err=True)
     density = samples_per_m2 if samples_per_m2 is not None else settings.batch.samples_per_m2
     if surfaces:
         SampleSettings(samples_per_m2=density)
