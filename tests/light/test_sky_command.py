@@ -119,13 +119,13 @@ def test_maps_surfaces_and_irradiance_files(small_file, tmp_path):
 
 
 @pytest.mark.parametrize("extra,line", [
-    (["--irradiance"], "cityshade: error: --irradiance needs --weather FILE (an .epw, TMY3 "
-                       ".csv or TMY2 .tm2)"),
+    (["--irradiance"], ("cityshade: error: --irradiance needs --weather FILE (an .epw, TMY3 "
+                        ".csv or TMY2 .tm2)")),
     (["--no-svf"], "cityshade: error: nothing to write: --no-svf without --irradiance"),
-    (["--sky", "tregenza7"], "cityshade: error: unknown sky 'tregenza7': one of tregenza, "
-                             "reinhart577, reinhart2305 or uniform<degrees>"),
-    (["--shadows", "pcf"], "cityshade: error: sky view factors and irradiance need an exact "
-                           "technique (izb, raytrace), not 'pcf'"),
+    (["--sky", "tregenza7"], ("cityshade: error: unknown sky 'tregenza7': one of tregenza, "
+                              "reinhart577, reinhart2305 or uniform<degrees>")),
+    (["--shadows", "pcf"], ("cityshade: error: sky view factors and irradiance need an exact "
+                            "technique (izb, raytrace), not 'pcf'")),
     (["--weather", "MISSING.epw", "--irradiance"],
      "cityshade: error: MISSING.epw: no such weather file"),  # a bad input file: status 1
     (["--weather", "MISSING.epw"], None),  # no --irradiance: the weather is not read

@@ -107,7 +107,7 @@ class SkyResult:
 
     @property
     def n_pixels(self) -> int:
-        return int(len(self.pixels))
+        return len(self.pixels)
 
     def map_of(self, values: np.ndarray) -> np.ndarray:
         """(H, W) float32 of the per-pixel part of ``values`` (N,), NaN where no surface."""
