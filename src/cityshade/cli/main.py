@@ -19,6 +19,7 @@ COMMANDS = {
     "render": ("cityshade.cli.render:render", "Render a picture and shadow mask at a date and sun."),
     "batch": ("cityshade.cli.batch:batch", "Sun-hour maps and per-surface sun-hours over times."),
     "compare": ("cityshade.cli.compare:compare", "Sun-hours before and after a change; rules."),
+    "sky": ("cityshade.cli.sky:sky", "Sky view factor and irradiation (kWh/m²) from weather."),
     "evaluate": ("cityshade.cli.evaluate:evaluate", "Shadow error against run time; the stress set."),
 }
 

@@ -151,6 +151,12 @@ def sky_integral(visibility, luminance=uniform_luminance, *, k: int | None = Non
     >>> sky_integral(vis, cie_overcast_luminance)                     # doctest: +SKIP
     """
     weights, inverse = patch_weights(visibility.sky, visibility.normals, luminance, k=k)
+    return weighted_sum(visibility, weights, inverse)
+
+
+def weighted_sum(visibility, weights, inverse) -> np.ndarray:
+    """(N,) ``Σ_p bit_p weights[inverse[i], p]``: the visible part of per-plane patch weights
+    (:func:`patch_weights`), unpacking 8 Ki receivers at a time."""
     out = np.zeros(visibility.n_receivers)
     order = np.argsort(inverse, kind="stable")
     bounds = np.searchsorted(inverse[order], np.arange(len(weights) + 1))

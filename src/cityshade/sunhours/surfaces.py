@@ -225,9 +225,9 @@ CSV_COLUMNS = ("object_id", "polygon_id", "polygon_index", "surface_class", "are
                "samples", "mean_sun_hours")
 
 
-def surface_rows(scene, samples: SurfaceSamples, polygon_hours: np.ndarray):
-    """Rows of ``surfaces.csv`` (:data:`CSV_COLUMNS`) as tuples, numbers unformatted: one per
-    sampled polygon."""
+def polygon_rows(scene, samples: SurfaceSamples):
+    """The first six columns of :data:`CSV_COLUMNS` (object and polygon gml:id, polygon index,
+    surface class, area in m², samples) of every sampled polygon, numbers unformatted."""
     from cityshade.citygml.namespaces import SURFACE_CLASSES
 
     counts = np.bincount(samples.polygon, minlength=samples.sampled.shape[0])
@@ -235,7 +235,14 @@ def surface_rows(scene, samples: SurfaceSamples, polygon_hours: np.ndarray):
         cls = int(scene.poly_class[p])
         yield (scene.obj_ids[int(scene.poly_object[p])], scene.poly_ids[p], int(p),
                SURFACE_CLASSES[cls] if cls < len(SURFACE_CLASSES) else cls,
-               float(scene.poly_area_m2[p]), int(counts[p]), float(polygon_hours[p]))
+               float(scene.poly_area_m2[p]), int(counts[p]))
+
+
+def surface_rows(scene, samples: SurfaceSamples, polygon_hours: np.ndarray):
+    """Rows of ``surfaces.csv`` (:data:`CSV_COLUMNS`) as tuples, numbers unformatted: one per
+    sampled polygon."""
+    for row in polygon_rows(scene, samples):
+        yield (*row, float(polygon_hours[row[2]]))
 
 
 def write_surface_csv(path: str | os.PathLike, scene, samples: SurfaceSamples,

@@ -1,0 +1,124 @@
+"""``cityshade sky FILE``: sky view factor and, from a weather file, irradiation (kWh/m²) of
+every map pixel and every surface."""
+from __future__ import annotations
+
+from pathlib import Path
+
+import click
+
+from cityshade.cli.options import (camera_options, ground_option, make_camera, parse_size,
+                                   parse_triple, presentation_options, shadow_options)
+
+
+@click.command("sky")
+@click.argument("file", type=click.Path(path_type=Path))
+@click.option("--city-date", help="State of the city, YYYY-MM-DD (default: today).")
+@camera_options("map")
+@shadow_options("izb", technique_help="Exact technique tracing the sky and the suns: izb "
+                "(default) or raytrace (the same answer).", map_px=False)
+@ground_option
+@click.option("--sky", "sky_name", default="reinhart2305", show_default=True,
+              help="Sky directions: tregenza (145 patches), reinhart577, reinhart2305, or "
+              "uniform<degrees>.")
+@click.option("--svf/--no-svf", default=True, show_default=True,
+              help="Write the sky view factor (svf.exr/.tif/.png; a surfaces.csv column).")
+@click.option("--weather", type=click.Path(path_type=Path),
+              help="Hourly weather file: EnergyPlus .epw, TMY3 .csv or TMY2 .tm2.")
+@click.option("--irradiance", is_flag=True, help="Write the irradiation of every receiver "
+              "over the weather hours (irradiance_kwh_m2.exr/.tif/.png; surfaces.csv and "
+              "buildings.csv columns); needs --weather.")
+@click.option("--sky-model", type=click.Choice(["perez", "isotropic", "haydavies"]),
+              default="perez", show_default=True, help="pvlib's diffuse sky model.")
+@click.option("--albedo", type=click.FloatRange(0.0, 1.0), default=0.2, show_default=True,
+              help="Ground albedo of the ground-reflected part.")
+@click.option("--from-date", "from_date", help="First day of the weather summed, MM-DD or "
+              "YYYY-MM-DD (the year is ignored: typical years mix years); default the file's "
+              "first hour.")
+@click.option("--to-date", "to_date", help="Last day summed (included), MM-DD or YYYY-MM-DD; "
+              "before --from-date it wraps over the new year.")
+@click.option("--surfaces", is_flag=True, help="Also per surface: surfaces.csv (one row per "
+              "polygon, roofs and walls apart) and buildings.csv (totals per building).")
+@click.option("--samples-per-m2", type=float, help="Density of the surface sample points "
+              "(default 1, or [batch] samples_per_m2).")
+@click.option("--no-map", is_flag=True, help="Surfaces only: no map (with --surfaces).")
+@presentation_options
+@click.option("-o", "--output", "outdir", type=click.Path(file_okay=False, path_type=Path),
+              required=True, help="Output folder (created).")
+@click.option("-v", "--verbose", is_flag=True, help="Timings and counts.")
+def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_file, settings,
+        ground, sky_name, svf, weather, irradiance, sky_model, albedo, from_date, to_date,
+        surfaces, samples_per_m2, no_map, no_decorate, no_gis, outdir, verbose):
+    """Sky view factor of FILE (a .cityshade scene) per map pixel (svf.exr/.tif/.png) and,
+    with --surfaces, per polygon and building; with --weather FILE --irradiance, the kWh/m²
+    received over the file's hours (direct, diffuse from pvlib's sky model and
+    ground-reflected, each weighted by what the receiver sees of it).
+
+    \b
+    Examples:
+      cityshade sky city.cityshade -o out --pixel-size 1 --sky tregenza
+      cityshade sky city.cityshade -o out --surfaces --weather London.epw --irradiance
+    """
+    import dataclasses
+    import datetime as dt
+    import time
+
+    from cityshade.cli.batch import parse_day
+    from cityshade.cli.options import ProgressLines
+    from cityshade.errors import UsageError
+    from cityshade.geo.temporal import parse_user_date
+    from cityshade.light.irradiance import hours_between
+    from cityshade.light.run import SkyRequest, run_sky
+    from cityshade.light.weather import read_weather
+    from cityshade.store.scenefile import open_scene, scene_for_camera
+    from cityshade.sunhours.surfaces import SampleSettings
+    from cityshade.util import check_outputs
+
+    t_start = time.perf_counter()
+    if irradiance and weather is None:
+        raise UsageError("--irradiance needs --weather FILE (an .epw, TMY3 .csv or TMY2 .tm2)")
+    if no_map and not surfaces:
+        raise UsageError("--no-map leaves nothing to compute without --surfaces")
+    if not svf and not irradiance:
+        raise UsageError("nothing to write: --no-svf without --irradiance")
+    if weather is not None and not irradiance:
+        click.echo("cityshade: warning: --weather without --irradiance: the weather file is "
+                   "not read", err=True)
+    density = samples_per_m2 if samples_per_m2 is not None else settings.batch.samples_per_m2
+    if surfaces:
+        SampleSettings(samples_per_m2=density)
+    if (eye is None) != (target is None):
+        raise UsageError("give both --eye and --target, or neither")
+    parse_triple(eye, "--eye"), parse_triple(target, "--target"), parse_size(size)
+    city = parse_user_date(city_date or dt.date.today().isoformat())
+    if city_date:
+        parse_day(city_date, "--city-date")
+    request = SkyRequest(sky=sky_name, technique=settings.shadows.technique, model=sky_model,
+                         albedo=albedo, svf=svf, ground=ground, t_days=city.city_days,
+                         spa=settings.sun, samples_per_m2=density if surfaces else None,
+                         decorate=not no_decorate, gis=not no_gis,
+                         camera=None if no_map else "map")
+    request.check()  # the sky, model and technique, before the files are read
+    wx = read_weather(weather) if weather is not None and irradiance else None
+    hours = hours_between(wx, from_date, to_date) if wx is not None else None
+    check_outputs(("-o", outdir, None))
+    scene = open_scene(file)
+    cam = None if no_map else make_camera(scene, camera, eye, target, fov, size, pixel_size,
+                                          cameras_file)
+    scene = scene_for_camera(scene, None if surfaces else cam, request.technique)
+    request = dataclasses.replace(request, camera=cam, weather=wx, hours=hours, provenance={
+        "file": Path(file).name, "city_date": city_date, "sky": sky_name,
+        "weather": Path(weather).name if wx is not None else None, "from_date": from_date,
+        "to_date": to_date, "technique": request.technique})
+    lines = {"sky": ProgressLines("sky directions"), "hours": ProgressLines("weather hours")}
+    result, written = run_sky(outdir, scene, request,
+                              progress=lambda phase, d, t: lines[phase](d, t))
+    for warning in result.warnings:
+        click.echo(f"cityshade: warning: {warning}", err=True)
+    if verbose:
+        timings = {**result.timings_s, "command_s": time.perf_counter() - t_start}
+        click.echo("timings  " + "  ".join(f"{k[:-2]} {v:.2f} s" for k, v in timings.items()),
+                   err=True)
+        click.echo(f"receivers {len(result.svf):,} ({result.n_pixels:,} map pixels), "
+                   f"{result.sky.n} sky directions, about {result.bytes_per_receiver} bytes "
+                   f"per receiver", err=True)
+    click.echo(" ".join(str(p) for p in written))

@@ -1,0 +1,211 @@
+"""The typed request of a sky run (sky view factor, irradiance from a weather file) and the run
+itself: receivers once (the batch's camera pass and surface samples), the sky's visibility
+once, the hours of the weather file, then the outputs written together
+(:mod:`cityshade.light.outputs`). Built by ``cityshade sky`` or a Python caller."""
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+from collections.abc import Mapping
+from typing import Any
+
+import numpy as np
+
+from cityshade.errors import UsageError
+
+__all__ = ["SkyRequest", "SkyResult", "compute_sky", "run_sky", "sky_bytes_per_receiver"]
+
+
+@dataclass(frozen=True)
+class SkyRequest:
+    """One sky run.
+
+    Where
+        ``camera`` (the map or view, as batch's; None: surfaces only), ``samples_per_m2``
+        (per-surface values at this density; None: no surfaces), ``ground`` (batch's ground
+        plane option).
+    When
+        ``t_days`` (the city's state, days since 1970-01-01 UTC).
+    How
+        ``sky`` (:func:`cityshade.light.sky.named_sky`), ``technique`` (an exact one: its
+        engine traces the sky and the suns), ``spa`` (sun settings).
+    What
+        ``svf`` (the sky view factor's outputs), ``weather`` (a
+        :class:`~cityshade.light.weather.Weather`: irradiance), ``hours`` ((H,) bool of the
+        weather hours to sum; None: all, the file's year), ``model``, ``albedo``.
+    Outputs
+        ``provenance`` (JSON-able, in the files' metadata), ``decorate`` (map PNGs with scale
+        bar, north, CRS, title, colour bar), ``gis`` (``results.gpkg`` of the surfaces and
+        buildings).
+    """
+
+    camera: Any = None
+    samples_per_m2: float | None = None
+    ground: str | None = None
+    t_days: float = 0.0
+    sky: str = "reinhart2305"
+    technique: str = "izb"
+    spa: Any = None
+    svf: bool = True
+    weather: Any = None
+    hours: Any = None
+    model: str = "perez"
+    albedo: float = 0.2
+    provenance: Mapping[str, Any] | None = None
+    decorate: bool = True
+    gis: bool = True
+
+    @property
+    def engine(self) -> str:
+        from cityshade.sunhours.request import exact_engine
+
+        return exact_engine(self.technique, "sky view factors and irradiance")
+
+    def check(self, scene=None) -> None:
+        """Refuse a request with nothing to compute or an unknown sky, model or technique."""
+        from cityshade.light.irradiance import SKY_MODELS
+        from cityshade.light.sky import named_sky
+
+        if self.camera is None and self.samples_per_m2 is None:
+            raise UsageError("nothing to compute: give a camera, samples_per_m2, or both")
+        if not self.svf and self.weather is None:
+            raise UsageError("nothing to compute: ask for the sky view factor, irradiance "
+                             "(with a weather file), or both")
+        if self.model not in SKY_MODELS:
+            raise UsageError(f"the sky model is one of {', '.join(SKY_MODELS)}, not "
+                             f"{self.model!r}")
+        named_sky(self.sky)
+        self.engine  # noqa: B018 - an inexact technique fails here, before any work
+        if scene is not None:
+            from cityshade.sunhours.request import check_scene
+
+            check_scene(scene)
+
+
+@dataclass
+class SkyResult:
+    """Per-receiver answers of a sky run: map pixels first (``pixels`` into the camera's
+    frame), then surface samples.
+
+    ``svf`` (N,), ``irradiation`` (:class:`~cityshade.light.irradiance.Irradiation` or
+    None), ``shape`` (H, W) of the map or None, ``pixels`` (M,) flat indices, ``cp`` the camera
+    pass, ``samples`` the surface samples or None, ``sky`` the directions used,
+    ``bytes_per_receiver`` (the estimate), ``timings_s``, ``warnings``.
+    """
+
+    svf: np.ndarray
+    irradiation: Any
+    shape: tuple | None
+    pixels: np.ndarray
+    cp: Any
+    samples: Any
+    sky: Any
+    bytes_per_receiver: int
+    timings_s: dict[str, float] = field(default_factory=dict)
+    warnings: list[str] = field(default_factory=list)
+
+    @property
+    def n_pixels(self) -> int:
+        return len(self.pixels)
+
+    def map_of(self, values: np.ndarray) -> np.ndarray:
+        """(H, W) float32 of the per-pixel part of ``values`` (N,), NaN where no surface."""
+        out = np.full(int(np.prod(self.shape)), np.nan, np.float32)
+        out[self.pixels] = values[:self.n_pixels]
+        return out.reshape(self.shape)
+
+    def sample_values(self, values: np.ndarray) -> np.ndarray:
+        return values[self.n_pixels:]
+
+
+def sky_bytes_per_receiver(n_directions: int, irradiance: bool) -> int:
+    """Peak bytes per receiver of a sky run: point and normal (48), the packed bits
+    (ceil(P / 8)), the block of unpacked directions (64) and one direction's ray origins (24)
+    while tracing, the view factor and two shares (24), the plane index (8); with irradiance
+    the three float64 sums (24), the sun's bits and origins per hour (25)."""
+    return 48 + (n_directions + 7) // 8 + 64 + 24 + 24 + 8 + (49 if irradiance else 0)
+
+
+def _check_memory(request: SkyRequest, n_directions: int, n_samples_max: int) -> int:
+    """Refuse a run whose receivers would not fit, before any work: the camera's frame
+    (batch's estimate) and the receivers (:func:`sky_bytes_per_receiver`; every pixel of the
+    camera counted as a receiver)."""
+    from cityshade.frame.pipeline import available_memory_bytes, check_frame_memory
+
+    per = sky_bytes_per_receiver(n_directions, request.weather is not None)
+    n = n_samples_max
+    if request.camera is not None:
+        check_frame_memory(request.camera, technique=request.technique, batch=True)
+        n += request.camera.width_px * request.camera.height_px
+    have = available_memory_bytes()
+    if have is not None and n * per > have:
+        raise UsageError(f"{n:,} receivers need about {n * per / 1e9:.1f} GB ({per} bytes "
+                         f"each) but {have / 1e9:.1f} GB are available: use a larger "
+                         f"--pixel-size, fewer --samples-per-m2 or a coarser --sky")
+    return per
+
+
+def compute_sky(scene, request: SkyRequest, *, progress=None) -> SkyResult:
+    """Receivers, the sky's visibility, the view factors and shares, the irradiance.
+
+    ``progress(phase, done, total)`` with phase ``sky`` (directions) or ``hours``.
+    """
+    from cityshade.light.irradiance import irradiation, sky_shares
+    from cityshade.light.sky import sky_for_scene
+    from cityshade.light.visibility import map_receivers, sky_visibility
+    from cityshade.sunhours.accumulate import receivers_pass
+
+    request.check(scene)
+    timings: dict[str, float] = {}
+    sky = sky_for_scene(scene, request.sky)
+    per = _check_memory(request, sky.n, 0)
+    cp, samples = receivers_pass(scene, request.camera, request.t_days, request.ground,
+                                 request.samples_per_m2, timings, {})
+    points, normals, pixels = (np.zeros((0, 3)), np.zeros((0, 3)), np.zeros(0, np.int64))
+    shape = None
+    if cp is not None:
+        points, normals, pixels = map_receivers(cp)
+        shape = tuple(cp.valid.shape)
+    if samples is not None:
+        points = np.concatenate([points, samples.points_m])
+        normals = np.concatenate([normals, samples.normals])
+    t0 = time.perf_counter()
+    vis = sky_visibility(scene, points, normals, sky, request.t_days, engine=request.engine,
+                         progress=None if progress is None else
+                         (lambda d, t: progress("sky", d, t)))
+    svf, share, hshare = sky_shares(vis)
+    timings["sky_s"] = time.perf_counter() - t0
+    irr, warnings = None, []
+    if request.weather is not None:
+        from cityshade.light.sunlight import weather_suns
+        from cityshade.light.weather import scene_location_warning
+
+        t0 = time.perf_counter()
+        warning = scene_location_warning(request.weather, scene)
+        if warning:
+            warnings.append(warning)
+        directions, _ = weather_suns(request.weather, scene, request.spa)
+        irr = irradiation(scene, points, normals, request.weather, directions, (share, hshare),
+                          hours=request.hours, t_days=request.t_days, engine=request.engine,
+                          model=request.model, albedo=request.albedo,
+                          progress=None if progress is None else
+                          (lambda d, t: progress("hours", d, t)))
+        timings["irradiance_s"] = time.perf_counter() - t0
+    return SkyResult(svf=svf, irradiation=irr, shape=shape, pixels=pixels, cp=cp,
+                     samples=samples, sky=sky, bytes_per_receiver=per, timings_s=timings,
+                     warnings=warnings)
+
+
+def run_sky(outdir, scene, request: SkyRequest, *, progress=None) -> tuple[SkyResult,
+                                                                           list[Path]]:
+    """Compute (:func:`compute_sky`) and write the outputs into ``outdir`` together
+    (:func:`cityshade.light.outputs.write_sky_outputs`): all of them or, on an error or
+    Ctrl-C, none. Returns the result and the paths written."""
+    from cityshade.light.outputs import write_sky_outputs
+
+    result = compute_sky(scene, request, progress=progress)
+    t0 = time.perf_counter()
+    written = write_sky_outputs(Path(outdir), scene, request, result)
+    result.timings_s["write_s"] = time.perf_counter() - t0
+    return result, written

@@ -1,0 +1,150 @@
+"""Irradiance of receivers: pvlib's get_total_irradiance for an unobstructed plane (the test of
+the layering), only the ground-reflected and visible-sky parts under a roof, and the direct part
+zero exactly where the raytrace engine says shadow."""
+from __future__ import annotations
+
+import math
+import os
+
+import numpy as np
+import pytest
+
+from citygml_snippets import box_polygons, building, city
+
+#: Receiver normals of several tilts and azimuths, exact on the library's 1e-6 grouping grid
+#: (Pythagorean triples): horizontal, vertical south / east / north-west, tilted, overhanging.
+NORMALS = np.array([[0.0, 0.0, 1.0], [0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [-0.6, 0.8, 0.0],
+                    [0.0, -0.6, 0.8], [0.48, -0.64, 0.6], [-0.36, -0.48, 0.8],
+                    [0.0, 0.8, -0.6], [0.0, 0.28, 0.96], [0.28, 0.0, -0.96]])
+NORMALS = NORMALS / np.linalg.norm(NORMALS, axis=1, keepdims=True)
+
+#: In Greensboro (UTM 17N), where pvlib's TMY3 file was recorded.
+X0, Y0 = 608_000.0, 3_996_000.0
+
+
+@pytest.fixture(scope="module")
+def setting(tmp_path_factory):
+    """A 40 x 40 m roof 3 m above the ground (a canopy 0.5 m thick) in UTM 17N, pvlib's TMY3
+    file of Greensboro, and 8 days of its hours (in June and December)."""
+    import pvlib
+
+    from cityshade.build import build_scene_from_file
+    from cityshade.light import read_weather, weather_suns
+    from cityshade.light.irradiance import hours_between
+
+    tmp = tmp_path_factory.mktemp("irradiance")
+    path = tmp / "canopy.gml"
+    path.write_text(city(building("C", box_polygons(X0 - 20.0, Y0 - 20.0, 3.0, 40.0, 40.0, 0.5,
+                                                    "c"), srs="EPSG:32617")))
+    scene = build_scene_from_file(path)
+    weather = read_weather(os.path.join(os.path.dirname(pvlib.__file__), "data",
+                                        "723170TYA.CSV"))
+    hours = hours_between(weather, "06-10", "06-13") | hours_between(weather, "12-10", "12-13")
+    directions, _ = weather_suns(weather, scene)
+    # The hours with the sun up: below the horizon the earth blocks the sun, where pvlib
+    # counts its direct and circumsolar light on a plane facing it.
+    hours &= directions[:, 2] > 0.0
+    return scene, weather, hours, directions
+
+
+def _pvlib_sums(weather, hours, directions, normal, model, albedo):
+    """Σ over ``hours`` of pvlib's poa_direct, poa_sky_diffuse, poa_ground_diffuse and their
+    components for the plane of ``normal`` (NaN hours count 0), in kWh/m²."""
+    import pvlib
+
+    d = directions[hours]
+    zenith = np.degrees(np.arccos(np.clip(d[:, 2], -1, 1)))
+    azimuth = np.degrees(np.arctan2(d[:, 0], d[:, 1])) % 360.0
+    tilt = math.degrees(math.acos(normal[2]))
+    surface_az = math.degrees(math.atan2(normal[0], normal[1])) % 360.0 \
+        if math.hypot(normal[0], normal[1]) > 1e-9 else 0.0
+    r = pvlib.irradiance.get_total_irradiance(
+        tilt, surface_az, zenith, azimuth, weather.dni_w_m2[hours], weather.ghi_w_m2[hours],
+        weather.dhi_w_m2[hours],
+        dni_extra=pvlib.irradiance.get_extra_radiation(weather.sun_times[hours]),
+        airmass=pvlib.atmosphere.get_relative_airmass(zenith), albedo=albedo, model=model,
+        diffuse_components=True)
+    return {k: float(np.nansum(np.asarray(v, np.float64))) / 1000.0 for k, v in r.items()}
+
+
+@pytest.mark.parametrize("model", ["perez", "isotropic", "haydavies"])
+def test_an_unobstructed_plane_gets_pvlib_s_total_irradiance(setting, model):
+    from cityshade.light import named_sky, sky_visibility
+    from cityshade.light.irradiance import irradiation, sky_shares
+
+    scene, weather, hours, directions = setting
+    # 1 km from the canopy: nothing in any direction of the sky or towards any sun.
+    points = np.tile([X0 + 1000.0, Y0, 10.0], (len(NORMALS), 1)) - scene.origin_m
+    vis = sky_visibility(scene, points, NORMALS, named_sky("tregenza"))
+    _, share, hshare = sky_shares(vis)
+    np.testing.assert_array_equal(share, 1.0)
+    np.testing.assert_array_equal(hshare, 1.0)
+    got = irradiation(scene, points, NORMALS, weather, directions, (share, hshare), hours=hours,
+                      model=model, albedo=0.2)
+    for i, n in enumerate(NORMALS):
+        want = _pvlib_sums(weather, hours, directions, n, model, 0.2)
+        assert got.direct_kwh_m2[i] == pytest.approx(want["poa_direct"], rel=1e-9, abs=1e-12)
+        assert got.diffuse_kwh_m2[i] == pytest.approx(want["poa_sky_diffuse"], rel=1e-9,
+                                                      abs=1e-12)
+        assert got.reflected_kwh_m2[i] == pytest.approx(want["poa_ground_diffuse"], rel=1e-9,
+                                                        abs=1e-12)
+        assert got.total_kwh_m2[i] == pytest.approx(want["poa_global"], rel=1e-9)
+    assert got.total_kwh_m2[0] > 8.0  # 8 days of June and December: a real sum
+
+
+def test_under_a_roof_only_the_ground_and_the_visible_sky(setting):
+    """Under the canopy's centre, a south wall and the ground: the ground-reflected part is
+    pvlib's, the diffuse part is the isotropic sky times the visible share of the sky, and the
+    direct part counts exactly the hours whose sun ray the raytrace engine finds free."""
+    from cityshade.light import named_sky, sky_view_factor, sky_visibility
+    from cityshade.light.irradiance import irradiation, sky_shares
+    from cityshade.shadows.visibility import occluded
+    from cityshade.trace import shadow_rays_from_surface
+
+    scene, weather, hours, directions = setting
+    normals = np.array([[0.0, -1.0, 0.0], [0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
+    points = np.array([[X0, Y0, 1.0], [X0, Y0, 0.0], [X0, Y0 - 19.0, 2.5]]) - scene.origin_m
+    vis = sky_visibility(scene, points, normals, named_sky("tregenza"))
+    svf, share, hshare = sky_shares(vis)
+    np.testing.assert_allclose(svf, sky_view_factor(vis), rtol=1e-12)
+    assert (share < 0.5).all()
+    got = irradiation(scene, points, normals, weather, directions, (share, hshare), hours=hours,
+                      engine="izb", model="isotropic", albedo=0.3)
+    # The reference's sun bits: the raytrace engine, one ray per receiver and hour.
+    direct = np.zeros(len(normals))
+    for h in np.flatnonzero(hours & (weather.dni_w_m2 > 0.0)):
+        d = directions[h]
+        rows = np.flatnonzero(normals @ d > 0.0)
+        if len(rows):
+            origins = shadow_rays_from_surface(points[rows], normals[rows], d)
+            free = ~occluded(scene, origins, d, 0.0, engine="raytrace")
+            direct[rows[free]] += weather.dni_w_m2[h] * (normals[rows[free]] @ d)
+    for i, n in enumerate(normals):
+        free = _pvlib_sums(weather, hours, directions, n, "isotropic", 0.3)
+        assert got.reflected_kwh_m2[i] == pytest.approx(free["poa_ground_diffuse"], rel=1e-9,
+                                                        abs=1e-12)
+        # The unobstructed plane's view factor: 1 horizontal, 1/2 vertical.
+        assert got.diffuse_kwh_m2[i] == pytest.approx(
+            free["poa_isotropic"] * svf[i] / ((1.0 + n[2]) / 2.0), rel=2e-3)
+        assert got.diffuse_kwh_m2[i] < free["poa_sky_diffuse"]
+        assert got.direct_kwh_m2[i] == pytest.approx(direct[i] / 1000.0, rel=1e-9, abs=1e-12)
+        assert got.direct_kwh_m2[i] < free["poa_direct"]
+    # The wall near the edge sees the low southern sun of December more than the centre's.
+    assert got.direct_kwh_m2[2] > got.direct_kwh_m2[0] >= 0.0
+
+
+def test_bad_model_albedo_and_dates(setting):
+    from cityshade.errors import UsageError
+    from cityshade.light.irradiance import hours_between, irradiation
+
+    scene, weather, _, directions = setting
+    one = np.zeros((1, 3)), np.array([[0.0, 0.0, 1.0]]), np.ones(1), np.ones(1)
+    with pytest.raises(UsageError, match="the sky model is one of perez, isotropic, haydavies"):
+        irradiation(scene, one[0], one[1], weather, directions, one[2:], model="klucher")
+    with pytest.raises(UsageError, match="the albedo must be from 0 to 1, not 1.5"):
+        irradiation(scene, one[0], one[1], weather, directions, one[2:], albedo=1.5)
+    with pytest.raises(UsageError, match="--from-date must be a day MM-DD or YYYY-MM-DD"):
+        hours_between(weather, "13-01", None)
+    # Wrapping over the new year: December and January.
+    wrap = hours_between(weather, "12-01", "01-31")
+    assert wrap.sum() == 62 * 24
