@@ -15,9 +15,10 @@ SECTIONS: dict[str, tuple[str, ...]] = {
     "City state": ("date_text", "city_date", "before_text", "after_text", "proposal",
                    "lod", "theme", "time_source", "time_attribute", "closure_surfaces"),
     "Sun and time": ("time_text", "tz", "sun_azimuth", "sun_elevation", "from_text",
-                     "to_text", "every_text", "days", "to_date_text", "every_day", "times", "sun_text",
+                     "to_text", "every_text", "days", "to_date_text", "from_date", "to_date", "every_day", "times", "sun_text",
                      "no_refraction"),
-    "Weather and sky": ("weather_file",),
+    "Weather and sky": ("weather_file", "weather", "svf", "irradiance", "sky_name", "sky_model",
+                        "albedo"),
     "Place": ("crs", "axis_order"),
     "Camera and extent": ("camera", "eye", "target", "fov", "size", "pixel_size", "cameras_file",
                           "views", "ground", "no_sky"),
@@ -26,7 +27,7 @@ SECTIONS: dict[str, tuple[str, ...]] = {
     "Receivers and rules": ("surfaces", "no_surfaces", "samples_per_m2", "min_stretch_text",
                             "rule_files", "area_text"),
     "Outputs": ("output", "outdir", "png", "mask", "geotiff", "decorate", "no_decorate", "no_gis",
-                "frames", "monthly", "as_json", "overwrite", "tile_m"),
+                "frames", "monthly", "as_json", "overwrite", "tile_m", "no_map"),
     "Execution": ("tile_px", "scheduler", "strip_rows", "repeat", "stress", "quick", "verify",
                   "config_path", "verbose", "quiet"),
 }
@@ -59,6 +60,11 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
         "--tz Europe/London --rules bre209 -o planning",
         "cityshade compare city.cityshade --before 1850 --after 1990 --date 2025-03-21 "
         "--tz Europe/Berlin -o since1850",
+    ),
+    "sky": (
+        "cityshade sky city.cityshade --pixel-size 1 -o svf          # sky view factor map",
+        "cityshade sky city.cityshade --surfaces --no-map -o svf      # per roof, wall, building",
+        "cityshade sky city.cityshade --surfaces --weather london.epw --irradiance -o solar",
     ),
     "evaluate": (
         "cityshade evaluate city.cityshade --views overview,map --sun \"135,45;240,15\" "

@@ -6,11 +6,13 @@ from pathlib import Path
 
 import click
 
+from cityshade.cli.helpfmt import GroupedCommand
+
 from cityshade.cli.options import (camera_options, ground_option, make_camera, parse_size,
                                    parse_triple, presentation_options, shadow_options)
 
 
-@click.command("sky")
+@click.command("sky", cls=GroupedCommand)
 @click.argument("file", type=click.Path(path_type=Path))
 @click.option("--city-date", help="State of the city, YYYY-MM-DD (default: today).")
 @camera_options("map")
@@ -52,11 +54,6 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
     with --surfaces, per polygon and building; with --weather FILE --irradiance, the kWh/m²
     received over the file's hours (direct, diffuse from pvlib's sky model and
     ground-reflected, each weighted by what the receiver sees of it).
-
-    \b
-    Examples:
-      cityshade sky city.cityshade -o out --pixel-size 1 --sky tregenza
-      cityshade sky city.cityshade -o out --surfaces --weather London.epw --irradiance
     """
     import dataclasses
     import datetime as dt
