@@ -50,6 +50,7 @@ TIERS: list[set[str]] = [
     {"present"},
     {"frame"},
     {"build"},
+    {"meshes"},
     {"sunhours"},
     {"light"},
     {"planning"},

@@ -77,61 +77,21 @@ def merge_scenes(existing, proposal, settings=None):
     UsageError
         The two scenes are in different (or unknown) CRSs.
     """
-    import dataclasses
-
     from cityshade.build import build_tree
     from cityshade.config import Settings
+    from cityshade.geometry.scene import append_scene
 
     ea, pa = existing.crs.horizontal_epsg, proposal.crs.horizontal_epsg
     if ea != pa or (ea is None and existing.crs.name != proposal.crs.name):
         raise UsageError(f"the proposal's CRS ({proposal.crs.name}) is not the model's "
                          f"({existing.crs.name}); give both in the same CRS")
-    shift = np.asarray(proposal.origin_m, np.float64) - np.asarray(existing.origin_m, np.float64)
-    nv, no, npoly = len(existing.vertices), len(existing.obj_ids), len(existing.poly_ids)
-    nmat, ntex = len(existing.materials), len(existing.textures)
-
-    def offset(a, n):
-        a = np.asarray(a)
-        return np.where(a >= 0, a + n, a).astype(a.dtype)
-
-    cat = np.concatenate
-    scene = dataclasses.replace(
-        existing,
-        vertices=cat([np.asarray(existing.vertices),
-                      (np.asarray(proposal.vertices, np.float64) + shift).astype(
-                          np.asarray(existing.vertices).dtype)]),
-        uv=cat([np.asarray(existing.uv), np.asarray(proposal.uv)]),
-        triangles=cat([np.asarray(existing.triangles),
-                       np.asarray(proposal.triangles) + nv]).astype(np.int32),
-        tri_object=cat([existing.tri_object, np.asarray(proposal.tri_object) + no]).astype(np.int32),
-        tri_polygon=cat([existing.tri_polygon,
-                         np.asarray(proposal.tri_polygon) + npoly]).astype(np.int32),
-        tri_class=cat([existing.tri_class, proposal.tri_class]),
-        tri_material=cat([existing.tri_material, offset(proposal.tri_material, nmat)]),
-        tri_texture=cat([existing.tri_texture, offset(proposal.tri_texture, ntex)]),
-        tri_t_begin_days=cat([existing.tri_t_begin_days, proposal.tri_t_begin_days]),
-        tri_t_end_days=cat([existing.tri_t_end_days, proposal.tri_t_end_days]),
-        obj_ids=list(existing.obj_ids) + list(proposal.obj_ids),
-        obj_types=list(existing.obj_types) + list(proposal.obj_types),
-        obj_parent=cat([existing.obj_parent, offset(proposal.obj_parent, no)]).astype(np.int32),
-        obj_t_begin_days=cat([existing.obj_t_begin_days, proposal.obj_t_begin_days]),
-        obj_t_end_days=cat([existing.obj_t_end_days, proposal.obj_t_end_days]),
-        obj_time_source=cat([existing.obj_time_source, proposal.obj_time_source]),
-        obj_lod=cat([existing.obj_lod, proposal.obj_lod]),
-        poly_ids=list(existing.poly_ids) + list(proposal.poly_ids),
-        poly_object=cat([existing.poly_object, np.asarray(proposal.poly_object) + no]).astype(np.int32),
-        poly_class=cat([existing.poly_class, proposal.poly_class]),
-        poly_area_m2=cat([existing.poly_area_m2, proposal.poly_area_m2]),
-        poly_normal=cat([existing.poly_normal, proposal.poly_normal]),
-        poly_repairs=cat([existing.poly_repairs, proposal.poly_repairs]),
-        materials=list(existing.materials) + list(proposal.materials),
-        textures=list(existing.textures) + list(proposal.textures),
-        report={**(existing.report or {}),
-                "openings": list((existing.report or {}).get("openings", [])) + [
-                    [oid, [int(p) + npoly for p in polys]]
-                    for oid, polys in (proposal.report or {}).get("openings", [])],
-                "proposal_objects": [no, no + len(proposal.obj_ids)]},
-        kdtree=None, header=dict(existing.header or {}))
+    no, npoly = len(existing.obj_ids), len(existing.poly_ids)
+    scene = append_scene(existing, proposal)
+    scene.report = {**(existing.report or {}),
+                    "openings": list((existing.report or {}).get("openings", [])) + [
+                        [oid, [int(p) + npoly for p in polys]]
+                        for oid, polys in (proposal.report or {}).get("openings", [])],
+                    "proposal_objects": [no, no + len(proposal.obj_ids)]}
     scene.kdtree = build_tree(scene, settings or Settings(), None, {})
     return scene
 
