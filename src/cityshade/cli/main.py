@@ -20,6 +20,7 @@ COMMANDS = {
     "batch": ("cityshade.cli.batch:batch", "Sun-hour maps and per-surface sun-hours over times."),
     "compare": ("cityshade.cli.compare:compare", "Sun-hours before and after a change; rules."),
     "evaluate": ("cityshade.cli.evaluate:evaluate", "Shadow error against run time; the stress set."),
+    "export": ("cityshade.cli.export:export", "A scene coloured by a surfaces.csv column as .glb/.ply."),
 }
 
 
