@@ -7,6 +7,7 @@ import csv
 
 import numpy as np
 import pytest
+import trimesh
 from citygml_snippets import box_polygons, building, city, ground
 from click.testing import CliRunner
 from conftest import REPO
@@ -139,3 +140,61 @@ def test_topologic_massing_stands_up_turned_outward(model):
     cls = np.asarray(prop.tri_class)
     assert (cls[top] == SURFACE_CODE["roof"]).all() and (cls[bottom] == SURFACE_CODE["ground"]).all()
     assert len(tri) == 204  # every face kept, the internal slabs too
+
+
+def test_glb_is_y_up_by_default_and_equals_the_obj(model, tmp_path):
+    """The same Y-up block as binary glTF (written by trimesh): no --up-axis needed, and the
+    placed triangles are the OBJ's with --up-axis y."""
+    from cityshade.store.scenefile import load_scene
+
+    city_model, _, obj = model
+    scene = load_scene(city_model)
+    mesh = trimesh.load(str(obj), force="mesh", process=False)
+    glb = tmp_path / "block.glb"
+    glb.write_bytes(trimesh.exchange.gltf.export_glb(trimesh.Scene(mesh)))
+    place = MeshPlacement.parse_place(f"{BX + W / 2},{BY + D / 2},2.5")
+    a = proposal_scene(glb, scene, MeshPlacement(place=place))
+    b = proposal_scene(obj, scene, MeshPlacement(up_axis="y", place=place))
+    assert a.report["mesh"]["up_axis"] == "y" and b.report["mesh"]["up_axis"] == "y"
+    va = np.asarray(a.vertices)[np.asarray(a.triangles)]
+    vb = np.asarray(b.vertices)[np.asarray(b.triangles)]
+    np.testing.assert_allclose(np.sort(va.reshape(-1, 9), axis=0), np.sort(vb.reshape(-1, 9), axis=0),
+                               atol=1e-5)
+    world = np.asarray(a.vertices, np.float64) + a.origin_m
+    np.testing.assert_allclose(world.min(axis=0), [BX, BY, 2.5], atol=1e-4)
+    np.testing.assert_allclose(world.max(axis=0), [BX + W, BY + D, 2.5 + H], atol=1e-4)
+
+
+def test_place_stands_on_the_terrain_under_it(tmp_path):
+    """Z of --place defaults to the terrain (a TIN sloping 10 % east) under X, Y."""
+    from cityshade.build import build_scene_from_file
+
+    dem = 'xmlns:dem="http://www.opengis.net/citygml/relief/2.0"'
+    pts = [(X0 - 50, Y0 - 50), (X0 + 50, Y0 - 50), (X0 + 50, Y0 + 50), (X0 - 50, Y0 + 50)]
+    z = {p: 0.1 * (p[0] - X0) + 40.0 for p in pts}
+
+    def tri(a, b, c):
+        ring = " ".join(f"{x} {y} {z[(x, y)]}" for x, y in (a, b, c, a))
+        return (f"<gml:Triangle><gml:exterior><gml:LinearRing><gml:posList srsDimension=\"3\">"
+                f"{ring}</gml:posList></gml:LinearRing></gml:exterior></gml:Triangle>")
+
+    relief = (f'<dem:ReliefFeature gml:id="R"><dem:lod>2</dem:lod><dem:reliefComponent>'
+              f'<dem:TINRelief gml:id="T"><dem:lod>2</dem:lod><dem:tin><gml:TriangulatedSurface '
+              f'srsName="EPSG:25832"><gml:trianglePatches>{tri(pts[0], pts[1], pts[2])}'
+              f'{tri(pts[0], pts[2], pts[3])}</gml:trianglePatches></gml:TriangulatedSurface>'
+              f'</dem:tin></dem:TINRelief></dem:reliefComponent></dem:ReliefFeature>')
+    from citygml_snippets import CG2
+
+    gml = tmp_path / "terrain.gml"
+    gml.write_text(city(building("HOUSE", box_polygons(X0, Y0, 40.0, 10.0, 8.0, 6.0, "h")),
+                        relief, ns=f"{CG2} {dem}"))
+    scene = build_scene_from_file(gml)
+    assert (np.asarray(scene.tri_class) == SURFACE_CODE["terrain"]).sum() == 2
+    obj = tmp_path / "b.obj"
+    _obj_box(obj)
+    prop = proposal_scene(obj, scene, MeshPlacement(
+        up_axis="y", place=MeshPlacement.parse_place(f"{X0 + 20},{Y0 - 20}")))
+    assert prop.report["mesh"]["ground"] == "terrain"
+    assert prop.report["mesh"]["ground_z_m"] == pytest.approx(42.0, abs=1e-4)
+    world = np.asarray(prop.vertices, np.float64) + prop.origin_m
+    assert world[:, 2].min() == pytest.approx(42.0, abs=1e-4)
