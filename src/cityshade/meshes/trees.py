@@ -307,6 +307,11 @@ def add_trees(scene, path: str | Path, settings: TreeSettings | None = None,
             float(register.begin_days[i]), float(register.end_days[i])))
     trees = scene_from_objects(objects, scene.crs, origin_m=scene.origin_m)
     out = append_scene(scene, trees)
+    # The trees' surfaces were read (from the register) and are drawn: the counts stay whole.
+    polygons = dict(out.report.get("polygons", {}))
+    for key in ("read", "drawn"):
+        polygons[key] = polygons.get(key, 0) + len(trees.poly_ids)
+    out.report["polygons"] = polygons
     out.report["trees"] = {"file": str(Path(path).resolve()), "trees": len(objects),
                            "skipped": register.skipped, "crs": crs.name,
                            "ground": ground_from, "triangles": trees.n_triangles}
