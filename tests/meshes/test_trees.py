@@ -171,6 +171,8 @@ def test_berlin_register_builds_with_its_buildings():
     scene = build_scene_from_file(gml, tree=False,
                                   extend=functools.partial(add_trees, path=register))
     assert scene.report["trees"]["trees"] == len(feats) == 288
+    assert scene.report["objects_by_type"]["SolitaryVegetationObject"] == 288
+    assert scene.report["polygons"]["drawn"] == 648 + 2 * 288  # buildings + crowns and trunks
     from cityshade.geometry.ground import ground_height_m
 
     n_build = len(scene.obj_ids) - 288

@@ -312,6 +312,9 @@ def add_trees(scene, path: str | Path, settings: TreeSettings | None = None,
     for key in ("read", "drawn"):
         polygons[key] = polygons.get(key, 0) + len(trees.poly_ids)
     out.report["polygons"] = polygons
+    by_type = dict(out.report.get("objects_by_type", {}))
+    by_type[TREE_TYPE] = by_type.get(TREE_TYPE, 0) + len(objects)
+    out.report["objects_by_type"] = by_type
     out.report["trees"] = {"file": str(Path(path).resolve()), "trees": len(objects),
                            "skipped": register.skipped, "crs": crs.name,
                            "ground": ground_from, "triangles": trees.n_triangles}
