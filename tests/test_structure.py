@@ -52,6 +52,7 @@ TIERS: list[set[str]] = [
     {"build"},
     {"sunhours"},
     {"light"},
+    {"meshes"},
     {"planning"},
     {"evaluate", "samplegen"},
     {"cli"},

@@ -372,6 +372,72 @@ SHADOW_OPTIONS: dict[str, tuple[str, str]] = {
 }
 
 
+# --- trees from a register -----------------------------------------------------------------------
+
+#: Length units of a register's or a mesh's numbers, in metres (``[trees] units``,
+#: ``compare --mesh-units``).
+LENGTH_UNITS_M = {"m": 1.0, "cm": 0.01, "mm": 0.001, "ft": 0.3048, "in": 0.0254}
+#: Where a register tree stands: "model" = the model's terrain under it, else the ground plane
+#: (``render --ground auto``'s height); "register" = the register's own ground height column.
+TREE_GROUNDS = ("model", "register")
+
+
+@dataclass(frozen=True)
+class TreeSettings:
+    """``[trees]``: a tree register read by ``build --trees`` (GeoJSON points or CSV rows).
+
+    Column names are the register's property (GeoJSON) or header (CSV) names; the defaults are
+    those of the Berlin-Lichtenberg register (``tree_positions_parameterized.geojson``). An
+    empty name means the register has no such column.
+    """
+
+    #: Easting and northing columns (CSV; a GeoJSON Point's own coordinates win).
+    x: str = "X"
+    y: str = "Y"
+    #: Ground height column (used with ``ground = "register"``).
+    z: str = "Z"
+    #: Whole tree height, crown diameter and trunk height (ground to the crown's base).
+    height: str = "h_tree"
+    crown_diameter: str = "d_crown"
+    trunk_height: str = "h_trunk"
+    #: Trunk diameter column ("" : every trunk is ``trunk_diameter_m``).
+    trunk_diameter: str = ""
+    #: The tree's id ("" or an empty value: ``tree_<row>``).
+    id: str = "treeID_tile"
+    #: Planting and felling dates or years ("" : none): the tree's validity interval.
+    planted: str = ""
+    felled: str = ""
+    #: Unit of the height, diameter and ground-height columns (m, cm, mm, ft, in).
+    units: str = "m"
+    #: Trunk diameter when the register has none (metres).
+    trunk_diameter_m: float = 0.3
+    #: Crown ellipsoid: an icosphere of this many subdivisions (2: 320 triangles) scaled to the
+    #: crown's diameter and height; trunk: a cylinder of this many sides.
+    crown_subdivisions: int = 2
+    trunk_sections: int = 8
+    #: Where a tree stands (TREE_GROUNDS).
+    ground: str = "model"
+
+    def __post_init__(self) -> None:
+        if self.units not in LENGTH_UNITS_M:
+            raise ConfigError(f"units must be one of {', '.join(LENGTH_UNITS_M)}, "
+                              f"not {self.units!r}")
+        if self.ground not in TREE_GROUNDS:
+            raise ConfigError(f"ground must be one of {', '.join(TREE_GROUNDS)}, "
+                              f"not {self.ground!r}")
+        if not (_is_number(self.trunk_diameter_m) and 0.0 < self.trunk_diameter_m <= 10.0):
+            raise ConfigError(f"trunk_diameter_m must be in (0, 10], not {self.trunk_diameter_m}")
+        if not (_is_int(self.crown_subdivisions) and 1 <= self.crown_subdivisions <= 5):
+            raise ConfigError(f"crown_subdivisions must be an integer in [1, 5], "
+                              f"not {self.crown_subdivisions!r}")
+        if not (_is_int(self.trunk_sections) and 3 <= self.trunk_sections <= 64):
+            raise ConfigError(f"trunk_sections must be an integer in [3, 64], "
+                              f"not {self.trunk_sections!r}")
+        for name in ("x", "y", "height", "crown_diameter"):
+            if not getattr(self, name):
+                raise ConfigError(f"{name} must name a column")
+
+
 # --- batch, evaluate, stress --------------------------------------------------------------------
 
 @dataclass(frozen=True)
@@ -478,6 +544,8 @@ class Settings:
     batch: BatchSettings = field(default_factory=BatchSettings)
     evaluate: EvaluateSettings = field(default_factory=EvaluateSettings)
     stress: StressSettings = field(default_factory=StressSettings)
+    #: ``[trees]``: a tree register (``build --trees``).
+    trees: TreeSettings = field(default_factory=TreeSettings)
 
 
 _TOML_TYPES = {"int": int, "float": float, "str": str, "bool": bool}

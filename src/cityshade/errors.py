@@ -142,3 +142,11 @@ class DistributedError(CityshadeError):
 class WeatherFileError(InputError):
     """A weather file (EPW, TMY2, TMY3) that cannot be used: missing, of an unknown kind, or
     with garbled or missing columns (carries the path, and the line where it is known)."""
+
+
+class TreeRegisterError(InputError):
+    """A tree register (``build --trees``) that cannot be read: format, columns, values, CRS."""
+
+
+class MeshFileError(InputError):
+    """A mesh file (a proposal's OBJ, glTF, PLY or STL) that cannot be read or placed."""

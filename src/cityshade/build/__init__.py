@@ -94,7 +94,8 @@ def read_model(source: str | os.PathLike, progress: Callable[[int, int], None] |
 def build_scene_from_file(source: str | os.PathLike, settings: Settings | None = None,
                           progress: Callable[[str, int, int], None] | None = None,
                           tree: bool = True, pack_ids: bool = False,
-                          after_read: Callable[[], None] | None = None) -> Scene:
+                          after_read: Callable[[], None] | None = None,
+                          extend: Callable[[Scene], Scene] | None = None) -> Scene:
     """Read, triangulate and (when the scene needs one) build the kd-tree of a city model file
     (CityGML, CityJSON or CityJSONSeq).
 
@@ -106,6 +107,9 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
         only writes them: less memory from the kd-tree on, but each id is decoded when read.
     after_read : callable, optional
         Called once the file is read, before the scene is assembled.
+    extend : callable(Scene) -> Scene, optional
+        Adds objects to the triangulated scene before its kd-tree (``build --trees``:
+        :func:`cityshade.meshes.trees.add_trees`).
     progress : callable(stage, done, total), optional
         Called while reading (bytes) and at the start of later stages.
     """
@@ -129,6 +133,8 @@ def build_scene_from_file(source: str | os.PathLike, settings: Settings | None =
         progress("triangulate", 0, 1)
     t1 = time.perf_counter()
     scene = build_scene(raw, settings.build, consume_raw=True)
+    if extend is not None:
+        scene = extend(scene)
     # The polygon ids as one blob, as a loaded scene has them: with the read model's strings
     # gone, their heap is empty and handed back (millions of small strings would otherwise
     # pin the read's freed dicts and lists through the kd-tree and the write).
@@ -186,7 +192,8 @@ def expand_sources(sources: Iterable[str | os.PathLike]) -> list[Path]:
 
 def build_scene_from_files(sources: list[Path], settings: Settings | None = None,
                            progress: Callable[[str, int, int], None] | None = None,
-                           tree: bool = True) -> Scene:
+                           tree: bool = True,
+                           extend: Callable[[Scene], Scene] | None = None) -> Scene:
     """One scene from several city model files (tiles): one origin and CRS, the objects of
     every file, an object whose gml:id an earlier file had kept once (counted in
     ``report["tiles"]``). Files are read one at a time, so memory holds one file's read model
@@ -213,6 +220,8 @@ def build_scene_from_files(sources: list[Path], settings: Settings | None = None
         progress("merge", 0, 1)
     t = time.perf_counter()
     scene = merger.finish()
+    if extend is not None:  # as build_scene_from_file's
+        scene = extend(scene)
     release_freed_memory()
     timings["merge_s"] = time.perf_counter() - t
     if tree:
@@ -291,7 +300,8 @@ def _source_record(path: Path, stop: threading.Event | None = None) -> dict:
 def build_file(source: str | os.PathLike | list, output: str | os.PathLike | None = None,
                settings: Settings | None = None,
                progress: Callable[[str, int, int], None] | None = None,
-               tile_m: float | None = None) -> tuple[Path, Scene, int]:
+               tile_m: float | None = None,
+               extend: Callable[[Scene], Scene] | None = None) -> tuple[Path, Scene, int]:
     """Build the ``.cityshade`` file of a CityGML/CityJSON file, or of several files and
     folders (a list: :func:`build_scene_from_files`); returns (output path, scene, bytes),
     the scene that of the written file (memory-mapped, as :func:`~cityshade.store.scenefile.load_scene`
@@ -299,7 +309,8 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
     With ``tile_m`` the output is a tiled cache folder (:mod:`cityshade.store.tiled`): tiles of
     ``tile_m`` × ``tile_m`` CRS metres, each with its own kd-tree (the scene has none; for
     several files the city is never assembled and a :class:`~cityshade.build.tiled.TiledBuild`
-    summary stands for the scene)."""
+    summary stands for the scene). ``extend`` adds objects before the kd-tree (as
+    :func:`build_scene_from_file`'s; not with ``tile_m``)."""
     from cityshade.store.scenefile import load_scene, save_scene
     from cityshade.build.tiled import save_tiled
 
@@ -315,6 +326,11 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
         return scene, save_tiled(scene, output, tile_m, settings, source_info, options, progress)
 
     settings = settings or Settings()
+    if extend is not None and tile_m is not None:
+        from cityshade.errors import UsageError
+
+        raise UsageError("--trees cannot go with --tile-m (a tiled cache): build the trees "
+                         "into one file")
     if isinstance(source, (list, tuple)):
         sources = expand_sources(source)
         if len(sources) == 1 and not Path(source[0]).is_dir():
@@ -338,7 +354,7 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
             summary, size = build_tiled_from_files(sources, output, tile_m, settings,
                                                    source_info, asdict(settings.build), progress)
             return output, summary, size
-        scene = build_scene_from_files(sources, settings, progress)
+        scene = build_scene_from_files(sources, settings, progress, extend=extend)
         if progress:
             progress("write", 0, 1)
         scene, size = save(scene, output, source_info, asdict(settings.build))
@@ -348,7 +364,8 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
     record = _SourceRecord(source)
     try:
         scene = build_scene_from_file(source, settings, progress, tree=tile_m is None,
-                                      pack_ids=tile_m is None, after_read=record.start)
+                                      pack_ids=tile_m is None, after_read=record.start,
+                                      extend=extend)
         source_info = record.result()
     finally:
         record.cancel()

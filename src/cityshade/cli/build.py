@@ -6,8 +6,13 @@ from pathlib import Path
 import click
 
 from cityshade.cli.helpfmt import GroupedCommand
-
-from cityshade.cli.options import AXIS_ORDER_HELP, CRS_HELP, TIME_ATTRIBUTE_HELP
+from cityshade.cli.options import (
+    AXIS_ORDER_HELP,
+    CRS_HELP,
+    TIME_ATTRIBUTE_HELP,
+    TREES_CRS_HELP,
+    TREES_HELP,
+)
 from cityshade.config import AXIS_ORDERS, CLOSURE_SURFACES, TIME_SOURCES
 
 
@@ -51,13 +56,16 @@ def _lod_option(ctx, param, value: str | None) -> int | float | None:
               help="ClosureSurfaces are virtual (they close a solid between building parts or "
                    "across a passage): omit (the default, [build] closure_surfaces) leaves them "
                    "out, so they neither cast nor receive; keep draws them like walls.")
+@click.option("--trees", type=click.Path(dir_okay=False, path_type=Path), metavar="REGISTER",
+              help=TREES_HELP)
+@click.option("--trees-crs", metavar="CRS", help=TREES_CRS_HELP)
 @click.option("--config", "config_path", type=click.Path(dir_okay=False, path_type=Path),
-              help="TOML settings file ([build], [kdtree] tables).")
+              help="TOML settings file ([build], [kdtree], [trees] tables).")
 @click.option("-q", "--quiet", is_flag=True, help="No progress display and no summary.")
 def build(city: tuple[Path, ...], output: Path | None, lod: int | float | None, theme: str | None,
           crs: str | None, axis_order: str | None, time_source: str, time_attribute: str | None,
           config_path: Path | None, quiet: bool, tile_m: float | None,
-          closure_surfaces: str | None) -> None:
+          closure_surfaces: str | None, trees: Path | None, trees_crs: str | None) -> None:
     """Read CITY (CityGML 1.0/2.0/3.0, CityJSON 1.0/1.1/2.0 or CityJSONSeq, told apart by
     the content), triangulate it, build its kd-tree, and write one versioned,
     memory-mappable .cityshade file.
@@ -92,13 +100,14 @@ def build(city: tuple[Path, ...], output: Path | None, lod: int | float | None, 
         raise UsageError("the output would overwrite the input file; choose another -o")
     if tile_m is not None and not (tile_m > 0 and tile_m < float("inf")):
         raise UsageError(f"--tile-m must be a positive number of metres, not {tile_m:g}")
+    extend = _trees_extension(trees, trees_crs, settings, tile_m)
     if tile_m is None and output.is_dir():
         raise UsageError(f"{output} is a folder: give a file name with -o, or --tile-m SIDE "
                          f"for a tiled cache")
     progress = Progress(enabled=None if not quiet else False, files=several and not quiet)
     try:
         out, scene, size = build_file(list(city) if several else sources[0], output, settings,
-                                      progress, tile_m=tile_m)
+                                      progress, tile_m=tile_m, extend=extend)
     finally:
         progress.close()
     for warning in scene.report.get("warnings", []):
@@ -111,10 +120,35 @@ def build(city: tuple[Path, ...], output: Path | None, lod: int | float | None, 
                    f"{f', {skipped:,} polygons skipped' if skipped else ''}; "
                    f"{size / 1e6:.1f} MB in {sum(rep.get('timings', {}).values()):.2f} s"
                    f"{_tiles_note(out, scene) if tile_m else ''}")
+        if "trees" in rep:
+            t = rep["trees"]
+            left = ", ".join(f"{v} {k.replace('_', ' ')}" for k, v in t["skipped"].items())
+            click.echo(f"{t['trees']:,} trees from {trees.name} ({t['crs']}; standing on the "
+                       f"{t['ground']}){f'; left out: {left}' if left else ''}")
         tiles = rep.get("tiles")
         if tiles:
             click.echo(f"{tiles['files']} files; {tiles['duplicate_objects']:,} objects met "
                        f"again in a later file (the same gml:id) kept once")
+
+
+def _trees_extension(trees: Path | None, trees_crs: str | None, settings, tile_m):
+    """The build's ``extend`` step adding a register's trees (None without ``--trees``)."""
+    from cityshade.errors import UsageError
+
+    if trees is None:
+        if trees_crs is not None:
+            raise UsageError("--trees-crs needs --trees REGISTER")
+        return None
+    if tile_m is not None:
+        raise UsageError("--trees cannot go with --tile-m (a tiled cache): build the trees "
+                         "into one file")
+    if not trees.is_file():
+        raise UsageError(f"--trees {trees}: no such file")
+    import functools
+
+    from cityshade.meshes.trees import add_trees
+
+    return functools.partial(add_trees, path=trees, settings=settings.trees, crs_text=trees_crs)
 
 
 def _tiles_note(folder: Path, scene) -> str:

@@ -9,6 +9,9 @@ from cityshade.cli.helpfmt import GroupedCommand
 
 from cityshade.cli.options import (camera_options, ground_option, presentation_options,
                                    shadow_options, time_plan_options)
+from cityshade.config import LENGTH_UNITS_M
+
+MESH_UNITS = tuple(LENGTH_UNITS_M)
 
 
 @click.command("compare", cls=GroupedCommand)
@@ -18,8 +21,19 @@ from cityshade.cli.options import (camera_options, ground_option, presentation_o
 @click.option("--after", "after_text", help="State of the city after (date or year), on the "
               "same model: a proposed building carries a later validFrom.")
 @click.option("--with", "proposal", type=click.Path(dir_okay=False, path_type=Path),
-              help="Proposal model (.cityshade, CityGML or CityJSON, same CRS) added to FILE "
-                   "for the state after.")
+              help="Proposal added to FILE for the state after: a model (.cityshade, CityGML "
+                   "or CityJSON, same CRS) or a mesh (.obj, .glb, .gltf, .ply, .stl; placed "
+                   "by --place, --up-axis, --mesh-units).")
+@click.option("--mesh-units", type=click.Choice(MESH_UNITS),
+              help="Unit of a mesh proposal's numbers [default: m].")
+@click.option("--up-axis", type=click.Choice(("z", "y")),
+              help="Up axis of a mesh proposal [default: y for glTF/GLB (Y-up by the glTF "
+                   "specification), z for OBJ, PLY, STL].")
+@click.option("--place", "place_text", metavar="X,Y[,Z][,ROTATION_DEG]",
+              help="Put a mesh proposal's origin at X,Y (model CRS) and height Z (default: "
+                   "the terrain, else the ground plane, under X,Y), turned ROTATION_DEG "
+                   "counter-clockwise seen from above; without it the mesh's coordinates are "
+                   "model CRS coordinates.")
 @time_plan_options
 @camera_options("map")
 @shadow_options("exact")
@@ -42,7 +56,7 @@ from cityshade.cli.options import (camera_options, ground_option, presentation_o
 @click.option("-o", "--output", "outdir", type=click.Path(file_okay=False, path_type=Path),
               required=True, help="Output folder (created).")
 @click.option("-v", "--verbose", is_flag=True, help="Timings and counts.")
-def compare(file, before_text, after_text, proposal, date_text, from_text, to_text, every_text,
+def compare(file, before_text, after_text, proposal, mesh_units, up_axis, place_text, date_text, from_text, to_text, every_text,
             tz, days, to_date_text, every_day, camera, eye, target, fov, size, pixel_size,
             cameras_file, settings, ground, no_refraction, no_surfaces, samples_per_m2,
             min_stretch_text, rule_files, area_text, weather_file, no_decorate, no_gis, outdir,
@@ -78,7 +92,8 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
     if no_refraction:
         settings = dataclasses.replace(settings, sun=dataclasses.replace(settings.sun,
                                                                         refraction=False))
-    states = CompareStates(before_text, after_text, proposal)
+    states = CompareStates(before_text, after_text, proposal,
+                           _mesh_placement(mesh_units, up_axis, place_text))
     min_stretch_h = parse_duration_s(min_stretch_text) / 3600.0 \
         if min_stretch_text.strip() not in ("0", "0min", "0s", "0h") else 0.0
     rules = [r for f in rule_files for r in load_rules(f)]
@@ -122,6 +137,15 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
                    + "command "
                    f"{time.perf_counter() - t_start:.2f} s", err=True)
     click.echo(" ".join(str(p) for p in result.written))
+
+
+def _mesh_placement(units, up_axis, place_text):
+    """The mesh options as a MeshPlacement (None when none is given)."""
+    if units is None and up_axis is None and place_text is None:
+        return None
+    from cityshade.meshes.proposal import MeshPlacement
+
+    return MeshPlacement(units or "m", up_axis, MeshPlacement.parse_place(place_text))
 
 
 def _area(text):

@@ -21,6 +21,7 @@ COMMANDS = {
     "compare": ("cityshade.cli.compare:compare", "Sun-hours before and after a change; rules."),
     "sky": ("cityshade.cli.sky:sky", "Sky view factor and irradiation (kWh/m²) from weather."),
     "evaluate": ("cityshade.cli.evaluate:evaluate", "Shadow error against run time; the stress set."),
+    "export": ("cityshade.cli.export:export", "A scene coloured by a surfaces.csv column as .glb/.ply."),
 }
 
 

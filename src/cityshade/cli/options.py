@@ -283,6 +283,12 @@ CRS_HELP = ("CRS of the coordinates (overrides srsName), e.g. EPSG:25832, "
             "urn:ogc:def:crs:EPSG::4326, OGC:CRS84.")
 AXIS_ORDER_HELP = ("Order of geographic coordinates (default: decided from the values, the "
                    "footprints' right angles and the srsName spelling, with a warning).")
+TREES_HELP = ("A tree register (GeoJSON points or CSV rows with a position, height, crown "
+              "diameter and trunk height; column names and units in [trees] of --config): each "
+              "tree becomes an ellipsoid crown on a cylinder trunk, a vegetation object "
+              "standing on the model's terrain under it, else on the ground plane.")
+TREES_CRS_HELP = ("CRS of the register's points when the file names none (default: its GeoJSON "
+                  "crs member, else the model's CRS), e.g. EPSG:4326 (longitude first).")
 TIME_ATTRIBUTE_HELP = ("Generic attribute(s) with construction/demolition years or dates, "
                        "begin=NAME[,end=NAME], e.g. begin=baujahr.")
 

@@ -738,9 +738,12 @@ class GeographicProjector:
         return out
 
 
-def reproject_horizontal(xyz: np.ndarray, source: CrsInfo, target: CrsInfo) -> np.ndarray:
+def reproject_horizontal(xyz: np.ndarray, source: CrsInfo, target: CrsInfo, *,
+                         lonlat_source: bool = False) -> np.ndarray:
     """Coordinates of projected CRS ``source`` → projected CRS ``target`` (easting, northing;
     heights kept as written: the tiles of one city share their height system).
+    ``lonlat_source`` also accepts a geographic ``source`` whose points are longitude first
+    (GeoJSON's order, RFC 7946 §3.1.1, whatever the CRS declares).
 
     Raises
     ------
@@ -749,7 +752,7 @@ def reproject_horizontal(xyz: np.ndarray, source: CrsInfo, target: CrsInfo) -> n
     """
     for crs in (source, target):
         _require_projectable(crs, "the projection between tiles")
-        if crs.is_geographic:
+        if crs.is_geographic and not (lonlat_source and crs is source):
             raise CRSError(f"{crs.name} is geographic; expected a projected CRS")
     src = _as_xyz(xyz, "xyz")
     out = src.copy()

@@ -238,7 +238,7 @@ def parse_time_attribute(text: str) -> tuple[str, str | None]:
     return names["begin"], names.get("end")
 
 
-def _parse_attribute_value(raw: str) -> float:
+def parse_time_attribute_value(raw: str) -> float:
     """Days of a generic attribute's year or date (``1905``, ``1905.0``, ``1905-03-01``)."""
     match = _NUMERIC_YEAR_RE.fullmatch(raw.strip())
     if match:
@@ -338,7 +338,7 @@ def choose_interval(attrs: Mapping[str, str], source: str,
                 continue
             begin_names = (GENERIC_PREFIX + time_attribute[0],)
             end_names = (GENERIC_PREFIX + time_attribute[1],) if time_attribute[1] else ()
-            parse = _parse_attribute_value
+            parse = parse_time_attribute_value
         else:
             begin_names, end_names = _FAMILIES[family]
         begin = _first_value(attrs, begin_names, bad, parse)

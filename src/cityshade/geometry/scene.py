@@ -1070,3 +1070,47 @@ def _georeference(rec, image: Path):
         return None
     a, d, b, e, c, f = world
     return (c, f), (a, b, d, e), width, height
+
+
+def append_scene(existing: Scene, addition: Scene) -> Scene:
+    """The scene ``existing`` followed by the objects of ``addition`` (same CRS; the caller
+    checks), without a kd-tree: the existing arrays come first, so its object, polygon and
+    triangle indices stay valid, and the addition's coordinates are moved to the existing
+    origin (float64 shift, one float32 cast). Report and header are the existing scene's."""
+    import dataclasses
+
+    shift = np.asarray(addition.origin_m, np.float64) - np.asarray(existing.origin_m, np.float64)
+    nv, no, npoly = len(existing.vertices), len(existing.obj_ids), len(existing.poly_ids)
+    nmat, ntex = len(existing.materials), len(existing.textures)
+
+    def offset(a, n):
+        a = np.asarray(a)
+        return np.where(a >= 0, a + n, a).astype(a.dtype)
+
+    def cat(name, n=None, dtype=None):
+        a, b = np.asarray(getattr(existing, name)), np.asarray(getattr(addition, name))
+        if n is not None:
+            b = offset(b, n)
+        return np.concatenate([a, b]).astype(dtype or a.dtype)
+
+    return dataclasses.replace(
+        existing,
+        vertices=np.concatenate([np.asarray(existing.vertices),
+                                 (np.asarray(addition.vertices, np.float64) + shift).astype(
+                                     np.asarray(existing.vertices).dtype)]),
+        uv=cat("uv"), triangles=cat("triangles", nv, np.int32),
+        tri_object=cat("tri_object", no, np.int32), tri_polygon=cat("tri_polygon", npoly, np.int32),
+        tri_class=cat("tri_class"), tri_material=cat("tri_material", nmat),
+        tri_texture=cat("tri_texture", ntex), tri_t_begin_days=cat("tri_t_begin_days"),
+        tri_t_end_days=cat("tri_t_end_days"),
+        obj_ids=list(existing.obj_ids) + list(addition.obj_ids),
+        obj_types=list(existing.obj_types) + list(addition.obj_types),
+        obj_parent=cat("obj_parent", no, np.int32), obj_t_begin_days=cat("obj_t_begin_days"),
+        obj_t_end_days=cat("obj_t_end_days"), obj_time_source=cat("obj_time_source"),
+        obj_lod=cat("obj_lod"), poly_ids=list(existing.poly_ids) + list(addition.poly_ids),
+        poly_object=cat("poly_object", no, np.int32), poly_class=cat("poly_class"),
+        poly_area_m2=cat("poly_area_m2"), poly_normal=cat("poly_normal"),
+        poly_repairs=cat("poly_repairs"),
+        materials=list(existing.materials) + list(addition.materials),
+        textures=list(existing.textures) + list(addition.textures),
+        report=dict(existing.report or {}), kdtree=None, header=dict(existing.header or {}))

@@ -16,6 +16,7 @@ from __future__ import annotations
 import csv
 import math
 from dataclasses import dataclass, field
+from itertools import chain
 from pathlib import Path
 from typing import Any, Callable, Sequence
 
@@ -77,61 +78,21 @@ def merge_scenes(existing, proposal, settings=None):
     UsageError
         The two scenes are in different (or unknown) CRSs.
     """
-    import dataclasses
-
     from cityshade.build import build_tree
     from cityshade.config import Settings
+    from cityshade.geometry.scene import append_scene
 
     ea, pa = existing.crs.horizontal_epsg, proposal.crs.horizontal_epsg
     if ea != pa or (ea is None and existing.crs.name != proposal.crs.name):
         raise UsageError(f"the proposal's CRS ({proposal.crs.name}) is not the model's "
                          f"({existing.crs.name}); give both in the same CRS")
-    shift = np.asarray(proposal.origin_m, np.float64) - np.asarray(existing.origin_m, np.float64)
-    nv, no, npoly = len(existing.vertices), len(existing.obj_ids), len(existing.poly_ids)
-    nmat, ntex = len(existing.materials), len(existing.textures)
-
-    def offset(a, n):
-        a = np.asarray(a)
-        return np.where(a >= 0, a + n, a).astype(a.dtype)
-
-    cat = np.concatenate
-    scene = dataclasses.replace(
-        existing,
-        vertices=cat([np.asarray(existing.vertices),
-                      (np.asarray(proposal.vertices, np.float64) + shift).astype(
-                          np.asarray(existing.vertices).dtype)]),
-        uv=cat([np.asarray(existing.uv), np.asarray(proposal.uv)]),
-        triangles=cat([np.asarray(existing.triangles),
-                       np.asarray(proposal.triangles) + nv]).astype(np.int32),
-        tri_object=cat([existing.tri_object, np.asarray(proposal.tri_object) + no]).astype(np.int32),
-        tri_polygon=cat([existing.tri_polygon,
-                         np.asarray(proposal.tri_polygon) + npoly]).astype(np.int32),
-        tri_class=cat([existing.tri_class, proposal.tri_class]),
-        tri_material=cat([existing.tri_material, offset(proposal.tri_material, nmat)]),
-        tri_texture=cat([existing.tri_texture, offset(proposal.tri_texture, ntex)]),
-        tri_t_begin_days=cat([existing.tri_t_begin_days, proposal.tri_t_begin_days]),
-        tri_t_end_days=cat([existing.tri_t_end_days, proposal.tri_t_end_days]),
-        obj_ids=list(existing.obj_ids) + list(proposal.obj_ids),
-        obj_types=list(existing.obj_types) + list(proposal.obj_types),
-        obj_parent=cat([existing.obj_parent, offset(proposal.obj_parent, no)]).astype(np.int32),
-        obj_t_begin_days=cat([existing.obj_t_begin_days, proposal.obj_t_begin_days]),
-        obj_t_end_days=cat([existing.obj_t_end_days, proposal.obj_t_end_days]),
-        obj_time_source=cat([existing.obj_time_source, proposal.obj_time_source]),
-        obj_lod=cat([existing.obj_lod, proposal.obj_lod]),
-        poly_ids=list(existing.poly_ids) + list(proposal.poly_ids),
-        poly_object=cat([existing.poly_object, np.asarray(proposal.poly_object) + no]).astype(np.int32),
-        poly_class=cat([existing.poly_class, proposal.poly_class]),
-        poly_area_m2=cat([existing.poly_area_m2, proposal.poly_area_m2]),
-        poly_normal=cat([existing.poly_normal, proposal.poly_normal]),
-        poly_repairs=cat([existing.poly_repairs, proposal.poly_repairs]),
-        materials=list(existing.materials) + list(proposal.materials),
-        textures=list(existing.textures) + list(proposal.textures),
-        report={**(existing.report or {}),
-                "openings": list((existing.report or {}).get("openings", [])) + [
-                    [oid, [int(p) + npoly for p in polys]]
-                    for oid, polys in (proposal.report or {}).get("openings", [])],
-                "proposal_objects": [no, no + len(proposal.obj_ids)]},
-        kdtree=None, header=dict(existing.header or {}))
+    no, npoly = len(existing.obj_ids), len(existing.poly_ids)
+    scene = append_scene(existing, proposal)
+    scene.report = {**(existing.report or {}),
+                    "openings": list((existing.report or {}).get("openings", [])) + [
+                        [oid, [int(p) + npoly for p in polys]]
+                        for oid, polys in (proposal.report or {}).get("openings", [])],
+                    "proposal_objects": [no, no + len(proposal.obj_ids)]}
     scene.kdtree = build_tree(scene, settings or Settings(), None, {})
     return scene
 
@@ -163,6 +124,10 @@ class Comparison:
     opening: dict[str, np.ndarray] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
     light: dict[str, Any] = field(default_factory=dict)
+    #: The proposal's own surfaces (receivers after only): ``polygons`` (indices into the
+    #: scene after), ``samples``, ``after_h`` and ``longest_after_h`` per polygon; None when
+    #: the state after adds no surface.
+    proposal: dict[str, np.ndarray] | None = None
 
     @property
     def samples(self):
@@ -235,11 +200,11 @@ def compare_states(scene_before, t_before_days: float, scene_after, t_after_days
     on_step : callable(done, total), optional
         Progress over both states' sun positions.
     """
+    from cityshade.config import Settings
+    from cityshade.geo.sun import suns_from_instants
     from cityshade.sunhours.accumulate import sun_hours
     from cityshade.sunhours.plan import plan_units
-    from cityshade.config import Settings
     from cityshade.sunhours.stretches import Stretches
-    from cityshade.geo.sun import suns_from_instants
     from cityshade.sunhours.surfaces import sample_surfaces
 
     settings = settings or Settings()
@@ -276,25 +241,34 @@ def compare_states(scene_before, t_before_days: float, scene_after, t_after_days
                                   settings=None, polygon_density=density)
     if camera is None and samples is None:
         raise UsageError("nothing to compare: no pixels and no surface receivers")
+    # A proposal's own surfaces are receivers of the state after (polygons is None: every
+    # surface is asked for), sampled after the shared samples.
+    samples_after = samples
+    if samples is not None and polygons is None:
+        samples_after = _with_proposal_samples(samples, scene_before, scene_after,
+                                               float(t_after_days), float(samples_per_m2 or 0))
     n_units = len(plan_units(suns, weights)[0])
     results = []
-    for k, (scene, t) in enumerate(((scene_before, t_before_days), (scene_after, t_after_days))):
+    for k, (scene, t, smp) in enumerate(((scene_before, t_before_days, samples),
+                                         (scene_after, t_after_days, samples_after))):
         def progress(done, total, unit, k=k):
             if on_step is not None:
                 on_step(k * n_units + done, 2 * n_units)
 
         results.append(sun_hours(
             scene, camera, instants, float(t), weights_h=weights, technique=technique,
-            shadows=settings.shadows, ground=ground, suns=suns, samples=samples,
+            shadows=settings.shadows, ground=ground, suns=suns, samples=smp,
             reuse_rays=settings.batch.reuse_rays, on_step=progress,
             stretches=Stretches.for_steps(steps, receivers.min_stretch_h)))
     before, after = results
+    proposal = _split_proposal(after, samples, n_poly) if samples_after is not samples else None
     comp = Comparison(before=before, after=after, camera=camera, scene_before=scene_before,
                       scene_after=scene_after, t_before_days=float(t_before_days),
                       t_after_days=float(t_after_days),
                       step_h=float(max(weights)) if weights else 0.0,
                       warnings=[w for w in before.warnings] +
-                      [w for w in after.warnings if w not in before.warnings])
+                      [w for w in after.warnings if w not in before.warnings],
+                      proposal=proposal)
     if camera is not None:
         same = (before.valid & after.valid
                 & (np.asarray(before.surfaces.obj_id) == np.asarray(after.surfaces.obj_id)))
@@ -311,6 +285,51 @@ def compare_states(scene_before, t_before_days: float, scene_after, t_after_days
         comp.openings = [o for o in openings if samples.sampled[list(o.polygons)].any()]
         comp.opening = _opening_results(comp)
     return comp
+
+
+def _with_proposal_samples(samples, scene_before, scene_after, t_days: float,
+                           samples_per_m2: float):
+    """``samples`` followed by samples on the proposal's polygons (those after the existing
+    ones in :func:`merge_scenes`'s scene), or ``samples`` itself when there are none."""
+    from cityshade.sunhours.surfaces import SurfaceSamples, sample_surfaces
+
+    n_poly, n_after = len(scene_before.poly_ids), len(scene_after.poly_ids)
+    if scene_after is scene_before or n_after == n_poly or samples_per_m2 <= 0:
+        return samples
+    density = np.zeros(n_after)
+    density[n_poly:] = samples_per_m2
+    extra = sample_surfaces(scene_after, 1.0, t_days, polygon_density=density)
+    if not extra.n:
+        return samples
+    sampled = extra.sampled.copy()
+    sampled[:n_poly] = samples.sampled
+    cat = np.concatenate
+    return SurfaceSamples(points_m=cat([samples.points_m, extra.points_m]),
+                          normals=cat([samples.normals, extra.normals]),
+                          weight_m2=cat([samples.weight_m2, extra.weight_m2]),
+                          polygon=cat([samples.polygon, extra.polygon]).astype(np.int32),
+                          sampled=sampled, samples_per_m2=samples.samples_per_m2)
+
+
+def _split_proposal(after, samples, n_poly: int) -> dict[str, np.ndarray]:
+    """The proposal's per-polygon results out of the run after, whose samples and
+    stretches are then cut back to the shared ``samples`` (so both states' arrays match)."""
+    n = samples.n
+    extra_poly = np.asarray(after.samples.polygon[n:])
+    polygons = np.unique(extra_poly)
+    longest = np.full(int(after.samples.sampled.shape[0]), -np.inf)
+    track = after.stretches.samples
+    np.maximum.at(longest, extra_poly, track.longest_h[n:])
+    out = {"polygons": polygons,
+           "samples": np.bincount(extra_poly, minlength=len(longest))[polygons],
+           "after_h": np.asarray(after.polygon_hours)[polygons],
+           "longest_after_h": longest[polygons]}
+    after.samples = samples
+    after.sample_hours = np.asarray(after.sample_hours)[:n]
+    after.polygon_hours = np.asarray(after.polygon_hours)[:n_poly]
+    for name in ("current_h", "longest_h", "qualified_h"):
+        setattr(track, name, getattr(track, name)[:n])
+    return out
 
 
 def _opening_results(comp: Comparison) -> dict[str, np.ndarray]:
@@ -415,6 +434,22 @@ def surface_rows(comp: Comparison):
                lb[p], la[p])
 
 
+def proposal_rows(comp: Comparison):
+    """Rows of ``surfaces.csv`` for the proposal's own surfaces (:data:`SURFACE_COLUMNS`; no
+    value before, so no loss), their polygon index that of the scene after."""
+    from cityshade.citygml.namespaces import SURFACE_CLASSES
+
+    if comp.proposal is None:
+        return
+    scene, prop, nan = comp.scene_after, comp.proposal, float("nan")
+    for k, p in enumerate(prop["polygons"]):
+        cls = int(scene.poly_class[p])
+        yield (scene.obj_ids[int(scene.poly_object[p])], scene.poly_ids[p], int(p),
+               SURFACE_CLASSES[cls] if cls < len(SURFACE_CLASSES) else str(cls),
+               float(scene.poly_area_m2[p]), int(prop["samples"][k]), nan,
+               float(prop["after_h"][k]), nan, nan, nan, float(prop["longest_after_h"][k]))
+
+
 def loss_map(comp: Comparison) -> tuple[np.ndarray, float]:
     """((H, W, 3) uint8 map of the loss in hours, gains shown as 0, changed pixels grey; the
     top of its colour scale in hours)."""
@@ -506,7 +541,7 @@ def write_comparison(outdir, comp: Comparison, meta: dict[str, Any],
         with atomic_write(path, newline="", what="the surface table") as fh:
             writer = csv.writer(fh)
             writer.writerow(SURFACE_COLUMNS)
-            for row in surface_rows(comp):
+            for row in chain(surface_rows(comp), proposal_rows(comp)):
                 writer.writerow(list(row[:4]) + [f"{row[4]:.3f}", row[5]] +
                                 [_f(v) for v in row[6:10]] + [_f(v) for v in row[10:]])
         written.append(path)

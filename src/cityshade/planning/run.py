@@ -111,8 +111,13 @@ class CompareStates:
     after : str, optional
         Date or year of the state after, on the same model.
     proposal : path or Scene, optional
-        A ``.cityshade`` scene, CityGML or CityJSON file (same CRS) or a loaded scene added to
-        the model for the state after; its own dates decide when its objects stand.
+        A ``.cityshade`` scene, CityGML or CityJSON file (same CRS), a mesh file (OBJ, glTF,
+        GLB, PLY, STL: :mod:`cityshade.meshes.proposal`) or a loaded scene added to the model
+        for the state after; its own dates decide when its objects stand.
+    mesh : MeshPlacement, optional
+        Units, up axis and placement of a mesh proposal
+        (:class:`cityshade.meshes.proposal.MeshPlacement`; default: metres, the format's up
+        axis, the mesh's own coordinates as model CRS).
 
     Raises
     ------
@@ -123,8 +128,13 @@ class CompareStates:
     before: str | None = None
     after: str | None = None
     proposal: Any = None
+    mesh: Any = None
 
     def __post_init__(self) -> None:
+        if self.mesh is not None and not (_is_path(self.proposal) and Path(
+                self.proposal).suffix.lower() in _mesh_suffixes()):
+            raise UsageError("--mesh-units, --up-axis and --place are for a mesh proposal: "
+                             "--with FILE.obj|.glb|.gltf|.ply|.stl")
         if self.proposal is None and self.after is None:
             raise UsageError("give --after DATE (one model, two dates) or --with PROPOSAL")
         if self.proposal is not None and self.after is not None:
@@ -255,14 +265,23 @@ def _is_path(value) -> bool:
     return isinstance(value, (str, os.PathLike))
 
 
-def load_proposal(proposal, settings=None):
-    """A scene file, a loaded scene (returned as is), or a city model built in memory (nothing
-    written).
+def _mesh_suffixes() -> tuple[str, ...]:
+    from cityshade.meshes.proposal import MESH_SUFFIXES
+
+    return MESH_SUFFIXES
+
+
+def load_proposal(proposal, settings=None, model=None, mesh=None):
+    """A scene file, a loaded scene (returned as is), a city model built in memory (nothing
+    written), or a mesh file placed in ``model`` by ``mesh`` (a
+    :class:`~cityshade.meshes.proposal.MeshPlacement`).
 
     Raises
     ------
     UsageError
         The proposal file does not exist.
+    MeshFileError
+        A mesh file trimesh cannot read.
     """
     from cityshade.build import build_scene_from_file
     from cityshade.store.scenefile import load_scene
@@ -274,6 +293,12 @@ def load_proposal(proposal, settings=None):
         return load_scene(path)
     if not path.exists():
         raise UsageError(f"the proposal {path} does not exist")
+    if path.suffix.lower() in _mesh_suffixes():
+        from cityshade.meshes.proposal import proposal_scene
+
+        if model is None:
+            raise UsageError("a mesh proposal is placed in a model: give the model too")
+        return proposal_scene(path, model, mesh)
     return build_scene_from_file(path, settings)
 
 
@@ -346,10 +371,12 @@ def run_compare(request: CompareRequest, inputs: CompareInputs | None = None, *,
 
     inputs = inputs or open_compare(request)
     settings, scene = request.settings, inputs.scene
-    scene_after = scene
+    scene_after, proposal_warnings = scene, []
     if request.states.proposal is not None:
-        scene_after = merge_scenes(scene, load_proposal(request.states.proposal, settings),
-                                   settings)
+        proposal = load_proposal(request.states.proposal, settings, scene, request.states.mesh)
+        if "mesh" in (proposal.report or {}):  # a mesh's placement notes (a model's: at build)
+            proposal_warnings = list(proposal.report.get("warnings", []))
+        scene_after = merge_scenes(scene, proposal, settings)
     camera = request.camera(scene_after) if callable(request.camera) else request.camera
     receivers = Receivers(
         samples_per_m2=settings.batch.samples_per_m2 if request.surfaces else None,
@@ -357,6 +384,7 @@ def run_compare(request: CompareRequest, inputs: CompareInputs | None = None, *,
     comp = compare_states(scene, inputs.before.city_days, scene_after, inputs.after.city_days,
                           camera, inputs.steps, receivers, technique=request.technique,
                           settings=settings, ground=request.ground, on_step=on_step)
+    comp.warnings[:0] = [w for w in proposal_warnings if w not in comp.warnings]
     _add_light(comp, request, inputs)
     verdicts = [run_rule(rule, request, inputs, scene_after, camera, comp)
                 for rule in request.rules]

@@ -32,7 +32,7 @@ _VIRIDIS = np.array([(68, 1, 84), (59, 82, 139), (33, 145, 140), (94, 201, 98),
 _NODATA_RGB = (255, 255, 255)
 
 
-def _colours(t: np.ndarray) -> np.ndarray:
+def viridis_rgb(t: np.ndarray) -> np.ndarray:
     """(…) values in [0, 1] → (…, 3) uint8 viridis."""
     x = np.clip(t, 0.0, 1.0) * (len(_VIRIDIS) - 1)
     i = np.minimum(np.floor(x).astype(np.int64), len(_VIRIDIS) - 2)
@@ -82,14 +82,14 @@ def colour_mapped(hours: np.ndarray, vmax_h: float | None = None) -> tuple[np.nd
     if vmax_h is None:
         finite = hours[np.isfinite(hours)]
         vmax_h = max(1.0, math.ceil(float(finite.max()) if finite.size else 1.0))
-    rgb = _colours(np.nan_to_num(hours / vmax_h, nan=0.0))
+    rgb = viridis_rgb(np.nan_to_num(hours / vmax_h, nan=0.0))
     rgb[~np.isfinite(hours)] = _NODATA_RGB
     return rgb, float(vmax_h)
 
 
 def viridis_ramp(n: int = 256) -> np.ndarray:
     """(n, 3) uint8: the colours of :func:`colour_mapped` from 0 to the top of the scale."""
-    return _colours(np.linspace(0.0, 1.0, n))
+    return viridis_rgb(np.linspace(0.0, 1.0, n))
 
 
 def map_picture(rgb: np.ndarray, vmax_h: float, camera, scene, *, title: str | None = None,
@@ -121,7 +121,7 @@ def legend_band(width_px: int, vmax_h: float) -> np.ndarray | None:
     font_pt = float(np.clip(width_px / 40.0, 7.0, 14.0))
     fig, canvas = agg_canvas(width_px, int(round(4.5 * font_pt * 100 / 72)))
     ax = fig.add_axes((0.06, 0.55, 0.88, 0.35))
-    ramp = _colours(np.linspace(0.0, 1.0, 256)) / 255.0
+    ramp = viridis_rgb(np.linspace(0.0, 1.0, 256)) / 255.0
     ax.imshow(np.linspace(0.0, 1.0, 256)[None, :], aspect="auto", cmap=ListedColormap(ramp),
               extent=(0.0, vmax_h, 0.0, 1.0), interpolation="nearest")
     ax.set_yticks([])
