@@ -66,11 +66,6 @@ def compare(file, before_text, after_text, proposal, mesh_units, up_axis, place_
     added. Writes before,
     after and loss maps (EXR, PNG, GeoTIFF for the map view), surfaces.csv, openings.csv,
     the rule verdicts, report.md and report.html, and results.gpkg (GIS layers) to OUTDIR.
-
-    \b
-    Example (BRE 209 on an LoD3 house with a proposed block, a year of weather):
-      cityshade compare house.cityshade --with block.gml --rules bre209 \\
-          --weather London.epw --tz Europe/Berlin -o planning
     """
     import dataclasses
     import time

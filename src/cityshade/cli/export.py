@@ -5,8 +5,10 @@ from pathlib import Path
 
 import click
 
+from cityshade.cli.helpfmt import GroupedCommand
 
-@click.command("export")
+
+@click.command("export", cls=GroupedCommand)
 @click.argument("scene_file", metavar="SCENE", type=click.Path(path_type=Path))
 @click.argument("surfaces", type=click.Path(dir_okay=False, path_type=Path))
 @click.option("--column", help="The column of SURFACES to show [default: mean_sun_hours, else "

@@ -13,6 +13,7 @@ import click
 #: Heading → parameter names (click's ``param.name``), in help order.
 SECTIONS: dict[str, tuple[str, ...]] = {
     "City state": ("date_text", "city_date", "before_text", "after_text", "proposal",
+                   "mesh_units", "up_axis", "place_text", "trees", "trees_crs",
                    "lod", "theme", "time_source", "time_attribute", "closure_surfaces"),
     "Sun and time": ("time_text", "tz", "sun_azimuth", "sun_elevation", "from_text",
                      "to_text", "every_text", "days", "to_date_text", "from_date", "to_date", "every_day", "times", "sun_text",
@@ -26,7 +27,7 @@ SECTIONS: dict[str, tuple[str, ...]] = {
                 "pcf_kernel", "vsm_blur", "cascades", "sizes"),
     "Receivers and rules": ("surfaces", "no_surfaces", "samples_per_m2", "min_stretch_text",
                             "rule_files", "area_text"),
-    "Outputs": ("output", "outdir", "png", "mask", "geotiff", "decorate", "no_decorate", "no_gis",
+    "Outputs": ("column", "range_text", "unit", "ply", "output", "outdir", "png", "mask", "geotiff", "decorate", "no_decorate", "no_gis",
                 "frames", "monthly", "as_json", "overwrite", "tile_m", "no_map"),
     "Execution": ("tile_px", "scheduler", "strip_rows", "repeat", "stress", "quick", "verify",
                   "config_path", "verbose", "quiet"),
@@ -60,11 +61,20 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
         "--tz Europe/London --rules bre209 -o planning",
         "cityshade compare city.cityshade --before 1850 --after 1990 --date 2025-03-21 "
         "--tz Europe/Berlin -o since1850",
+        "cityshade compare house.cityshade --with block.gml --date 2025-03-21 --tz Europe/Berlin "
+        "--rules bre209 --weather london.epw -o planning    # VSC and APSH of every window",
+        "cityshade compare city.cityshade --with massing.obj --up-axis y --place 690120,5336110,,20 "
+        "--date 2025-03-21 --tz Europe/Berlin -o planning",
     ),
     "sky": (
         "cityshade sky city.cityshade --pixel-size 1 -o svf          # sky view factor map",
         "cityshade sky city.cityshade --surfaces --no-map -o svf      # per roof, wall, building",
         "cityshade sky city.cityshade --surfaces --weather london.epw --irradiance -o solar",
+    ),
+    "export": (
+        "cityshade export city.cityshade sunhours/surfaces.csv -o sunhours.glb",
+        "cityshade export city.cityshade planning/surfaces.csv --column loss_h -o loss.glb "
+        "--ply loss.ply",
     ),
     "evaluate": (
         "cityshade evaluate city.cityshade --views overview,map --sun \"135,45;240,15\" "
