@@ -103,16 +103,18 @@ class _PixelRays:
                                           cp.normal[self.valid])
 
     def lit(self, scene, sun, t_days: float) -> np.ndarray:
-        """(H, W) float32: 1 lit, 0 shadow or no surface."""
-        from cityshade.shadows.visibility import occluded
+        """(H, W) float32: 1 lit, 0 shadow or no surface, between where only vegetation is in
+        the way (its transmission, docs/DESIGN.md §20)."""
+        from cityshade.geometry.vegetation import day_of_year
+        from cityshade.shadows.visibility import transmission
 
         faces = self.cp.context(sun).faces
         lit = np.zeros(self.valid.shape, np.float32)
         if faces.any():
             direction = np.asarray(sun.direction, dtype=np.float64)
             origins = self.receivers.origins(direction, faces[self.valid])
-            blocked = occluded(scene, origins, direction, t_days, engine=self.engine)
-            lit[faces] = ~blocked
+            lit[faces] = transmission(scene, origins, direction, t_days, engine=self.engine,
+                                      day_of_year=day_of_year(sun))
         return lit
 
 
