@@ -37,9 +37,10 @@ def _project(origins, rays, kx, ky, kz, sx, sy, px, py):
 
 @njit(cache=True)
 def _triangle_cells(vertices, triangles, t_begin, t_end, t_days, kx, ky, kz, sx, sy, margin,
-                    x0, y0, inv_cell, nx, ny, c_lo, c_hi):
-    """Per triangle its cell range ``c_lo``/``c_hi`` (ix0, iy0) / (ix1, iy1), empty (lo > hi)
-    when not standing or outside the grid."""
+                    x0, y0, inv_cell, nx, ny, c_lo, c_hi, boxes):
+    """Per triangle its widened light-plane box ``boxes`` (xmin, xmax, ymin, ymax) and its
+    cell range ``c_lo``/``c_hi`` (ix0, iy0) / (ix1, iy1), empty (lo > hi) when not standing
+    or outside the grid."""
     for t in range(triangles.shape[0]):
         c_lo[t, 0] = 1
         c_lo[t, 1] = 1
@@ -62,6 +63,10 @@ def _triangle_cells(vertices, triangles, t_begin, t_end, t_days, kx, ky, kz, sx,
             xmax = max(xmax, qx)
             ymin = min(ymin, qy)
             ymax = max(ymax, qy)
+        boxes[t, 0] = xmin - margin
+        boxes[t, 1] = xmax + margin
+        boxes[t, 2] = ymin - margin
+        boxes[t, 3] = ymax + margin
         ix0 = math.floor((xmin - margin - x0) * inv_cell)
         ix1 = math.floor((xmax + margin - x0) * inv_cell)
         iy0 = math.floor((ymin - margin - y0) * inv_cell)
@@ -97,7 +102,7 @@ def _bin(c_lo, c_hi, nx, ny):
 
 @njit(cache=True, parallel=True)
 def _query(vertices, triangles, tri_crown, crown_tau, origins, rays, px, py, x0, y0, inv_cell,
-           nx, ny, start, items, kx, ky, kz, sx, sy, sz, out):
+           nx, ny, start, items, boxes, kx, ky, kz, sx, sy, sz, out):
     n = rays.shape[0]
     chunk = 256
     for b in prange((n + chunk - 1) // chunk):
@@ -111,6 +116,10 @@ def _query(vertices, triangles, tri_crown, crown_tau, origins, rays, px, py, x0,
             m = 0
             for e in range(start[c], start[c + 1]):
                 t = items[e]
+                # Outside the widened box: no hit (the cells' own argument, per triangle).
+                if px[j] < boxes[t, 0] or px[j] > boxes[t, 1] or py[j] < boxes[t, 2] or \
+                        py[j] > boxes[t, 3]:
+                    continue
                 hit, tt, _, _ = hit_triangle(vertices, triangles, t, okx, oky, okz, kx, ky, kz,
                                              sx, sy, sz)
                 if hit and tt >= 0.0:
@@ -145,8 +154,9 @@ def transmission(vertices, triangles, t_begin_days, t_end_days, tri_crown, crown
     inv_cell = 1.0 / cell
     c_lo = np.empty((len(triangles), 2), np.int64)
     c_hi = np.empty((len(triangles), 2), np.int64)
+    boxes = np.empty((len(triangles), 4))
     _triangle_cells(vertices, triangles, t_begin_days, t_end_days, float(t_days), kx, ky, kz,
-                    sx, sy, margin, x0, y0, inv_cell, nx, ny, c_lo, c_hi)
+                    sx, sy, margin, x0, y0, inv_cell, nx, ny, c_lo, c_hi, boxes)
     start, items = _bin(c_lo, c_hi, nx, ny)
     _query(vertices, triangles, tri_crown, np.ascontiguousarray(crown_tau, np.float64), origins,
-           rays, px, py, x0, y0, inv_cell, nx, ny, start, items, kx, ky, kz, sx, sy, sz, out)
+           rays, px, py, x0, y0, inv_cell, nx, ny, start, items, boxes, kx, ky, kz, sx, sy, sz, out)
