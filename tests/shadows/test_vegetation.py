@@ -81,7 +81,6 @@ def test_engines_equal_each_other_and_the_brute_force_twin(crowns):
     veg = scene_vegetation(crowns)
     tri_crown = np.full(crowns.n_triangles, -1, np.int64)
     tri_crown[veg.tri] = veg.tri_crown
-    tau = np.array([0.03, 0.2, 0.5, 0.7])
     rng = np.random.default_rng(7)
     origins = rng.uniform((-30, -30, -1), (40, 30, 22), (400, 3)) - crowns.origin_m
     settings = VegetationSettings(
