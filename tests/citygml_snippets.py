@@ -9,6 +9,7 @@ CG2 = ('xmlns="http://www.opengis.net/citygml/2.0" xmlns:gml="http://www.opengis
        'xmlns:bldg="http://www.opengis.net/citygml/building/2.0" '
        'xmlns:app="http://www.opengis.net/citygml/appearance/2.0" '
        'xmlns:luse="http://www.opengis.net/citygml/landuse/2.0" '
+       'xmlns:veg="http://www.opengis.net/citygml/vegetation/2.0" '
        'xmlns:xlink="http://www.w3.org/1999/xlink"')
 
 
@@ -52,6 +53,16 @@ def building(bid, faces, solid_refs=True, extra="", srs="EPSG:25832") -> str:
                  f"{members}</gml:CompositeSurface></gml:exterior></gml:Solid></bldg:lod2Solid>")
     # The solid comes first: its references point forward, as in real exports.
     return f'<bldg:Building gml:id="{bid}">{extra}{solid}{bounded}</bldg:Building>'
+
+
+def tree(tid, faces, kind="SolitaryVegetationObject") -> str:
+    """A vegetation object (``veg:SolitaryVegetationObject`` or ``veg:PlantCover``) whose
+    LoD2 geometry is the polygons ``faces`` ((class, id, points) as :func:`box_polygons`)."""
+    members = "".join(f"<gml:surfaceMember>{polygon(pts, pid)}</gml:surfaceMember>"
+                      for _, pid, pts in faces)
+    prop = "lod2Geometry" if kind == "SolitaryVegetationObject" else "lod2MultiSurface"
+    return (f'<veg:{kind} gml:id="{tid}"><veg:{prop}><gml:MultiSurface>{members}'
+            f"</gml:MultiSurface></veg:{prop}></veg:{kind}>")
 
 
 def city(*members: str, ns: str = CG2, appearance: str = "") -> str:

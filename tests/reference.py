@@ -761,6 +761,23 @@ def reference_watertight_hits(vertices, triangles, origin, direction):
     return inside & (det != 0) & (t >= 0)
 
 
+def reference_transmission(vertices, triangles, t_begin_days, t_end_days, tri_crown,
+                           crown_tau, origin, direction, t_days=0.0):
+    """Transmission of one sun ray (twin of :func:`cityshade.shadows.visibility.transmission`):
+    per triangle standing at ``t_days`` the watertight test (:func:`reference_watertight_hits`);
+    0 if an opaque triangle (``tri_crown`` -1) is hit, else the product of ``crown_tau`` over
+    the distinct crowns hit, multiplied in ascending crown order."""
+    hit = reference_watertight_hits(vertices, triangles, origin, direction)
+    hit &= (np.asarray(t_begin_days) <= t_days) & (t_days < np.asarray(t_end_days))
+    crowns = np.asarray(tri_crown)[hit]
+    if (crowns < 0).any():
+        return 0.0
+    tau = 1.0
+    for c in sorted(set(crowns.tolist())):
+        tau *= float(crown_tau[c])
+    return tau
+
+
 def _reference_square_meets_triangle(c, r, pu, pv, margin):
     """Separating-axis test of texel square [c, c+1] x [r, r+1] and a 2-D triangle (or, when it
     has no area, its longest edge): no edge normal separates them by more than ``margin``

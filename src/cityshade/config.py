@@ -528,6 +528,84 @@ class StressSettings:
                    max_dates=2)
 
 
+#: What decides whether vegetation is in leaf at a sun position (docs/DESIGN.md §21).
+SEASONS = ("auto", "leaf_on", "leaf_off")
+
+
+def _fraction(value, what: str) -> None:
+    if not (_is_number(value) and 0.0 <= value <= 1.0):
+        raise ConfigError(f"{what} must be in [0, 1], not {value}")
+
+
+@dataclass(frozen=True)
+class VegetationClassSettings:
+    """Light transmissivity of one class of vegetation (``[vegetation.solitary]``: CityGML
+    SolitaryVegetationObject, ``[vegetation.plant_cover]``: PlantCover): the fraction of the
+    direct sun a ray keeps after crossing one crown (docs/DESIGN.md §21)."""
+
+    #: In leaf: UMEP/SOLWEIG's default TRANS_VEG, 3 % (Lindberg & Grimmond 2011, Theor. Appl.
+    #: Climatol. 105; UMEP-dev/UMEP#825 names the parameter).
+    leaf_on_transmissivity: float = 0.03
+    #: Leaf off: 50 %, what the UMEP developers set for winter (UMEP-dev/UMEP#411: "we usually
+    #: set the transmissivity to 50%").
+    leaf_off_transmissivity: float = 0.5
+    #: Evergreen: in leaf all year (the leaf-on transmissivity at every date).
+    evergreen: bool = False
+
+    def __post_init__(self) -> None:
+        _fraction(self.leaf_on_transmissivity, "leaf_on_transmissivity")
+        _fraction(self.leaf_off_transmissivity, "leaf_off_transmissivity")
+
+
+@dataclass(frozen=True)
+class VegetationSettings:
+    """``[vegetation]``: vegetation objects as casters that let part of the sun through
+    (docs/DESIGN.md §21). Only the exact engines (``raytrace``, ``izb``) transmit; the map
+    techniques draw vegetation as opaque."""
+
+    #: False: vegetation neither casts nor receives (``--no-vegetation``): its triangles are
+    #: left out of the scene.
+    enabled: bool = True
+    #: First and last day of the year (1-366, UTC date of the sun position) in leaf: UMEP's
+    #: SOLWEIG defaults LEAF_START 97 and LEAF_END 300 (UMEP-dev/UMEP#441, #478), northern
+    #: hemisphere; swap them (first > last) for the southern one: in leaf from first to last
+    #: across the new year.
+    leaf_on_day: int = 97
+    leaf_off_day: int = 300
+    #: "auto": in leaf by the sun position's date (a sun given by angles has none: in leaf);
+    #: "leaf_on" / "leaf_off": that season at every date.
+    season: str = "auto"
+    solitary: VegetationClassSettings = _table(VegetationClassSettings)
+    plant_cover: VegetationClassSettings = _table(VegetationClassSettings)
+
+    def __post_init__(self) -> None:
+        for name in ("leaf_on_day", "leaf_off_day"):
+            value = getattr(self, name)
+            if not (_is_int(value) and 1 <= value <= 366):
+                raise ConfigError(f"{name} must be a day of the year in 1..366, not {value}")
+        if self.season not in SEASONS:
+            raise ConfigError(f"season must be one of {', '.join(SEASONS)}, "
+                              f"not {self.season!r}")
+
+    def in_leaf(self, day_of_year: int | None) -> bool:
+        """Whether deciduous vegetation is in leaf on ``day_of_year`` (None: no date)."""
+        if self.season != "auto":
+            return self.season == "leaf_on"
+        if day_of_year is None:
+            return True
+        first, last = self.leaf_on_day, self.leaf_off_day
+        if first <= last:
+            return first <= day_of_year <= last
+        return day_of_year >= first or day_of_year <= last
+
+    def with_transmissivity(self, leaf_on: float) -> "VegetationSettings":
+        """These settings with every class's in-leaf transmissivity set to ``leaf_on``
+        (``--tree-transmissivity``)."""
+        return dataclasses.replace(
+            self, solitary=dataclasses.replace(self.solitary, leaf_on_transmissivity=leaf_on),
+            plant_cover=dataclasses.replace(self.plant_cover, leaf_on_transmissivity=leaf_on))
+
+
 @dataclass(frozen=True)
 class Settings:
     """All settings, one field per TOML table."""
@@ -546,6 +624,8 @@ class Settings:
     stress: StressSettings = field(default_factory=StressSettings)
     #: ``[trees]``: a tree register (``build --trees``).
     trees: TreeSettings = field(default_factory=TreeSettings)
+    #: ``[vegetation]``: transmissivity of vegetation per class and season.
+    vegetation: VegetationSettings = field(default_factory=VegetationSettings)
 
 
 _TOML_TYPES = {"int": int, "float": float, "str": str, "bool": bool}

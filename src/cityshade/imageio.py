@@ -567,7 +567,21 @@ def mask_from_lit(lit_fraction: np.ndarray, valid: np.ndarray | None = None, *,
     return mask
 
 
-def _checked_mask(path: Path, mask: np.ndarray) -> np.ndarray:
+def grey_mask_from_lit(lit_fraction: np.ndarray, valid: np.ndarray | None = None) -> np.ndarray:
+    """8-bit mask of a lit fraction as a grey level: ``v = round(254 × lit)``, plus one from
+    128 up, so 0 is shadow, 255 sun, 128 still only no surface (NaN or ``valid`` False), and
+    a fraction between (sun through vegetation) is a grey in 1..254 but 128."""
+    lit = np.clip(np.nan_to_num(np.asarray(lit_fraction, np.float64), nan=0.0), 0.0, 1.0)
+    grey = np.rint(lit * 254.0).astype(np.uint8)
+    grey[grey >= MASK_NODATA] += 1
+    nodata = np.isnan(np.asarray(lit_fraction, np.float64))
+    if valid is not None:
+        nodata |= ~np.asarray(valid, bool)
+    grey[nodata] = MASK_NODATA
+    return grey
+
+
+def _checked_mask(path: Path, mask: np.ndarray, grey: bool = False) -> np.ndarray:
     mask = np.asarray(mask)
     if mask.dtype == np.bool_:
         mask = np.where(mask, MASK_LIT, MASK_SHADOW).astype(np.uint8)
@@ -575,15 +589,17 @@ def _checked_mask(path: Path, mask: np.ndarray) -> np.ndarray:
         raise ImageIOError(f"a shadow mask must be (H, W) uint8 or bool, not {mask.shape} "
                            f"{mask.dtype} (use mask_from_lit for lit fractions)", path=str(path))
     bad = ~np.isin(mask, (MASK_LIT, MASK_SHADOW, MASK_NODATA))
-    if bad.any():
+    if not grey and bad.any():
         raise ImageIOError(f"a shadow mask holds only 255 (lit), 0 (shadow) and 128 (nodata); "
                            f"found {int(mask[bad][0])}", path=str(path))
     return mask
 
 
 def write_mask_png(path: str | os.PathLike, mask: np.ndarray,
-                   attributes: Mapping[str, str | float | int] | None = None) -> None:
-    """Write a shadow mask as an 8-bit grey PNG: 255 sunlit, 0 shadow, 128 no surface/nodata.
+                   attributes: Mapping[str, str | float | int] | None = None,
+                   grey: bool = False) -> None:
+    """Write a shadow mask as an 8-bit grey PNG: 255 sunlit, 0 shadow, 128 no surface/nodata
+    (``grey``: any other value too, :func:`grey_mask_from_lit`'s levels).
 
     Parameters
     ----------
@@ -593,7 +609,7 @@ def write_mask_png(path: str | os.PathLike, mask: np.ndarray,
     path = Path(path)
     if path.suffix.lower() != ".png":
         raise ImageIOError("write_mask_png needs a .png path", path=str(path))
-    write_image(path, _checked_mask(path, mask), attributes=attributes)
+    write_image(path, _checked_mask(path, mask, grey), attributes=attributes)
 
 
 # --- georeferenced rasters -------------------------------------------------------------------

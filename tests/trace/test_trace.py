@@ -424,7 +424,7 @@ def test_shared_direction_shadow_rays_agree_with_brute_force(city, tree):
     """Sun rays (one direction for all, whose terms the kernel computes once) give the
     brute-force answer, and the same as the per-ray path on the same rays."""
     from cityshade.trace.bricks import occluded_bricks
-    from cityshade.trace import _padded_box
+    from cityshade.trace import padded_box
 
     v, t, begin, end, mat = city
     rng = np.random.default_rng(4)
@@ -437,7 +437,7 @@ def test_shared_direction_shadow_rays_agree_with_brute_force(city, tree):
     assert 100 < want.sum() < 700
     np.testing.assert_array_equal(occ, want)
     per_ray = np.zeros(800, np.bool_)
-    lo, hi = _padded_box(tree)
+    lo, hi = padded_box(tree)
     occluded_bricks(tree.views, lo, hi, origins, directions, 0.0, np.full(800, np.inf), 20000.0,
                     256, per_ray)
     np.testing.assert_array_equal(per_ray, occ)

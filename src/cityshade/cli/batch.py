@@ -55,6 +55,7 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     from cityshade.errors import UsageError
     from cityshade.geo.temporal import parse_user_date
     from cityshade.shadows import get_technique
+    from cityshade.geometry.vegetation import with_vegetation
     from cityshade.store.scenefile import open_scene, scene_for_camera
     from cityshade.store.tiled import is_tiled_cache
     from cityshade.sunhours.plan import parse_clock_s, parse_duration_s, plan_steps, step_months
@@ -62,6 +63,7 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     from cityshade.sunhours.run import run_batch
     from cityshade.sunhours.surfaces import SampleSettings
     from cityshade.util import check_outputs
+    from cityshade.config import VegetationSettings
 
     t_start = time.perf_counter()
     technique = settings.shadows.technique
@@ -89,16 +91,20 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     warn_lmt([step.start_utc for step in steps[:1]], tz)
     city = parse_user_date(city_date or first_day.isoformat())
     cam = make_camera(scene, camera, eye, target, fov, size, pixel_size, cameras_file)
+    if scheduler is not None and settings.vegetation != VegetationSettings():
+        raise UsageError("--scheduler: Dask workers open the scene with the default "
+                         "[vegetation] settings; run without --scheduler to change them")
     if scheduler is not None and is_tiled_cache(file):
         raise UsageError("--scheduler needs one cache file: a tiled cache is not read by "
                          "Dask workers yet")
-    scene = scene_for_camera(scene, None if surfaces else cam, technique)
+    scene = with_vegetation(scene_for_camera(scene, None if surfaces else cam, technique),
+                            settings.vegetation)
     provenance = {
         "file": Path(file).name,
         "source_sha256": (scene.header or {}).get("source", {}).get("sha256", ""),
         "date": first_day.isoformat(), "from": from_text, "to": to_text, "every_s": every_s,
         "tz": tz, "days": days, "to_date": to_date.isoformat() if to_date else None,
-        "every_day": every_day,
+        "every_day": every_day, "vegetation": dataclasses.asdict(settings.vegetation),
     }
     request = SunHoursRequest.from_settings(
         steps, city.city_days, settings, surfaces=surfaces, camera=cam, technique=technique,

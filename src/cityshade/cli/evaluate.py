@@ -105,6 +105,7 @@ def evaluate(file, views, sun_text, date_text, times, tz, settings, sizes, size,
     import datetime as dt
 
     from cityshade.geo.temporal import days_to_iso, parse_user_date
+    from cityshade.geometry.vegetation import with_vegetation
     from cityshade.evaluate import (expand_techniques, load_or_build_scene, parse_suns,
                                     run_evaluation, suns_of_day, view_camera, write_report)
 
@@ -122,7 +123,8 @@ def evaluate(file, views, sun_text, date_text, times, tz, settings, sizes, size,
 
     city_days = parse_user_date(day.split("T")[0] if times else day,
                                 solar_placeholder(tz)).city_days
-    scene = load_or_build_scene(file, settings_for_source(file, crs, settings))
+    scene = with_vegetation(load_or_build_scene(file, settings_for_source(file, crs, settings)),
+                            settings.vegetation)
     tz = solar_zone_of_scene(tz, scene)
     suns = (suns_of_day(day, times, tz, scene, settings.sun) if times
             else parse_suns(sun_text or "135,45;240,15", scene))

@@ -431,7 +431,10 @@ def shadow_options(default_technique: str, *, technique_help: str | None = None,
                            f"--shadows {technique}; ignored", err=True)
             shadows = dataclasses.replace(settings.shadows.override(**flags),
                                           technique=technique)
-            kwargs["settings"] = dataclasses.replace(settings, shadows=shadows)
+            kwargs["settings"] = dataclasses.replace(
+                settings, shadows=shadows,
+                vegetation=vegetation_flags(settings.vegetation, kwargs.pop("no_vegetation"),
+                                            kwargs.pop("tree_transmissivity")))
             return func(*args, **kwargs)
 
         options = [
@@ -454,11 +457,28 @@ def shadow_options(default_technique: str, *, technique_help: str | None = None,
                          help="VSM filter radius in texels."),
             click.option("--cascades", type=click.IntRange(1, 16),
                          help="CSM cascade count (default 4)."),
+            click.option("--no-vegetation", is_flag=True, help="Leave the vegetation "
+                         "(SolitaryVegetationObject, PlantCover) out: trees neither cast nor "
+                         "receive ([vegetation] enabled = false)."),
+            click.option("--tree-transmissivity", type=click.FloatRange(0.0, 1.0),
+                         help="Fraction of the sun one crown lets through in leaf, every "
+                         "vegetation class (default 0.03, UMEP/SOLWEIG; [vegetation])."),
         ]
         for option in reversed(options):
             wrapper = option(wrapper)
         return config_option(wrapper)
     return decorate
+
+
+def vegetation_flags(vegetation, no_vegetation: bool, tree_transmissivity):
+    """``[vegetation]`` with ``--no-vegetation`` and ``--tree-transmissivity`` applied."""
+    import dataclasses
+
+    if no_vegetation:
+        vegetation = dataclasses.replace(vegetation, enabled=False)
+    if tree_transmissivity is not None:
+        vegetation = vegetation.with_transmissivity(tree_transmissivity)
+    return vegetation
 
 
 def _flag_applies(flag: str, name: str) -> bool:

@@ -55,6 +55,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     from cityshade.cli.options import reparse_solar_date, solar_placeholder
     from cityshade.errors import UsageError
     from cityshade.frame.render import check_frame_outputs, render_frame, strip_rows_for, write_frame
+    from cityshade.geometry.vegetation import with_vegetation
     from cityshade.store.scenefile import open_scene, scene_for_camera
     from cityshade.shadows import describe
 
@@ -86,7 +87,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
         raise UsageError("--decorate needs a map view (--camera map): a perspective picture "
                          "has no single scale or north")
     strip_rows_for(cam, technique, settings.shadows, strip_rows)  # refused before any work
-    scene = scene_for_camera(scene, cam, technique)
+    scene = with_vegetation(scene_for_camera(scene, cam, technique), settings.vegetation)
     sun = _sun(scene, sun_azimuth, sun_elevation, user_date, settings, no_refraction)
     frame = render_frame(scene, cam, user_date.city_days, sun, technique, settings.shadows,
                          sky=not no_sky, ground=ground, measure=verbose, strip_rows=strip_rows)

@@ -358,10 +358,17 @@ def _render_strips(scene, camera, t_days, sun, technique, tech, settings, sky, g
                  diagnostics=diagnostics, warnings=warnings, extra_channels=extra)
 
 
-def shadow_mask(frame: Frame) -> np.ndarray:
-    """(H, W) uint8: 255 sunlit, 0 shadow, 128 no surface (:func:`imageio.mask_from_lit`)."""
-    from cityshade.imageio import mask_from_lit
+def shadow_mask(frame: Frame, scene=None) -> np.ndarray:
+    """(H, W) uint8: 255 sunlit, 0 shadow, 128 no surface (:func:`imageio.mask_from_lit`);
+    for an exact technique on a scene with vegetation, the fraction of sun as a grey level
+    (:func:`imageio.grey_mask_from_lit`: trees let part of it through, docs/DESIGN.md §21)."""
+    from cityshade.geometry.vegetation import scene_vegetation
+    from cityshade.imageio import grey_mask_from_lit, mask_from_lit
+    from cityshade.shadows import describe
 
+    if scene is not None and describe(frame.technique).exact and \
+            scene_vegetation(scene) is not None:
+        return grey_mask_from_lit(frame.lit, frame.surfaces.valid)
     return mask_from_lit(frame.lit, frame.surfaces.valid)
 
 
@@ -506,7 +513,7 @@ def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef,
             rgb8 = decorated_picture(rgb8, frame, scene, date_text)
         imageio.write_png_rgb(png, rgb8, attributes=meta)
         written.append(Path(png))
-    mask_px = shadow_mask(frame)
+    mask_px = shadow_mask(frame, scene)
     release_pages(frame.lit, s.valid)
     if mask is not None and decorate:
         grey = np.repeat(np.asarray(mask_px).reshape(mask_px.shape[0], mask_px.shape[1], 1), 3,
@@ -515,7 +522,8 @@ def _write_frame(frame: Frame, scene, date_text: str, exr, png, mask, georef,
                               attributes=meta)
         written.append(Path(mask))
     elif mask is not None:
-        imageio.write_mask_png(mask, mask_px, attributes=meta)
+        imageio.write_mask_png(mask, mask_px, attributes=meta,
+                               grey=bool(np.isin(mask_px, (0, 128, 255), invert=True).any()))
         written.append(Path(mask))
     if georef is not None:
         written += imageio.write_georeferenced(

@@ -306,6 +306,7 @@ def open_compare(request: CompareRequest) -> CompareInputs:
     """The dates of the two states, the output folder checked (before any work), the model
     opened and the steps planned: what :func:`run_compare` starts from (a caller may look at
     the steps first, e.g. to warn about the tz database's local mean time)."""
+    from cityshade.geometry.vegetation import with_vegetation
     from cityshade.store.scenefile import whole_scene
     from cityshade.util import check_outputs
 
@@ -319,6 +320,7 @@ def open_compare(request: CompareRequest) -> CompareInputs:
         weather = read_weather(weather)
     # A tiled cache: the view of all its tiles.
     scene = whole_scene(request.scene) if _is_path(request.scene) else request.scene
+    scene = with_vegetation(scene, request.settings.vegetation)
     return CompareInputs(scene, before, after, request.plan.steps(scene), weather)
 
 
@@ -376,7 +378,8 @@ def run_compare(request: CompareRequest, inputs: CompareInputs | None = None, *,
         proposal = load_proposal(request.states.proposal, settings, scene, request.states.mesh)
         if "mesh" in (proposal.report or {}):  # a mesh's placement notes (a model's: at build)
             proposal_warnings = list(proposal.report.get("warnings", []))
-        scene_after = merge_scenes(scene, proposal, settings)
+        scene_after = with_vegetation(merge_scenes(scene, proposal, settings),
+                                      settings.vegetation)
     camera = request.camera(scene_after) if callable(request.camera) else request.camera
     receivers = Receivers(
         samples_per_m2=settings.batch.samples_per_m2 if request.surfaces else None,

@@ -99,12 +99,11 @@ class Exact(RayTraced):
 
     name = "exact"
 
-    def sunlit(self, scene, points, normals, sun_direction, t_days, diagnostics):
-        from cityshade.shadows.visibility import sunlit
+    def sunlit(self, scene, points, normals, sun, t_days, diagnostics):
+        from cityshade.shadows.visibility import sun_fraction
 
         chosen: list[EngineChoice] = []
-        lit = sunlit(scene, points, normals, sun_direction, t_days, engine="exact",
-                     chosen=chosen)
+        lit = sun_fraction(scene, points, normals, sun, t_days, engine="exact", chosen=chosen)
         if chosen:
             engines = sorted({c.engine for c in chosen})
             diagnostics.note = (f"exact engine {chosen[0].engine}: {chosen[0].reason}"

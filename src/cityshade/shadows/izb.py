@@ -14,10 +14,10 @@ class LightSpace(RayTraced):
 
     name = "izb"
 
-    def sunlit(self, scene, points, normals, sun_direction, t_days, diagnostics) -> np.ndarray:
-        from cityshade.shadows.visibility import sunlit
+    def sunlit(self, scene, points, normals, sun, t_days, diagnostics) -> np.ndarray:
+        from cityshade.shadows.visibility import sun_fraction
 
         engine: dict = {}
-        lit = sunlit(scene, points, normals, sun_direction, t_days, engine="izb", stats=engine)
+        lit = sun_fraction(scene, points, normals, sun, t_days, engine="izb", stats=engine)
         diagnostics.engine = engine
         return lit

@@ -27,15 +27,16 @@ class RayTraced:
         diagnostics.self_shadowed_px = int((surfaces.valid & ~faces).sum())
         points, normals = ctx.receivers(faces)
         if len(points):
-            scatter_pixels(self.sunlit(ctx.scene, points, normals, ctx.sun.direction,
-                                       ctx.t_days, diagnostics), faces, lit)
+            scatter_pixels(self.sunlit(ctx.scene, points, normals, ctx.sun, ctx.t_days,
+                                       diagnostics).astype(np.float32), faces, lit)
         diagnostics.rays = int(len(points))
         diagnostics.shadow_s = time.perf_counter() - t0
         return ShadowResult(lit=lit, diagnostics=diagnostics)
 
-    def sunlit(self, scene, points, normals, sun_direction, t_days,
+    def sunlit(self, scene, points, normals, sun, t_days,
                diagnostics: TechniqueDiagnostics) -> np.ndarray:
-        """(N,) bool: the exact per-point decision (here one kd-tree shadow ray per point)."""
-        from cityshade.shadows.visibility import sunlit
+        """(N,) float64: the exact per-point fraction of the sun (here one kd-tree shadow ray
+        per point; vegetation lets part through, docs/DESIGN.md §21)."""
+        from cityshade.shadows.visibility import sun_fraction
 
-        return sunlit(scene, points, normals, sun_direction, t_days, engine="raytrace")
+        return sun_fraction(scene, points, normals, sun, t_days, engine="raytrace")

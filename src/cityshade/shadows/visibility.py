@@ -91,6 +91,45 @@ def _take_per_ray(tmax, rays):
     return arr[rays]
 
 
+def transmission(scene, origins, direction, t_days: float = 0.0, *, engine: str = "raytrace",
+                 day_of_year: int | None = None, **options) -> np.ndarray:
+    """(N,) float64 in [0, 1]: the fraction of the sun each ray from ``origins`` along the one
+    sun ``direction`` (3,) keeps: 0 where an opaque triangle blocks it, else the product of
+    the transmissivities of the distinct vegetation crowns it crosses (docs/DESIGN.md §21).
+
+    A scene without vegetation (or a tiled cache's view, whose vegetation is opaque) is
+    :func:`occluded` as it is: 1 or 0. ``day_of_year`` (1-366, None: no date) decides leaf on
+    or off; ``options`` go to the opaque engine as for :func:`occluded`.
+    """
+    from cityshade.geometry.vegetation import scene_vegetation, vegetation_settings
+
+    veg = scene_vegetation(scene)
+    if veg is None:
+        return (~occluded(scene, origins, direction, t_days, engine=engine,
+                          **options)).astype(np.float64)
+    origins = np.ascontiguousarray(origins, dtype=np.float64)
+    direction = np.ascontiguousarray(direction, dtype=np.float64).reshape(3)
+    blocked = occluded(veg.opaque, origins, direction, t_days, engine=engine, **options)
+    rays = np.flatnonzero(~blocked)
+    out = np.zeros(len(origins), np.float64)
+    tau = veg.transmissivity(vegetation_settings(scene), day_of_year)
+    # The crowns' pass: izb's light-plane grid, or (raytrace, and exact: a crowns' tree is
+    # small) the crowns' kd-tree; the same bits either way.
+    if engine == "izb":
+        from cityshade.lightspace import MARGIN_REL
+        from cityshade.lightspace.vegetation import transmission as crowns
+
+        crowns(veg.vertices, veg.triangles, veg.t_begin_days, veg.t_end_days, veg.tri_crown,
+               tau, origins, direction, float(t_days), rays, out, MARGIN_REL)
+    else:
+        if engine != "exact":
+            _engine(engine)  # an unknown name fails here
+        from cityshade.trace.vegetation import transmission as crowns
+
+        crowns(veg.tree, origins, direction, float(t_days), rays, veg.tri_crown, tau, out)
+    return out
+
+
 def sunlit(scene, points, normals, sun_direction, t_days: float = 0.0, *,
            engine: str = "raytrace", stats: dict | None = None, **options) -> np.ndarray:
     """(N,) bool: whether each surface point sees the sun, by one shadow ray from the point
@@ -106,3 +145,21 @@ def sunlit(scene, points, normals, sun_direction, t_days: float = 0.0, *,
     if stats is not None:
         options["stats"] = stats
     return ~occluded(scene, origins, sun, t_days, engine=engine, **options)
+
+
+def sun_fraction(scene, points, normals, sun, t_days: float = 0.0, *,
+                 engine: str = "raytrace", stats: dict | None = None, **options) -> np.ndarray:
+    """(N,) float64 in [0, 1]: the fraction of the sun each surface point gets, by one shadow
+    ray from the point pushed off its surface (as :func:`sunlit`) through :func:`transmission`
+    (1 lit, 0 shadow, between where only vegetation is in the way). ``sun`` is a
+    :class:`~cityshade.geo.sun.SunPosition` (its date decides leaf on or off); ``options``
+    as :func:`occluded`'s."""
+    from cityshade.geometry.vegetation import day_of_year
+    from cityshade.trace import shadow_rays_from_surface
+
+    direction = np.asarray(sun.direction, dtype=np.float64)
+    origins = shadow_rays_from_surface(points, normals, direction)
+    if stats is not None:
+        options["stats"] = stats
+    return transmission(scene, origins, direction, t_days, engine=engine,
+                        day_of_year=day_of_year(sun), **options)

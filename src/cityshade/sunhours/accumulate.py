@@ -104,8 +104,10 @@ class _PixelRays:
                                           cp.normal[self.valid])
 
     def lit(self, scene, sun, t_days: float) -> np.ndarray:
-        """(H, W) float32: 1 lit, 0 shadow or no surface."""
-        from cityshade.shadows.visibility import occluded
+        """(H, W) float32: 1 lit, 0 shadow or no surface, between where only vegetation is in
+        the way (its transmission, docs/DESIGN.md §21)."""
+        from cityshade.geometry.vegetation import day_of_year
+        from cityshade.shadows.visibility import transmission
 
         faces = self.cp.context(sun).faces
         lit = np.zeros(self.valid.shape, np.float32)
@@ -113,8 +115,8 @@ class _PixelRays:
             direction = np.asarray(sun.direction, dtype=np.float64)
             origins = self.receivers.origins(direction, faces[self.valid])
             extra = {"calls": self.calls} if self.engine == "exact" else {}
-            blocked = occluded(scene, origins, direction, t_days, engine=self.engine, **extra)
-            lit[faces] = ~blocked
+            lit[faces] = transmission(scene, origins, direction, t_days, engine=self.engine,
+                                      day_of_year=day_of_year(sun), **extra)
         return lit
 
 

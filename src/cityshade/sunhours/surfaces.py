@@ -189,22 +189,23 @@ def sample_surfaces(scene, samples_per_m2: float = 1.0, t_days: float = 0.0,
 
 def samples_lit(scene, samples: SurfaceSamples, sun, t_days: float,
                 engine: str = "exact") -> np.ndarray:
-    """(N,) bool: sample faces the sun (N·L > 0) and its shadow ray is not blocked.
+    """(N,) float64: the fraction of the sun each sample gets: 0 facing away (N·L <= 0) or
+    blocked, 1 lit, between where only vegetation is in the way (docs/DESIGN.md §21).
 
     A sun at or below the horizon lights nothing. ``engine`` decides the shadow rays:
-    ``izb`` (:func:`cityshade.lightspace.sunlit`) or ``raytrace``
-    (:func:`cityshade.trace.sunlit`), the same answer.
+    ``izb`` (:mod:`cityshade.lightspace`) or ``raytrace`` (:mod:`cityshade.trace`), the same
+    answer.
     """
-    from cityshade.shadows.visibility import sunlit
+    from cityshade.shadows.visibility import sun_fraction
 
-    lit = np.zeros(samples.n, bool)
+    lit = np.zeros(samples.n, np.float64)
     if not sun.above_horizon or samples.n == 0:
         return lit
     direction = np.asarray(sun.direction, dtype=np.float64)
     faces = np.flatnonzero(samples.normals @ direction > 0.0)
     if len(faces):
-        lit[faces] = sunlit(scene, samples.points_m[faces], samples.normals[faces], direction,
-                            t_days, engine=engine)
+        lit[faces] = sun_fraction(scene, samples.points_m[faces], samples.normals[faces], sun,
+                                  t_days, engine=engine)
     return lit
 
 

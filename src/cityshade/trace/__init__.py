@@ -47,7 +47,7 @@ def tree_of(tree) -> KdTree:
     raise TraceInputError(f"expected a KdTree, not {type(tree).__name__}")
 
 
-def _padded_box(tree: KdTree) -> tuple[np.ndarray, np.ndarray]:
+def padded_box(tree: KdTree) -> tuple[np.ndarray, np.ndarray]:
     lo, hi, scale_m = tree.box_scale_m()
     pad = BOX_PAD_REL * scale_m
     return lo - pad, hi + pad
@@ -145,7 +145,7 @@ def occluded(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     out = np.zeros(origins.shape[0], np.bool_)
     if origins.shape[0] == 0 or kd.tri_records.shape[0] == 0:
         return out
-    lo, hi = _padded_box(kd)
+    lo, hi = padded_box(kd)
     occluded_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick, out)
     return out
 
@@ -180,7 +180,7 @@ def intersect(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
     v = np.zeros(n, np.float32)
     if n == 0 or kd.tri_records.shape[0] == 0:
         return dist, tri, u, v
-    lo, hi = _padded_box(kd)
+    lo, hi = padded_box(kd)
     intersect_bricks(kd.views, lo, hi, origins, directions, 0.0, tmax_arr, t, brick,
                      ClosestHits(dist, tri, u, v))
     return dist, tri, u, v

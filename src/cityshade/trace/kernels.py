@@ -177,7 +177,7 @@ def split_side(t_split, seg0, seg1):
 
 
 @njit(cache=True, inline="always")
-def _push(st_node, st_t0, st_t1, sp, node, seg0, seg1):
+def push_segment(st_node, st_t0, st_t1, sp, node, seg0, seg1):
     """Push a pending subtree and its segment on the stack; returns the new stack pointer."""
     st_node[sp] = node
     st_t0[sp] = seg0
@@ -225,7 +225,7 @@ def trace_range(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_days, b
     (1M city, one thread, sun rays): the split step as a branching helper taking the stack
     arrays ran at 1.8 Mrays/s against 8.7, most of the time spent outside the kernel's own code
     (by its look, reference counting of the arrays on every call); straight-line helpers such
-    as :func:`_push` cost nothing measurable. The ray's per-axis terms (origin, direction,
+    as :func:`push_segment` cost nothing measurable. The ray's per-axis terms (origin, direction,
     inverse) sit in one small array read by the split's axis: a three-way branch on the axis
     mispredicted often enough to cost a fifth of a shadow ray (6.9 -> 8.7 Mrays/s).
     """
@@ -312,7 +312,7 @@ def trace_range(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_days, b
                         elif o > split:
                             node = right
                         else:
-                            sp = _push(st_node, st_t0, st_t1, sp, right, seg0, seg1)
+                            sp = push_segment(st_node, st_t0, st_t1, sp, right, seg0, seg1)
                             node = node + 1
                         continue
                     t_split = (split - o) * ray[6 + axis]
@@ -328,7 +328,7 @@ def trace_range(tree, box_lo, box_hi, origins, directions, tmin, tmax, t_days, b
                     elif side == FAR_ONLY:
                         node = far
                     else:
-                        sp = _push(st_node, st_t0, st_t1, sp, far, ts, seg1)
+                        sp = push_segment(st_node, st_t0, st_t1, sp, far, ts, seg1)
                         node = near
                         seg1 = ts
             if closest:

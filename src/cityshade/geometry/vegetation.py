@@ -1,0 +1,187 @@
+"""Vegetation in a scene: which triangles are crowns, the scene without them, and the light
+each crown lets through (docs/DESIGN.md §21).
+
+A vegetation object (CityGML ``SolitaryVegetationObject``, ``PlantCover``, explicit or placed
+by ImplicitGeometry; CityJSON the same types) is one *crown*: a sun ray keeps the product of
+the transmissivities of the distinct crowns it crosses, and nothing behind an opaque triangle.
+A crown is a closed surface that a ray enters and leaves, so each object counts once whatever
+number of its triangles the ray meets.
+
+The exact engines split the work in two (:func:`cityshade.shadows.visibility.transmission`):
+the opaque triangles (:attr:`SceneVegetation.opaque`, a scene with its own kd-tree) through the
+engines' any-hit paths as they are, then the crowns for the rays left unblocked. A scene without
+vegetation never builds any of this: :func:`scene_vegetation` returns None and the engines run
+as before.
+"""
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+from datetime import datetime
+from typing import Any
+
+import numpy as np
+
+from cityshade.citygml.namespaces import SURFACE_CODE
+from cityshade.config import VegetationSettings
+from cityshade.errors import UsageError
+
+#: Object types that are vegetation, and the ``[vegetation]`` sub-table of each.
+VEGETATION_TYPES = {"SolitaryVegetationObject": "solitary", "PlantCover": "plant_cover"}
+#: Crown class codes (:attr:`SceneVegetation.crown_class`), in the order of these tables.
+CLASS_TABLES = ("solitary", "plant_cover")
+
+
+def vegetation_objects(scene) -> np.ndarray:
+    """(O,) int8: per object its crown class code (index into :data:`CLASS_TABLES`), -1 for
+    objects that are not vegetation. A part of a vegetation object is vegetation too."""
+    n = len(scene.obj_types)
+    code = np.array([CLASS_TABLES.index(VEGETATION_TYPES[t]) if t in VEGETATION_TYPES else -1
+                     for t in scene.obj_types], np.int8)
+    parent = np.asarray(scene.obj_parent)
+    for _ in range(16):  # parts inherit their ancestor's class (nesting is shallow)
+        inherit = (code < 0) & (parent >= 0)
+        if not inherit.any():
+            break
+        took = code[np.where(inherit, parent, 0)]
+        changed = inherit & (took >= 0)
+        if not changed.any():
+            break
+        code = np.where(changed, took, code)
+    return code if n else np.empty(0, np.int8)
+
+
+def vegetation_mask(scene) -> np.ndarray:
+    """(T,) bool: triangles of vegetation objects, or of surface class ``vegetation``."""
+    tri_object = np.asarray(scene.tri_object)
+    by_object = vegetation_objects(scene)[tri_object] >= 0 if len(tri_object) else \
+        np.zeros(0, bool)
+    return by_object | (np.asarray(scene.tri_class) == SURFACE_CODE["vegetation"])
+
+
+def _subscene(scene, keep: np.ndarray, build_tree: bool = True):
+    """The scene with only the triangles ``keep`` (a bool mask), the object, polygon and
+    vertex tables unchanged, and a kd-tree of its own over them."""
+    from cityshade.accel.kdtree_build import build_kdtree
+
+    rows = np.flatnonzero(keep)
+    fields = {name: np.ascontiguousarray(np.asarray(getattr(scene, name))[rows])
+              for name in ("triangles", "tri_object", "tri_polygon", "tri_class",
+                           "tri_material", "tri_texture", "tri_t_begin_days",
+                           "tri_t_end_days")}
+    tree = None
+    if build_tree:
+        tree = build_kdtree(scene.vertices, fields["triangles"], fields["tri_t_begin_days"],
+                            fields["tri_t_end_days"], fields["tri_material"])
+    return dataclasses.replace(scene, kdtree=tree, **fields)
+
+
+def vegetation_settings(scene) -> VegetationSettings:
+    """The ``[vegetation]`` settings ``scene``'s crowns use (:func:`with_vegetation`), else the
+    defaults."""
+    return scene.__dict__.get("vegetation_settings") or VegetationSettings()
+
+
+def with_vegetation(scene, settings: VegetationSettings):
+    """``scene`` as ``settings`` want it: without its vegetation when ``enabled`` is false
+    (:func:`without_vegetation`), else the scene itself, its crowns using ``settings``."""
+    if not settings.enabled:
+        return without_vegetation(scene)
+    scene.__dict__["vegetation_settings"] = settings
+    return scene
+
+
+def without_vegetation(scene):
+    """The scene without its vegetation (``--no-vegetation``: trees neither cast nor receive),
+    with a kd-tree of its own; the scene itself when it has none.
+
+    Raises
+    ------
+    UsageError
+        A tiled cache's view with vegetation (its tiles' trees hold it).
+    """
+    mask = vegetation_mask(scene)
+    if not mask.any():
+        return scene
+    if scene.is_tiled:
+        raise UsageError("--no-vegetation is not available on a tiled cache: build the model "
+                         "without --tile-m, or without its vegetation")
+    mask = vegetation_mask(scene)
+    if not mask.any():
+        return scene
+    return _subscene(scene, ~mask)
+
+
+@dataclass
+class SceneVegetation:
+    """The crowns of a scene, as the exact engines take them."""
+
+    #: The scene without vegetation, with its own kd-tree: the opaque casters.
+    opaque: Any
+    #: Scene triangle ids of the vegetation triangles.
+    tri: np.ndarray
+    #: (len(tri),) int32: the crown (index into :attr:`crown_object`) of each.
+    tri_crown: np.ndarray
+    #: (C,) int32 object id and (C,) int8 class code of each crown, ascending object ids.
+    crown_object: np.ndarray
+    crown_class: np.ndarray
+    #: The vegetation triangles' own kd-tree (``raytrace``; record ids index :attr:`tri`).
+    tree: Any
+    #: Vertices and the vegetation triangles' vertex indices and validity (``izb``).
+    vertices: np.ndarray
+    triangles: np.ndarray
+    t_begin_days: np.ndarray
+    t_end_days: np.ndarray
+
+    def transmissivity(self, settings: VegetationSettings,
+                       day_of_year: int | None) -> np.ndarray:
+        """(C,) float64: the fraction of the sun each crown lets through on ``day_of_year``
+        (None: a sun without a date)."""
+        leaf = settings.in_leaf(day_of_year)
+        per_class = []
+        for name in CLASS_TABLES:
+            cls = getattr(settings, name)
+            on = leaf or cls.evergreen
+            per_class.append(cls.leaf_on_transmissivity if on else cls.leaf_off_transmissivity)
+        return np.asarray(per_class, np.float64)[self.crown_class]
+
+
+def scene_vegetation(scene) -> SceneVegetation | None:
+    """The crowns of ``scene`` (made once, kept with it), or None: no vegetation, or a tiled
+    cache's view (whose tiles' trees hold the vegetation as opaque casters)."""
+    cached = scene.__dict__.get("_vegetation", False)
+    if cached is not False:
+        return cached
+    veg = None
+    if not scene.is_tiled and scene.n_triangles:
+        mask = vegetation_mask(scene)
+        if mask.any():
+            veg = _make_vegetation(scene, mask)
+    scene.__dict__["_vegetation"] = veg
+    return veg
+
+
+def _make_vegetation(scene, mask: np.ndarray) -> SceneVegetation:
+    crowns = _subscene(scene, mask)
+    objects = np.asarray(crowns.tri_object)
+    crown_object, tri_crown = np.unique(objects, return_inverse=True)
+    classes = vegetation_objects(scene)[crown_object]
+    # Triangles of surface class vegetation in an object of another type: solitary.
+    classes = np.where(classes < 0, 0, classes).astype(np.int8)
+    return SceneVegetation(
+        opaque=_subscene(scene, ~mask), tri=np.flatnonzero(mask).astype(np.int32),
+        tri_crown=tri_crown.astype(np.int32), crown_object=crown_object.astype(np.int32),
+        crown_class=classes, tree=crowns.kdtree,
+        vertices=np.ascontiguousarray(scene.vertices, dtype=np.float32),
+        triangles=np.ascontiguousarray(crowns.triangles, dtype=np.int32),
+        t_begin_days=np.ascontiguousarray(crowns.tri_t_begin_days, dtype=np.float64),
+        t_end_days=np.ascontiguousarray(crowns.tri_t_end_days, dtype=np.float64))
+
+
+def day_of_year(sun) -> int | None:
+    """Day of the year (1-366) of a sun position's UTC instant; None for a sun given by its
+    angles."""
+    instant = getattr(sun, "instant_utc", None)
+    if not instant:
+        return None
+    return datetime.fromisoformat(str(instant)).timetuple().tm_yday
