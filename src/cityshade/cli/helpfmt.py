@@ -23,7 +23,7 @@ SECTIONS: dict[str, tuple[str, ...]] = {
     "Place": ("crs", "axis_order"),
     "Camera and extent": ("camera", "eye", "target", "fov", "size", "pixel_size", "cameras_file",
                           "views", "ground", "no_sky"),
-    "Shadows": ("technique", "smooth", "map_px", "bias", "slope_bias", "max_bias",
+    "Shadows": ("technique", "no_vegetation", "tree_transmissivity", "smooth", "map_px", "bias", "slope_bias", "max_bias",
                 "pcf_kernel", "vsm_blur", "cascades", "sizes"),
     "Receivers and rules": ("surfaces", "no_surfaces", "samples_per_m2", "min_stretch_text",
                             "rule_files", "area_text"),
