@@ -53,6 +53,7 @@ TIERS: list[set[str]] = [
     {"sunhours"},
     {"light"},
     {"planning"},
+    {"study"},
     {"evaluate", "samplegen"},
     {"cli"},
     {"__main__"},

@@ -6,18 +6,12 @@ from pathlib import Path
 import click
 
 from cityshade.cli.options import (camera_options, ground_option, presentation_options,
-                                   shadow_options, time_plan_options)
+                                   shadow_options, states_options, time_plan_options)
 
 
 @click.command("compare")
 @click.argument("file", type=click.Path(path_type=Path))
-@click.option("--before", "before_text", help="State of the city before (date or year); "
-              "default: --date.")
-@click.option("--after", "after_text", help="State of the city after (date or year), on the "
-              "same model: a proposed building carries a later validFrom.")
-@click.option("--with", "proposal", type=click.Path(dir_okay=False, path_type=Path),
-              help="Proposal model (.cityshade, CityGML or CityJSON, same CRS) added to FILE "
-                   "for the state after.")
+@states_options("--date")
 @time_plan_options
 @camera_options("map")
 @shadow_options("izb")
@@ -49,7 +43,7 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
     import time
 
     from cityshade.cli.batch import parse_day
-    from cityshade.cli.options import make_camera, warn_lmt
+    from cityshade.cli.options import make_camera, parse_area, warn_lmt
     from cityshade.planning.rules import load_rules
     from cityshade.planning.run import (CompareRequest, CompareStates, TimePlan, open_compare,
                                         require_exact, run_compare)
@@ -68,7 +62,7 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
     min_stretch_h = parse_duration_s(min_stretch_text) / 3600.0 \
         if min_stretch_text.strip() not in ("0", "0min", "0s", "0h") else 0.0
     rules = [r for f in rule_files for r in load_rules(f)]
-    area = _area(area_text)
+    area = parse_area(area_text)
     first_day = parse_day(date_text, "--date")
     to_date = parse_day(to_date_text, "--to-date") if to_date_text else None
     plan = TimePlan(first_day, every_s=parse_duration_s(every_text),
@@ -101,20 +95,6 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
                    f"{comp.after.timings_s['total_s']:.2f} s  command "
                    f"{time.perf_counter() - t_start:.2f} s", err=True)
     click.echo(" ".join(str(p) for p in result.written))
-
-
-def _area(text):
-    from cityshade.errors import UsageError
-
-    if text is None:
-        return None
-    try:
-        values = tuple(float(v) for v in text.split(","))
-    except ValueError:
-        values = ()
-    if len(values) != 4 or not (values[0] < values[2] and values[1] < values[3]):
-        raise UsageError(f"--area must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, not {text!r}")
-    return values
 
 
 class _progress:
