@@ -91,7 +91,6 @@ class StudyView:
     same: np.ndarray
     building_after: np.ndarray
     new_building: np.ndarray
-    building_before: np.ndarray = field(repr=False, default=None)
 
     @property
     def camera(self):
@@ -118,8 +117,8 @@ def study_view(scene_before, t_before_days: float, scene_after, t_after_days: fl
     after = camera_pass(scene_after, camera, t_after_days, ground=ground)
     vb, va = before.valid, after.valid
     same = vb & va & (np.asarray(before.surfaces.obj_id) == np.asarray(after.surfaces.obj_id))
-    b_before, b_after = _buildings(before), _buildings(after)
-    return StudyView(before, after, same, b_after, b_after & ~same, b_before)
+    b_after = _buildings(after)
+    return StudyView(before, after, same, b_after, b_after & ~same)
 
 
 def categories(before_mask: np.ndarray, after_mask: np.ndarray, view: StudyView) -> np.ndarray:

@@ -187,15 +187,18 @@ def _legend_items(panels, has_area: bool) -> list[tuple[Any, str, str]]:
     for panel in panels:
         present.update(int(v) for v in np.unique(panel.cats))
     hexes = ["#{:02x}{:02x}{:02x}".format(*tuple(int(c) for c in P.PALETTE[k])) for k in range(len(P.LABELS))]
-    items = [(hexes[P.SUN], "0.5", "sun"), (hexes[P.ROOF_SUN], "0.15", "building (roof in sun)"),
-             (hexes[P.SHADOW], "0.5", "existing shadow"),
-             (hexes[P.ROOF_SHADOW], "0.15", "existing shadow on a roof"),
-             (hexes[P.NEW_SHADOW], "0.5", "new shadow (sun before, shadow after)")]
-    if present & {P.SHADOW_GONE}:
-        items.append((hexes[P.SHADOW_GONE], "0.5", "shadow no longer cast"))
-    if present & {P.NEW_BUILDING, P.NEW_BUILDING_SHADOW}:
-        items.append((hexes[P.NEW_BUILDING], "#1d3f8f", "new building (in sun)"))
-        items.append((hexes[P.NEW_BUILDING_SHADOW], "#1d3f8f", "new building (in shadow)"))
+    items = [(hexes[P.SUN], "0.5", "sun", True),
+             (hexes[P.ROOF_SUN], "0.15", "building (roof in sun)", P.ROOF_SUN in present),
+             (hexes[P.SHADOW], "0.5", "existing shadow", True),
+             (hexes[P.ROOF_SHADOW], "0.15", "existing shadow on a roof",
+              P.ROOF_SHADOW in present),
+             (hexes[P.NEW_SHADOW], "0.5", "new shadow (sun before, shadow after)", True),
+             (hexes[P.SHADOW_GONE], "0.5", "shadow no longer cast", P.SHADOW_GONE in present),
+             (hexes[P.NEW_BUILDING], "#1d3f8f", "new building (in sun)",
+              P.NEW_BUILDING in present),
+             (hexes[P.NEW_BUILDING_SHADOW], "#1d3f8f", "new building (in shadow)",
+              P.NEW_BUILDING_SHADOW in present)]
+    items = [item[:3] for item in items if item[3]]
     if has_area:
         items.append(("none", "#c8102e", "site boundary"))
     return items
