@@ -121,6 +121,23 @@ def test_random_masks_get_the_new_shadow_colour_only_where_the_rule_says(sample_
     assert np.array_equal(orange, same & (after == 0) & (before == 255))
 
 
+def test_an_extent_frames_the_map_on_whole_pixels(sample_city_scene):
+    from cityshade.study.panels import study_camera
+
+    extent = (690101.0, 5336041.0, 690199.0, 5336119.0)
+    cam = study_camera(sample_city_scene, 2.0, 1024, extent)
+    x0, px, _, y1, _, neg = cam.geotransform(sample_city_scene.origin_m)
+    h, w = cam.shape
+    assert px == 2.0 and neg == -2.0
+    # The grid on multiples of the pixel size, covering the extent with at most a pixel more.
+    assert x0 % 2.0 == 0.0 and y1 % 2.0 == 0.0
+    assert extent[0] - 2.0 < x0 <= extent[0] and extent[3] <= y1 < extent[3] + 2.0
+    assert extent[2] <= x0 + w * px < extent[2] + 4.0
+    assert extent[1] - 4.0 < y1 - h * px <= extent[1]
+    # Without a pixel size: the nice size that fits the longer side (98 m) into 1024 px.
+    assert study_camera(sample_city_scene, None, 1024, extent).pixel_size_m == 0.1
+
+
 def test_one_sheet_per_day_as_pdf_pages_and_pngs_with_the_index(study):
     _request, _result, out = study
     pdf = (out / "study.pdf").read_bytes()
@@ -191,6 +208,8 @@ def test_cli_errors_are_one_exact_line_and_write_nothing(tmp_path):
          "cityshade: error: a study needs an exact technique (izb or raytrace), not pcf"),
         (["--after", "1990", "--area", "1,2,3"], ("cityshade: error: --area must be "
          "x0,y0,x1,y1 with x0 < x1 and y0 < y1, not '1,2,3'")),
+        (["--after", "1990", "--extent", "5,5,1,1"], ("cityshade: error: --extent must be "
+         "x0,y0,x1,y1 with x0 < x1 and y0 < y1, not '5,5,1,1'")),
     ]
     for extra, line in cases:
         assert _one_error_line(base + extra) == line

@@ -649,8 +649,9 @@ def parse_size(text: str) -> tuple[int, int]:
     return w, h
 
 
-def parse_area(text: str | None):
-    """``--area x0,y0,x1,y1`` (model CRS metres) → the box, or None without the option."""
+def parse_area(text: str | None, option: str = "--area"):
+    """``--area x0,y0,x1,y1`` (model CRS metres) → the box, or None without the option
+    (``option`` names it in the message)."""
     from cityshade.errors import UsageError
 
     if text is None:
@@ -660,7 +661,7 @@ def parse_area(text: str | None):
     except ValueError:
         values = ()
     if len(values) != 4 or not (values[0] < values[2] and values[1] < values[3]):
-        raise UsageError(f"--area must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, not {text!r}")
+        raise UsageError(f"{option} must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, not {text!r}")
     return values
 
 

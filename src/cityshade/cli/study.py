@@ -5,7 +5,8 @@ from pathlib import Path
 
 import click
 
-from cityshade.cli.options import crs_option, ground_option, shadow_options, states_options
+from cityshade.cli.options import (crs_option, ground_option, shadow_options,
+                                   states_options)
 
 
 @click.command("study")
@@ -26,6 +27,8 @@ from cityshade.cli.options import crs_option, ground_option, shadow_options, sta
               help="Metres per pixel of the map (default: its longer side in 1024 px).")
 @click.option("--area", "area_text", help="Site boundary x0,y0,x1,y1 (model CRS), drawn on "
               "every panel.")
+@click.option("--extent", "extent_text", help="What the map shows, x0,y0,x1,y1 (model CRS; "
+              "default: the whole model), e.g. the site and its surroundings.")
 @shadow_options("izb", map_px=False)
 @ground_option
 @crs_option
@@ -34,8 +37,8 @@ from cityshade.cli.options import crs_option, ground_option, shadow_options, sta
               required=True, help="Output folder (created).")
 @click.option("-v", "--verbose", is_flag=True, help="Timings.")
 def study(file, year, days_text, from_text, to_text, every_text, times_text, tz, before_text,
-          after_text, proposal, pixel_size, area_text, settings, ground, crs, no_refraction,
-          outdir, verbose):
+          after_text, proposal, pixel_size, area_text, extent_text, settings, ground, crs,
+          no_refraction, outdir, verbose):
     """Shadow study of FILE (a .cityshade scene, a tiled cache folder, or a CityGML/CityJSON
     file): the shadows of the city before and after a change (--before/--after dates of one
     model, or --with a proposal) seen from above at each time of each day, existing shadow in
@@ -65,7 +68,8 @@ def study(file, year, days_text, from_text, to_text, every_text, times_text, tz,
     request = StudyRequest(
         file, _times(year, days_text, from_text, to_text, every_text, times_text, tz),
         CompareStates(before_text, after_text, proposal), technique=settings.shadows.technique,
-        settings=settings, pixel_size_m=pixel_size, area=parse_area(area_text), ground=ground,
+        settings=settings, pixel_size_m=pixel_size, area=parse_area(area_text),
+        extent=parse_area(extent_text, "--extent"), ground=ground,
         outdir=outdir, provenance={"file": str(file), "with": str(proposal) if proposal else
                                    None, "before_option": before_text,
                                    "after_option": after_text})

@@ -58,16 +58,23 @@ _GROUND_CLASSES = ("terrain", "traffic", "auxiliary_traffic", "water", "vegetati
                    "landuse", "marking")
 
 
-def study_camera(scene, pixel_size_m: float | None, side_px: int):
-    """The study's map view of ``scene`` (the state after: a proposal lies inside it), at
-    ``pixel_size_m`` or the "nice" size that fits the longer side into ``side_px``."""
+def study_camera(scene, pixel_size_m: float | None, side_px: int, extent=None):
+    """The study's map view of ``scene`` (the state after: a proposal lies inside it) or of
+    ``extent`` (x0, y0, x1, y1 in model CRS metres), at ``pixel_size_m`` or the "nice" size
+    that fits the longer side into ``side_px``."""
     from cityshade.raster.camera import map_view, nice_ceil, scene_box
 
-    if pixel_size_m is None:
+    bbox = None
+    if extent is not None:
+        o = scene.origin_m
+        bbox = (extent[0] - o[0], extent[1] - o[1], extent[2] - o[0], extent[3] - o[1])
+        x0, y0, x1, y1 = bbox
+    else:
         box = scene_box(scene)
-        pixel_size_m = nice_ceil(max(float(box[1, 0] - box[0, 0]),
-                                     float(box[1, 1] - box[0, 1]), 1e-3) / side_px)
-    return map_view(scene, pixel_size_m)
+        x0, y0, x1, y1 = box[0, 0], box[0, 1], box[1, 0], box[1, 1]
+    if pixel_size_m is None:
+        pixel_size_m = nice_ceil(max(float(x1 - x0), float(y1 - y0), 1e-3) / side_px)
+    return map_view(scene, pixel_size_m, bbox=bbox)
 
 
 @dataclass

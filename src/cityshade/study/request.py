@@ -161,6 +161,8 @@ class StudyRequest:
         :data:`DEFAULT_MAP_SIDE_PX` pixels).
     area : (x0, y0, x1, y1), optional
         Site boundary in model CRS metres, drawn on every panel.
+    extent : (x0, y0, x1, y1), optional
+        What the map shows, in model CRS metres (default: the whole model).
     ground : str or None
         Ground plane, as ``render --ground``.
     outdir : path, optional
@@ -176,6 +178,7 @@ class StudyRequest:
     settings: Any = None
     pixel_size_m: float | None = None
     area: Sequence[float] | None = None
+    extent: Sequence[float] | None = None
     ground: str | None = "auto"
     outdir: str | os.PathLike | None = None
     provenance: Any = None

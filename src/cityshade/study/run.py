@@ -93,7 +93,8 @@ def run_study(request, *, on_panel: Callable[[int, int], None] | None = None) ->
     if request.outdir is not None:
         check_outputs(("-o", request.outdir, None))  # before any work
     scene, scene_after, t_before, t_after = _open(request)
-    camera = study_camera(scene_after, request.pixel_size_m, DEFAULT_MAP_SIDE_PX)
+    camera = study_camera(scene_after, request.pixel_size_m, DEFAULT_MAP_SIDE_PX,
+                          request.extent)
     check_frame_memory(camera, technique=request.technique, settings=request.settings.shadows)
     view = study_view(scene, t_before, scene_after, t_after, camera, request.ground)
     tech = get_technique(request.technique)
