@@ -54,6 +54,7 @@ TIERS: list[set[str]] = [
     {"light"},
     {"meshes"},
     {"planning"},
+    {"study"},
     {"evaluate", "samplegen"},
     {"cli"},
     {"__main__"},

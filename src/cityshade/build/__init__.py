@@ -374,3 +374,16 @@ def build_file(source: str | os.PathLike | list, output: str | os.PathLike | Non
     options = asdict(settings.build)
     scene, size = save(scene, output, source_info, options)
     return output, scene, size
+
+
+def load_or_build_scene(path, settings=None):
+    """A scene with its kd-tree: a ``.cityshade`` file is loaded, a tiled cache gives the view
+    of all its tiles, a city model (CityGML, CityJSON: anything else) is built in memory
+    (nothing written)."""
+    from cityshade.store.cache import is_cache_file
+    from cityshade.store.scenefile import whole_scene
+
+    path = Path(path)
+    if is_cache_file(path) or path.is_dir() or not path.exists():
+        return whole_scene(path)
+    return build_scene_from_file(path, settings)

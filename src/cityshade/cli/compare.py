@@ -8,7 +8,7 @@ import click
 from cityshade.cli.helpfmt import GroupedCommand
 
 from cityshade.cli.options import (camera_options, ground_option, presentation_options,
-                                   shadow_options, time_plan_options)
+                                   shadow_options, states_options, time_plan_options)
 from cityshade.config import LENGTH_UNITS_M
 
 MESH_UNITS = tuple(LENGTH_UNITS_M)
@@ -16,14 +16,7 @@ MESH_UNITS = tuple(LENGTH_UNITS_M)
 
 @click.command("compare", cls=GroupedCommand)
 @click.argument("file", type=click.Path(path_type=Path))
-@click.option("--before", "before_text", help="State of the city before (date or year); "
-              "default: --date.")
-@click.option("--after", "after_text", help="State of the city after (date or year), on the "
-              "same model: a proposed building carries a later validFrom.")
-@click.option("--with", "proposal", type=click.Path(dir_okay=False, path_type=Path),
-              help="Proposal added to FILE for the state after: a model (.cityshade, CityGML "
-                   "or CityJSON, same CRS) or a mesh (.obj, .glb, .gltf, .ply, .stl; placed "
-                   "by --place, --up-axis, --mesh-units).")
+@states_options("--date", meshes=True)
 @click.option("--mesh-units", type=click.Choice(MESH_UNITS),
               help="Unit of a mesh proposal's numbers [default: m].")
 @click.option("--up-axis", type=click.Choice(("z", "y")),
@@ -71,7 +64,7 @@ def compare(file, before_text, after_text, proposal, mesh_units, up_axis, place_
     import time
 
     from cityshade.cli.batch import parse_day
-    from cityshade.cli.options import make_camera, warn_lmt
+    from cityshade.cli.options import make_camera, parse_area, warn_lmt
     from cityshade.planning.report import window_lines
     from cityshade.planning.rules import load_rules
     from cityshade.planning.run import (CompareRequest, CompareStates, TimePlan, open_compare,
@@ -92,7 +85,7 @@ def compare(file, before_text, after_text, proposal, mesh_units, up_axis, place_
     min_stretch_h = parse_duration_s(min_stretch_text) / 3600.0 \
         if min_stretch_text.strip() not in ("0", "0min", "0s", "0h") else 0.0
     rules = [r for f in rule_files for r in load_rules(f)]
-    area = _area(area_text)
+    area = parse_area(area_text)
     first_day = parse_day(date_text, "--date")
     to_date = parse_day(to_date_text, "--to-date") if to_date_text else None
     plan = TimePlan(first_day, every_s=parse_duration_s(every_text),
@@ -141,20 +134,6 @@ def _mesh_placement(units, up_axis, place_text):
     from cityshade.meshes.proposal import MeshPlacement
 
     return MeshPlacement(units or "m", up_axis, MeshPlacement.parse_place(place_text))
-
-
-def _area(text):
-    from cityshade.errors import UsageError
-
-    if text is None:
-        return None
-    try:
-        values = tuple(float(v) for v in text.split(","))
-    except ValueError:
-        values = ()
-    if len(values) != 4 or not (values[0] < values[2] and values[1] < values[3]):
-        raise UsageError(f"--area must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, not {text!r}")
-    return values
 
 
 class _progress:

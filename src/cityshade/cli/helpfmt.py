@@ -16,13 +16,14 @@ SECTIONS: dict[str, tuple[str, ...]] = {
                    "mesh_units", "up_axis", "place_text", "trees", "trees_crs",
                    "lod", "theme", "time_source", "time_attribute", "closure_surfaces"),
     "Sun and time": ("time_text", "tz", "sun_azimuth", "sun_elevation", "from_text",
-                     "to_text", "every_text", "days", "to_date_text", "from_date", "to_date", "every_day", "times", "sun_text",
+                     "to_text", "every_text", "days", "to_date_text", "from_date", "to_date", "year", "days_text",
+                     "times_text", "every_day", "times", "sun_text",
                      "no_refraction"),
     "Weather and sky": ("weather_file", "weather", "svf", "irradiance", "sky_name", "sky_model",
                         "albedo"),
     "Place": ("crs", "axis_order"),
     "Camera and extent": ("camera", "eye", "target", "fov", "size", "pixel_size", "cameras_file",
-                          "views", "ground", "no_sky"),
+                          "views", "extent_text", "ground", "no_sky"),
     "Shadows": ("technique", "no_vegetation", "tree_transmissivity", "smooth", "map_px", "bias", "slope_bias", "max_bias",
                 "pcf_kernel", "vsm_blur", "cascades", "sizes"),
     "Receivers and rules": ("surfaces", "no_surfaces", "samples_per_m2", "min_stretch_text",
@@ -75,6 +76,12 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
         "cityshade export city.cityshade sunhours/surfaces.csv -o sunhours.glb",
         "cityshade export city.cityshade planning/surfaces.csv --column loss_h -o loss.glb "
         "--ply loss.ply",
+    ),
+    "study": (
+        "cityshade study city.cityshade --with proposal.gml --area 690110,5336122,690140,5336131 "
+        "--year 2025 --tz Europe/Berlin -o study",
+        "cityshade study city.cityshade --before 1750 --after 1990 --times 09:00,12:00,15:00 "
+        "--tz local-apparent -o study1750",
     ),
     "evaluate": (
         "cityshade evaluate city.cityshade --views overview,map --sun \"135,45;240,15\" "

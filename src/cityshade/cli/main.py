@@ -20,6 +20,7 @@ COMMANDS = {
     "batch": ("cityshade.cli.batch:batch", "Sun-hour maps and per-surface sun-hours over times."),
     "compare": ("cityshade.cli.compare:compare", "Sun-hours before and after a change; rules."),
     "sky": ("cityshade.cli.sky:sky", "Sky view factor and irradiation (kWh/m²) from weather."),
+    "study": ("cityshade.cli.study:study", "Shadow-study sheets: existing and new shadow by hour."),
     "evaluate": ("cityshade.cli.evaluate:evaluate", "Shadow error against run time; the stress set."),
     "export": ("cityshade.cli.export:export", "A scene coloured by a surfaces.csv column as .glb/.ply."),
 }
@@ -80,6 +81,7 @@ def cli() -> None:
           --tz Europe/Berlin --camera map -o sunhours/
       cityshade compare city.cityshade --with proposal.gml --date 2025-03-21 \\
           --tz Europe/London --rules bre209 -o planning/
+      cityshade study city.cityshade --with proposal.gml --tz Europe/London -o study/
       cityshade evaluate city.cityshade --shadows all -o report/
     """
 

@@ -565,6 +565,29 @@ def time_plan_options(func):
     return func
 
 
+def states_options(before_default: str, meshes: bool = False):
+    """``--before --after --with``: the two states of compare and study
+    (:class:`cityshade.planning.run.CompareStates`); ``before_default`` says what a missing
+    ``--before`` means; ``meshes``: the command has the mesh placement options."""
+    def decorate(func):
+        for option in reversed([
+            click.option("--before", "before_text", help=f"State of the city before (date or "
+                         f"year); default: {before_default}."),
+            click.option("--after", "after_text", help="State of the city after (date or "
+                         "year), on the same model: a proposed building carries a later "
+                         "validFrom."),
+            click.option("--with", "proposal", type=click.Path(dir_okay=False, path_type=Path),
+                         help="Proposal added to FILE for the state after: a model "
+                              "(.cityshade, CityGML or CityJSON, same CRS) or a mesh (.obj, "
+                              ".glb, .gltf, .ply, .stl" + (
+                                  "; placed by --place, --up-axis, --mesh-units)." if meshes else
+                                  ", in model CRS coordinates, Z up; glTF Y up).")),
+        ]):
+            func = option(func)
+        return func
+    return decorate
+
+
 # --- the ground plane option of render, batch and evaluate -------------------------------------
 
 GROUND_HELP = ("Ground plane where the model shows no surface, so cast shadows fall on "
@@ -653,6 +676,22 @@ def parse_size(text: str) -> tuple[int, int]:
     if not (1 <= w <= 16384 and 1 <= h <= 16384):
         raise click.BadParameter("--size must be between 1x1 and 16384x16384 pixels")
     return w, h
+
+
+def parse_area(text: str | None, option: str = "--area"):
+    """``--area x0,y0,x1,y1`` (model CRS metres) → the box, or None without the option
+    (``option`` names it in the message)."""
+    from cityshade.errors import UsageError
+
+    if text is None:
+        return None
+    try:
+        values = tuple(float(v) for v in text.split(","))
+    except ValueError:
+        values = ()
+    if len(values) != 4 or not (values[0] < values[2] and values[1] < values[3]):
+        raise UsageError(f"{option} must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, not {text!r}")
+    return values
 
 
 def make_camera(scene, name, eye, target, fov, size, pixel_size, cameras_file=None):

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any, Callable, Sequence
 
 import numpy as np
 
+from cityshade.build import load_or_build_scene
 from cityshade.config import EvaluateSettings, ShadowSettings
 from cityshade.errors import UsageError
 from cityshade.evaluate.metrics import compare, finite_check, make_reference, median_s
@@ -419,20 +420,6 @@ def run_evaluation(scene: "Scene", views: Sequence[tuple[str, Any]], suns: Seque
 
 
 # --- inputs of the command ----------------------------------------------------------------
-
-def load_or_build_scene(path, settings=None):
-    """A scene with its kd-tree: a ``.cityshade`` file is loaded, a tiled cache gives the view
-    of all its tiles, a city model (CityGML, CityJSON: anything else) is built in memory
-    (nothing written)."""
-    from cityshade.build import build_scene_from_file
-    from cityshade.store.cache import is_cache_file
-    from cityshade.store.scenefile import whole_scene
-
-    path = Path(path)
-    if is_cache_file(path) or path.is_dir() or not path.exists():
-        return whole_scene(path)
-    return build_scene_from_file(path, settings)
-
 
 def parse_suns(text: str, scene) -> list:
     """``"az,el;az,el"`` (degrees, azimuth from true north) → sun positions of the model."""

@@ -27,8 +27,9 @@ __all__ = ["TimePlan", "CompareStates", "CompareRequest", "CompareInputs", "Comp
            "fit_map_view"]
 
 
-def require_exact(technique: str) -> None:
-    """Refuse a technique that is not exact (a comparison must not move with a map's error).
+def require_exact(technique: str, what: str = "compare") -> None:
+    """Refuse a technique that is not exact (a comparison must not move with a map's error;
+    ``what`` names the command in the message).
 
     Raises
     ------
@@ -38,7 +39,7 @@ def require_exact(technique: str) -> None:
     from cityshade.shadows import describe, exact_technique_names
 
     if not describe(technique).exact:
-        raise UsageError(f"compare needs an exact technique "
+        raise UsageError(f"{what} needs an exact technique "
                          f"({' or '.join(sorted(exact_technique_names()))}), not {technique}")
 
 

@@ -18,7 +18,9 @@ print), so a layer and its table never disagree.
 """
 from __future__ import annotations
 
+import contextlib
 import math
+import sqlite3
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Sequence
@@ -29,7 +31,8 @@ from cityshade.errors import OutputError
 
 __all__ = ["Layer", "polygon_outlines", "building_footprints",
            "surface_layer", "building_layer", "write_gis", "finite_or_none",
-           "rows_to_columns", "GEOPACKAGE_NAME"]
+           "rows_to_columns", "GEOPACKAGE_NAME", "STYLE_BY_FIELD", "layer_style",
+           "write_layer_styles"]
 
 #: The GeoPackage beside ``surfaces.csv``.
 GEOPACKAGE_NAME = "results.gpkg"
@@ -267,6 +270,7 @@ def write_gis(outdir, layers: Sequence[Layer], crs, *,
         with atomic_path(path, keep_suffix=True, what="the GeoPackage") as tmp:
             for layer in layers:
                 _write_layer(tmp, layer, crs_text, "GPKG", layer.geometries)
+            write_layer_styles(tmp, layers)
         written.append(path)
         if geojson and epsg:
             for layer in layers:
@@ -276,9 +280,50 @@ def write_gis(outdir, layers: Sequence[Layer], crs, *,
                     _write_layer(tmp, layer, "EPSG:4326", "GeoJSON", geoms,
                                  layer_options={"RFC7946": "YES", "WRITE_NAME": "NO"})
                 written.append(gj)
-    except (OSError, RuntimeError, ValueError) as exc:  # pyogrio's errors are RuntimeErrors
+    except (OSError, RuntimeError, ValueError, sqlite3.Error) as exc:  # pyogrio's: RuntimeError
         raise OutputError(f"cannot write the GIS layers: {exc}", path=str(path)) from None
     return written
+
+
+#: The shipped QGIS styles (``present/styles/*.qml``) by the field they colour, in the order a
+#: layer's fields are looked up: a layer gets the first whose field it has.
+STYLE_BY_FIELD = (("max_loss_h", "building_loss.qml"), ("loss_h", "loss.qml"),
+                  ("mean_sun_hours", "sun_hours.qml"))
+
+
+def layer_style(layer: Layer) -> tuple[str, str] | None:
+    """(style file name, its QML text) of the shipped style for ``layer``, or None."""
+    from importlib.resources import files
+
+    for name, style in STYLE_BY_FIELD:
+        if name in layer.columns:
+            return style, files("cityshade.present").joinpath("styles", style).read_text(
+                encoding="utf-8")
+    return None
+
+
+def write_layer_styles(gpkg, layers: Sequence[Layer]) -> int:
+    """Each layer's shipped style into the GeoPackage's ``layer_styles`` table (QGIS's own
+    schema), as its default: QGIS draws the layer with it when the layer is opened. The table
+    is not registered in ``gpkg_contents``; GDAL lists it as a table all the same. Returns
+    the number of styles written."""
+    styles = [(layer.name, style) for layer in layers if (style := layer_style(layer))]
+    if not styles:
+        return 0
+    with contextlib.closing(sqlite3.connect(str(gpkg))) as db, db:
+        db.execute("CREATE TABLE IF NOT EXISTS layer_styles (id INTEGER PRIMARY KEY "
+                   "AUTOINCREMENT, f_table_catalog TEXT(256), f_table_schema TEXT(256), "
+                   "f_table_name TEXT(256), f_geometry_column TEXT(256), styleName TEXT(30), "
+                   "styleQML TEXT, styleSLD TEXT, useAsDefault BOOLEAN, description TEXT, "
+                   "owner TEXT(30), ui TEXT(30), update_time DATETIME DEFAULT "
+                   "CURRENT_TIMESTAMP)")
+        for table, (name, qml) in styles:
+            db.execute("INSERT INTO layer_styles (f_table_catalog, f_table_schema, "
+                       "f_table_name, f_geometry_column, styleName, styleQML, styleSLD, "
+                       "useAsDefault, description, owner, ui) VALUES "
+                       "('', '', ?, 'geom', ?, ?, '', 1, ?, '', '')",
+                       (table, f"cityshade {name[:-4]}", qml, f"cityshade style {name}"))
+    return len(styles)
 
 
 def finite_or_none(values) -> list:

@@ -23,7 +23,7 @@ from cityshade.errors import CRSError, UsageError
 
 __all__ = ["ColourBar", "Categories", "MapContext", "Decorated", "scale_bar_m",
            "convergence_at_centre_deg", "decorate_map", "decorate_or_plain", "Mark",
-           "annotate_map"]
+           "annotate_map", "draw_scale_bar", "draw_north_arrow", "true_north_cw_deg"]
 
 #: The scale bar aims at this share of the map's width (then rounded to 1, 2 or 5 × 10^k m).
 SCALE_BAR_SHARE = 0.2
@@ -141,6 +141,14 @@ def convergence_at_centre_deg(ctx: MapContext, shape: tuple[int, int]) -> float 
         return None
 
 
+def true_north_cw_deg(gamma_deg: float | None) -> float | None:
+    """Direction of the true-north arrow, degrees clockwise from grid north (−γ), or None when
+    it is not drawn: |γ| ≤ :data:`TRUE_NORTH_MIN_DEG`, or γ unknown."""
+    if gamma_deg is None or abs(gamma_deg) <= TRUE_NORTH_MIN_DEG:
+        return None
+    return -gamma_deg
+
+
 @dataclass(frozen=True)
 class _Layout:
     """Pixel layout of a decorated map (y down from the top of the picture)."""
@@ -251,7 +259,7 @@ def decorate_map(rgb: np.ndarray, ctx: MapContext) -> Decorated:
     bar_m = scale_bar_m(w * px_m)
     bar_px = bar_m / px_m
     bar_row, bar_col = _scale_bar(fig, lay, height, bar_m, bar_px)
-    true_cw = -gamma if gamma is not None and abs(gamma) > TRUE_NORTH_MIN_DEG else None
+    true_cw = true_north_cw_deg(gamma)
     _north_arrows(fig, lay, width, height, true_cw)
     fig.text(lay.pad, height - lay.text_top - 0.2 * lay.font_px, "\n".join(lay.text),
              transform=px, ha="left", va="top", fontsize=lay.font_pt * 0.9, linespacing=1.35)
@@ -266,48 +274,65 @@ def _scale_bar(fig, lay: _Layout, height: int, bar_m: float, bar_px: float) -> t
     """A black bar of ``bar_px`` pixels at the left of the scale row, its length written to
     its right (a short bar has no room for labels at both ends); returns (row through its
     middle, first column)."""
-    from matplotlib.patches import Rectangle
     from matplotlib.transforms import IdentityTransform
 
-    px = IdentityTransform()
     bar_h = max(4, int(round(0.45 * lay.font_px)))
     col0 = lay.pad
     top = lay.scale_top + int(round(1.9 * lay.font_px))
-    # Whole pixels, no anti-aliasing: the bar covers exactly the columns of its length.
-    fig.add_artist(Rectangle((col0, height - top - bar_h), bar_px, bar_h, transform=px,
-                             facecolor="black", edgecolor="none", antialiased=False))
-    fig.text(col0 + bar_px + 0.5 * lay.font_px, height - top - bar_h / 2.0, _length_label(bar_m),
-             transform=px, ha="left", va="center", fontsize=lay.font_pt)
+    draw_scale_bar(fig, (col0, height - top - bar_h), bar_px, bar_h, bar_m, lay.font_pt,
+                   0.5 * lay.font_px, IdentityTransform())
     return top + bar_h // 2, col0
 
 
+def draw_scale_bar(fig, corner, length: float, thickness: float, bar_m: float,
+                   font_pt: float, gap: float, transform) -> None:
+    """A black bar of ``length`` (units of ``transform``: display pixels, inches...) from its
+    lower-left ``corner``, ``bar_m`` written ``gap`` to its right. Whole pixels, no
+    anti-aliasing: the bar covers exactly the columns of its length."""
+    from matplotlib.patches import Rectangle
+
+    x, y = corner
+    fig.add_artist(Rectangle((x, y), length, thickness, transform=transform,
+                             facecolor="black", edgecolor="none", antialiased=False))
+    fig.text(x + length + gap, y + thickness / 2.0, _length_label(bar_m), transform=transform,
+             ha="left", va="center", fontsize=font_pt)
+
+
 def _north_arrows(fig, lay: _Layout, width: int, height: int, true_cw: float | None) -> None:
-    """Grid north (up, bold, "N") at the right of the legend and scale rows; true north (thin,
-    a star at its tip) turned by ``true_cw`` degrees clockwise when given."""
-    from matplotlib.patches import FancyArrow
+    """Grid north at the right of the legend and scale rows (:func:`draw_north_arrow`)."""
     from matplotlib.transforms import IdentityTransform
 
-    px = IdentityTransform()
-    length = 3.0 * lay.font_px
     x = width - lay.pad - 1.6 * lay.font_px
     base = height - (lay.text_top - 0.4 * lay.font_px)
-    fig.add_artist(FancyArrow(x, base, 0.0, length, width=0.35 * lay.font_px,
-                              head_width=1.1 * lay.font_px, head_length=0.9 * lay.font_px,
-                              length_includes_head=True, transform=px, color="black"))
+    draw_north_arrow(fig, (x, base), lay.font_px, lay.font_pt, true_cw, IdentityTransform())
+
+
+def draw_north_arrow(fig, foot, em: float, font_pt: float, true_cw: float | None,
+                     transform) -> None:
+    """Grid north (up, bold, "N") from ``foot``, 3 ``em`` long (``em``: the font size in the
+    units of ``transform``); true north (thin, a star at its tip) turned by ``true_cw``
+    degrees clockwise when given."""
+    from matplotlib.patches import FancyArrow
+
+    x, base = foot
+    length = 3.0 * em
+    fig.add_artist(FancyArrow(x, base, 0.0, length, width=0.35 * em,
+                              head_width=1.1 * em, head_length=0.9 * em,
+                              length_includes_head=True, transform=transform, color="black"))
     if true_cw is None:
-        fig.text(x, base + length + 0.15 * lay.font_px, "N", transform=px, ha="center",
-                 va="bottom", fontsize=lay.font_pt, weight="bold")
+        fig.text(x, base + length + 0.15 * em, "N", transform=transform, ha="center",
+                 va="bottom", fontsize=font_pt, weight="bold")
     else:  # beside the head: the true-north star stands above it
-        fig.text(x - 0.8 * lay.font_px, base + length - 0.45 * lay.font_px, "N (grid)",
-                 transform=px, ha="right", va="center", fontsize=lay.font_pt, weight="bold")
+        fig.text(x - 0.8 * em, base + length - 0.45 * em, "N (grid)",
+                 transform=transform, ha="right", va="center", fontsize=font_pt, weight="bold")
     if true_cw is not None:
         a = math.radians(true_cw)
         dx, dy = 1.25 * length * math.sin(a), 1.25 * length * math.cos(a)
-        fig.add_artist(FancyArrow(x, base, dx, dy, width=0.08 * lay.font_px,
-                                  head_width=0.0, head_length=0.0, transform=px,
+        fig.add_artist(FancyArrow(x, base, dx, dy, width=0.08 * em,
+                                  head_width=0.0, head_length=0.0, transform=transform,
                                   color="0.25"))
-        fig.text(x + dx, base + dy, "★", transform=px, ha="center", va="center",
-                 fontsize=lay.font_pt, color="0.25")
+        fig.text(x + dx, base + dy, "★", transform=transform, ha="center", va="center",
+                 fontsize=font_pt, color="0.25")
 
 
 def _crs_lines(ctx: MapContext, gt, shape, gamma) -> list[str]:
