@@ -31,7 +31,7 @@ from cityshade.cli.options import (crs_option, ground_option, shadow_options,
               "every panel.")
 @click.option("--extent", "extent_text", help="What the map shows, x0,y0,x1,y1 (model CRS; "
               "default: the whole model), e.g. the site and its surroundings.")
-@shadow_options("izb", map_px=False)
+@shadow_options("exact", map_px=False)
 @ground_option
 @crs_option
 @click.option("--no-refraction", is_flag=True, help="Geometric sun elevation (no refraction).")

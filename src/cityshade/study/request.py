@@ -154,7 +154,7 @@ class StudyRequest:
     states : cityshade.planning.run.CompareStates
         Before and after: two dates of one model, or the model with a proposal added.
     technique : str
-        An exact technique (``izb`` or ``raytrace``).
+        An exact technique (``exact``, ``izb`` or ``raytrace``).
     settings : cityshade.config.Settings, optional
     pixel_size_m : float, optional
         Metres per map pixel (default: the map's longer side in
@@ -174,7 +174,7 @@ class StudyRequest:
     scene: Any
     times: StudyTimes
     states: Any
-    technique: str = "izb"
+    technique: str = "exact"
     settings: Any = None
     pixel_size_m: float | None = None
     area: Sequence[float] | None = None
