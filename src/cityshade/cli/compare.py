@@ -59,8 +59,16 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
     technique = settings.shadows.technique
     require_exact(technique)
     if samples_per_m2 is not None:
+        if no_surfaces:
+            from cityshade.errors import UsageError
+
+            raise UsageError("--samples-per-m2 sets the sample points of the surfaces, which "
+                             "--no-surfaces skips: give one or the other")
         settings = dataclasses.replace(settings, batch=dataclasses.replace(
             settings.batch, samples_per_m2=samples_per_m2))
+    from cityshade.cli.options import check_every_day
+
+    check_every_day(days, to_date_text)
     if no_refraction:
         settings = dataclasses.replace(settings, sun=dataclasses.replace(settings.sun,
                                                                         refraction=False))
@@ -104,17 +112,9 @@ def compare(file, before_text, after_text, proposal, date_text, from_text, to_te
 
 
 def _area(text):
-    from cityshade.errors import UsageError
+    from cityshade.cli.options import parse_box
 
-    if text is None:
-        return None
-    try:
-        values = tuple(float(v) for v in text.split(","))
-    except ValueError:
-        values = ()
-    if len(values) != 4 or not (values[0] < values[2] and values[1] < values[3]):
-        raise UsageError(f"--area must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, not {text!r}")
-    return values
+    return parse_box(text, "--area must be x0,y0,x1,y1 with x0 < x1 and y0 < y1", ordered=True)
 
 
 class _progress:
