@@ -357,11 +357,14 @@ def test_cli_batch_writes_everything(files, tmp_path):
     assert np.nanmax(hours) == pytest.approx(16.0)
     # The API gives the same numbers.
     scene = load_scene(scene_path)
-    from cityshade.raster.camera import map_view
+    from cityshade.raster.camera import default_map_margin_m, map_extent, map_view
 
     steps = P.plan_steps(date(2024, 6, 21), 5 * 3600, 21 * 3600, 3600, "Europe/Berlin")
-    api = A.sun_hours(scene, map_view(scene, 4.0), [s.centre_utc for s in steps],
-                      _city_days("2024-06-21"), weights_h=[s.weight_h for s in steps])
+    # The command's map keeps a margin of twice the model's height around it.
+    extent = map_extent(scene, None, default_map_margin_m(scene))
+    api = A.sun_hours(scene, map_view(scene, 4.0, bbox=extent), [s.centre_utc for s in steps],
+                      _city_days("2024-06-21"), weights_h=[s.weight_h for s in steps],
+                      ground="auto")  # the command's default ground fills the margin
     np.testing.assert_array_equal(np.nan_to_num(hours, nan=-1), np.nan_to_num(api.hours, nan=-1))
     png, _ = read_image(out / "sun_hours.png")
     # Decorated by default (title, scale bar, north, CRS, colour bar in a margin): the map's
@@ -390,10 +393,11 @@ def test_cli_batch_writes_everything(files, tmp_path):
     manifest = json.loads((out / "manifest.json").read_text())
     assert manifest["status"] == "finished" and manifest["finished_steps"] == list(range(16))
     assert manifest["params"]["tz"] == "Europe/Berlin" and len(manifest["key"]) == 64
-    # The same command again: nothing left to compute, same result.
+    # The same command again: a finished run keeps no state, so it computes again, the same.
+    assert not (out / C.STATE_NAME).exists()
     again = _run("batch", scene_path, *ARGS, "--frames", "--surfaces", "--samples-per-m2",
                  "0.05", "-o", out, "-v")
-    assert again.exit_code == 0 and "16 taken from the saved state" in again.output
+    assert again.exit_code == 0 and "16 sun positions computed, 0 taken" in again.output
     assert read_exr(out / "sun_hours.exr")[0]["sun_hours"].tobytes() == hours.tobytes()
 
 
