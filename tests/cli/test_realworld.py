@@ -423,7 +423,7 @@ def test_ground_auto_is_the_default_and_none_switches_it_off(tmp_path):
     from cityshade.imageio import read_exr
     scene_path = _two_boxes_without_terrain(tmp_path)
     base = ["render", str(scene_path), "--date", "2000", "--sun-azimuth", "180",
-            "--sun-elevation", "45", "--camera", "map", "--pixel-size", "1"]
+            "--sun-elevation", "45", "--camera", "map", "--pixel-size", "1", "--margin-m", "0"]
     result = CliRunner().invoke(cli, base + ["-o", str(tmp_path / "auto.exr")])
     assert result.exit_code == 0, result.output
     ch, meta = read_exr(tmp_path / "auto.exr")
