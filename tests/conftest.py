@@ -49,3 +49,23 @@ def run_with_and_without_jit(script: str) -> list:
         assert out.returncode == 0, out.stderr[-2000:]
         results.append(json.loads(out.stdout.strip().splitlines()[-1]))
     return results
+
+
+@pytest.fixture
+def stop_batch_after(monkeypatch):
+    """``stop_batch_after(n)``: the next ``cityshade batch`` in this process stops with a
+    Ctrl-C once ``n`` sun positions are done (its state saved, as after a real one);
+    ``stop_batch_after(None)`` lets the batches run through again."""
+    from cityshade.cli import batch as batch_cli
+
+    step = batch_cli.Progress.step
+
+    def stop(n):
+        def stopping(self, done, total, unit):
+            step(self, done, total, unit)
+            if done == n:
+                raise KeyboardInterrupt
+
+        monkeypatch.setattr(batch_cli.Progress, "step", step if n is None else stopping)
+
+    return stop

@@ -182,10 +182,95 @@ def check_outputs(*outputs: tuple[str, str | os.PathLike | None, tuple[str, ...]
         if suffixes is None and path.exists() and not path.is_dir():
             raise OutputError(f"{option} {path} is a file, not a folder")
         folder = make_folder(path if suffixes is None else path.parent)
-        if not os.access(folder, os.W_OK | os.X_OK):
-            raise OutputError(f"{option} {path}: the folder {folder} is not writable")
+        problem = _cannot_write_in(folder)
+        if problem:
+            raise OutputError(f"{option} {path}: cannot write in the folder {folder} "
+                              f"({problem})")
         checked.append(path)
     return checked
+
+
+def _cannot_write_in(folder: Path) -> str | None:
+    """Why no file can be created in ``folder`` (None when one can): a real file is made and
+    removed, since the permission bits say yes to root and to folders such as /proc."""
+    probe = folder / f".cityshade-probe.{os.getpid()}.{uuid.uuid4().hex}"
+    try:
+        fd = os.open(probe, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
+    except OSError as exc:
+        return exc.strerror or str(exc)
+    os.close(fd)
+    with contextlib.suppress(OSError):
+        os.unlink(probe)
+    return None
+
+
+#: The lock file of an output folder in use (:func:`folder_lock`).
+LOCK_NAME = ".cityshade.lock"
+
+
+def _pid_alive(pid: int) -> bool:
+    """Whether a process ``pid`` runs on this machine (one of another user's counts)."""
+    try:
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except PermissionError:
+        return True
+    except (OSError, OverflowError):
+        return False
+    return True
+
+
+@contextlib.contextmanager
+def folder_lock(folder: str | os.PathLike, on_note=None) -> Iterator[Path]:
+    """Hold ``folder/.cityshade.lock`` (created with O_EXCL, holding this process's id) while
+    the block runs, so that two commands never write one output folder at once. A lock left by
+    a process that no longer runs is taken over, ``on_note(text)`` told so.
+
+    Raises
+    ------
+    UsageError
+        A live process holds the lock.
+    """
+    path = Path(folder) / LOCK_NAME
+    for _attempt in range(3):
+        try:
+            fd = os.open(path, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o644)
+        except FileExistsError:
+            try:
+                text = path.read_text(encoding="ascii").strip()
+            except (OSError, UnicodeDecodeError):
+                text = ""
+            pid = int(text) if text.isdigit() else None
+            if pid is not None and pid != os.getpid() and _pid_alive(pid):
+                raise UsageError(f"{folder} is in use by another cityshade run (process "
+                                 f"{pid}); wait for it to end or choose another -o folder")
+            with contextlib.suppress(FileNotFoundError):
+                path.unlink()
+            if on_note is not None:
+                who = f"process {pid}" if pid is not None else "a process"
+                on_note(f"took over the lock {path} of {who}, which has ended")
+            continue
+        except OSError as exc:
+            raise OutputError(f"cannot create the lock file: {exc.strerror}",
+                              path=str(path)) from None
+        break
+    else:
+        raise UsageError(f"{folder} is in use by another cityshade run ({path})")
+    try:
+        with os.fdopen(fd, "w", encoding="ascii") as fh:
+            fh.write(f"{os.getpid()}\n")
+        yield path
+    finally:
+        with contextlib.suppress(OSError):
+            path.unlink()
+
+
+def plural(count: int, noun: str, nouns: str | None = None) -> str:
+    """``1 object``, ``2 objects``, ``1,386 triangles``: a count with its noun in agreement
+    (``nouns`` for an irregular plural, e.g. ``plural(n, "vertex", "vertices")``)."""
+    word = noun if count == 1 else (nouns or f"{noun}s")
+    return f"{count:,} {word}"
 
 
 @contextlib.contextmanager

@@ -423,7 +423,7 @@ def test_ground_auto_is_the_default_and_none_switches_it_off(tmp_path):
     from cityshade.imageio import read_exr
     scene_path = _two_boxes_without_terrain(tmp_path)
     base = ["render", str(scene_path), "--date", "2000", "--sun-azimuth", "180",
-            "--sun-elevation", "45", "--camera", "map", "--pixel-size", "1"]
+            "--sun-elevation", "45", "--camera", "map", "--pixel-size", "1", "--margin-m", "0"]
     result = CliRunner().invoke(cli, base + ["-o", str(tmp_path / "auto.exr")])
     assert result.exit_code == 0, result.output
     ch, meta = read_exr(tmp_path / "auto.exr")
@@ -689,8 +689,8 @@ def test_a_frame_that_does_not_fit_in_memory_is_refused_before_allocating(tmp_pa
     monkeypatch.setattr(cityshade.frame.pipeline, "available_memory_bytes", lambda: 800_000_000)
     result = CliRunner().invoke(cli, [
         "render", str(scene_path), "--date", "2000", "--sun-azimuth", "135",
-        "--sun-elevation", "30", "--camera", "map", "--pixel-size", "0.003", "-o",
-        str(tmp_path / "huge.exr")])
+        "--sun-elevation", "30", "--camera", "map", "--pixel-size", "0.003", "--margin-m", "0",
+        "-o", str(tmp_path / "huge.exr")])
     lines = result.output.strip().splitlines()
     assert result.exit_code == 2 and len(lines) == 1, result.output
     import re
@@ -716,7 +716,7 @@ def test_a_batch_that_does_not_fit_in_memory_is_refused_before_any_work(tmp_path
     monkeypatch.setattr(cityshade.frame.pipeline, "available_memory_bytes", lambda: 8_000_000_000)
     result = CliRunner().invoke(cli, [
         "batch", str(scene_path), "--date", "2024-06-21", "--tz", "Europe/Berlin",
-        "--pixel-size", "0.003", "-o", str(tmp_path / "b")])
+        "--pixel-size", "0.003", "--margin-m", "0", "-o", str(tmp_path / "b")])
     lines = result.output.strip().splitlines()
     assert result.exit_code == 2 and len(lines) == 1, result.output
     import re

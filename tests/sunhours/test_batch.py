@@ -1,7 +1,6 @@
 """Batch runs: time steps, sun-hour maps against analytic shadows, resume bit for bit, CLI."""
 from __future__ import annotations
 
-import hashlib
 import json
 from datetime import date, datetime, timedelta, timezone
 
@@ -358,11 +357,14 @@ def test_cli_batch_writes_everything(files, tmp_path):
     assert np.nanmax(hours) == pytest.approx(16.0)
     # The API gives the same numbers.
     scene = load_scene(scene_path)
-    from cityshade.raster.camera import map_view
+    from cityshade.raster.camera import default_map_margin_m, map_extent, map_view
 
     steps = P.plan_steps(date(2024, 6, 21), 5 * 3600, 21 * 3600, 3600, "Europe/Berlin")
-    api = A.sun_hours(scene, map_view(scene, 4.0), [s.centre_utc for s in steps],
-                      _city_days("2024-06-21"), weights_h=[s.weight_h for s in steps])
+    # The command's map keeps a margin of twice the model's height around it.
+    extent = map_extent(scene, None, default_map_margin_m(scene))
+    api = A.sun_hours(scene, map_view(scene, 4.0, bbox=extent), [s.centre_utc for s in steps],
+                      _city_days("2024-06-21"), weights_h=[s.weight_h for s in steps],
+                      ground="auto")  # the command's default ground fills the margin
     np.testing.assert_array_equal(np.nan_to_num(hours, nan=-1), np.nan_to_num(api.hours, nan=-1))
     png, _ = read_image(out / "sun_hours.png")
     # Decorated by default (title, scale bar, north, CRS, colour bar in a margin): the map's
@@ -391,10 +393,11 @@ def test_cli_batch_writes_everything(files, tmp_path):
     manifest = json.loads((out / "manifest.json").read_text())
     assert manifest["status"] == "finished" and manifest["finished_steps"] == list(range(16))
     assert manifest["params"]["tz"] == "Europe/Berlin" and len(manifest["key"]) == 64
-    # The same command again: nothing left to compute, same result.
+    # The same command again: a finished run keeps no state, so it computes again, the same.
+    assert not (out / C.STATE_NAME).exists()
     again = _run("batch", scene_path, *ARGS, "--frames", "--surfaces", "--samples-per-m2",
                  "0.05", "-o", out, "-v")
-    assert again.exit_code == 0 and "16 taken from the saved state" in again.output
+    assert again.exit_code == 0 and "16 sun positions computed, 0 taken" in again.output
     assert read_exr(out / "sun_hours.exr")[0]["sun_hours"].tobytes() == hours.tobytes()
 
 
@@ -491,15 +494,21 @@ def test_cli_batch_failures(files, tmp_path):
 
 
 @pytest.mark.parametrize("damage", ["truncated", "bit-flipped"])
-def test_damaged_state_is_detected_and_its_steps_start_again(files, tmp_path, damage):
+def test_damaged_state_is_detected_and_its_steps_start_again(files, tmp_path, damage,
+                                                             stop_batch_after):
     """Issue 13 point 9: a truncated or altered state.npz gave zipfile.BadZipFile (or, worse,
     was read); the manifest's checksum finds it, one warning line, the steps are redone."""
     from cityshade.imageio import read_exr
 
     scene_path, _ = files
+    straight = tmp_path / "straight"
+    assert _run("batch", scene_path, *ARGS, "-o", straight).exit_code == 0
+    hours = read_exr(straight / "sun_hours.exr")[0]["sun_hours"].copy()
+    # A finished run keeps no state: stop one part-way to have a state to damage.
     out = tmp_path / "run"
-    assert _run("batch", scene_path, *ARGS, "-o", out).exit_code == 0
-    hours = read_exr(out / "sun_hours.exr")[0]["sun_hours"].copy()
+    stop_batch_after(5)
+    assert _run("batch", scene_path, *ARGS, "-o", out).exit_code == 130
+    stop_batch_after(None)
     state = out / C.STATE_NAME
     data = bytearray(state.read_bytes())
     if damage == "truncated":
@@ -515,10 +524,11 @@ def test_damaged_state_is_detected_and_its_steps_start_again(files, tmp_path, da
     assert "16 sun positions computed, 0 taken from the saved state" in again.output
     assert read_exr(out / "sun_hours.exr")[0]["sun_hours"].tobytes() == hours.tobytes()
     manifest = json.loads((out / "manifest.json").read_text())
-    assert manifest["state_sha256"] == [hashlib.sha256(state.read_bytes()).hexdigest()]
-    # The state now matches again: a third run takes everything from it, silently.
+    # Finished: the state served its purpose and is gone, and the manifest names none.
+    assert not state.exists() and "state_sha256" not in manifest
     third = _run("batch", scene_path, *ARGS, "-o", out, "-v")
-    assert "16 taken from the saved state" in third.output and "warning" not in third.output
+    assert "16 sun positions computed, 0 taken" in third.output
+    assert "warning" not in third.output and "resuming" not in third.output
 
 
 def test_run_batch_from_python_resumes_and_refuses_other_parameters(files, tmp_path):
@@ -541,8 +551,9 @@ def test_run_batch_from_python_resumes_and_refuses_other_parameters(files, tmp_p
     first = R.run_batch(out, scene, request())
     assert first.manifest["status"] == "finished" and first.result.units_resumed == 0
     assert json.loads((out / "manifest.json").read_text())["key"] == first.manifest["key"]
+    assert not (out / C.STATE_NAME).exists()  # a finished run keeps no state
     again = R.run_batch(out, scene, request())
-    assert again.result.units_resumed == again.result.units == first.result.units > 0
+    assert again.result.units_resumed == 0 and again.result.units == first.result.units > 0
     assert again.result.hours.tobytes() == first.result.hours.tobytes()
     # Other shadow settings are other parameters: refused, unless overwrite.
     other = dataclasses.replace(Settings(), shadows=Settings().shadows.override(map_px=64))

@@ -723,6 +723,15 @@ def _member_tags(root_namespace: str) -> list[str]:
     return tags
 
 
+def _xml_message(msg: str) -> str:
+    """lxml's message of a syntax error, in words a user can act on."""
+    if "Excessive depth" in msg:
+        # libxml2's nesting limit (2,048 with huge_tree); its advice names a parser flag.
+        return ("malformed XML: elements nested more than 2,048 levels deep (a city model "
+                "needs a few dozen): the file is damaged or not a city model")
+    return f"malformed XML: {msg}"
+
+
 def _root_of(path: Path, recover: bool):
     """(namespace, local name, nsmap) of the document's root element, reading only its start."""
     from lxml import etree
@@ -735,7 +744,7 @@ def _root_of(path: Path, recover: bool):
                 namespace, local = _split_tag(elem.tag)
                 return namespace, local
         except etree.XMLSyntaxError as exc:
-            raise XMLSyntaxError(f"malformed XML: {exc.msg}", path=str(path),
+            raise XMLSyntaxError(_xml_message(exc.msg), path=str(path),
                                  line=exc.lineno) from None
     raise XMLSyntaxError("no XML element found", path=str(path))
 
@@ -856,7 +865,7 @@ def read_stream(fh, total: int, path: Path, root_ns: str, progress, recover: boo
         if "Premature end" in msg or "EndTag" in msg and fh.tell() >= total:
             msg = f"the file is truncated or malformed ({msg})"
         else:
-            msg = f"malformed XML: {msg}"
+            msg = _xml_message(msg)
         raise XMLSyntaxError(msg, path=str(path), line=exc.lineno) from None
     finally:
         walker.close()

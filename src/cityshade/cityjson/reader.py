@@ -40,7 +40,7 @@ from cityshade.citygml.appearance import MaterialRecord, TextureRecord
 from cityshade.citygml.geometry import parse_ring_texts
 from cityshade.citygml.reader import RawModel
 from cityshade.geo.temporal import GENERIC_PREFIX, TIME_ATTRIBUTES
-from cityshade.errors import EmptyModelError, InputError
+from cityshade.errors import EmptyModelError, InputError, NotCityGMLError
 
 #: CityJSON versions read (a "1.1.3"-style patch suffix is accepted).
 VERSIONS = ("1.0", "1.1", "2.0")
@@ -112,6 +112,7 @@ def detect_format(path: str | os.PathLike) -> str:
     try:
         with path.open("rb") as fh:
             head = fh.read(_SNIFF_BYTES)
+            _refuse_binary(head, path)
             start = len(head) - len(head.removeprefix(_BOM).lstrip(b" \t\r\n"))
             if start == len(head) or head[start:start + 1] != b"{":
                 if head[start:start + 1] not in (b"<", b"") and path.suffix.lower() in (
@@ -137,6 +138,26 @@ def detect_format(path: str | os.PathLike) -> str:
     if before.endswith(b"}") and after.startswith(b"{"):
         return "cityjsonseq"
     return "cityjson"
+
+
+#: Signatures of archives a city model is often shipped in: what to say of them.
+_ARCHIVES = {b"\x1f\x8b": "a gzip-compressed file: decompress it first",
+             b"PK\x03\x04": "a ZIP archive: extract the model from it first"}
+
+
+def _refuse_binary(head: bytes, path: Path) -> None:
+    """A file that is not text (NUL bytes or many control characters in its first bytes, not
+    UTF-16) is neither XML nor JSON: say so, rather than report the first parser's error."""
+    for magic, what in _ARCHIVES.items():
+        if head.startswith(magic):
+            raise NotCityGMLError(f"not CityGML/XML or CityJSON: {what}", path=str(path))
+    sample = head[:4096]
+    if sample.startswith((b"\xff\xfe", b"\xfe\xff", b"<\x00", b"\x00<")):
+        return  # UTF-16 text
+    control = sum(sample.count(bytes([c])) for c in range(32) if c not in (9, 10, 12, 13))
+    if sample and (b"\x00" in sample or control > len(sample) // 100):
+        raise NotCityGMLError("not CityGML/XML or CityJSON: the file holds binary data, "
+                              "not text", path=str(path))
 
 
 def read_cityjson(path: str | os.PathLike, progress: Callable[[int, int], None] | None = None,

@@ -73,12 +73,19 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
             settings.batch, samples_per_m2=samples_per_m2))
     if surfaces:
         SampleSettings(samples_per_m2=settings.batch.samples_per_m2)
+    elif samples_per_m2 is not None:
+        raise UsageError("--samples-per-m2 sets the sample points of --surfaces: give "
+                         "--surfaces too")
+    from cityshade.cli.options import check_every_day
+
+    check_every_day(days, to_date_text)
     if no_refraction:
         settings = dataclasses.replace(settings, sun=dataclasses.replace(settings.sun,
                                                                         refraction=False))
     if (eye is None) != (target is None):
         raise UsageError("give both --eye and --target, or neither")
-    parse_triple(eye, "--eye"), parse_triple(target, "--target"), parse_size(size)  # fail early
+    parse_triple(eye, "--eye"), parse_triple(target, "--target")  # fail early
+    parse_size(size, batch=True)
     first_day = parse_day(date_text, "--date")
     to_date = parse_day(to_date_text, "--to-date") if to_date_text else None
     every_s = parse_duration_s(every_text)
@@ -114,12 +121,17 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
         step_month=tuple(step_months(steps, zone)) if monthly else None)
     with Progress("tasks (tile × sun positions)" if request.tiled else "sun positions") as bar:
         run = run_batch(outdir, scene, request, overwrite=overwrite, on_plan=bar.plan,
-                        on_step=bar.step)
+                        on_step=bar.step, on_note=note)
     for warning in run.result.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
     if verbose:
         echo_verbose(run, time.perf_counter() - t_start)
     click.echo(" ".join(str(p) for p in run.written))
+
+
+def note(text: str) -> None:
+    """A line of the library about the run (resumed, a stale lock taken over) on stderr."""
+    click.echo(f"cityshade: {text}", err=True)
 
 
 class Progress:
@@ -186,7 +198,9 @@ def parse_day(text: str, option: str):
     import datetime as dt
 
     from cityshade.errors import UsageError
+    from cityshade.geo.temporal import check_year_range
 
+    check_year_range(text, option)
     try:
         return dt.date.fromisoformat(text.strip())
     except ValueError:

@@ -104,6 +104,10 @@ def build(city: tuple[Path, ...], output: Path | None, lod: int | float | None, 
     if tile_m is None and output.is_dir():
         raise UsageError(f"{output} is a folder: give a file name with -o, or --tile-m SIDE "
                          f"for a tiled cache")
+    from cityshade.util import check_outputs, plural
+
+    # Before the work: a folder where no file can be made fails now, not after the build.
+    check_outputs(("-o", output, None if tile_m is not None else (output.suffix.lower(),)))
     progress = Progress(enabled=None if not quiet else False, files=several and not quiet)
     try:
         out, scene, size = build_file(list(city) if several else sources[0], output, settings,
@@ -115,9 +119,10 @@ def build(city: tuple[Path, ...], output: Path | None, lod: int | float | None, 
     if not quiet:
         rep = scene.report
         skipped = sum(rep["skipped"].values())
-        click.echo(f"{out}: {scene.n_triangles:,} triangles from {rep['polygons']['drawn']:,} "
-                   f"polygons of {len(scene.obj_ids):,} objects"
-                   f"{f', {skipped:,} polygons skipped' if skipped else ''}; "
+        click.echo(f"{out}: {plural(scene.n_triangles, 'triangle')} from "
+                   f"{plural(rep['polygons']['drawn'], 'polygon')} of "
+                   f"{plural(len(scene.obj_ids), 'object')}"
+                   f"{', ' + plural(skipped, 'polygon') + ' skipped' if skipped else ''}; "
                    f"{size / 1e6:.1f} MB in {sum(rep.get('timings', {}).values()):.2f} s"
                    f"{_tiles_note(out, scene) if tile_m else ''}")
         if "trees" in rep:
@@ -127,7 +132,8 @@ def build(city: tuple[Path, ...], output: Path | None, lod: int | float | None, 
                        f"{t['ground']}){f'; left out: {left}' if left else ''}")
         tiles = rep.get("tiles")
         if tiles:
-            click.echo(f"{tiles['files']} files; {tiles['duplicate_objects']:,} objects met "
+            click.echo(f"{plural(tiles['files'], 'file')}; "
+                       f"{plural(tiles['duplicate_objects'], 'object')} met "
                        f"again in a later file (the same gml:id) kept once")
 
 

@@ -75,8 +75,16 @@ def compare(file, before_text, after_text, proposal, mesh_units, up_axis, place_
     technique = settings.shadows.technique
     require_exact(technique)
     if samples_per_m2 is not None:
+        if no_surfaces:
+            from cityshade.errors import UsageError
+
+            raise UsageError("--samples-per-m2 sets the sample points of the surfaces, which "
+                             "--no-surfaces skips: give one or the other")
         settings = dataclasses.replace(settings, batch=dataclasses.replace(
             settings.batch, samples_per_m2=samples_per_m2))
+    from cityshade.cli.options import check_every_day
+
+    check_every_day(days, to_date_text)
     if no_refraction:
         settings = dataclasses.replace(settings, sun=dataclasses.replace(settings.sun,
                                                                         refraction=False))

@@ -8,7 +8,7 @@ import click
 
 from cityshade.cli.helpfmt import GroupedCommand
 
-from cityshade.cli.options import crs_option, ground_option, shadow_options
+from cityshade.cli.options import crs_option, ground_option, map_extent_options, shadow_options
 
 
 class _Bar:
@@ -81,6 +81,7 @@ def _int_list(text: str, what: str) -> tuple[int, ...]:
               help="Report folder (results.csv, report.md, plots, diff images); required "
                    "without --stress.")
 @crs_option
+@map_extent_options
 def evaluate(file, views, sun_text, date_text, times, tz, settings, sizes, size, pixel_size,
              cameras_file, ground, repeat, stress, quick, output, crs):
     """Error of every shadow technique against the exact ray-traced shadows of FILE (a
@@ -128,8 +129,13 @@ def evaluate(file, views, sun_text, date_text, times, tz, settings, sizes, size,
     tz = solar_zone_of_scene(tz, scene)
     suns = (suns_of_day(day, times, tz, scene, settings.sun) if times
             else parse_suns(sun_text or "135,45;240,15", scene))
-    cams = [(v, view_camera(scene, v, (width, height), pixel_size, city_days, cameras_file))
-            for v in (s.strip() for s in views.split(",")) if v]
+    from cityshade.cli.options import map_extent_of_command
+
+    names = [v for v in (s.strip() for s in views.split(",")) if v]
+    # --bbox/--margin-m without a map among --views are refused there, not ignored.
+    extent = map_extent_of_command(scene, "map" if "map" in names else "overview", False)
+    cams = [(v, view_camera(scene, v, (width, height), pixel_size, city_days, cameras_file,
+                            bbox=extent)) for v in names]
     if not cams:
         raise UsageError("--views needs at least one view")
     try:

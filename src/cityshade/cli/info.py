@@ -99,6 +99,8 @@ def describe_report(rep: dict, header: dict, counts: dict) -> dict:
 
 
 def _text(d: dict) -> str:
+    from cityshade.util import plural
+
     lines = []
     add = lines.append
     if d["file"]:
@@ -140,8 +142,8 @@ def _text(d: dict) -> str:
     add(f"time          {tr[0] + ' … ' + tr[1] if tr else 'no dates'} "
         f"(source {d['time_source']}{attribute}; objects by source: {used})")
     if d.get("creation_dates_unused"):
-        add(f"              creationDate/terminationDate of {d['creation_dates_unused']:,} "
-            f"objects unused (database times; --time-source creation uses them)")
+        add(f"              creationDate/terminationDate of "
+            f"{plural(d['creation_dates_unused'], 'object')} unused (database times; --time-source creation uses them)")
     crs = d["crs"]
     src = d["source_crs"]
     crs_text = crs["name"] + (f" (EPSG:{crs['horizontal_epsg']})" if crs["horizontal_epsg"] else "")

@@ -14,7 +14,7 @@ from cityshade import __version__
 
 #: Subcommand name → "module:function"; the module is imported when the command runs.
 COMMANDS = {
-    "build": ("cityshade.cli.build:build", "Build the .cityshade scene file of a CityGML model."),
+    "build": ("cityshade.cli.build:build", "Build the .cityshade scene file of a CityGML or CityJSON model."),
     "info": ("cityshade.cli.info:info", "Describe a .cityshade file (or a CityGML file)."),
     "render": ("cityshade.cli.render:render", "Render a picture and shadow mask at a date and sun."),
     "batch": ("cityshade.cli.batch:batch", "Sun-hour maps and per-surface sun-hours over times."),
@@ -50,6 +50,19 @@ class LazyGroup(click.Group):
             remove_folders_made(mark)
             raise
 
+    def resolve_command(self, ctx, args):
+        # A misspelled command: "did you mean" the nearest name (click says only "No such
+        # command").
+        name = click.utils.make_str(args[0]) if args else ""
+        if args and name not in COMMANDS and not name.startswith("-"):
+            import difflib
+
+            close = difflib.get_close_matches(name, list(COMMANDS), n=1, cutoff=0.6)
+            hint = (f"did you mean '{close[0]}'?" if close
+                    else f"the commands are {', '.join(COMMANDS)}")
+            raise click.UsageError(f"no command '{name}'; {hint}", ctx)
+        return super().resolve_command(ctx, args)
+
     def list_commands(self, ctx):
         return list(COMMANDS)
 
@@ -70,7 +83,8 @@ class LazyGroup(click.Group):
 @click.group(cls=LazyGroup, context_settings={"help_option_names": ["-h", "--help"]})
 @click.version_option(__version__, prog_name="cityshade")
 def cli() -> None:
-    """cityshade: exact, fast shadow pictures and shadow data from CityGML city models.
+    """cityshade: exact, fast shadow pictures and shadow data from CityGML and CityJSON city
+    models.
 
     \b
     Typical use (every command; COMMAND --help for its options):

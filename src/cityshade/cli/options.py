@@ -588,6 +588,14 @@ def states_options(before_default: str, meshes: bool = False):
     return decorate
 
 
+def check_every_day(days, to_date_text) -> None:
+    """--every-day spaces the days of --days or --to-date: alone it would change nothing."""
+    from cityshade.errors import UsageError
+
+    if given("every_day") and days is None and to_date_text is None:
+        raise UsageError("--every-day spaces several days: give --days N or --to-date too")
+
+
 # --- the ground plane option of render, batch and evaluate -------------------------------------
 
 GROUND_HELP = ("Ground plane where the model shows no surface, so cast shadows fall on "
@@ -627,10 +635,75 @@ def _preset_names() -> list[str]:
 _PRESET_NAMES = _preset_names()
 
 
+MAP_EXTENT_META = "cityshade.map_extent"
+
+
+def map_extent_options(func):
+    """Decorator adding --bbox and --margin-m (the map view's extent). The command does not
+    receive them as arguments: they go to the click context's meta, where
+    :func:`map_extent_of_command` (:func:`make_camera`) finds them."""
+    import functools
+
+    @functools.wraps(func)
+    def wrapper(*args, **kwargs):
+        ctx = click.get_current_context()
+        ctx.meta[MAP_EXTENT_META] = (_parse_bbox(kwargs.pop("bbox")), kwargs.pop("margin_m"))
+        return func(*args, **kwargs)
+
+    wrapper = click.option("--margin-m", type=float, help="Map view: metres added around the "
+                           "mapped box on every side (default: none around --bbox, twice the "
+                           "model's height around the whole model, so shadows falling past "
+                           "its edge are kept).")(wrapper)
+    return click.option("--bbox", help="Map view: only the box X0,Y0,X1,Y1 (model CRS "
+                        "metres); the casters still come from the whole model, so shadows "
+                        "cast into the box from outside it are computed.")(wrapper)
+
+
+def _parse_bbox(text: str | None):
+    """'X0,Y0,X1,Y1' → four floats (None stays None)."""
+    return parse_box(text, "--bbox must be X0,Y0,X1,Y1 in the model CRS (metres)")
+
+
+def parse_box(text: str | None, must: str, ordered: bool = False):
+    """Four comma-separated numbers (x0 < x1 and y0 < y1 when ``ordered``) → a tuple; None
+    stays None; otherwise a UsageError ``"{must}, not 'TEXT'"``."""
+    from cityshade.errors import UsageError
+
+    if text is None:
+        return None
+    try:
+        values = tuple(float(v) for v in text.split(","))
+    except ValueError:
+        values = ()
+    if len(values) != 4 or ordered and not (values[0] < values[2] and values[1] < values[3]):
+        raise UsageError(f"{must}, not {text!r}")
+    return values
+
+
+def map_extent_of_command(scene, name: str, eye: bool):
+    """The render-space extent of the map view from the command's --bbox and --margin-m
+    (:func:`~cityshade.raster.camera.map_extent`), None for the default (the whole model, no
+    margin) when the command has no such options; refused for a perspective camera."""
+    from cityshade.errors import UsageError
+    from cityshade.raster import camera as cams
+
+    ctx = click.get_current_context(silent=True)
+    bbox, margin_m = (ctx.meta.get(MAP_EXTENT_META, (None, None)) if ctx is not None
+                      else (None, None))
+    if eye or name != "map":
+        if bbox is not None or margin_m is not None:
+            raise UsageError("--bbox and --margin-m apply to the map view (--camera map)")
+        return None
+    if margin_m is None:
+        margin_m = 0.0 if bbox is not None else cams.default_map_margin_m(scene)
+    return cams.map_extent(scene, bbox, margin_m)
+
+
 def camera_options(default_camera: str):
-    """Decorator adding --camera, --eye, --target, --fov, --size, --pixel-size and
-    --cameras."""
+    """Decorator adding --camera, --eye, --target, --fov, --size, --pixel-size, --cameras,
+    and --bbox and --margin-m (:func:`map_extent_options`)."""
     def decorate(func):
+        func = map_extent_options(func)
         for option in reversed([
             click.option("--camera", default=default_camera, show_default=True,
                          help=f"overview, map, or a preset: {', '.join(_PRESET_NAMES)} "
@@ -667,31 +740,78 @@ def parse_triple(text: str | None, what: str):
     return values
 
 
-def parse_size(text: str) -> tuple[int, int]:
-    """'WIDTHxHEIGHT' → (width, height) in pixels."""
+def parse_size(text: str, technique: str | None = None, *, batch: bool = False
+               ) -> tuple[int, int]:
+    """'WIDTHxHEIGHT' → (width, height) in pixels. A size over :data:`MAX_SIZE_PX` a side
+    is refused with the memory it would need (for ``technique``, or a batch's receivers)."""
+    from cityshade.raster.camera import DEFAULT_MAX_MAP_PX as MAX_SIZE_PX  # the map's limit
+
     try:
         w, h = (int(v) for v in text.lower().split("x"))
     except ValueError:
         raise click.BadParameter(f"--size must be WIDTHxHEIGHT, e.g. 1280x720, not {text!r}")
-    if not (1 <= w <= 16384 and 1 <= h <= 16384):
-        raise click.BadParameter("--size must be between 1x1 and 16384x16384 pixels")
+    if w < 1 or h < 1:
+        raise click.BadParameter("--size must be at least 1x1 pixels")
+    if max(w, h) > MAX_SIZE_PX:
+        import types
+
+        from cityshade.errors import UsageError
+        from cityshade.frame.pipeline import frame_bytes
+        from cityshade.shadows import describe
+
+        view = types.SimpleNamespace(width_px=w, height_px=h, kind="perspective")
+        need, per_px = frame_bytes(view, technique, batch=batch)
+        per = (f"{per_px} bytes per receiver pixel" if batch else
+               f"{per_px} bytes per pixel for {describe(technique or 'raytrace').name}")
+        raise UsageError(f"--size {w}x{h} exceeds the limit of {MAX_SIZE_PX} pixels a side "
+                         f"(the {'sun-hour map' if batch else 'picture'} would need about "
+                         f"{need / 1e9:,.0f} GB: {per})")
     return w, h
 
 
 def parse_area(text: str | None, option: str = "--area"):
     """``--area x0,y0,x1,y1`` (model CRS metres) → the box, or None without the option
     (``option`` names it in the message)."""
+    return parse_box(text, f"{option} must be x0,y0,x1,y1 with x0 < x1 and y0 < y1",
+                     ordered=True)
+
+
+def given(name: str) -> bool:
+    """Whether the running command's option ``name`` (its parameter name) was given by the
+    user, not left at its default."""
+    from click.core import ParameterSource
+
+    ctx = click.get_current_context(silent=True)
+    source = ctx.get_parameter_source(name) if ctx is not None else None
+    return source in (ParameterSource.COMMANDLINE, ParameterSource.ENVIRONMENT)
+
+
+def check_camera_options(name: str, eye: bool) -> None:
+    """Refuse a camera option that the chosen camera would ignore (--size of the map view,
+    --pixel-size of a perspective one, --fov of a preset, --camera beside --eye).
+
+    Raises
+    ------
+    UsageError
+    """
     from cityshade.errors import UsageError
 
-    if text is None:
-        return None
-    try:
-        values = tuple(float(v) for v in text.split(","))
-    except ValueError:
-        values = ()
-    if len(values) != 4 or not (values[0] < values[2] and values[1] < values[3]):
-        raise UsageError(f"{option} must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, not {text!r}")
-    return values
+    if eye and given("camera"):
+        raise UsageError(f"--eye/--target place a perspective camera of their own: give them "
+                         f"or --camera {name}, not both")
+    kind = "perspective" if eye else ("map" if name == "map" else "preset")
+    if kind == "map":
+        for option in ("size", "fov"):
+            if given(option):
+                raise UsageError(f"--{option} does not apply to the map view (--camera map): "
+                                 f"its size follows from --pixel-size (metres per pixel) and "
+                                 f"the model's extent")
+    elif given("pixel_size"):
+        raise UsageError("--pixel-size applies to the map view (--camera map); a perspective "
+                         "picture's size is --size WIDTHxHEIGHT")
+    elif kind == "preset" and given("fov"):
+        raise UsageError(f"--fov applies to a camera placed with --eye/--target; --camera "
+                         f"{name} has its own field of view")
 
 
 def make_camera(scene, name, eye, target, fov, size, pixel_size, cameras_file=None):
@@ -704,7 +824,9 @@ def make_camera(scene, name, eye, target, fov, size, pixel_size, cameras_file=No
     eye_v, target_v = parse_triple(eye, "--eye"), parse_triple(target, "--target")
     if (eye_v is None) != (target_v is None):
         raise UsageError("give both --eye and --target, or neither")
+    check_camera_options(name, eye_v is not None)
     width, height = parse_size(size)
+    extent = map_extent_of_command(scene, name, eye_v is not None)
     if eye_v is not None:
         return cams.perspective(np.asarray(eye_v) - scene.origin_m,
                                 np.asarray(target_v) - scene.origin_m, vfov_deg=fov,
@@ -712,5 +834,5 @@ def make_camera(scene, name, eye, target, fov, size, pixel_size, cameras_file=No
     if name == "overview":
         return cams.overview(scene, width, height)
     if name == "map":
-        return cams.map_view(scene, pixel_size)
+        return cams.map_view(scene, pixel_size, bbox=extent)
     return cams.preset(name, scene, width, height, extra=cameras_file)

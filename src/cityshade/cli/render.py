@@ -62,12 +62,22 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     technique = describe(settings.shadows.technique)  # unknown names fail before any work
     if (sun_azimuth is None) != (sun_elevation is None):
         raise UsageError("give both --sun-azimuth and --sun-elevation")
+    if sun_azimuth is not None:
+        from cityshade.geo.sun import check_user_angles
+
+        check_user_angles(sun_azimuth, sun_elevation)
+        if no_refraction:
+            raise UsageError("--no-refraction applies to the sun computed for a date and time; "
+                             "--sun-azimuth/--sun-elevation give the sun as it is")
+    if decorate and png is None and mask is None:
+        raise UsageError("--decorate frames the --png and --mask pictures: give one of them")
     if sun_azimuth is not None and time_text is not None:
         raise UsageError("--time computes the sun for the model's place and --sun-azimuth/"
                          "--sun-elevation give it: use one or the other")
     if (eye is None) != (target is None):
         raise UsageError("give both --eye and --target, or neither")
-    parse_triple(eye, "--eye"), parse_triple(target, "--target"), parse_size(size)  # fail early
+    parse_triple(eye, "--eye"), parse_triple(target, "--target")  # fail early
+    parse_size(size, settings.shadows.technique)
     date_text = _with_time(date_text or dt.date.today().isoformat(), time_text)
     user_date = parse_user_date(date_text, solar_placeholder(tz))  # fails early on bad text
     if sun_azimuth is None and user_date.instant_utc is None:

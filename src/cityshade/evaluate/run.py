@@ -343,16 +343,17 @@ def _keep_picture(scene, camera, gbuf, surfaces, ref_lit, sun, view, label, eval
 
 def view_camera(scene, view: str, size: tuple[int, int] = (1280, 720),
                 pixel_size_m: float | None = None, t_days: float | None = None,
-                cameras_file=None):
+                cameras_file=None, bbox=None):
     """Camera of a view name: ``overview``, ``map`` or a shipped camera preset
-    (``cityshade/configs/cameras.toml``) or one of the user's preset file ``cameras_file``."""
+    (``cityshade/configs/cameras.toml``) or one of the user's preset file ``cameras_file``;
+    ``bbox``: the map's render-space extent (:func:`cityshade.raster.camera.map_extent`)."""
     from cityshade.raster import camera as cams
 
     w, h = size
     if view == "overview":
         return cams.overview(scene, w, h, t_days=t_days)
     if view == "map":
-        return cams.map_view(scene, pixel_size_m)
+        return cams.map_view(scene, pixel_size_m, bbox=bbox)
     return cams.preset(view, scene, w, h, extra=cameras_file)
 
 
@@ -423,7 +424,7 @@ def run_evaluation(scene: "Scene", views: Sequence[tuple[str, Any]], suns: Seque
 
 def parse_suns(text: str, scene) -> list:
     """``"az,el;az,el"`` (degrees, azimuth from true north) → sun positions of the model."""
-    from cityshade.geo.sun import sun_from_angles
+    from cityshade.geo.sun import check_user_angles, sun_from_angles
 
     suns = []
     for part in (p.strip() for p in text.split(";")):
@@ -434,6 +435,7 @@ def parse_suns(text: str, scene) -> list:
         except ValueError:
             raise UsageError(f"--sun must be 'AZIMUTH,ELEVATION;...' in degrees, not {part!r}") \
                 from None
+        check_user_angles(az, el)
         suns.append(sun_from_angles(az, el, scene.crs, scene.origin_m))
     if not suns:
         raise UsageError("--sun needs at least one 'AZIMUTH,ELEVATION' pair")

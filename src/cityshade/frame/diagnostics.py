@@ -14,6 +14,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from cityshade.util import plural
+
 if TYPE_CHECKING:
     from cityshade.geometry.scene import Scene
     from cityshade.shadows import TechniqueDiagnostics
@@ -149,7 +151,8 @@ def skipped_work(scene: "Scene", gbuffer_stats: dict | None = None,
     if "self_shadowed_px" in (inner or d):
         n = int((inner or d)["self_shadowed_px"])
         if n:
-            out.append(f"shadows: {n} pixels facing away from the sun are shadow without a ray "
+            out.append(f"shadows: {plural(n, 'pixel')} facing away from the sun "
+                       f"{'is' if n == 1 else 'are'} shadow without a ray "
                        f"or lookup")
     for diag, where in ((d, "shadow map"), (inner or {}, "base shadow map")):
         if isinstance(diag.get("depth_map"), dict):

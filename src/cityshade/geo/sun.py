@@ -82,6 +82,22 @@ def direction_from_angles(azimuth_deg: float, elevation_deg: float) -> np.ndarra
     return d / np.linalg.norm(d)
 
 
+def check_user_angles(azimuth_deg: float, elevation_deg: float) -> None:
+    """Refuse a user's sun outside azimuth [0, 360) and elevation [-90, 90] degrees, rather
+    than wrap it (an azimuth of 400 is a typo more often than 40).
+
+    Raises
+    ------
+    UsageError
+    """
+    if not 0.0 <= azimuth_deg < 360.0:
+        raise UsageError(f"sun azimuth must be from 0 to under 360 degrees (clockwise from "
+                         f"true north), not {azimuth_deg:g}")
+    if not -90.0 <= elevation_deg <= 90.0:
+        raise UsageError(f"sun elevation must be between -90 and 90 degrees, not "
+                         f"{elevation_deg:g}")
+
+
 def sun_from_angles(azimuth_true_deg: float, elevation_deg: float, crs=None,
                     origin_m=None, *, convergence_deg: float | None = None) -> SunPosition:
     """Sun position from explicit angles, converted to grid north of the model's CRS.

@@ -424,6 +424,23 @@ def zone_info(tz):
                          f"Europe/Berlin") from None
 
 
+_LEADING_YEAR = re.compile(r"\s*([+-]?\d+)(?:-\d|\s*$)")
+
+
+def check_year_range(text: str, what: str = "date") -> None:
+    """A date whose year is a number outside 1..9999 (``99999``, ``0``, ``-5``,
+    ``10000-01-01``) is out of range, not unreadable: say so.
+
+    Raises
+    ------
+    UsageError
+    """
+    match = _LEADING_YEAR.match(text)
+    if match and not 1 <= int(match.group(1)) <= 9999:
+        raise UsageError(f"{what} {text.strip()!r} is out of range (years 1 to 9999 are "
+                         f"supported)")
+
+
 def parse_user_date(text: str, tz: str | None = None) -> UserDate:
     """Parse ``--date`` into the state of the city and, when a time is given, the sun's instant.
 
@@ -458,6 +475,7 @@ def parse_user_date(text: str, tz: str | None = None) -> UserDate:
     """
     if not isinstance(text, str):
         raise UsageError(f"date must be text, not {type(text).__name__}")
+    check_year_range(text)
     zone = zone_info(tz) if tz is not None else None
     stripped = text.strip()
     match = _USER_DATETIME_RE.fullmatch(stripped)

@@ -32,6 +32,7 @@ from cityshade.geo.temporal import (choose_interval, days_to_iso, has_creation_d
 from cityshade.config import BuildSettings
 from cityshade.errors import ContractError, EmptyModelError, UsageError
 from cityshade.geometry.bounds import used_vertex_box
+from cityshade.util import plural
 
 #: Time-source codes stored per object (uint8); new sources are appended (codes are stored).
 TIME_SOURCE_NAMES = ("none", "valid", "construction", "creation", "inherited", "attribute")
@@ -607,8 +608,8 @@ def _validity_intervals(raw: RawModel, settings: BuildSettings, log: _BuildLog) 
                                  for n in ("valid", "construction", "attribute")])
     if creation_unused and not dated.any():
         log.warnings.append(
-            f"the only dates in the file are creationDate/terminationDate ({creation_unused} "
-            f"objects): they are database times (when a feature entered or left the database), "
+            f"the only dates in the file are creationDate/terminationDate "
+            f"({plural(creation_unused, 'object')}): they are database times (when a feature entered or left the database), "
             f"not the life of the buildings, so every object stands at every date; "
             f"--time-source creation uses them, --time-attribute begin=NAME reads a year "
             f"from a generic attribute")
@@ -658,7 +659,8 @@ def _select_polygons(raw: RawModel, settings: BuildSettings, counters: Counter) 
     if len(polys) == 0:
         lod_msg = f" at LoD {settings.lod}" if settings.lod is not None else ""
         raise EmptyModelError(f"the model has no surface geometry{lod_msg} "
-                              f"({len(raw.obj_ids)} objects, {n_poly_all} polygons read)",
+                              f"({plural(len(raw.obj_ids), 'object')}, "
+                              f"{plural(n_poly_all, 'polygon')} read)",
                               path=str(raw.path))
     return _Selection(polys, item_obj[keep], item_flip[keep], poly_cls, obj_max_lod, chosen,
                       lod_table)
@@ -834,7 +836,8 @@ def _triangulate(raw: RawModel, settings: BuildSettings, coords: np.ndarray,
     EmptyModelError
         No polygon could be triangulated.
     """
-    from cityshade.geometry.triangulate import REPAIR_NAMES, SKIP_REASONS, triangulate_polygons
+    from cityshade.geometry.triangulate import (REPAIR_NAMES, SKIP_REASONS, describe_skips,
+                                                triangulate_polygons)
 
     ring_offsets, poly_ring_offsets = offsets
     polys, p_flip, counters, skipped = sel.polys, sel.p_flip, log.counters, log.skipped
@@ -858,7 +861,7 @@ def _triangulate(raw: RawModel, settings: BuildSettings, coords: np.ndarray,
             log.repairs[name] = n
     ok = tri.status == 0
     if not ok.any():
-        raise EmptyModelError(f"no polygon could be triangulated ({dict(skipped)})",
+        raise EmptyModelError(f"no polygon could be triangulated: {describe_skips(skipped)}",
                               path=str(raw.path))
     # The result's arrays are ours: flipped and renumbered in place of copies (the
     # per-triangle arrays are the largest of the build).

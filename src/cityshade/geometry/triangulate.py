@@ -76,6 +76,37 @@ SKIP_REASONS = {
     SKIP_TRIANGULATION_FAILED: "triangulation_failed",
 }
 
+#: What a skip reason says of its polygons, for messages: (one polygon, several polygons).
+SKIP_PHRASES = {
+    "too_few_points": ("has too few points", "have too few points"),
+    "nan_coordinates": ("has coordinates that are not numbers", "have coordinates that are "
+                        "not numbers"),
+    "zero_area": ("has no area", "have no area"),
+    "all_collinear": ("has all its points on one line", "have all their points on one line"),
+    "self_intersecting": ("crosses itself", "cross themselves"),
+    "invalid_holes": ("has holes outside it or overlapping", "have holes outside them or "
+                      "overlapping"),
+    "triangulation_failed": ("is too degenerate to triangulate", "are too degenerate to "
+                             "triangulate"),
+    "bad_coordinates": ("has unreadable coordinates", "have unreadable coordinates"),
+    "solid_cavity_shell": ("is a solid's inner (cavity) shell", "are solids' inner (cavity) "
+                           "shells"),
+}
+
+
+def describe_skips(skipped: dict[str, int]) -> str:
+    """``{'too_few_points': 1, 'zero_area': 2}`` → ``1 polygon has too few points, 2 polygons
+    have no area``: the skip counts of a build as a reader would say them."""
+    from cityshade.util import plural
+
+    parts = []
+    for reason, count in skipped.items():
+        if count:
+            one, many = SKIP_PHRASES.get(reason, (f"skipped ({reason.replace('_', ' ')})",) * 2)
+            parts.append(f"{plural(count, 'polygon')} {one if count == 1 else many}")
+    return ", ".join(parts) or "no polygon was read"
+
+
 #: A ring whose last point differs from its first was closed implicitly.
 REPAIR_UNCLOSED_RING = 1
 #: Consecutive points within ``merge_distance_m`` were merged into one.

@@ -321,8 +321,33 @@ def open_compare(request: CompareRequest) -> CompareInputs:
         weather = read_weather(weather)
     # A tiled cache: the view of all its tiles.
     scene = whole_scene(request.scene) if _is_path(request.scene) else request.scene
+    if request.states.proposal is None:
+        check_states_differ(scene, before, after)
     scene = with_vegetation(scene, request.settings.vegetation)
     return CompareInputs(scene, before, after, request.plan.steps(scene), weather)
+
+
+def check_states_differ(scene, before, after) -> None:
+    """Refuse two dates of one model between which no object begins or ends: both states
+    are the same city and the loss would be zero everywhere, whatever the buildings.
+
+    Raises
+    ------
+    UsageError
+    """
+    import numpy as np
+
+    lo, hi = sorted((float(before.city_days), float(after.city_days)))
+    if scene.has_time:
+        ends = np.concatenate([scene.obj_t_begin_days, scene.obj_t_end_days])
+        if ((ends > lo) & (ends <= hi)).any():
+            return
+        why = f"no object begins or ends between {before.text} and {after.text}"
+    else:
+        why = "the model's objects carry no dates"
+    raise UsageError(f"both states are the same city ({why}), so nothing would change; give "
+                     f"--before/--after dates around a change (cityshade info FILE shows the "
+                     f"time range), or the proposal with --with")
 
 
 def run_compare(request: CompareRequest, inputs: CompareInputs | None = None, *,
@@ -348,7 +373,8 @@ def run_compare(request: CompareRequest, inputs: CompareInputs | None = None, *,
     Raises
     ------
     UsageError
-        Nothing to compare, a proposal in another CRS, a bad date.
+        Nothing to compare, a proposal in another CRS, a bad date, two states that are the
+        same city, another live run holding the output folder's lock.
     OutputError
         The output folder cannot be written.
 
@@ -367,12 +393,26 @@ def run_compare(request: CompareRequest, inputs: CompareInputs | None = None, *,
     >>> [(v.rule.id, v.status) for v in result.verdicts]            # doctest: +SKIP
     [('bre209-garden', 'pass'), ('bre209-window', 'not assessed')]
     """
+    from cityshade.util import folder_lock
+
+    inputs = inputs or open_compare(request)
+    if request.outdir is None:
+        return _compare(request, inputs, on_step)
+    notes: list[str] = []
+    # One run at a time in a folder; a lock left by a process that has ended is taken over.
+    with folder_lock(request.outdir, notes.append):
+        result = _compare(request, inputs, on_step)
+    result.comparison.warnings[:0] = notes
+    return result
+
+
+def _compare(request: CompareRequest, inputs: CompareInputs, on_step) -> CompareResult:
+    """:func:`run_compare` once the inputs are open (and the folder locked)."""
     from cityshade.planning.compare import Receivers, compare_states, merge_scenes, \
         write_comparison
     from cityshade.planning.report import write_report
     from cityshade.util import output_group
 
-    inputs = inputs or open_compare(request)
     settings, scene = request.settings, inputs.scene
     scene_after, proposal_warnings = scene, []
     if request.states.proposal is not None:

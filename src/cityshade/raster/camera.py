@@ -400,6 +400,45 @@ def nice_ceil(x: float) -> float:
     return 10.0 ** (k + 1)
 
 
+#: The default map view's margin around the model's box, in model heights: shadows that fall
+#: past the box's edge stay in the picture for a sun at least atan(1/2) = 26.6° high.
+DEFAULT_MAP_MARGIN_HEIGHTS = 2.0
+
+
+def default_map_margin_m(scene) -> float:
+    """The margin of a whole-model map view: :data:`DEFAULT_MAP_MARGIN_HEIGHTS` times the
+    height of the model's box (the longest shadow kept, in metres)."""
+    box3 = scene_box(scene)
+    return DEFAULT_MAP_MARGIN_HEIGHTS * float(box3[1, 2] - box3[0, 2])
+
+
+def map_extent(scene, bbox_crs=None, margin_m: float = 0.0) -> tuple[float, float, float, float]:
+    """Render-space ``(x0, y0, x1, y1)`` of a map view (:func:`map_view`'s ``bbox``): the box
+    ``bbox_crs`` given in model CRS coordinates (default: the model's box), grown by
+    ``margin_m`` on every side. Only the receivers are cropped: every technique still takes
+    its casters from the whole model.
+
+    Raises
+    ------
+    UsageError
+        A box with x0 >= x1 or y0 >= y1, not finite, or a negative margin.
+    """
+    margin = float(margin_m)
+    if not (math.isfinite(margin) and margin >= 0.0):
+        raise UsageError(f"the map margin must be a number of metres >= 0, not {margin_m}")
+    if bbox_crs is None:
+        box3 = scene_box(scene)
+        x0, y0, x1, y1 = box3[0, 0], box3[0, 1], box3[1, 0], box3[1, 1]
+    else:
+        x0, y0, x1, y1 = (float(v) for v in bbox_crs)
+        if not (np.isfinite([x0, y0, x1, y1]).all() and x1 > x0 and y1 > y0):
+            raise UsageError(f"the map box must be x0,y0,x1,y1 with x0 < x1 and y0 < y1, not "
+                             f"{x0:.10g},{y0:.10g},{x1:.10g},{y1:.10g}")
+        ox, oy = float(scene.origin_m[0]), float(scene.origin_m[1])
+        x0, y0, x1, y1 = x0 - ox, y0 - oy, x1 - ox, y1 - oy
+    return (float(x0) - margin, float(y0) - margin, float(x1) + margin, float(y1) + margin)
+
+
 def map_view(scene, pixel_size_m: float | None = None, bbox=None,
              max_px: int = DEFAULT_MAX_MAP_PX) -> Camera:
     """A georeferenced top-down orthographic map of the model (north up).

@@ -18,6 +18,7 @@ from typing import Any, Sequence
 import numpy as np
 
 from cityshade.errors import UsageError
+from cityshade.util import plural
 
 __all__ = ["Step", "Unit", "parse_duration_s", "parse_clock_s", "plan_steps", "plan_units",
            "step_months", "step_weights", "plan_run", "unit_month_weights", "MAX_STEPS"]
@@ -255,8 +256,8 @@ def _city_changes(scene, instants, t_days) -> str | None:
     if n:
         from cityshade.geo.temporal import days_to_iso
 
-        return (f"{n} object dates fall inside the run; the city is shown as it stood at "
-                f"{days_to_iso(t_days) if math.isfinite(t_days) else 'any time'} throughout")
+        return (f"{plural(n, 'object date')} fall{'s' if n == 1 else ''} inside the run; the "
+                f"city is shown as it stood at {days_to_iso(t_days) if math.isfinite(t_days) else 'any time'} throughout")
     return None
 
 
@@ -264,8 +265,10 @@ def plan_run(scene, instants, t_days: float, suns, weights, warnings: list[str])
     """:func:`plan_units` of a run, with its warnings (sun never up, the city changing)."""
     units, below, duplicates = plan_units(suns, weights)
     if not units:
-        warnings.append(f"the sun stays at or below the horizon in all {len(suns)} steps: "
-                        f"nothing is lit, sun-hours are 0 everywhere")
+        every = "the" if len(suns) == 1 else "all"
+        warnings.append(f"the sun stays at or below the horizon in {every} "
+                        f"{plural(len(suns), 'step')}: nothing is lit, sun-hours are 0 "
+                        f"everywhere")
     change = _city_changes(scene, instants, float(t_days))
     if change:
         warnings.append(change)
