@@ -51,7 +51,7 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     import dataclasses
     import time
 
-    from cityshade.cli.options import solar_zone_of_scene, warn_lmt
+    from cityshade.cli.options import check_every_day, solar_zone_of_scene, warn_lmt
     from cityshade.errors import UsageError
     from cityshade.geo.temporal import parse_user_date
     from cityshade.shadows import get_technique
@@ -61,23 +61,13 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     from cityshade.sunhours.plan import parse_clock_s, parse_duration_s, plan_steps, step_months
     from cityshade.sunhours.request import SunHoursRequest, check_execution
     from cityshade.sunhours.run import run_batch
-    from cityshade.sunhours.surfaces import SampleSettings
     from cityshade.util import check_outputs
     from cityshade.config import VegetationSettings
 
     t_start = time.perf_counter()
     technique = settings.shadows.technique
     get_technique(technique)  # unknown names fail before any work
-    if samples_per_m2 is not None:
-        settings = dataclasses.replace(settings, batch=dataclasses.replace(
-            settings.batch, samples_per_m2=samples_per_m2))
-    if surfaces:
-        SampleSettings(samples_per_m2=settings.batch.samples_per_m2)
-    elif samples_per_m2 is not None:
-        raise UsageError("--samples-per-m2 sets the sample points of --surfaces: give "
-                         "--surfaces too")
-    from cityshade.cli.options import check_every_day
-
+    settings = _sample_settings(settings, surfaces, samples_per_m2)
     check_every_day(days, to_date_text)
     if no_refraction:
         settings = dataclasses.replace(settings, sun=dataclasses.replace(settings.sun,
@@ -127,6 +117,24 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     if verbose:
         echo_verbose(run, time.perf_counter() - t_start)
     click.echo(" ".join(str(p) for p in run.written))
+
+
+def _sample_settings(settings, surfaces: bool, samples_per_m2):
+    """The settings with --samples-per-m2 applied and checked; refused without --surfaces."""
+    import dataclasses
+
+    from cityshade.errors import UsageError
+    from cityshade.sunhours.surfaces import SampleSettings
+
+    if samples_per_m2 is not None:
+        settings = dataclasses.replace(settings, batch=dataclasses.replace(
+            settings.batch, samples_per_m2=samples_per_m2))
+    if surfaces:
+        SampleSettings(samples_per_m2=settings.batch.samples_per_m2)
+    elif samples_per_m2 is not None:
+        raise UsageError("--samples-per-m2 sets the sample points of --surfaces: give "
+                         "--surfaces too")
+    return settings
 
 
 def note(text: str) -> None:

@@ -23,7 +23,7 @@ SECTIONS: dict[str, tuple[str, ...]] = {
                         "albedo"),
     "Place": ("crs", "axis_order"),
     "Camera and extent": ("camera", "eye", "target", "fov", "size", "pixel_size", "cameras_file",
-                          "views", "extent_text", "ground", "no_sky"),
+                          "views", "bbox", "margin_m", "extent_text", "ground", "no_sky"),
     "Shadows": ("technique", "no_vegetation", "tree_transmissivity", "smooth", "map_px", "bias", "slope_bias", "max_bias",
                 "pcf_kernel", "vsm_blur", "cascades", "sizes"),
     "Receivers and rules": ("surfaces", "no_surfaces", "samples_per_m2", "min_stretch_text",

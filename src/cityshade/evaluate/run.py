@@ -13,7 +13,6 @@ the surface pixels it ray traced. :mod:`.report` writes the results.
 from __future__ import annotations
 
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import TYPE_CHECKING, Any, Callable, Sequence
 
 import numpy as np

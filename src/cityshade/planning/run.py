@@ -408,6 +408,7 @@ def run_compare(request: CompareRequest, inputs: CompareInputs | None = None, *,
 
 def _compare(request: CompareRequest, inputs: CompareInputs, on_step) -> CompareResult:
     """:func:`run_compare` once the inputs are open (and the folder locked)."""
+    from cityshade.geometry.vegetation import with_vegetation
     from cityshade.planning.compare import Receivers, compare_states, merge_scenes, \
         write_comparison
     from cityshade.planning.report import write_report
