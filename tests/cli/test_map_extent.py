@@ -67,17 +67,28 @@ def test_a_box_is_shaded_by_a_caster_outside_it_as_in_the_whole_map(tower, tmp_p
     assert not shadow[:, :7].any() and not shadow[:, 23:].any()
 
 
-def test_the_default_map_keeps_a_margin_of_twice_the_model_height(tower, tmp_path):
+def test_the_default_map_keeps_a_margin_up_to_where_the_ground_plane_ends(tower, tmp_path):
+    """Model box 90 × 130 m, 60 m high: two heights (120 m) of margin would reach past the
+    ground plane (half the box's diagonal, 79.1 m), where a map shows no surface at all; the
+    margin stops before it (at 0.9 of it: the extent is rounded up to whole pixels), so every
+    pixel of the default map is a surface."""
+    from cityshade.geometry.ground import GROUND_MARGIN_REL
     from cityshade.imageio import read_image
+    from cityshade.raster.camera import default_map_margin_m
+    from cityshade.store.scenefile import load_scene
 
-    tif = tmp_path / "m.tif"
+    margin = 0.9 * GROUND_MARGIN_REL * np.hypot(90.0, 130.0)
+    assert margin < 2 * H
+    assert default_map_margin_m(load_scene(tower)) == pytest.approx(margin)
+    tif, mask = tmp_path / "m.tif", tmp_path / "m.png"
     result = run("render", tower, *SUN, "--camera", "map", "--pixel-size", "1",
-                 "-o", tmp_path / "m.exr", "--geotiff", tif)
+                 "-o", tmp_path / "m.exr", "--geotiff", tif, "--mask", mask)
     assert result.exit_code == 0, result.output
-    # Model box 90 × 130 m, 60 m high: 120 m of margin on each side.
-    assert read_image(tif)[0].shape[:2] == (130 + 240, 90 + 240)
+    rows, cols = read_image(tif)[0].shape[:2]
+    assert abs(cols - (90 + 2 * margin)) <= 2 and abs(rows - (130 + 2 * margin)) <= 2
     world = [float(v) for v in tif.with_suffix(".tfw").read_text().split()]
-    assert world[4:] == [X0 - 40 - 120 + 0.5, Y0 + 90 + 120 - 0.5]
+    assert abs(world[4] - (X0 - 40 - margin + 0.5)) <= 1.0
+    assert not (read_image(mask)[0] == 128).any()
 
 
 def test_bbox_errors_are_one_line(tower, tmp_path):

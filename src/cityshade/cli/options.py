@@ -652,8 +652,8 @@ def map_extent_options(func):
 
     wrapper = click.option("--margin-m", type=float, help="Map view: metres added around the "
                            "mapped box on every side (default: none around --bbox, twice the "
-                           "model's height around the whole model, so shadows falling past "
-                           "its edge are kept).")(wrapper)
+                           "model's height around the whole model, up to where the ground "
+                           "plane ends, so shadows falling past its edge are kept).")(wrapper)
     return click.option("--bbox", help="Map view: only the box X0,Y0,X1,Y1 (model CRS "
                         "metres); the casters still come from the whole model, so shadows "
                         "cast into the box from outside it are computed.")(wrapper)

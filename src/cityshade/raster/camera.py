@@ -407,9 +407,16 @@ DEFAULT_MAP_MARGIN_HEIGHTS = 2.0
 
 def default_map_margin_m(scene) -> float:
     """The margin of a whole-model map view: :data:`DEFAULT_MAP_MARGIN_HEIGHTS` times the
-    height of the model's box (the longest shadow kept, in metres)."""
+    height of the model's box (the longest shadow kept, in metres), at most 0.9 of the ground
+    plane's reach (:data:`cityshade.geometry.ground.GROUND_MARGIN_REL` of the box's
+    horizontal diagonal): past it a map would show no surface, not a shadow."""
+    from cityshade.geometry.ground import GROUND_MARGIN_REL
+
     box3 = scene_box(scene)
-    return DEFAULT_MAP_MARGIN_HEIGHTS * float(box3[1, 2] - box3[0, 2])
+    diagonal = math.hypot(float(box3[1, 0] - box3[0, 0]), float(box3[1, 1] - box3[0, 1]))
+    # 0.9: the map's extent is rounded up to whole pixels, which must stay on the plane too.
+    return min(DEFAULT_MAP_MARGIN_HEIGHTS * float(box3[1, 2] - box3[0, 2]),
+               0.9 * GROUND_MARGIN_REL * diagonal)
 
 
 def map_extent(scene, bbox_crs=None, margin_m: float = 0.0) -> tuple[float, float, float, float]:
