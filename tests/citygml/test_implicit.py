@@ -18,7 +18,7 @@ from cityshade.citygml.reader import read_citygml
 from cityshade.errors import InputError
 from cityshade.geometry.scene import build_scene
 
-VEG2 = 'xmlns:veg="http://www.opengis.net/citygml/vegetation/2.0"'
+VEG2 = ""  # citygml_snippets.CG2 declares the vegetation namespace itself
 #: The prototype: one triangle, (0,0,0) (1,0,0) (0,1,1), its ring closed.
 PROTO_POLYGON = ('<gml:Polygon><gml:exterior><gml:LinearRing><gml:posList srsDimension="3">'
                  '0 0 0 1 0 0 0 1 1 0 0 0</gml:posList></gml:LinearRing></gml:exterior>'

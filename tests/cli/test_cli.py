@@ -165,7 +165,7 @@ def test_render_outputs(built, tmp_path):
     channels, attrs = imageio.read_exr(exr)
     assert {"R", "G", "B", "shadow", "Z", "N.x", "N.y", "N.z", "primid", "objid"} <= set(channels)
     assert channels["shadow"].shape == (64, 96)
-    assert attrs["cityshade:technique"] == "raytrace"
+    assert attrs["cityshade:technique"] == "exact"
     assert float(attrs["cityshade:sun_elevation_deg"]) == 30.0
     assert "timings" in result.output and "azimuth 135.000° true" in result.output
     pixels, _ = imageio.read_image(png)

@@ -138,7 +138,7 @@ def test_size_over_the_limit_gives_the_memory_it_would_need(scene_file, tmp_path
                  "--sun-elevation", "30", "--size", "100000x100000", "-o", tmp_path / "a.exr")
     assert error_line(result, 2) == (
         "cityshade: error: --size 100000x100000 exceeds the limit of 16384 pixels a side (the "
-        "picture would need about 2,900 GB: 290 bytes per pixel for raytrace)")
+        "picture would need about 2,900 GB: 290 bytes per pixel for exact)")
 
 
 def test_an_unwritable_output_fails_before_the_work(scene_file):

@@ -125,7 +125,7 @@ def test_maps_surfaces_and_irradiance_files(small_file, tmp_path):
     (["--sky", "tregenza7"], ("cityshade: error: unknown sky 'tregenza7': one of tregenza, "
                               "reinhart577, reinhart2305 or uniform<degrees>")),
     (["--shadows", "pcf"], ("cityshade: error: sky view factors and irradiance need an exact "
-                            "technique (izb, raytrace), not 'pcf'")),
+                            "technique (exact, izb, raytrace), not 'pcf'")),
     (["--weather", "MISSING.epw", "--irradiance"],
      "cityshade: error: MISSING.epw: no such weather file"),  # a bad input file: status 1
     (["--weather", "MISSING.epw"], None),  # no --irradiance: the weather is not read

@@ -20,7 +20,7 @@ from cityshade.config import TreeSettings
 from cityshade.errors import TreeRegisterError
 from cityshade.meshes.trees import add_trees, read_register
 
-VEG2 = 'xmlns:veg="http://www.opengis.net/citygml/vegetation/2.0"'
+VEG2 = ""  # citygml_snippets.CG2 declares the vegetation namespace itself
 X0, Y0 = 690_000.0, 5_336_000.0
 #: One tree: position, height, crown diameter, trunk height (metres).
 TREE = {"x": X0 + 30.0, "y": Y0 + 12.0, "h": 11.0, "d": 6.0, "ht": 4.0}

@@ -205,7 +205,7 @@ def test_cli_errors_are_one_exact_line_and_write_nothing(tmp_path):
         (["--after", "1990", "--every", "10min"], ("cityshade: error: 61 times a day make 61 "
          "panels on a sheet; at most 24: choose a longer --every or fewer --times")),
         (["--after", "1990", "--shadows", "pcf"],
-         "cityshade: error: a study needs an exact technique (izb or raytrace), not pcf"),
+         "cityshade: error: a study needs an exact technique (exact or izb or raytrace), not pcf"),
         (["--after", "1990", "--area", "1,2,3"], ("cityshade: error: --area must be "
          "x0,y0,x1,y1 with x0 < x1 and y0 < y1, not '1,2,3'")),
         (["--after", "1990", "--extent", "5,5,1,1"], ("cityshade: error: --extent must be "

@@ -96,6 +96,8 @@ def cli() -> None:
       cityshade compare city.cityshade --with proposal.gml --date 2025-03-21 \\
           --tz Europe/London --rules bre209 -o planning/
       cityshade study city.cityshade --with proposal.gml --tz Europe/London -o study/
+      cityshade sky city.cityshade --surfaces --weather london.epw --irradiance -o solar/
+      cityshade export city.cityshade solar/surfaces.csv -o solar.glb
       cityshade evaluate city.cityshade --shadows all -o report/
     """
 

@@ -151,6 +151,10 @@ def probable_sunlight(scene, points, normals, weather, t_days: float = 0.0, *,
     from cityshade.shadows.visibility import occluded
     from cityshade.trace import shadow_rays_from_surface
 
+    if engine == "exact":      # the suns of a year are many calls of the same receivers
+        from cityshade.shadows.exact import engine_for_run
+
+        engine = engine_for_run(engine, scene, len(np.asarray(points).reshape(-1, 3)), 4400)
     if engine not in ENGINES:
         raise UsageError(f"sunlight is traced with {' or '.join(ENGINES)}, not {engine!r}")
     pts = np.ascontiguousarray(points, np.float64).reshape(-1, 3)

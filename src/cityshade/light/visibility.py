@@ -123,6 +123,11 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
     from cityshade.shadows.visibility import occluded
     from cityshade.trace import shadow_rays_from_surface
 
+    if engine == "exact":      # one choice for the whole sky: its directions share the set-up
+        from cityshade.shadows.exact import engine_for_run
+
+        engine = engine_for_run(engine, scene, len(np.asarray(points).reshape(-1, 3)),
+                                len(sky.directions))
     if engine not in ENGINES:
         raise UsageError(f"sky visibility is traced with {' or '.join(ENGINES)}, not {engine!r}")
     if not (isinstance(block, (int, np.integer)) and block >= 8 and block % 8 == 0):
