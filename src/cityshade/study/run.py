@@ -271,7 +271,8 @@ def _text(request, scene, camera, panels, number: int, count: int):
     rows = [("Model", model), ("Place", place), ("CRS", scene.crs.name),
             ("Existing", before), ("Proposed", after),
             ("Times", _times_text(request.times.clocks_s)), ("Time zone", zone),
-            ("Shadows", f"{request.technique} (exact)"),
+            ("Shadows", "exact (izb or raytrace, the same pixels)"
+             if request.technique == "exact" else f"{request.technique} (exact)"),
             ("Map", (f"{camera.pixel_size_m:g} m per pixel, "
                     f"{camera.shape[1]} × {camera.shape[0]} px, seen from above"))]
     notes = ("Shadows on the ground and on roofs at the times shown, both states of the "
