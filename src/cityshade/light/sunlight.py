@@ -151,11 +151,7 @@ def probable_sunlight(scene, points, normals, weather, t_days: float = 0.0, *,
     from cityshade.shadows.visibility import occluded
     from cityshade.trace import shadow_rays_from_surface
 
-    if engine == "exact":      # the suns of a year are many calls of the same receivers
-        from cityshade.shadows.exact import engine_for_run
-
-        engine = engine_for_run(engine, scene, len(np.asarray(points).reshape(-1, 3)), 4400)
-    if engine not in ENGINES:
+    if engine not in (*ENGINES, "exact"):
         raise UsageError(f"sunlight is traced with {' or '.join(ENGINES)}, not {engine!r}")
     pts = np.ascontiguousarray(points, np.float64).reshape(-1, 3)
     nrm = np.ascontiguousarray(normals, np.float64).reshape(-1, 3)
@@ -168,6 +164,10 @@ def probable_sunlight(scene, points, normals, weather, t_days: float = 0.0, *,
     n = len(pts)
     annual, win, front_h = np.zeros(n), np.zeros(n), np.zeros(n)
     hours = np.flatnonzero(sunny)
+    if engine == "exact":      # the sunny hours are calls of the same receivers: one choice
+        from cityshade.shadows.exact import engine_for_run
+
+        engine = engine_for_run(engine, scene, n, len(hours))
     # izb: one light-space pass per hour; raytrace: many hours per call (a direction per ray,
     # BATCH_RAYS rays at most), the same rays as hour by hour.
     per = max(1, BATCH_RAYS // max(n, 1)) if engine == "raytrace" else 1

@@ -114,9 +114,8 @@ class _PixelRays:
         if faces.any():
             direction = np.asarray(sun.direction, dtype=np.float64)
             origins = self.receivers.origins(direction, faces[self.valid])
-            extra = {"calls": self.calls} if self.engine == "exact" else {}
             lit[faces] = transmission(scene, origins, direction, t_days, engine=self.engine,
-                                      day_of_year=day_of_year(sun), **extra)
+                                      day_of_year=day_of_year(sun), calls=self.calls)
         return lit
 
 
