@@ -220,6 +220,20 @@ def test_bad_input_one_line(built, tmp_path):
     assert (tmp_path / "keep" / "mine.txt").read_text() == "x"
 
 
+def test_cli_builds_a_tiled_cache_in_a_new_or_empty_folder(tmp_path):
+    """The CLI creates the output folder when it checks that it can write there; the tiled
+    build then took that empty folder for a foreign one and refused every new -o."""
+    runner = CliRunner()
+    for out in (tmp_path / "new" / "city", tmp_path / "empty"):
+        if out.name == "empty":
+            out.mkdir()
+        r = runner.invoke(cli, ["build", str(SAMPLE), "-o", str(out), "--tile-m", "150", "-q"])
+        assert r.exit_code == 0, r.output
+        assert (out / "index.json").is_file()
+        assert runner.invoke(cli, ["info", str(out)]).exit_code == 0
+        assert not [p.name for p in out.parent.iterdir() if p.name.startswith(".")]
+
+
 def test_real_file_in_tiles(tmp_path):
     """The TUM campus, read as 3 files with border duplicates, built as a tiled cache of
     100 m tiles, renders the map of the same files built as one cache bit for bit."""

@@ -100,11 +100,17 @@ def _time_range(begin, end) -> list[float | None]:
     return [lo if math.isfinite(lo) else None, hi if math.isfinite(hi) else None]
 
 
+def _is_empty_folder(folder: Path) -> bool:
+    return folder.is_dir() and next(folder.iterdir(), None) is None
+
+
 def _start(folder: Path, tile_m) -> Path:
     """Check the tile side and the output; make and return the temporary folder beside it."""
     if not (isinstance(tile_m, (int, float)) and math.isfinite(tile_m) and tile_m > 0):
         raise UsageError(f"--tile-m must be a positive number of metres, not {tile_m!r}")
-    if folder.exists() and not is_tiled_cache(folder):
+    # An empty folder is taken: the CLI creates the output folder before the work, when it
+    # checks that it can write there.
+    if folder.exists() and not is_tiled_cache(folder) and not _is_empty_folder(folder):
         raise OutputError("exists and is not a tiled cache (a folder with index.json): "
                           "give another -o", path=str(folder))
     tmp = folder.with_name(f".{folder.name}.{os.getpid()}.tmp")
