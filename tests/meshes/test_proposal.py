@@ -4,6 +4,7 @@ internal floor slabs) placed, stood up and turned outward."""
 from __future__ import annotations
 
 import csv
+import re
 
 import numpy as np
 import pytest
@@ -86,6 +87,40 @@ def test_obj_block_gives_the_citygml_blocks_verdicts_and_hours(model, tmp_path):
     assert [g[0] for g in got] == ["ground", "roof", "wall", "wall", "wall", "wall"]
     np.testing.assert_allclose([g[2] for g in got], [w[2] for w in want], atol=1e-9)
     assert max(g[2] for g in got) > 10.0  # the roof: the whole day
+
+
+def test_proposal_surfaces_in_the_gis_layers_and_the_report(model, tmp_path):
+    """The proposal's own surfaces reach the GeoPackage (layer ``proposal_surfaces``, outlines
+    from the scene after) and the report with the values ``surfaces.csv`` gives them; its roof,
+    30 m above a 6 m house, has the sun at every step with the sun up."""
+    import pyogrio
+    import shapely
+
+    city_model, block, _ = model
+    out = tmp_path / "gis"
+    args = ["compare", city_model, "--with", block, "--date", "2025-03-21", "--tz",
+            "Europe/Berlin", "--every", "1h", "--pixel-size", "1", "-o", out]
+    result = CliRunner().invoke(cli, [str(a) for a in args])
+    assert result.exit_code == 0, result.output
+    with open(out / "surfaces.csv", newline="") as fh:
+        mine = [r for r in csv.DictReader(fh) if r["object_id"] == "NEW"]
+    meta, _, geoms, values = pyogrio.raw.read(out / "results.gpkg", layer="proposal_surfaces")
+    got = dict(zip(meta["fields"], values))
+    assert sorted(got["polygon_id"]) == sorted(r["polygon_id"] for r in mine)
+    by_id = {r["polygon_id"]: float(r["hours_after"]) for r in mine}
+    # surfaces.csv writes 4 decimals; the layer keeps the float64.
+    np.testing.assert_allclose(got["hours_after"], [by_id[p] for p in got["polygon_id"]],
+                               rtol=0, atol=5e-5)
+    assert all(v is None or np.isnan(v) for v in got["hours_before"])
+    # Outlines where the block stands: its footprint's box, in the model CRS.
+    bounds = shapely.total_bounds(shapely.from_wkb(geoms))
+    np.testing.assert_allclose(bounds, (BX, BY, BX + W, BY + D), atol=1e-6)
+    report = (out / "report.md").read_text()
+    roof = [r for r in mine if r["surface_class"] == "roof"]
+    sun_up = float(re.search(r"([\d.]+) h with the sun up", report).group(1))
+    assert len(roof) == 1 and float(roof[0]["hours_after"]) == pytest.approx(sun_up, abs=0.005)
+    row = next(ln for ln in report.splitlines() if ln.startswith("| roof |"))
+    assert row.split("|")[2:5] == [" 1 ", f" {W * D:.1f} ", f" {sun_up:.2f} "]
 
 
 def test_mesh_options_are_checked(model, tmp_path):

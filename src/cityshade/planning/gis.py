@@ -4,7 +4,9 @@
 ``surfaces`` (the rows of ``surfaces.csv``), ``openings`` (the rows of ``openings.csv`` and the
 reference point), ``buildings`` (footprints with area-weighted means and the largest loss) and
 ``rules`` (one feature per verdict; an area rule's area as its geometry) — with, on surfaces
-and openings, a ``rule_<id>`` column per point rule that judged them.
+and openings, a ``rule_<id>`` column per point rule that judged them — and, when the state
+after adds a proposal, ``proposal_surfaces`` (its own surfaces: the rows ``surfaces.csv``
+gives them, outlines from the scene after; no value before).
 :func:`rule_places`: where a verdict's receivers and area lie, for the report's maps.
 """
 from __future__ import annotations
@@ -68,15 +70,34 @@ def rule_places(comp, verdict, points: dict[str, np.ndarray] | None = None):
             area)
 
 
-def _surface_layer(comp, verdicts):
-    from cityshade.planning.compare import SURFACE_COLUMNS, surface_rows
-    from cityshade.present.gis import finite_or_none, surface_layer
+def _surface_columns(rows) -> dict[str, list]:
+    from cityshade.planning.compare import SURFACE_COLUMNS
+    from cityshade.present.gis import finite_or_none
 
-    scene = comp.scene_before
-    rows = list(surface_rows(comp))
     columns = {name: [r[i] for r in rows] for i, name in enumerate(SURFACE_COLUMNS)}
     for name in SURFACE_COLUMNS[6:]:
         columns[name] = finite_or_none(columns[name])
+    return columns
+
+
+def _proposal_layer(comp):
+    """The proposal's own surfaces (receivers of the state after only): the rows
+    ``surfaces.csv`` gives them, their outlines from the scene after."""
+    from cityshade.planning.compare import proposal_rows
+    from cityshade.present.gis import surface_layer
+
+    rows = list(proposal_rows(comp))
+    return surface_layer(comp.scene_after, [r[2] for r in rows], _surface_columns(rows),
+                         name="proposal_surfaces")
+
+
+def _surface_layer(comp, verdicts):
+    from cityshade.planning.compare import surface_rows
+    from cityshade.present.gis import surface_layer
+
+    scene = comp.scene_before
+    rows = list(surface_rows(comp))
+    columns = _surface_columns(rows)
     labels = [scene.poly_ids[r[2]] or str(r[2]) for r in rows]
     for col, status in _statuses(verdicts, "surfaces").items():
         columns[col] = [status.get(label, "") for label in labels]
@@ -158,6 +179,8 @@ def compare_layers(comp, verdicts: Sequence = ()) -> list:
                for name, i in (("hours_before", 6), ("hours_after", 7), ("loss_h", 8))}
         layers.append(building_layer(comp.scene_before, [r[2] for r in rows], col,
                                      {"max_loss_h": col["loss_h"]}))
+    if comp.proposal is not None:
+        layers.append(_proposal_layer(comp))
     if verdicts:
         layers.append(_rule_layer(comp, verdicts))
     return layers

@@ -11,7 +11,7 @@ from typing import Any, Sequence
 
 import numpy as np
 
-__all__ = ["write_report", "worst_surfaces", "window_lines"]
+__all__ = ["write_report", "worst_surfaces", "window_lines", "proposal_md"]
 
 #: Surfaces smaller than this are left out of the worst-hit list (slivers say little).
 MIN_LISTED_AREA_M2 = 1.0
@@ -214,6 +214,31 @@ def _verdict_md(v) -> list[str]:
     return out
 
 
+def proposal_md(comp) -> list[str]:
+    """The report's section on the proposal's own surfaces (none without a proposal): per
+    surface class their area, the area-weighted mean sun-hours and the longest stretch."""
+    from cityshade.planning.compare import proposal_rows
+
+    rows = list(proposal_rows(comp))
+    if not rows:
+        return []
+    out = ["## The proposal's own surfaces", "",
+           f"The proposal's {len(rows)} surfaces are receivers too (after only: no loss). Per "
+           "class, the area-weighted mean of their sun-hours and the longest continuous "
+           "stretch of any of their samples:", "",
+           "| class | surfaces | area m² | mean h | longest h |", "|---|---:|---:|---:|---:|"]
+    for cls in sorted({r[3] for r in rows}):
+        of_class = [r for r in rows if r[3] == cls]
+        mine = [r for r in of_class if r[5] > 0]  # a surface too small for a sample has none
+        area = np.array([r[4] for r in mine], np.float64)
+        hours = np.array([r[7] for r in mine], np.float64)
+        mean = float((area * hours).sum() / area.sum()) if area.sum() > 0 else float("nan")
+        longest = max((r[11] for r in mine), default=float("nan"))
+        out.append(f"| {cls} | {len(of_class)} | {area.sum():.1f} | {_h(mean)} | {_h(longest)} |")
+    return out + ["", "Each surface: the rows of `surfaces.csv` with no hours before; GIS "
+                      "layer `proposal_surfaces`.", ""]
+
+
 def write_report(outdir, comp, verdicts: Sequence, request: dict[str, Any],
                  steps: Sequence, decorate: bool = True) -> list[Path]:
     """Write ``report.md``, ``report.html`` (the same, self-contained, with each rule's map),
@@ -294,6 +319,7 @@ def write_report(outdir, comp, verdicts: Sequence, request: dict[str, Any],
         if len(order) > 20:
             lines.append(f"| … {len(order) - 20} more in openings.csv | | | | | | | |")
         lines += ["", "Facing: azimuth of the outward normal, clockwise from grid north.", ""]
+    lines += proposal_md(comp)
     if verdicts:
         lines += ["## Rules", ""]
         for v in verdicts:
