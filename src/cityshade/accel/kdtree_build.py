@@ -177,12 +177,17 @@ def _clipped_box(tri_v, tri, box_lo, box_hi, out_lo, out_hi, poly):
     for i in range(3):
         for c in range(3):
             poly[0, c, i] = tri_v[tri, i, c]
-    n = 3
+    # Arguments as np.int64/np.bool_, not literals: Numba compiles a callee once per literal
+    # value it is passed (and for the literal type a counter has before it is widened), so
+    # literals here cost a compile each on first use (issue 40).
+    n = np.int64(3)
+    src0, dst1 = np.int64(0), np.int64(1)
+    keep_above, keep_below = np.bool_(False), np.bool_(True)
     for axis in range(3):
-        n = _clip_poly(poly, 0, 1, n, axis, box_lo[axis], False)
+        n = _clip_poly(poly, src0, dst1, n, axis, box_lo[axis], keep_above)
         if n == 0:
             return False
-        n = _clip_poly(poly, 1, 0, n, axis, box_hi[axis], True)
+        n = _clip_poly(poly, dst1, src0, n, axis, box_hi[axis], keep_below)
         if n == 0:
             return False
     for axis in range(3):
@@ -298,7 +303,7 @@ def _sweep_axis(lo, hi, axis, ord_lo, ord_hi, blo, bhi, t0, t1, ct, ci, bonus, b
     i = 0
     j = 0
     k = 0
-    n_left = 0
+    n_left = np.int64(0)  # not a literal: one compile of _split_cost (_clipped_box says why)
     n_right = n
     while i < ns or j < ns or k < npl:
         p = np.inf
@@ -376,7 +381,7 @@ def _binned_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, nbins, best):
             eb = min(int((x - a) * scale), nbins - 1)
         start_count[sb] += 1
         end_count[eb] += 1
-    n_left = 0
+    n_left = np.int64(0)  # not a literal: one compile of _split_cost (_clipped_box says why)
     n_right = n
     for i in range(1, nbins):
         n_left += start_count[i - 1]
@@ -563,8 +568,8 @@ def _child_orders(p_ord, o, n, side, work, lo_l, hi_l, lo_r, hi_r, n_axes, clipp
         axis = q >> 1
         use_hi = (q & 1) == 1
         row = p_ord[q, o:o + n]
-        nl = 0
-        nr = 0
+        nl = np.int64(0)  # not literals: one compile of _merge_by_value (_clipped_box)
+        nr = np.int64(0)
         if n_both == 0:  # nothing re-sorted: the filtered orders are the children's
             for i in range(n):  # the right child's written in place: nr <= i
                 r = row[i]

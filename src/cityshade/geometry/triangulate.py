@@ -755,7 +755,7 @@ def _earclip_with_holes(x2, y2, loc, idx, ring_start, n_holes, nslot, nxt, prv, 
     # Clip ears until a triangle is left.
     abs_sum = 0.0
     count = n_nodes
-    cur = 0
+    cur = np.int64(0)  # not a literal: one compile of _is_ear
     misses = 0
     while count > 3:
         a = prv[cur]
@@ -877,7 +877,9 @@ def _triangulate_range(coords, ring_offsets, polygon_ring_offsets, p_begin, p_en
         size_m = np.sqrt((hi0 - lo0) ** 2 + (hi1 - lo1) ** 2 + (hi2 - lo2) ** 2)
         col_tol_m = collinear_rel_tol * size_m
         min_area_m2 = min_rel_area * size_m * size_m
-        m_ext, bits = _clean_ring(coords, a, b, ox, oy, oz, merge2_m2, col_tol_m, idx, loc, 0)
+        # np.int64, not a literal 0: one compile of _clean_ring and its callees for both calls
+        m_ext, bits = _clean_ring(coords, a, b, ox, oy, oz, merge2_m2, col_tol_m, idx, loc,
+                                  np.int64(0))
         # Newell normal of the cleaned exterior (equal to the raw ring's: merged and collinear
         # points add nothing), as the sum of cross products of consecutive local points.
         nx = 0.0
@@ -907,10 +909,10 @@ def _triangulate_range(coords, ring_offsets, polygon_ring_offsets, p_begin, p_en
                     fz = ex * ty - ey * tx
                     f_len = np.sqrt(fx * fx + fy * fy + fz * fz)
                     ux, uy, uz, vx, vy, vz = _basis(fx / f_len, fy / f_len, fz / f_len)
-                    _project(loc, x2, y2, 0, m_ext, ux, uy, uz, vx, vy, vz)
+                    _project(loc, x2, y2, np.int64(0), m_ext, ux, uy, uz, vx, vy, vz)
                     ring_start[0] = 0
                     ring_start[1] = m_ext
-                    code, _ = _crossing_code(x2, y2, ring_start, 1, col_tol_m * size_m)
+                    code, _ = _crossing_code(x2, y2, ring_start, np.int64(1), col_tol_m * size_m)
                     if code != 0:
                         reason = SKIP_SELF_INTERSECTING
             if n_len > 0.0 and reason != SKIP_ALL_COLLINEAR and reason != SKIP_TOO_FEW_POINTS:
@@ -926,13 +928,13 @@ def _triangulate_range(coords, ring_offsets, polygon_ring_offsets, p_begin, p_en
         normal[p, 1] = ny
         normal[p, 2] = nz
         ux, uy, uz, vx, vy, vz = _basis(nx, ny, nz)
-        _project(loc, x2, y2, 0, m_ext, ux, uy, uz, vx, vy, vz)
-        ext_area_m2 = _shoelace(x2, y2, 0, m_ext)
+        _project(loc, x2, y2, np.int64(0), m_ext, ux, uy, uz, vx, vy, vz)
+        ext_area_m2 = _shoelace(x2, y2, np.int64(0), m_ext)
         # Clean, project and orient the holes clockwise; drop the degenerate ones.
         ring_start[0] = 0
         ring_start[1] = m_ext
         k = m_ext
-        n_holes = 0
+        n_holes = np.int64(0)  # not a literal: one compile of _earclip_with_holes
         holes_area_m2 = 0.0
         for r in range(r0 + 1, r1):
             k1, hole_bits = _clean_ring(coords, ring_offsets[r], ring_offsets[r + 1], ox, oy, oz,
@@ -1034,8 +1036,10 @@ def _triangulate_kernel(coords, ring_offsets, polygon_ring_offsets, merge_distan
                         tri_out, tri_poly, status, repairs, normal, area_m2):
     """Triangulate every polygon in order on one thread (the twin of
     :func:`_triangulate_parallel`); return the triangle count."""
-    return _triangulate_range(coords, ring_offsets, polygon_ring_offsets, 0,
-                              polygon_ring_offsets.shape[0] - 1, 0, merge_distance_m,
+    # np.int64, not literal zeros: the parallel kernel's compile of _triangulate_range (and
+    # of everything it calls) serves this one too.
+    return _triangulate_range(coords, ring_offsets, polygon_ring_offsets, np.int64(0),
+                              polygon_ring_offsets.shape[0] - 1, np.int64(0), merge_distance_m,
                               collinear_rel_tol, area_rel_tol, min_rel_area, nonplanar_rel_tol,
                               tri_out, tri_poly, status, repairs, normal, area_m2)
 

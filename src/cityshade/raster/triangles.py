@@ -497,12 +497,13 @@ def bin_triangles(bbox, tile_px, tiles_x, tiles_y):
     """
     n_tiles = tiles_x * tiles_y
     counts = np.zeros(n_tiles, np.int64)
-    _bin_pass(bbox, tile_px, tiles_x, counts, np.empty(0, np.int32), False)
+    # The flag as np.bool_, not a literal: one compile of _bin_pass serves both passes.
+    _bin_pass(bbox, tile_px, tiles_x, counts, np.empty(0, np.int32), np.bool_(False))
     start = np.zeros(n_tiles + 1, np.int64)
     start[1:] = np.cumsum(counts)
     fill = start[:n_tiles].copy()
     items = np.empty(start[n_tiles], np.int32)
-    _bin_pass(bbox, tile_px, tiles_x, fill, items, True)
+    _bin_pass(bbox, tile_px, tiles_x, fill, items, np.bool_(True))
     return start, items
 
 
