@@ -444,7 +444,8 @@ def _radix_order(values, out, keys, keys_tmp, idx_tmp, counts):
         src_k, src_i, dst_k, dst_i = dst_k, dst_i, src_k, src_i
         in_out = not in_out
     if not in_out:
-        out[:n] = src_i[:n]
+        for i in range(n):  # loops, not slice copies: see _grow
+            out[i] = src_i[i]
 
 
 @njit(cache=True)
@@ -607,7 +608,10 @@ def _grow(a, n):
     if n <= a.shape[0]:
         return a
     b = np.empty(max(n, 2 * a.shape[0]), a.dtype)
-    b[:a.shape[0]] = a
+    # Copied by a loop: a slice copy (``b[:m] = a``) makes Numba compile its shape-mismatch
+    # message (string formatting) once per pair of ranks, seconds of first-use compiling.
+    for i in range(a.shape[0]):
+        b[i] = a[i]
     return b
 
 
@@ -620,12 +624,10 @@ def _grow_2d(a, n, columns):
     if n <= size:
         return a
     size = max(n, size + size // 2)
-    if columns:
-        b = np.empty((rows, size), a.dtype)
-        b[:, :cols] = a
-    else:
-        b = np.empty((size, cols), a.dtype)
-        b[:rows] = a
+    b = np.empty((rows, size), a.dtype) if columns else np.empty((size, cols), a.dtype)
+    for r in range(rows):  # loops, not slice copies: see _grow
+        for c in range(cols):
+            b[r, c] = a[r, c]
     return b
 
 
@@ -692,9 +694,11 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
     p_ids = np.empty(p_cap, ids0.dtype)
     p_lo = np.empty((p_cap, 4), lo0.dtype)
     p_hi = np.empty((p_cap, 4), hi0.dtype)
-    p_ids[:n_tri] = ids0
-    p_lo[:n_tri] = lo0
-    p_hi[:n_tri] = hi0
+    for i in range(n_tri):  # loops, not slice copies: see _grow
+        p_ids[i] = ids0[i]
+        for c in range(4):
+            p_lo[i, c] = lo0[i, c]
+            p_hi[i, c] = hi0[i, c]
     p_ord = np.empty((8, 4 * n_sweep + 64), np.int32)
     # Per-node work buffers: sides of every node, the order bookkeeping of swept ones
     # (children of a swept node have at most as many references as it has).
@@ -795,7 +799,10 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         if n > min_leaf and depth < max_depth:
             if sweep and not has_orders:
                 p_ord = _grow_2d(p_ord, o + n, True)
-                p_ord[:2 * n_axes, o:o + n] = _event_orders(lo, hi, n_axes)[:2 * n_axes]
+                orders = _event_orders(lo, hi, n_axes)
+                for q in range(2 * n_axes):  # loops, not a slice copy: see _grow
+                    for i in range(n):
+                        p_ord[q, o + i] = orders[q, i]
                 has_orders = True
             for axis in range(n_axes):
                 if not sweep:
