@@ -500,7 +500,10 @@ def bin_triangles(bbox, tile_px, tiles_x, tiles_y):
     # The flag as np.bool_, not a literal: one compile of _bin_pass serves both passes.
     _bin_pass(bbox, tile_px, tiles_x, counts, np.empty(0, np.int32), np.bool_(False))
     start = np.zeros(n_tiles + 1, np.int64)
-    start[1:] = np.cumsum(counts)
+    # A running sum by a loop: ``start[1:] = np.cumsum(counts)`` made Numba compile the
+    # slice copy's shape-mismatch message (string formatting), seconds on first use.
+    for t in range(n_tiles):
+        start[t + 1] = start[t] + counts[t]
     fill = start[:n_tiles].copy()
     items = np.empty(start[n_tiles], np.int32)
     _bin_pass(bbox, tile_px, tiles_x, fill, items, np.bool_(True))
