@@ -198,3 +198,24 @@ def test_probable_sunlight_under_a_crown_counts_its_transmission_by_season(tmp_p
     assert ps.total_h == sunny.sum()
     assert ps.annual_h[0] == pytest.approx(tau[sunny].sum(), rel=1e-12)
     assert 0.0 < ps.annual_h[0] < 0.5 * sunny.sum()
+
+
+def test_an_evergreen_crown_keeps_its_leaves_in_the_sky(disc_scene):
+    """Evergreen solitary trees: the in-leaf 3 % in both seasons (one crowns' pass)."""
+    import dataclasses
+
+    from cityshade.config import VegetationSettings
+    from cityshade.geometry.vegetation import with_vegetation
+
+    base = VegetationSettings()
+    evergreen = dataclasses.replace(base, solitary=dataclasses.replace(base.solitary,
+                                                                       evergreen=True))
+    point = -np.asarray(disc_scene.origin_m, np.float64)[None]
+    try:
+        vis = sky_visibility(with_vegetation(disc_scene, evergreen), point, [[0.0, 0.0, 1.0]],
+                             named_sky("reinhart577"), engine="raytrace")
+    finally:
+        with_vegetation(disc_scene, base)
+    cone = math.sin(math.radians(THETA_DEG)) ** 2
+    np.testing.assert_array_equal(vis.crowns.leaf_on, vis.crowns.leaf_off)
+    assert sky_view_factor(vis, leaf=False)[0] == pytest.approx(1.0 - 0.97 * cone, abs=1e-9)

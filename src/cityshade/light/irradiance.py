@@ -8,12 +8,15 @@ then weighted by what the receiver sees of the part of the sky it comes from:
 
 - **direct** (``poa_direct``: DNI × cos incidence) × the exact visibility of that hour's sun
   (one shadow ray towards the sun at its position at the middle of the hour, the batch's
-  rule :func:`cityshade.sunhours.tiled.receiver_lit`, ``izb`` or ``raytrace``);
+  rule :func:`cityshade.sunhours.tiled.receiver_lit`, ``izb`` or ``raytrace``; through
+  vegetation crowns the product of their transmissivities, leaf state by the hour's date,
+  :func:`receiver_sun`);
 - **circumsolar** (Perez, Hay–Davies) × the same bit: the circumsolar disc is centred on the
   sun;
 - **isotropic** × the receiver's visible sky fraction: its cosine-weighted visible sky over
   the same integral with every direction in front visible (its sky view factor relative to
-  its plane's unobstructed one, :func:`sky_shares`);
+  its plane's unobstructed one, :func:`sky_shares`; directions through crowns weighted by
+  their transmission, in leaf or leafless by the hour's date);
 - **horizon band** (Perez) × the visible fraction, cosine-weighted, of the patches centred
   below :data:`HORIZON_BAND_DEG` (Perez et al. 1987's horizon band);
 - **ground-reflected** (albedo × GHI × (1 − cos tilt) / 2) as pvlib gives it: the plane's

@@ -35,10 +35,10 @@ class SkyRequest:
         engine traces the sky and the suns), ``spa`` (sun settings).
     What
         ``svf`` (the sky view factor's outputs), ``vsc`` (the vertical sky component of
-        every receiver on its own plane, :func:`~cityshade.light.metrics.vertical_sky_component`),
-        ``season`` (``leaf_on`` or ``leaf_off``:
-        the deciduous crowns of the sky view factor; the irradiance takes each hour's own
-        leaf state), ``weather`` (a
+        every receiver on its own plane,
+        :func:`~cityshade.light.metrics.vertical_sky_component`), ``season`` (``leaf_on`` or
+        ``leaf_off``: the deciduous crowns of the sky view factor and the VSC; the irradiance
+        takes each hour's own leaf state), ``weather`` (a
         :class:`~cityshade.light.weather.Weather`: irradiance), ``hours`` ((H,) bool of the
         weather hours to sum; None: all, the file's year), ``period`` (False: no kWh/m² over
         the hours, only the instants), ``model``, ``albedo``;
@@ -149,9 +149,10 @@ class SkyResult:
 def sky_bytes_per_receiver(n_directions: int, irradiance: bool, instants: int = 0) -> int:
     """Peak bytes per receiver of a sky run: point and normal (48), the packed bits
     (ceil(P / 8)), the block of unpacked directions (64) and one direction's ray origins (24)
-    while tracing, the view factor and two shares (24), the plane index (8), the VSC (8); with irradiance
-    the three float64 sums (24), the sun's bits and origins per hour (25); per instant its
-    three float64 W/m² (24)."""
+    while tracing, the view factor and two shares (24), the plane index (8), the VSC (8); with
+    irradiance the three float64 sums (24), the sun's bits and origins per hour (25); per
+    instant its three float64 W/m² (24). Not counted: the rays through vegetation crowns
+    (24 B each, :class:`~cityshade.light.visibility.SkyCrowns`), known only after tracing."""
     return 48 + (n_directions + 7) // 8 + 64 + 24 + 24 + 8 + 8 \
         + (49 if irradiance or instants else 0) + 24 * int(instants)
 

@@ -15,6 +15,13 @@ Tregenza's 145, 73 B for 577, 289 B for 2,305) plus the receivers' float64 norma
 While tracing, one block of ``block`` directions is held unpacked (``block`` bytes per
 receiver, 64 by default) with one direction's ray origins (24 B per receiver) and the engine's
 own work arrays (docs/DESIGN.md §7, §6).
+
+Trees: on a scene with vegetation crowns (docs/DESIGN.md §21) a bit says "no opaque triangle
+in the way", and the rays that cross crowns are listed apart (:class:`SkyCrowns`: 24 bytes per
+such ray, with the product of the crowns' transmissivities in leaf and leafless); each
+direction then costs one opaque pass and two crowns' passes, and holds 17 bytes of results per
+receiver besides its origins. A scene without vegetation lists nothing and is traced exactly as
+before.
 """
 from __future__ import annotations
 
@@ -182,6 +189,8 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
         # Both seasons in one tracing: one opaque pass and two crowns' passes per direction.
         settings = vegetation_settings(scene)
         taus = (veg.transmissivity_in(settings, True), veg.transmissivity_in(settings, False))
+        # Every crown the same in both seasons (evergreen classes, equal values): one pass.
+        same = np.array_equal(taus[0], taus[1])
         crown_parts: list[tuple] = []
     for start in range(0, p_total, int(block)):
         stop = min(start + int(block), p_total)
@@ -193,8 +202,10 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
                 rows = np.flatnonzero(front[:, j])
                 if len(rows):
                     origins = shadow_rays_from_surface(pts[rows], nrm[rows], d)
-                    blocked, (on, off) = crown_transmission(scene, origins, d, t_days, taus,
-                                                            engine=engine)
+                    blocked, outs = crown_transmission(scene, origins, d, t_days,
+                                                       taus[:1] if same else taus,
+                                                       engine=engine)
+                    on, off = outs[0], outs[-1]
                     work[rows, j] = ~blocked
                     part = ~blocked & ((on != 1.0) | (off != 1.0))
                     if part.any():
