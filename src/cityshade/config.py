@@ -530,6 +530,8 @@ class StressSettings:
 
 #: What decides whether vegetation is in leaf at a sun position (docs/DESIGN.md §21).
 SEASONS = ("auto", "leaf_on", "leaf_off")
+#: ``[vegetation] window_trees``: the crowns of the openings' daylight and sunlight.
+WINDOW_TREES = ("evergreen", "all", "none")
 
 
 def _fraction(value, what: str) -> None:
@@ -575,6 +577,11 @@ class VegetationSettings:
     #: "auto": in leaf by the sun position's date (a sun given by angles has none: in leaf);
     #: "leaf_on" / "leaf_off": that season at every date.
     season: str = "auto"
+    #: The crowns in the openings' daylight and sunlight (compare's VSC and probable sunlight
+    #: hours, BRE 209): "evergreen" (BRE 209's practice: deciduous trees left out, evergreen
+    #: ones counted with their transmissivity), "all" (every crown: in leaf for the VSC, each
+    #: hour's leaf state for the sunlight), "none".
+    window_trees: str = "evergreen"
     solitary: VegetationClassSettings = _table(VegetationClassSettings)
     plant_cover: VegetationClassSettings = _table(VegetationClassSettings)
 
@@ -586,6 +593,9 @@ class VegetationSettings:
         if self.season not in SEASONS:
             raise ConfigError(f"season must be one of {', '.join(SEASONS)}, "
                               f"not {self.season!r}")
+        if self.window_trees not in WINDOW_TREES:
+            raise ConfigError(f"window_trees must be one of {', '.join(WINDOW_TREES)}, "
+                              f"not {self.window_trees!r}")
 
     def in_leaf(self, day_of_year: int | None) -> bool:
         """Whether deciduous vegetation is in leaf on ``day_of_year`` (None: no date)."""

@@ -148,3 +148,59 @@ def test_bad_model_albedo_and_dates(setting):
     # Wrapping over the new year: December and January.
     wrap = hours_between(weather, "12-01", "01-31")
     assert wrap.sum() == 62 * 24
+
+
+@pytest.mark.parametrize("model", ["perez", "haydavies"])
+def test_an_open_plane_at_an_instant_gets_pvlib_s_irradiance_of_its_hour(setting, model):
+    """W/m² at 12:20 and 07:45 of 11 June, file standard time (UTC−5): the record of the hour
+    containing the instant (hour-ending: the records stamped 13:00 and 08:00, found here from
+    the file's stamps) with the sun AT the instant = pvlib's get_total_irradiance."""
+    import datetime as dt
+
+    import pvlib
+
+    from cityshade.geo.sun import suns_from_instants
+    from cityshade.light import named_sky, sky_visibility
+    from cityshade.light.irradiance import irradiance_at, sky_shares
+
+    scene, weather, _, _ = setting
+    est = dt.timezone(dt.timedelta(hours=-5))
+    instants = [dt.datetime(2025, 6, 11, 12, 20, tzinfo=est),
+                dt.datetime(2025, 6, 11, 7, 45, tzinfo=est)]
+    ends = weather.hour_end
+    rows = [int(np.flatnonzero((ends.month == 6) & (ends.day == 11) & (ends.hour == h))[0])
+            for h in (13, 8)]
+    suns = suns_from_instants(instants, scene.crs, scene.origin_m)
+    directions = np.array([s.direction for s in suns])
+    points = np.tile([X0 + 1000.0, Y0, 10.0], (len(NORMALS), 1)) - scene.origin_m
+    vis = sky_visibility(scene, points, NORMALS, named_sky("tregenza"))
+    got = irradiance_at(scene, points, NORMALS, weather, instants, directions,
+                        sky_shares(vis)[1:], model=model, albedo=0.2)
+    # The sun at the instant, against pvlib's own SPA (refraction aside: a few hundredths of
+    # a degree at these elevations).
+    for sun, t in zip(suns, instants):
+        pos = pvlib.solarposition.get_solarposition(t, sun.latitude_deg, sun.longitude_deg)
+        assert sun.elevation_deg == pytest.approx(float(pos["apparent_elevation"].iloc[0]),
+                                                  abs=0.05)
+    for k, (row, d, t) in enumerate(zip(rows, directions, instants)):
+        zenith = math.degrees(math.acos(d[2]))
+        azimuth = math.degrees(math.atan2(d[0], d[1])) % 360.0
+        for i, n in enumerate(NORMALS):
+            tilt = math.degrees(math.acos(n[2]))
+            surface_az = math.degrees(math.atan2(n[0], n[1])) % 360.0 \
+                if math.hypot(n[0], n[1]) > 1e-9 else 0.0
+            r = pvlib.irradiance.get_total_irradiance(
+                tilt, surface_az, zenith, azimuth, weather.dni_w_m2[row], weather.ghi_w_m2[row],
+                weather.dhi_w_m2[row], dni_extra=pvlib.irradiance.get_extra_radiation(
+                    pd_timestamp(t)), airmass=pvlib.atmosphere.get_relative_airmass(zenith),
+                albedo=0.2, model=model, diffuse_components=True)
+            want = [float(np.nan_to_num(r[c])) for c in ("poa_direct", "poa_sky_diffuse",
+                                                         "poa_ground_diffuse")]
+            np.testing.assert_allclose(got[k, i], want, rtol=1e-9, atol=1e-9)
+    assert got[0, 0].sum() > 300.0      # a real June noon
+
+
+def pd_timestamp(t):
+    import pandas as pd
+
+    return pd.Timestamp(t)

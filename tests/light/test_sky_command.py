@@ -121,7 +121,8 @@ def test_maps_surfaces_and_irradiance_files(small_file, tmp_path):
 @pytest.mark.parametrize("extra,line", [
     (["--irradiance"], ("cityshade: error: --irradiance needs --weather FILE (an .epw, TMY3 "
                         ".csv or TMY2 .tm2)")),
-    (["--no-svf"], "cityshade: error: nothing to write: --no-svf without --irradiance"),
+    (["--no-svf"], ("cityshade: error: nothing to write: --no-svf without --vsc, --irradiance "
+                    "or --times")),
     (["--sky", "tregenza7"], ("cityshade: error: unknown sky 'tregenza7': one of tregenza, "
                               "reinhart577, reinhart2305 or uniform<degrees>")),
     (["--shadows", "pcf"], ("cityshade: error: sky view factors and irradiance need an exact "
@@ -137,11 +138,32 @@ def test_bad_requests_say_one_line(small_file, tmp_path, extra, line):
     result = run("sky", small_file, "-o", tmp_path / "out", *extra)
     if line is None:
         assert result.exit_code == 0, result.output
-        assert "cityshade: warning: --weather without --irradiance: the weather file is not " \
-               "read" in result.output
+        assert "cityshade: warning: --weather without --irradiance or --times: the weather " \
+               "file is not read" in result.output
         return
     assert result.exit_code == (1 if "MISSING" in line else 2)  # 2: a bad request
     assert result.output.splitlines() == [line]
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize("extra,line", [
+    # The map techniques' tunables are not options of sky (issue 40: none silently ignored).
+    (["--bias", "0.1"], ("cityshade: error: No such option '--bias'. Did you mean '--times'? "
+                         "(see 'cityshade sky --help')")),
+    (["--smooth"], "cityshade: error: No such option '--smooth'. (see 'cityshade sky --help')"),
+    (["--cascades", "2"], ("cityshade: error: No such option '--cascades'. (Did you mean one "
+                           "of: '--cameras', '--shadows', '--surfaces'?) (see 'cityshade sky "
+                           "--help')")),
+    (["--season", "summer"], ("cityshade: error: Invalid value for '--season': 'summer' is not "
+                              "one of 'leaf-on', 'leaf-off'. (see 'cityshade sky --help')")),
+])
+def test_options_sky_does_not_take_are_one_line(small_file, tmp_path, capsys, extra, line):
+    from cityshade.cli.main import main
+
+    with pytest.raises(SystemExit) as done:
+        main(["sky", str(small_file), "-o", str(tmp_path / "out"), *extra])
+    assert done.value.code == 2
+    assert capsys.readouterr().err.splitlines() == [line]
     assert not (tmp_path / "out").exists()
 
 
@@ -152,3 +174,83 @@ def test_a_garbled_weather_file_is_named(small_file, tmp_path):
     assert result.exit_code == 1
     assert result.output.splitlines() == [
         f"cityshade: error: {bad}: not a readable EPW file (pvlib: 'altitude')"]
+
+
+def test_vsc_on_each_surface_s_plane(canyon_file, tmp_path):
+    """``--vsc``: BRE 209's 39.6 % on a free vertical wall (the W block's outer wall), 100 %
+    on a free roof and nearly on open ground (blocks 150 m away hide 3.8° of its horizon)."""
+    out = tmp_path / "out"
+    result = run("sky", canyon_file, "-o", out, "--no-map", "--surfaces", "--vsc", "--no-svf",
+                 "--samples-per-m2", "0.001", "--city-date", "2020-01-01")
+    assert result.exit_code == 0, result.output
+    rows = {r["polygon_id"] or r["object_id"]: r for r in _rows(out / "surfaces.csv")}
+    assert "svf" not in rows["ww"]
+    assert float(rows["ww"]["vsc_pct"]) == pytest.approx(39.6, abs=0.2)
+    assert float(rows["wr"]["vsc_pct"]) == pytest.approx(100.0, abs=1e-3)
+    assert float(rows["open_poly"]["vsc_pct"]) == pytest.approx(100.0, abs=0.5)
+    assert float(rows["we"]["vsc_pct"]) < 27.0      # the canyon's inner wall
+
+
+def test_vsc_map_and_irradiance_at_instants(small_file, tmp_path):
+    """A VSC map and W/m² at 12:20 file time (UTC−5, Greensboro's TMY3): the free top of the
+    20 m block gets pvlib's horizontal irradiance of the hour ending 13:00 with pvlib's own
+    sun at 12:20 (within 0.5 %: the two suns differ by the map's grid north and refraction)."""
+    import datetime as dt
+
+    import pvlib
+
+    from cityshade.imageio import read_image
+    from cityshade.light import read_weather
+
+    out = tmp_path / "out"
+    result = run("sky", small_file, "-o", out, "--sky", "tregenza", "--pixel-size", "2",
+                 "--surfaces", "--samples-per-m2", "0.05", "--weather", _tmy3(), "--vsc",
+                 "--date", "2025-06-11", "--times", "12:20,07:45", "--city-date", "2020-01-01",
+                 "--no-gis")
+    assert result.exit_code == 0, result.output
+    for name in ("vsc.exr", "vsc.tif", "vsc.png", "irradiance_w_m2_1220.exr",
+                 "irradiance_w_m2_1220.tif", "irradiance_w_m2_0745.png"):
+        assert (out / name).is_file(), name
+    assert not (out / "irradiance_kwh_m2.exr").exists()     # no --irradiance: no period
+    vsc, _ = read_image(out / "vsc.tif")
+    finite = np.asarray(vsc, np.float64)[np.isfinite(vsc)]
+    assert finite.max() == pytest.approx(100.0, abs=1e-3) and finite.min() >= 0.0
+    rows = {r["polygon_id"]: r for r in _rows(out / "surfaces.csv")}
+    weather = read_weather(_tmy3())
+    ends = weather.hour_end
+    row = int(np.flatnonzero((ends.month == 6) & (ends.day == 11) & (ends.hour == 13))[0])
+    t = dt.datetime(2025, 6, 11, 12, 20, tzinfo=dt.timezone(dt.timedelta(hours=-5)))
+    loc = weather.location
+    pos = pvlib.solarposition.get_solarposition(t, loc.latitude_deg, loc.longitude_deg)
+    zenith = float(pos["apparent_zenith"].iloc[0])
+    want = pvlib.irradiance.get_total_irradiance(
+        0.0, 0.0, zenith, float(pos["azimuth"].iloc[0]), weather.dni_w_m2[row],
+        weather.ghi_w_m2[row], weather.dhi_w_m2[row],
+        dni_extra=pvlib.irradiance.get_extra_radiation(t),
+        airmass=pvlib.atmosphere.get_relative_airmass(zenith), albedo=0.2, model="perez")
+    assert float(rows["qr"]["irradiance_w_m2_1220"]) == pytest.approx(
+        float(want["poa_global"]), rel=5e-3)
+    assert float(rows["qr"]["vsc_pct"]) == pytest.approx(100.0, abs=1e-3)
+    assert 0.0 < float(rows["ps"]["irradiance_w_m2_1220"]) < float(rows["qr"]["irradiance_w_m2_1220"])
+
+
+@pytest.mark.parametrize("extra,line", [
+    (["--date", "2025-06-11"], ("cityshade: error: give --date and --times together (the "
+                                "instants of the irradiance in W/m²)")),
+    (["--date", "2025-06-11", "--times", "12:00"],
+     "cityshade: error: --times needs --weather FILE (an .epw, TMY3 .csv or TMY2 .tm2)"),
+    (["--tz", "Europe/London"],
+     "cityshade: error: --tz is the time zone of --times; give --date and --times"),
+    (["--date", "2025-02-29", "--times", "12:00", "--weather", "w.epw"],
+     "cityshade: error: --date must be a day YYYY-MM-DD, not '2025-02-29'"),
+    (["--date", "2025-06-11", "--times", "25:00", "--weather", "w.epw"],
+     "cityshade: error: time of day '25:00' does not exist; use 00:00 to 24:00"),
+    (["--date", "2025-06-11", "--times", "12:00", "--weather", "w.epw", "--tz", "Mars/Olympus"],
+     ("cityshade: error: unknown time zone 'Mars/Olympus'; give an IANA name such as "
+      "Europe/Berlin")),
+])
+def test_bad_instants_say_one_line(small_file, tmp_path, extra, line):
+    result = run("sky", small_file, "-o", tmp_path / "out", *extra)
+    assert result.exit_code == 2, result.output
+    assert result.output.splitlines() == [line]
+    assert not (tmp_path / "out").exists()

@@ -15,11 +15,11 @@ SECTIONS: dict[str, tuple[str, ...]] = {
     "City state": ("date_text", "city_date", "before_text", "after_text", "proposal",
                    "mesh_units", "up_axis", "place_text", "trees", "trees_crs",
                    "lod", "theme", "time_source", "time_attribute", "closure_surfaces"),
-    "Sun and time": ("time_text", "tz", "sun_azimuth", "sun_elevation", "from_text",
+    "Sun and time": ("instant_date", "time_text", "tz", "sun_azimuth", "sun_elevation", "from_text",
                      "to_text", "every_text", "days", "to_date_text", "from_date", "to_date", "year", "days_text",
                      "times_text", "every_day", "times", "sun_text",
                      "no_refraction"),
-    "Weather and sky": ("weather_file", "weather", "svf", "irradiance", "sky_name", "sky_model",
+    "Weather and sky": ("weather_file", "weather", "svf", "vsc", "season", "irradiance", "sky_name", "sky_model",
                         "albedo"),
     "Place": ("crs", "axis_order"),
     "Camera and extent": ("camera", "eye", "target", "fov", "size", "pixel_size", "cameras_file",
@@ -69,8 +69,12 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
     ),
     "sky": (
         "cityshade sky city.cityshade --pixel-size 1 -o svf          # sky view factor map",
+        "cityshade sky city.cityshade --pixel-size 1 --vsc --surfaces -o vsc  # VSC map, walls",
         "cityshade sky city.cityshade --surfaces --no-map -o svf      # per roof, wall, building",
         "cityshade sky city.cityshade --surfaces --weather london.epw --irradiance -o solar",
+        "cityshade sky trees.cityshade --pixel-size 1 --season leaf-off -o winter  # crowns leafless",
+        "cityshade sky city.cityshade --weather london.epw --date 2025-06-21 --times 09:00,12:00 "
+        "--tz Europe/London -o noon      # W/m² at instants",
     ),
     "export": (
         "cityshade export city.cityshade sunhours/surfaces.csv -o sunhours.glb",

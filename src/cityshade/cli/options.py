@@ -403,9 +403,11 @@ def load_config(config_path):
 
 
 def shadow_options(default_technique: str, *, technique_help: str | None = None,
-                   map_px: bool = True):
+                   map_px: bool = True, tunables: bool = True):
     """Decorator adding ``--config``, ``--shadows``, ``--smooth`` and the shadow tunables
-    (``--map-px``, ``--bias``, ...). The command receives one ``settings`` argument: the
+    (``--map-px``, ``--bias``, ...); ``tunables=False`` (a command of the exact engines only,
+    ``sky``) leaves out ``--smooth`` and the map techniques' tunables, which could not apply
+    (issue 40: no option silently ignored). The command receives one ``settings`` argument: the
     :class:`~cityshade.config.Settings` of ``--config`` with the flags applied, its
     ``shadows.technique`` resolved (flag, else the file's ``[shadows] technique``, else
     ``default_technique``; ``--smooth`` appends ``+smooth``)."""
@@ -421,7 +423,7 @@ def shadow_options(default_technique: str, *, technique_help: str | None = None,
             settings = load_config(kwargs.pop("config_path"))
             technique = kwargs.pop("technique") or settings.shadows.technique \
                 or default_technique
-            if kwargs.pop("smooth"):
+            if kwargs.pop("smooth", False):
                 # Every name of a list (evaluate's "shadowmap,pcf", "all") gets the filter.
                 technique = ",".join(n if n.strip().endswith("+smooth") else f"{n.strip()}+smooth"
                                      for n in technique.split(",") if n.strip())
@@ -441,22 +443,7 @@ def shadow_options(default_technique: str, *, technique_help: str | None = None,
             click.option("--shadows", "technique",
                          help=technique_help or f"Shadow technique (default "
                          f"{default_technique}): {names_help()}."),
-            click.option("--smooth", is_flag=True, help="Depth-aware screen-space smoothing of "
-                         "the shadow (same as --shadows NAME+smooth)."),
-            *([click.option("--map-px", type=click.IntRange(16, 16384),
-                            help="Shadow-map side in texels (map techniques; default 2048).")]
-              if map_px else []),
-            click.option("--bias", type=click.FloatRange(min=0),
-                         help="Constant depth bias in metres."),
-            click.option("--slope-bias", type=click.FloatRange(min=0),
-                         help="Slope-scaled bias (texels)."),
-            click.option("--max-bias", type=click.FloatRange(min=0),
-                         help="Largest slope bias in metres."),
-            click.option("--pcf-kernel", type=click.IntRange(1, 63), help="PCF kernel side (odd)."),
-            click.option("--vsm-blur", type=click.IntRange(0, 64),
-                         help="VSM filter radius in texels."),
-            click.option("--cascades", type=click.IntRange(1, 16),
-                         help="CSM cascade count (default 4)."),
+            *_tunable_options(map_px and tunables, tunables),
             click.option("--no-vegetation", is_flag=True, help="Leave the vegetation "
                          "(SolitaryVegetationObject, PlantCover) out: trees neither cast nor "
                          "receive ([vegetation] enabled = false)."),
@@ -468,6 +455,30 @@ def shadow_options(default_technique: str, *, technique_help: str | None = None,
             wrapper = option(wrapper)
         return config_option(wrapper)
     return decorate
+
+
+def _tunable_options(map_px: bool, tunables: bool) -> list:
+    """``--smooth`` and the map techniques' tunables (none for ``tunables=False``)."""
+    if not tunables:
+        return []
+    return [
+        click.option("--smooth", is_flag=True, help="Depth-aware screen-space smoothing of "
+                     "the shadow (same as --shadows NAME+smooth)."),
+        *([click.option("--map-px", type=click.IntRange(16, 16384),
+                        help="Shadow-map side in texels (map techniques; default 2048).")]
+          if map_px else []),
+        click.option("--bias", type=click.FloatRange(min=0),
+                     help="Constant depth bias in metres."),
+        click.option("--slope-bias", type=click.FloatRange(min=0),
+                     help="Slope-scaled bias (texels)."),
+        click.option("--max-bias", type=click.FloatRange(min=0),
+                     help="Largest slope bias in metres."),
+        click.option("--pcf-kernel", type=click.IntRange(1, 63), help="PCF kernel side (odd)."),
+        click.option("--vsm-blur", type=click.IntRange(0, 64),
+                     help="VSM filter radius in texels."),
+        click.option("--cascades", type=click.IntRange(1, 16),
+                     help="CSM cascade count (default 4)."),
+    ]
 
 
 def vegetation_flags(vegetation, no_vegetation: bool, tree_transmissivity):

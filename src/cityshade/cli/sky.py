@@ -17,18 +17,33 @@ from cityshade.cli.options import (camera_options, ground_option, make_camera, p
 @click.option("--city-date", help="State of the city, YYYY-MM-DD (default: today).")
 @camera_options("map")
 @shadow_options("izb", technique_help="Exact technique tracing the sky and the suns: izb "
-                "(default) or raytrace (the same answer).", map_px=False)
+                "(default) or raytrace (the same answer).", map_px=False, tunables=False)
 @ground_option
 @click.option("--sky", "sky_name", default="reinhart2305", show_default=True,
               help="Sky directions: tregenza (145 patches), reinhart577, reinhart2305, or "
               "uniform<degrees>.")
 @click.option("--svf/--no-svf", default=True, show_default=True,
               help="Write the sky view factor (svf.exr/.tif/.png; a surfaces.csv column).")
+@click.option("--vsc", is_flag=True, help="Also the vertical sky component, CIE overcast sky, "
+              "of every pixel and surface on its own plane (vsc.exr/.tif/.png, percent; a "
+              "surfaces.csv column): BRE 209's VSC on walls, 100 % on open ground.")
+@click.option("--season", type=click.Choice(["leaf-on", "leaf-off"]),
+              help="Deciduous tree crowns of the sky view factor: in leaf or leafless "
+              "(default: [vegetation] season, or leaf-on when it is auto); the irradiance "
+              "takes each weather hour's own leaf state.")
 @click.option("--weather", type=click.Path(path_type=Path),
               help="Hourly weather file: EnergyPlus .epw, TMY3 .csv or TMY2 .tm2.")
 @click.option("--irradiance", is_flag=True, help="Write the irradiation of every receiver "
               "over the weather hours (irradiance_kwh_m2.exr/.tif/.png; surfaces.csv and "
               "buildings.csv columns); needs --weather.")
+@click.option("--date", "instant_date", help="Day of --times, YYYY-MM-DD (its month and day "
+              "pick the weather file's records; the year is the sun's).")
+@click.option("--times", "times_text", help="Instants of --date, HH:MM separated by commas: "
+              "irradiance_w_m2_<HHMM>.exr/.tif/.png and surfaces.csv columns in W/m², each "
+              "from the weather record of the hour containing it (hour-ending) with the sun "
+              "at the instant; needs --weather.")
+@click.option("--tz", help="Time zone of --times: an IANA name or local-mean/local-apparent "
+              "(default: the weather file's own standard time, its UTC offset).")
 @click.option("--sky-model", type=click.Choice(["perez", "isotropic", "haydavies"]),
               default="perez", show_default=True, help="pvlib's diffuse sky model.")
 @click.option("--albedo", type=click.FloatRange(0.0, 1.0), default=0.2, show_default=True,
@@ -48,12 +63,15 @@ from cityshade.cli.options import (camera_options, ground_option, make_camera, p
               required=True, help="Output folder (created).")
 @click.option("-v", "--verbose", is_flag=True, help="Timings and counts.")
 def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_file, settings,
-        ground, sky_name, svf, weather, irradiance, sky_model, albedo, from_date, to_date,
+        ground, sky_name, svf, vsc, season, weather, irradiance, instant_date, times_text, tz,
+        sky_model, albedo, from_date, to_date,
         surfaces, samples_per_m2, no_map, no_decorate, no_gis, outdir, verbose):
     """Sky view factor of FILE (a .cityshade scene) per map pixel (svf.exr/.tif/.png) and,
-    with --surfaces, per polygon and building; with --weather FILE --irradiance, the kWh/m²
-    received over the file's hours (direct, diffuse from pvlib's sky model and
-    ground-reflected, each weighted by what the receiver sees of it).
+    with --surfaces, per polygon and building; with --vsc the vertical sky component; with
+    --weather FILE --irradiance, the kWh/m² received over the file's hours (direct, diffuse
+    from pvlib's sky model and ground-reflected, each weighted by what the receiver sees of
+    it), and with --date and --times the W/m² at those instants. Tree crowns let their
+    transmissivity through.
     """
     import dataclasses
     import datetime as dt
@@ -63,6 +81,7 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
     from cityshade.cli.options import ProgressLines
     from cityshade.errors import UsageError
     from cityshade.geo.temporal import parse_user_date
+    from cityshade.geometry.vegetation import with_vegetation
     from cityshade.light.irradiance import hours_between
     from cityshade.light.run import SkyRequest, run_sky
     from cityshade.light.weather import read_weather
@@ -73,13 +92,22 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
     t_start = time.perf_counter()
     if irradiance and weather is None:
         raise UsageError("--irradiance needs --weather FILE (an .epw, TMY3 .csv or TMY2 .tm2)")
+    if (instant_date is None) != (times_text is None):
+        raise UsageError("give --date and --times together (the instants of the irradiance "
+                         "in W/m²)")
+    if times_text is not None and weather is None:
+        raise UsageError("--times needs --weather FILE (an .epw, TMY3 .csv or TMY2 .tm2)")
+    if tz is not None and times_text is None:
+        raise UsageError("--tz is the time zone of --times; give --date and --times")
+    clocks = _clocks(times_text) if times_text is not None else ()
+    day = parse_day(instant_date, "--date") if instant_date is not None else None
     if no_map and not surfaces:
         raise UsageError("--no-map leaves nothing to compute without --surfaces")
-    if not svf and not irradiance:
-        raise UsageError("nothing to write: --no-svf without --irradiance")
-    if weather is not None and not irradiance:
-        click.echo("cityshade: warning: --weather without --irradiance: the weather file is "
-                   "not read", err=True)
+    if not svf and not vsc and not irradiance and not clocks:
+        raise UsageError("nothing to write: --no-svf without --vsc, --irradiance or --times")
+    if weather is not None and not irradiance and not clocks:
+        click.echo("cityshade: warning: --weather without --irradiance or --times: the "
+                   "weather file is not read", err=True)
     density = samples_per_m2 if samples_per_m2 is not None else settings.batch.samples_per_m2
     if surfaces:
         SampleSettings(samples_per_m2=density)
@@ -89,23 +117,36 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
     city = parse_user_date(city_date or dt.date.today().isoformat())
     if city_date:
         parse_day(city_date, "--city-date")
+    if season is None:   # auto has no date for a view factor: in leaf, the most shade
+        season = "leaf-off" if settings.vegetation.season == "leaf_off" else "leaf-on"
     request = SkyRequest(sky=sky_name, technique=settings.shadows.technique, model=sky_model,
-                         albedo=albedo, svf=svf, ground=ground, t_days=city.city_days,
+                         albedo=albedo, svf=svf, vsc=vsc, season=season.replace("-", "_"), ground=ground, t_days=city.city_days,
                          spa=settings.sun, samples_per_m2=density if surfaces else None,
                          decorate=not no_decorate, gis=not no_gis,
                          camera=None if no_map else "map")
     request.check()  # the sky, model and technique, before the files are read
-    wx = read_weather(weather) if weather is not None and irradiance else None
+    if tz is not None:
+        from cityshade.geo.temporal import SOLAR_TIME_ZONES, zone_info
+
+        if tz not in SOLAR_TIME_ZONES:
+            zone_info(tz)  # an unknown name fails before the files are read
+    wx = read_weather(weather) if weather is not None and (irradiance or clocks) else None
     hours = hours_between(wx, from_date, to_date) if wx is not None else None
     check_outputs(("-o", outdir, None))
     scene = open_scene(file)
     cam = None if no_map else make_camera(scene, camera, eye, target, fov, size, pixel_size,
                                           cameras_file)
-    scene = scene_for_camera(scene, None if surfaces else cam, request.technique)
-    request = dataclasses.replace(request, camera=cam, weather=wx, hours=hours, provenance={
-        "file": Path(file).name, "city_date": city_date, "sky": sky_name,
+    scene = with_vegetation(scene_for_camera(scene, None if surfaces else cam,
+                                             request.technique), settings.vegetation)
+    instants = _instants(day, clocks, tz, wx, scene)
+    request = dataclasses.replace(request, camera=cam, weather=wx, hours=hours,
+                                  period=irradiance, instants=tuple(t for t, _ in instants),
+                                  instant_labels=tuple(label for _, label in instants),
+                                  provenance={
+        "file": Path(file).name, "city_date": city_date, "sky": sky_name, "season": season,
         "weather": Path(weather).name if wx is not None else None, "from_date": from_date,
-        "to_date": to_date, "technique": request.technique})
+        "to_date": to_date, "technique": request.technique, "date": instant_date,
+        "times": times_text, "tz": tz})
     lines = {"sky": ProgressLines("sky directions"), "hours": ProgressLines("weather hours")}
     result, written = run_sky(outdir, scene, request,
                               progress=lambda phase, d, t: lines[phase](d, t))
@@ -119,3 +160,36 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
                    f"{result.sky.n} sky directions, about {result.bytes_per_receiver} bytes "
                    f"per receiver", err=True)
     click.echo(" ".join(str(p) for p in written))
+
+
+def _clocks(text: str) -> tuple[int, ...]:
+    """``09:00,12:00`` → seconds after midnight, sorted, no repeats (before 24:00)."""
+    from cityshade.errors import UsageError
+    from cityshade.sunhours.plan import parse_clock_s
+
+    clocks = tuple(sorted({parse_clock_s(part) for part in text.split(",")}))
+    if any(c >= 86_400 for c in clocks):
+        raise UsageError("a time of --times must be before 24:00")
+    return clocks
+
+
+def _instants(day, clocks, tz, weather, scene) -> list:
+    """(aware datetime, ``HHMM`` label) of every time of ``day``: in ``tz`` (an IANA name, or
+    solar time at the model's longitude), else in the weather file's standard time."""
+    import datetime as dt
+
+    from cityshade.cli.options import solar_zone_of_scene
+    from cityshade.geo.temporal import zone_info
+
+    if not clocks:
+        return []
+    if tz is None:
+        zone = dt.timezone(dt.timedelta(hours=weather.location.utc_offset_h))
+    else:
+        zone = zone_info(solar_zone_of_scene(tz, scene))
+    out = []
+    for c in clocks:
+        h, m, sec = c // 3600, c // 60 % 60, c % 60
+        label = f"{h:02d}{m:02d}" + (f"{sec:02d}" if sec else "")
+        out.append((dt.datetime(day.year, day.month, day.day, h, m, sec, tzinfo=zone), label))
+    return out

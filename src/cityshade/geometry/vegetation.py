@@ -112,6 +112,27 @@ def without_vegetation(scene):
     return _subscene(scene, ~mask)
 
 
+def window_light_scene(scene):
+    """The scene the openings' daylight and sunlight are traced in (``[vegetation]
+    window_trees``): without its deciduous crowns ("evergreen", BRE 209's practice), without
+    any crown ("none"), or as it is ("all"). The settings stay with the scene; a tiled cache's
+    view (vegetation opaque in its tiles) is returned as it is."""
+    settings = vegetation_settings(scene)
+    mask = vegetation_mask(scene)
+    if settings.window_trees == "all" or not mask.any() or scene.is_tiled:
+        return scene
+    drop = mask
+    if settings.window_trees == "evergreen":
+        cls = vegetation_objects(scene)[np.asarray(scene.tri_object)]
+        evergreen = np.array([getattr(settings, n).evergreen for n in CLASS_TABLES])
+        drop = mask & ~evergreen[np.where(cls < 0, 0, cls)]
+    if not drop.any():
+        return scene
+    sub = _subscene(scene, ~drop)
+    sub.__dict__["vegetation_settings"] = settings
+    return sub
+
+
 @dataclass
 class SceneVegetation:
     """The crowns of a scene, as the exact engines take them."""
@@ -137,7 +158,11 @@ class SceneVegetation:
                        day_of_year: int | None) -> np.ndarray:
         """(C,) float64: the fraction of the sun each crown lets through on ``day_of_year``
         (None: a sun without a date)."""
-        leaf = settings.in_leaf(day_of_year)
+        return self.transmissivity_in(settings, settings.in_leaf(day_of_year))
+
+    def transmissivity_in(self, settings: VegetationSettings, leaf: bool) -> np.ndarray:
+        """(C,) float64: each crown's transmissivity with deciduous crowns in leaf (``leaf``)
+        or leafless; an evergreen class keeps its in-leaf value."""
         per_class = []
         for name in CLASS_TABLES:
             cls = getattr(settings, name)

@@ -8,12 +8,15 @@ then weighted by what the receiver sees of the part of the sky it comes from:
 
 - **direct** (``poa_direct``: DNI × cos incidence) × the exact visibility of that hour's sun
   (one shadow ray towards the sun at its position at the middle of the hour, the batch's
-  rule :func:`cityshade.sunhours.tiled.receiver_lit`, ``izb`` or ``raytrace``);
+  rule :func:`cityshade.sunhours.tiled.receiver_lit`, ``izb`` or ``raytrace``; through
+  vegetation crowns the product of their transmissivities, leaf state by the hour's date,
+  :func:`receiver_sun`);
 - **circumsolar** (Perez, Hay–Davies) × the same bit: the circumsolar disc is centred on the
   sun;
 - **isotropic** × the receiver's visible sky fraction: its cosine-weighted visible sky over
   the same integral with every direction in front visible (its sky view factor relative to
-  its plane's unobstructed one, :func:`sky_shares`);
+  its plane's unobstructed one, :func:`sky_shares`; directions through crowns weighted by
+  their transmission, in leaf or leafless by the hour's date);
 - **horizon band** (Perez) × the visible fraction, cosine-weighted, of the patches centred
   below :data:`HORIZON_BAND_DEG` (Perez et al. 1987's horizon band);
 - **ground-reflected** (albedo × GHI × (1 − cos tilt) / 2) as pvlib gives it: the plane's
@@ -142,10 +145,12 @@ def sun_angles(directions) -> tuple[np.ndarray, np.ndarray]:
     return zenith, azimuth
 
 
-def sky_shares(visibility, horizon_band_deg: float = HORIZON_BAND_DEG
+def sky_shares(visibility, horizon_band_deg: float = HORIZON_BAND_DEG, *, leaf: bool = True
                ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """Per receiver: its sky view factor, its visible share of the sky in front (cosine-
-    weighted, 1 when nothing blocks) and its visible share of the horizon band.
+    weighted, 1 when nothing blocks) and its visible share of the horizon band; a direction
+    through vegetation crowns counts with their transmission, deciduous crowns in leaf or
+    leafless (``leaf``).
 
     A receiver with nothing of a part in front (a downward face: no sky; a horizontal roof has a
     horizon band, thin but weighted) takes a share of 1: pvlib's component of its plane is 0.
@@ -162,8 +167,8 @@ def sky_shares(visibility, horizon_band_deg: float = HORIZON_BAND_DEG
     if not band.any():
         band = (sky.band == 0).astype(np.float64)
     hweights = weights * band[None, :]
-    seen = weighted_sum(visibility, weights, inverse)
-    seen_h = weighted_sum(visibility, hweights, inverse)
+    seen = weighted_sum(visibility, weights, inverse, leaf=leaf)
+    seen_h = weighted_sum(visibility, hweights, inverse, leaf=leaf)
     total, total_h = weights.sum(axis=1)[inverse], hweights.sum(axis=1)[inverse]
     share = np.divide(seen, total, out=np.ones_like(seen), where=total > 0.0)
     share_h = np.divide(seen_h, total_h, out=np.ones_like(seen_h), where=total_h > 0.0)
@@ -194,11 +199,12 @@ def plane_irradiance(tilt_deg, azimuth_deg, zenith_deg: float, sun_azimuth_deg: 
 
 @njit(cache=True)
 def add_hour(sums, inverse, lit, sky_share, horizon_share, comps):
-    """Add one hour (W/m² × 1 h) to ``sums`` (N, 3): direct × sun bit; sky diffuse = isotropic
-    × sky share + circumsolar × sun bit + horizon × horizon share, clipped at 0; reflected."""
+    """Add one hour (W/m² × 1 h) to ``sums`` (N, 3): direct × sun fraction ``lit`` (float64:
+    1, 0, or a crowns' transmission); sky diffuse = isotropic × sky share + circumsolar × sun
+    fraction + horizon × horizon share, clipped at 0; reflected."""
     for i in range(inverse.shape[0]):
         u = inverse[i]
-        sun = 1.0 if lit[i] else 0.0
+        sun = lit[i]
         sky = comps[2, u] * sky_share[i] + comps[1, u] * sun + comps[3, u] * horizon_share[i]
         sums[i, 0] += comps[0, u] * sun
         if sky > 0.0:
@@ -206,22 +212,56 @@ def add_hour(sums, inverse, lit, sky_share, horizon_share, comps):
         sums[i, 2] += comps[4, u]
 
 
-def hourly_inputs(weather, directions) -> dict:
-    """Per weather hour: the sun's zenith and azimuth (from the traced directions), the
-    extraterrestrial DNI and pvlib's relative airmass (Kasten–Young 1989), as pvlib's
-    get_total_irradiance would compute them."""
+def hourly_inputs(sun_times, directions) -> dict:
+    """Per hour: the sun's zenith and azimuth (from the traced directions), the
+    extraterrestrial DNI at ``sun_times`` and pvlib's relative airmass (Kasten–Young 1989), as
+    pvlib's get_total_irradiance would compute them."""
     import pvlib
 
     zenith, azimuth = sun_angles(directions)
     return {"zenith_deg": zenith, "azimuth_deg": azimuth,
             "dni_extra_w_m2": np.asarray(pvlib.irradiance.get_extra_radiation(
-                weather.sun_times), np.float64),
+                sun_times), np.float64),
             "airmass": np.asarray(pvlib.atmosphere.get_relative_airmass(zenith), np.float64)}
+
+
+def receiver_sun(scene, points, normals, direction, t_days: float, engine: str, receivers,
+                 day: int | None) -> np.ndarray:
+    """(N,) float64: the fraction of the sun along ``direction`` each receiver gets: the
+    batch's :func:`~cityshade.sunhours.tiled.receiver_lit` (facing rule, the same origins) as
+    1 or 0 on a scene without vegetation; with vegetation the transmission of the crowns in
+    the way (:func:`cityshade.shadows.visibility.transmission`, leaf state of ``day``, the
+    hour's UTC day of the year). Written here because the batch's rule is a bit."""
+    from cityshade.geometry.vegetation import scene_vegetation
+
+    if scene_vegetation(scene) is None:
+        from cityshade.sunhours.tiled import receiver_lit
+
+        return receiver_lit(scene, points, normals, direction, t_days, engine,
+                            receivers).astype(np.float64)
+    from cityshade.shadows import facing_mask
+    from cityshade.shadows.visibility import transmission
+
+    faces = facing_mask(normals, True, direction)
+    out = np.zeros(points.shape[0], np.float64)
+    if faces.any():
+        origins = receivers.origins(direction, faces)
+        out[faces] = transmission(scene, origins, direction, t_days, engine=engine,
+                                  day_of_year=day)
+    return out
+
+
+def hour_days(sun_times) -> np.ndarray:
+    """(H,) int: the UTC day of the year (1-366) of every hour's sun (``Weather.sun_times``:
+    the middle of the hour), the date the vegetation's leaf state is read from
+    (docs/DESIGN.md §21)."""
+    return np.asarray(sun_times.tz_convert("UTC").dayofyear, np.int64)
 
 
 def irradiation(scene, points, normals, weather, directions, shares, *,
                 hours=None, t_days: float = 0.0, engine: str = "izb", model: str = "perez",
-                albedo: float = DEFAULT_ALBEDO, progress=None) -> Irradiation:
+                albedo: float = DEFAULT_ALBEDO, progress=None,
+                shares_leafless=None, sun_times=None) -> Irradiation:
     """Energy per m² of every receiver over the weather hours (see the module's docstring).
 
     Parameters
@@ -234,7 +274,14 @@ def irradiation(scene, points, normals, weather, directions, shares, *,
         The sun of every weather hour (:func:`cityshade.light.sunlight.weather_suns`).
     shares : pair of (N,) float64
         The sky share and horizon share of every receiver (:func:`sky_shares`; ones: no
-        obstruction of the sky).
+        obstruction of the sky); with vegetation, those of its crowns in leaf.
+    shares_leafless : pair of (N,) float64, optional
+        The same with the deciduous crowns leafless (``sky_shares(vis, leaf=False)``): an
+        hour out of leaf (the ``[vegetation]`` settings at the hour's UTC date) takes them.
+        None: ``shares`` for every hour.
+    sun_times : pandas.DatetimeIndex, optional
+        The instant of every record's sun (``directions``), for the extraterrestrial DNI and
+        the leaf state; default ``weather.sun_times`` (the middle of each hour).
     hours : (H,) bool, optional
         Hours to sum (default all: the file's year).
     t_days : float
@@ -252,7 +299,6 @@ def irradiation(scene, points, normals, weather, directions, shares, *,
     Irradiation
     """
     from cityshade.lightspace import SurfaceReceivers
-    from cityshade.sunhours.tiled import receiver_lit
 
     if model not in SKY_MODELS:
         raise UsageError(f"the sky model is one of {', '.join(SKY_MODELS)}, not {model!r}")
@@ -261,14 +307,23 @@ def irradiation(scene, points, normals, weather, directions, shares, *,
     pts = np.ascontiguousarray(points, np.float64).reshape(-1, 3)
     nrm = np.ascontiguousarray(normals, np.float64).reshape(-1, 3)
     tilt, azimuth, inverse = plane_angles(nrm)
-    inputs = hourly_inputs(weather, directions)
+    times = weather.sun_times if sun_times is None else sun_times
+    inputs = hourly_inputs(times, directions)
     use = np.ones(weather.n_hours, bool) if hours is None else np.asarray(hours, bool)
     use &= (weather.ghi_w_m2 > 0.0) | (weather.dni_w_m2 > 0.0) | (weather.dhi_w_m2 > 0.0)
     todo = np.flatnonzero(use)
     sums = np.zeros((len(pts), 3))
     receivers = SurfaceReceivers(pts, nrm) if len(pts) else None
-    no_sun = np.zeros(len(pts), bool)
     share, hshare = (np.ascontiguousarray(s, np.float64) for s in shares)
+    leafless = share, hshare
+    if shares_leafless is not None:
+        leafless = tuple(np.ascontiguousarray(s, np.float64) for s in shares_leafless)
+    days = hour_days(times)
+    from cityshade.geometry.vegetation import scene_vegetation, vegetation_settings
+
+    in_leaf = vegetation_settings(scene).in_leaf if scene_vegetation(scene) is not None \
+        else (lambda day: True)
+    no_sun = np.zeros(len(pts), np.float64)
     traced = 0
     for done, h in enumerate(todo, 1):
         comps = plane_irradiance(tilt, azimuth, inputs["zenith_deg"][h], inputs["azimuth_deg"][h],
@@ -280,15 +335,49 @@ def irradiation(scene, points, normals, weather, directions, shares, *,
             comps[:2] = 0.0
         elif len(pts) and ((comps[0] > 0.0) | (comps[1] > 0.0)).any():
             d = np.ascontiguousarray(directions[h], np.float64)
-            lit = receiver_lit(scene, pts, nrm, d, t_days, engine, receivers)
+            lit = receiver_sun(scene, pts, nrm, d, t_days, engine, receivers, int(days[h]))
             traced += 1
-        add_hour(sums, inverse, lit, share, hshare, comps)
+        leaf = in_leaf(int(days[h]))
+        add_hour(sums, inverse, lit, share if leaf else leafless[0],
+                 hshare if leaf else leafless[1], comps)
         if progress is not None:
             progress(done, len(todo))
     kwh = sums / 1000.0
     return Irradiation(direct_kwh_m2=kwh[:, 0], diffuse_kwh_m2=kwh[:, 1],
                        reflected_kwh_m2=kwh[:, 2], hours=len(todo), sun_hours_traced=traced,
                        model=model, albedo=float(albedo))
+
+
+def irradiance_at(scene, points, normals, weather, instants, directions, shares, *,
+                  shares_leafless=None, t_days: float = 0.0, engine: str = "izb",
+                  model: str = "perez", albedo: float = DEFAULT_ALBEDO) -> np.ndarray:
+    """(K, N, 3) W/m² (direct, diffuse, reflected) of every receiver at K instants.
+
+    Each instant takes the weather record of the hour containing it
+    (:meth:`~cityshade.light.weather.Weather.hour_containing`: the hour-ending average of DNI,
+    GHI and DHI) with the sun AT the instant (``directions`` (K, 3), SPA at the model's place),
+    and is layered as one hour of :func:`irradiation` (the same weights, the extraterrestrial
+    DNI and the leaf state of the instant): an unobstructed receiver gets exactly pvlib's
+    ``get_total_irradiance`` of that record and sun.
+    """
+    import pandas as pd
+
+    rows = weather.hour_containing(instants)
+    records = weather.take(rows)
+    times = pd.DatetimeIndex([pd.Timestamp(t) for t in instants]).tz_convert(
+        weather.hour_end.tz)
+    dirs = np.ascontiguousarray(directions, np.float64).reshape(-1, 3)
+    out = np.zeros((len(rows), len(np.asarray(points).reshape(-1, 3)), 3))
+    for k in range(len(rows)):
+        one = np.zeros(len(rows), bool)
+        one[k] = True
+        irr = irradiation(scene, points, normals, records, dirs, shares, hours=one,
+                          t_days=t_days, engine=engine, model=model, albedo=albedo,
+                          shares_leafless=shares_leafless, sun_times=times)
+        # Wh/m² of one hour at a constant W/m² (the sums' unit is kWh): back to W/m².
+        out[k] = np.stack([irr.direct_kwh_m2, irr.diffuse_kwh_m2, irr.reflected_kwh_m2],
+                          axis=1) * 1000.0
+    return out
 
 
 def _month_day(text: str, option: str) -> int:

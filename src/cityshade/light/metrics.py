@@ -140,10 +140,11 @@ def patch_weights(sky, normals, luminance=uniform_luminance, *, k: int | None = 
     return out, inverse.reshape(-1)
 
 
-def sky_integral(visibility, luminance=uniform_luminance, *, k: int | None = None
-                 ) -> np.ndarray:
-    """(N,) ``Σ_p bit_p W[p]``: the cosine-weighted visible sky of every receiver under a
-    relative luminance (see :func:`patch_weights`).
+def sky_integral(visibility, luminance=uniform_luminance, *, k: int | None = None,
+                 leaf: bool = True) -> np.ndarray:
+    """(N,) ``Σ_p bit_p τ_p W[p]``: the cosine-weighted visible sky of every receiver under a
+    relative luminance (see :func:`patch_weights`); ``τ_p`` the transmission of the crowns in
+    the way (in leaf or leafless, ``leaf``), 1 without vegetation.
 
     Examples
     --------
@@ -151,12 +152,14 @@ def sky_integral(visibility, luminance=uniform_luminance, *, k: int | None = Non
     >>> sky_integral(vis, cie_overcast_luminance)                     # doctest: +SKIP
     """
     weights, inverse = patch_weights(visibility.sky, visibility.normals, luminance, k=k)
-    return weighted_sum(visibility, weights, inverse)
+    return weighted_sum(visibility, weights, inverse, leaf=leaf)
 
 
-def weighted_sum(visibility, weights, inverse) -> np.ndarray:
-    """(N,) ``Σ_p bit_p weights[inverse[i], p]``: the visible part of per-plane patch weights
-    (:func:`patch_weights`), unpacking 8 Ki receivers at a time."""
+def weighted_sum(visibility, weights, inverse, *, leaf: bool = True) -> np.ndarray:
+    """(N,) ``Σ_p bit_p τ_p weights[inverse[i], p]``: the visible part of per-plane patch
+    weights (:func:`patch_weights`), unpacking 8 Ki receivers at a time. A ray through crowns
+    (:attr:`~cityshade.light.visibility.SkyVisibility.crowns`) gives back ``(1 − τ)`` of its
+    weight, τ in leaf or leafless (``leaf``); without vegetation nothing is subtracted."""
     out = np.zeros(visibility.n_receivers)
     order = np.argsort(inverse, kind="stable")
     bounds = np.searchsorted(inverse[order], np.arange(len(weights) + 1))
@@ -165,10 +168,14 @@ def weighted_sum(visibility, weights, inverse) -> np.ndarray:
         for s in range(0, len(rows), 8192):     # unpacked: 8 Ki receivers × P bytes at most
             part = rows[s:s + 8192]
             out[part] = visibility.visible(part) @ weights[u]
+    crowns = visibility.crowns
+    if crowns is not None and len(crowns.rows):
+        loss = (1.0 - crowns.transmission(leaf)) * weights[inverse[crowns.rows], crowns.cols]
+        out -= np.bincount(crowns.rows, weights=loss, minlength=len(out))
     return out
 
 
-def sky_view_factor(visibility, *, k: int | None = None) -> np.ndarray:
+def sky_view_factor(visibility, *, k: int | None = None, leaf: bool = True) -> np.ndarray:
     """(N,) sky view factor of each receiver for its own plane, in [0, 1].
 
     ``Σ visible cos(angle to the normal) dΩ / π`` over the half-space in front: 1 for open
@@ -188,10 +195,11 @@ def sky_view_factor(visibility, *, k: int | None = None) -> np.ndarray:
     >>> sky_view_factor(vis)                                          # doctest: +SKIP
     array([0.4471...])
     """
-    return sky_integral(visibility, uniform_luminance, k=k) / math.pi
+    return sky_integral(visibility, uniform_luminance, k=k, leaf=leaf) / math.pi
 
 
-def vertical_sky_component(visibility, *, k: int | None = None) -> np.ndarray:
+def vertical_sky_component(visibility, *, k: int | None = None, leaf: bool = True
+                           ) -> np.ndarray:
     """(N,) vertical sky component of each receiver (BRE 209), as a fraction: 0.396 (39.6 %)
     for an unobstructed vertical window; BRE's 27 % test is ``vsc >= 0.27``.
 
@@ -206,4 +214,5 @@ def vertical_sky_component(visibility, *, k: int | None = None) -> np.ndarray:
     >>> 100 * vertical_sky_component(vis)                                      # doctest: +SKIP
     array([27.2...])
     """
-    return sky_integral(visibility, cie_overcast_luminance, k=k) / CIE_OVERCAST_HORIZONTAL
+    return sky_integral(visibility, cie_overcast_luminance, k=k,
+                        leaf=leaf) / CIE_OVERCAST_HORIZONTAL

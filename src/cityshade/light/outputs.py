@@ -3,11 +3,16 @@
 - ``svf.exr`` (channels ``svf``, ``objid``), ``svf.tif`` (map views: GeoTIFF, float32, NaN
   nodata) and ``svf.png`` (viridis 0–1; a map view decorated with scale bar, north, CRS, title
   and colour bar, as batch's ``sun_hours.png``);
+- with ``vsc`` ``vsc.exr`` (channel ``vsc_pct``: the vertical sky component, in percent, of
+  every pixel ON ITS OWN PLANE: BRE 209's VSC on a wall, 100 % on open horizontal ground),
+  ``.tif`` and ``.png`` (0–100 %);
 - with a weather file ``irradiance_kwh_m2.exr`` (channels ``total``, ``direct``, ``diffuse``,
   ``reflected``, ``objid``), ``.tif`` (the total) and ``.png``;
+- per instant ``irradiance_w_m2_<HHMM>.exr`` (the same channels in W/m²), ``.tif`` and ``.png``;
 - with surfaces ``surfaces.csv`` (one row per sampled polygon: batch's first six columns, then
   the area-weighted means ``svf`` and ``irradiance_kwh_m2``, ``direct_kwh_m2``,
-  ``diffuse_kwh_m2``, ``reflected_kwh_m2``) and ``buildings.csv`` (per building: roof and wall
+  ``diffuse_kwh_m2``, ``reflected_kwh_m2``, ``vsc_pct`` with ``vsc``, and
+  ``irradiance_w_m2_<HHMM>`` per instant) and ``buildings.csv`` (per building: roof and wall
   areas, mean sky view factor of its roofs and of its walls, kWh/m² and kWh received by its
   roofs and walls).
 """
@@ -42,6 +47,11 @@ def sky_metadata(scene, request, result) -> dict[str, Any]:
             "cityshade:origin_m": " ".join(f"{v:.3f}" for v in scene.origin_m),
             "cityshade:params": json.dumps(dict(request.provenance or {}), sort_keys=True)}
     irr = result.irradiation
+    if request.weather is not None:
+        meta.update({"cityshade:weather": Path(request.weather.path).name,
+                     "cityshade:sky_model": request.model, "cityshade:albedo": request.albedo})
+    if result.instants_w_m2 is not None:
+        meta["cityshade:instants"] = " ".join(t.isoformat() for t in request.instants)
     if irr is not None:
         meta.update({"cityshade:weather": Path(request.weather.path).name,
                      "cityshade:sky_model": irr.model, "cityshade:albedo": irr.albedo,
@@ -81,6 +91,12 @@ def _maps(outdir: Path, scene, request, result, meta) -> list[Path]:
         written += _write_map(outdir, "svf", {"svf": result.map_of(result.svf), "objid": objid},
                               scene, request.camera, meta, vmax=1.0,
                               title=f"Sky view factor ({what})", label="sky view factor")
+    if result.vsc is not None:
+        written += _write_map(outdir, "vsc", {"vsc_pct": result.map_of(100.0 * result.vsc),
+                                              "objid": objid},
+                              scene, request.camera, meta, vmax=100.0,
+                              title=f"Vertical sky component on each surface's plane, CIE "
+                                    f"overcast sky ({what})", label="VSC %")
     irr = result.irradiation
     if irr is not None:
         channels = {"total": result.map_of(irr.total_kwh_m2)}
@@ -93,7 +109,27 @@ def _maps(outdir: Path, scene, request, result, meta) -> list[Path]:
                               meta, vmax=max(top, 1.0),
                               title=f"Irradiation, {Path(request.weather.path).name}, "
                                     f"{irr.hours} h ({irr.model})", label="kWh/m²")
+    for name, when, w in _instants(request, result):
+        channels = {"total": result.map_of(w.sum(axis=1))}
+        for c, col in zip(("direct", "diffuse", "reflected"), w.T):
+            channels[c] = result.map_of(col)
+        channels["objid"] = objid
+        finite = channels["total"][np.isfinite(channels["total"])]
+        top = float(np.ceil(finite.max() / 100.0) * 100.0) if finite.size else 1.0
+        written += _write_map(outdir, name, channels, scene, request.camera, meta,
+                              vmax=max(top, 100.0),
+                              title=f"Irradiance {when}, {Path(request.weather.path).name} "
+                                    f"({request.model})", label="W/m²")
     return written
+
+
+def _instants(request, result):
+    """(name, local time text, (N, 3) W/m²) of every instant: ``irradiance_w_m2_<HHMM>``."""
+    if result.instants_w_m2 is None:
+        return []
+    return [(f"irradiance_w_m2_{label}", t.strftime("%Y-%m-%d %H:%M %Z"), w)
+            for label, t, w in zip(request.instant_labels, request.instants,
+                                   result.instants_w_m2)]
 
 
 def polygon_values(result, request) -> dict[str, np.ndarray]:
@@ -104,11 +140,15 @@ def polygon_values(result, request) -> dict[str, np.ndarray]:
     values = {}
     if request.svf:
         values["svf"] = polygon_means(samples, result.sample_values(result.svf))
+    if result.vsc is not None:
+        values["vsc_pct"] = polygon_means(samples, 100.0 * result.sample_values(result.vsc))
     irr = result.irradiation
     if irr is not None:
         for name, v in zip(IRRADIANCE_COLUMNS, (irr.total_kwh_m2, irr.direct_kwh_m2,
                                                 irr.diffuse_kwh_m2, irr.reflected_kwh_m2)):
             values[name] = polygon_means(samples, result.sample_values(v))
+    for name, _, w in _instants(request, result):
+        values[name] = polygon_means(samples, result.sample_values(w.sum(axis=1)))
     return values
 
 

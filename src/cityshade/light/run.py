@@ -14,6 +14,9 @@ import numpy as np
 
 from cityshade.errors import UsageError
 
+#: Leaf states the sky view factor can be taken in (deciduous crowns in leaf or leafless).
+SEASONS = ("leaf_on", "leaf_off")
+
 __all__ = ["SkyRequest", "SkyResult", "compute_sky", "run_sky", "sky_bytes_per_receiver"]
 
 
@@ -31,9 +34,17 @@ class SkyRequest:
         ``sky`` (:func:`cityshade.light.sky.named_sky`), ``technique`` (an exact one: its
         engine traces the sky and the suns), ``spa`` (sun settings).
     What
-        ``svf`` (the sky view factor's outputs), ``weather`` (a
+        ``svf`` (the sky view factor's outputs), ``vsc`` (the vertical sky component of
+        every receiver on its own plane,
+        :func:`~cityshade.light.metrics.vertical_sky_component`), ``season`` (``leaf_on`` or
+        ``leaf_off``: the deciduous crowns of the sky view factor and the VSC; the irradiance
+        takes each hour's own leaf state), ``weather`` (a
         :class:`~cityshade.light.weather.Weather`: irradiance), ``hours`` ((H,) bool of the
-        weather hours to sum; None: all, the file's year), ``model``, ``albedo``.
+        weather hours to sum; None: all, the file's year), ``period`` (False: no kWh/m² over
+        the hours, only the instants), ``model``, ``albedo``;
+        ``instants`` (aware datetimes: W/m² at each, from the weather record of the hour
+        containing it with the sun at the instant) and their ``instant_labels`` (``0900``:
+        the files' and columns' names).
     Outputs
         ``provenance`` (JSON-able, in the files' metadata), ``decorate`` (map PNGs with scale
         bar, north, CRS, title, colour bar), ``gis`` (``results.gpkg`` of the surfaces and
@@ -48,10 +59,15 @@ class SkyRequest:
     technique: str = "izb"
     spa: Any = None
     svf: bool = True
+    vsc: bool = False
+    season: str = "leaf_on"
     weather: Any = None
     hours: Any = None
     model: str = "perez"
     albedo: float = 0.2
+    period: bool = True
+    instants: tuple = ()
+    instant_labels: tuple = ()
     provenance: Mapping[str, Any] | None = None
     decorate: bool = True
     gis: bool = True
@@ -69,12 +85,19 @@ class SkyRequest:
 
         if self.camera is None and self.samples_per_m2 is None:
             raise UsageError("nothing to compute: give a camera, samples_per_m2, or both")
-        if not self.svf and self.weather is None:
-            raise UsageError("nothing to compute: ask for the sky view factor, irradiance "
-                             "(with a weather file), or both")
+        if not (self.svf or self.vsc) and self.weather is None:
+            raise UsageError("nothing to compute: ask for the sky view factor, the vertical "
+                             "sky component or irradiance (with a weather file)")
+        if len(self.instants) != len(self.instant_labels):
+            raise UsageError("every instant needs its label")
+        if self.instants and self.weather is None:
+            raise UsageError("irradiance at instants needs a weather file")
         if self.model not in SKY_MODELS:
             raise UsageError(f"the sky model is one of {', '.join(SKY_MODELS)}, not "
                              f"{self.model!r}")
+        if self.season not in SEASONS:
+            raise UsageError(f"the season of the sky view factor is one of "
+                             f"{', '.join(SEASONS)}, not {self.season!r}")
         named_sky(self.sky)
         self.engine  # noqa: B018 - an inexact technique fails here, before any work
         if scene is not None:
@@ -102,6 +125,10 @@ class SkyResult:
     samples: Any
     sky: Any
     bytes_per_receiver: int
+    #: (K, N, 3) W/m² (direct, diffuse, reflected) at the request's instants, or None.
+    instants_w_m2: Any = None
+    #: (N,) vertical sky component (fraction) of every receiver on its own plane, or None.
+    vsc: Any = None
     timings_s: dict[str, float] = field(default_factory=dict)
     warnings: list[str] = field(default_factory=list)
 
@@ -119,12 +146,15 @@ class SkyResult:
         return values[self.n_pixels:]
 
 
-def sky_bytes_per_receiver(n_directions: int, irradiance: bool) -> int:
+def sky_bytes_per_receiver(n_directions: int, irradiance: bool, instants: int = 0) -> int:
     """Peak bytes per receiver of a sky run: point and normal (48), the packed bits
     (ceil(P / 8)), the block of unpacked directions (64) and one direction's ray origins (24)
-    while tracing, the view factor and two shares (24), the plane index (8); with irradiance
-    the three float64 sums (24), the sun's bits and origins per hour (25)."""
-    return 48 + (n_directions + 7) // 8 + 64 + 24 + 24 + 8 + (49 if irradiance else 0)
+    while tracing, the view factor and two shares (24), the plane index (8), the VSC (8); with
+    irradiance the three float64 sums (24), the sun's bits and origins per hour (25); per
+    instant its three float64 W/m² (24). Not counted: the rays through vegetation crowns
+    (24 B each, :class:`~cityshade.light.visibility.SkyCrowns`), known only after tracing."""
+    return 48 + (n_directions + 7) // 8 + 64 + 24 + 24 + 8 + 8 \
+        + (49 if irradiance or instants else 0) + 24 * int(instants)
 
 
 def _check_memory(request: SkyRequest, n_directions: int, n_samples_max: int) -> int:
@@ -133,7 +163,8 @@ def _check_memory(request: SkyRequest, n_directions: int, n_samples_max: int) ->
     camera counted as a receiver)."""
     from cityshade.frame.pipeline import available_memory_bytes, check_frame_memory
 
-    per = sky_bytes_per_receiver(n_directions, request.weather is not None)
+    per = sky_bytes_per_receiver(n_directions, request.weather is not None and request.period,
+                                 len(request.instants))
     n = n_samples_max
     if request.camera is not None:
         check_frame_memory(request.camera, technique=request.technique, batch=True)
@@ -174,26 +205,52 @@ def compute_sky(scene, request: SkyRequest, *, progress=None) -> SkyResult:
     vis = sky_visibility(scene, points, normals, sky, request.t_days, engine=request.engine,
                          progress=None if progress is None else
                          (lambda d, t: progress("sky", d, t)))
-    svf, share, hshare = sky_shares(vis)
+    svf, *shares = sky_shares(vis, leaf=request.season == "leaf_on")
+    vsc = None
+    if request.vsc:
+        from cityshade.light.metrics import vertical_sky_component
+
+        vsc = vertical_sky_component(vis, leaf=request.season == "leaf_on")
+    leafless = None
+    if vis.crowns is not None and request.weather is not None:
+        # The irradiance takes each weather hour's leaf state: the shares of both.
+        shares = sky_shares(vis, leaf=True)[1:]
+        leafless = sky_shares(vis, leaf=False)[1:]
     timings["sky_s"] = time.perf_counter() - t0
-    irr, warnings = None, []
+    irr, warnings, at = None, [], None
     if request.weather is not None:
-        from cityshade.light.sunlight import weather_suns
         from cityshade.light.weather import scene_location_warning
 
-        t0 = time.perf_counter()
         warning = scene_location_warning(request.weather, scene)
         if warning:
             warnings.append(warning)
+    if request.instants:
+        from cityshade.geo.sun import suns_from_instants
+        from cityshade.light.irradiance import irradiance_at
+
+        t0 = time.perf_counter()
+        suns = suns_from_instants(list(request.instants), scene.crs, scene.origin_m,
+                                  request.spa)
+        at = irradiance_at(scene, points, normals, request.weather, request.instants,
+                           np.array([s.direction for s in suns], np.float64).reshape(-1, 3),
+                           shares, shares_leafless=leafless, t_days=request.t_days,
+                           engine=request.engine, model=request.model, albedo=request.albedo)
+        timings["instants_s"] = time.perf_counter() - t0
+    if request.weather is not None and request.period:
+        from cityshade.light.sunlight import weather_suns
+
+        t0 = time.perf_counter()
         directions, _ = weather_suns(request.weather, scene, request.spa)
-        irr = irradiation(scene, points, normals, request.weather, directions, (share, hshare),
+        irr = irradiation(scene, points, normals, request.weather, directions, shares,
+                          shares_leafless=leafless,
                           hours=request.hours, t_days=request.t_days, engine=request.engine,
                           model=request.model, albedo=request.albedo,
                           progress=None if progress is None else
                           (lambda d, t: progress("hours", d, t)))
         timings["irradiance_s"] = time.perf_counter() - t0
     return SkyResult(svf=svf, irradiation=irr, shape=shape, pixels=pixels, cp=cp,
-                     samples=samples, sky=sky, bytes_per_receiver=per, timings_s=timings,
+                     samples=samples, sky=sky, bytes_per_receiver=per, instants_w_m2=at, vsc=vsc,
+                     timings_s=timings,
                      warnings=warnings)
 
 

@@ -169,8 +169,18 @@ def probable_sunlight(scene, points, normals, weather, t_days: float = 0.0, *,
 
         engine = engine_for_run(engine, scene, n, len(hours))
     # izb: one light-space pass per hour; raytrace: many hours per call (a direction per ray,
-    # BATCH_RAYS rays at most), the same rays as hour by hour.
-    per = max(1, BATCH_RAYS // max(n, 1)) if engine == "raytrace" else 1
+    # BATCH_RAYS rays at most), the same rays as hour by hour. With vegetation, hour by hour:
+    # an hour counts with the transmission of the crowns in the way (its date's leaf state).
+    from cityshade.geometry.vegetation import scene_vegetation
+
+    veg = scene_vegetation(scene) is not None
+    per = max(1, BATCH_RAYS // max(n, 1)) if engine == "raytrace" and not veg else 1
+    days = None
+    if veg:
+        from cityshade.light.irradiance import hour_days
+        from cityshade.shadows.visibility import transmission
+
+        days = hour_days(weather.sun_times)
     for s in range(0, len(hours), per):
         hs = hours[s:s + per]
         front = in_front(nrm, directions[hs])              # (N, hours of the chunk)
@@ -180,6 +190,12 @@ def probable_sunlight(scene, points, normals, weather, t_days: float = 0.0, *,
             continue
         d = directions[hs[0]] if len(hs) == 1 else np.ascontiguousarray(directions[hs[cols]])
         origins = shadow_rays_from_surface(pts[rows], nrm[rows], d)
+        if veg:
+            frac = transmission(scene, origins, d, t_days, engine=engine,
+                                day_of_year=int(days[hs[0]]))
+            annual += np.bincount(rows, weights=frac, minlength=n)
+            win += np.bincount(rows, weights=frac * winter[hs[cols]], minlength=n)
+            continue
         lit = ~occluded(scene, origins, d, t_days, engine=engine)
         annual += np.bincount(rows[lit], minlength=n)
         win += np.bincount(rows[lit & winter[hs[cols]]], minlength=n)

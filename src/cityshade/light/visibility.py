@@ -15,6 +15,13 @@ Tregenza's 145, 73 B for 577, 289 B for 2,305) plus the receivers' float64 norma
 While tracing, one block of ``block`` directions is held unpacked (``block`` bytes per
 receiver, 64 by default) with one direction's ray origins (24 B per receiver) and the engine's
 own work arrays (docs/DESIGN.md §7, §6).
+
+Trees: on a scene with vegetation crowns (docs/DESIGN.md §21) a bit says "no opaque triangle
+in the way", and the rays that cross crowns are listed apart (:class:`SkyCrowns`: 24 bytes per
+such ray, with the product of the crowns' transmissivities in leaf and leafless); each
+direction then costs one opaque pass and two crowns' passes, and holds 17 bytes of results per
+receiver besides its origins. A scene without vegetation lists nothing and is traced exactly as
+before.
 """
 from __future__ import annotations
 
@@ -62,6 +69,9 @@ class SkyVisibility:
     normals: np.ndarray
     t_days: float
     engine: str
+    #: The rays through vegetation crowns (:class:`SkyCrowns`), None for a scene without
+    #: vegetation: then the bits are the whole answer.
+    crowns: object = None
 
     @property
     def n_receivers(self) -> int:
@@ -73,8 +83,42 @@ class SkyVisibility:
         return np.unpackbits(self.bits[rows], axis=1, count=self.sky.n).astype(bool)
 
     def nbytes_per_receiver(self) -> int:
-        """Bytes kept per receiver: the packed bits and the normal."""
-        return int(self.bits.shape[1]) + 24
+        """Bytes kept per receiver: the packed bits and the normal (and, with crowns, their
+        rays' mean share: :attr:`SkyCrowns.NBYTES` per ray through a crown)."""
+        extra = 0
+        if self.crowns is not None and self.n_receivers:
+            extra = -(-len(self.crowns.rows) * SkyCrowns.NBYTES // self.n_receivers)
+        return int(self.bits.shape[1]) + 24 + extra
+
+
+@dataclass(frozen=True)
+class SkyCrowns:
+    """The (receiver, direction) rays that no opaque triangle blocks but that cross vegetation
+    crowns, with the product of the crowns' transmissivities in leaf and leafless
+    (docs/DESIGN.md §21): a ray of a :class:`SkyVisibility` counts with its bit × this
+    transmission (1 for a ray not listed). Kept sparse: 24 bytes per such ray (:attr:`NBYTES`)
+    and nothing for the others.
+
+    Attributes
+    ----------
+    rows, cols : (K,) int32
+        Receiver and direction of each ray.
+    leaf_on, leaf_off : (K,) float64
+        Its transmission with deciduous crowns in leaf and leafless (evergreen classes in leaf
+        in both).
+    """
+
+    rows: np.ndarray
+    cols: np.ndarray
+    leaf_on: np.ndarray
+    leaf_off: np.ndarray
+
+    #: Bytes per ray through a crown: two int32 indices and two float64 transmissions.
+    NBYTES = 24
+
+    def transmission(self, leaf: bool) -> np.ndarray:
+        """(K,) the rays' transmissions in leaf or leafless."""
+        return self.leaf_on if leaf else self.leaf_off
 
 
 def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: str = "izb",
@@ -119,8 +163,9 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
     >>> vis.visible().sum()                          # open ground sees all 145 # doctest: +SKIP
     145
     """
+    from cityshade.geometry.vegetation import scene_vegetation, vegetation_settings
     from cityshade.light.sky import in_front
-    from cityshade.shadows.visibility import occluded
+    from cityshade.shadows.visibility import crown_transmission, occluded
     from cityshade.trace import shadow_rays_from_surface
 
     if engine == "exact":      # one choice for the whole sky: its directions share the set-up
@@ -139,12 +184,33 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
     n, p_total = len(pts), sky.n
     bits = np.zeros((n, (p_total + 7) // 8), np.uint8)
     work = np.zeros((n, int(block)), bool)
+    veg = scene_vegetation(scene)
+    if veg is not None:
+        # Both seasons in one tracing: one opaque pass and two crowns' passes per direction.
+        settings = vegetation_settings(scene)
+        taus = (veg.transmissivity_in(settings, True), veg.transmissivity_in(settings, False))
+        # Every crown the same in both seasons (evergreen classes, equal values): one pass.
+        same = np.array_equal(taus[0], taus[1])
+        crown_parts: list[tuple] = []
     for start in range(0, p_total, int(block)):
         stop = min(start + int(block), p_total)
         work[:] = False
         dirs = sky.directions[start:stop]
         front = in_front(nrm, dirs)
-        if engine == "raytrace" and n * len(dirs) <= BATCH_RAYS:
+        if veg is not None:
+            for j, d in enumerate(dirs):
+                rows = np.flatnonzero(front[:, j])
+                if len(rows):
+                    origins = shadow_rays_from_surface(pts[rows], nrm[rows], d)
+                    blocked, outs = crown_transmission(scene, origins, d, t_days,
+                                                       taus[:1] if same else taus,
+                                                       engine=engine)
+                    on, off = outs[0], outs[-1]
+                    work[rows, j] = ~blocked
+                    part = ~blocked & ((on != 1.0) | (off != 1.0))
+                    if part.any():
+                        crown_parts.append((rows[part], start + j, on[part], off[part]))
+        elif engine == "raytrace" and n * len(dirs) <= BATCH_RAYS:
             rows, cols = np.nonzero(front)
             if len(rows):
                 d = np.ascontiguousarray(dirs[cols])
@@ -159,7 +225,16 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
         bits[:, start // 8:(stop + 7) // 8] = np.packbits(work[:, :stop - start], axis=1)
         if progress is not None:
             progress(stop, p_total)
-    return SkyVisibility(sky=sky, bits=bits, normals=nrm, t_days=float(t_days), engine=engine)
+    crowns = None
+    if veg is not None:
+        crowns = SkyCrowns(
+            rows=np.concatenate([r for r, *_ in crown_parts] or [np.zeros(0)]).astype(np.int32),
+            cols=np.concatenate([np.full(len(r), c) for r, c, *_ in crown_parts]
+                                or [np.zeros(0)]).astype(np.int32),
+            leaf_on=np.concatenate([on for *_, on, _ in crown_parts] or [np.zeros(0)]),
+            leaf_off=np.concatenate([off for *_, off in crown_parts] or [np.zeros(0)]))
+    return SkyVisibility(sky=sky, bits=bits, normals=nrm, t_days=float(t_days), engine=engine,
+                         crowns=crowns)
 
 
 def map_receivers(camera_pass) -> tuple[np.ndarray, np.ndarray, np.ndarray]:

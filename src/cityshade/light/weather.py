@@ -96,6 +96,47 @@ class Weather:
     def n_hours(self) -> int:
         return int(len(self.dni_w_m2))
 
+    def take(self, rows) -> "Weather":
+        """The records ``rows`` (index array) of this file, in that order."""
+        import dataclasses
+
+        rows = np.asarray(rows, np.int64)
+        return dataclasses.replace(
+            self, hour_end=self.hour_end[rows], ghi_w_m2=self.ghi_w_m2[rows],
+            dni_w_m2=self.dni_w_m2[rows], dhi_w_m2=self.dhi_w_m2[rows],
+            temp_air_c=self.temp_air_c[rows])
+
+    def hour_containing(self, instants) -> np.ndarray:
+        """(K,) int: the record whose hour contains each aware datetime of ``instants``.
+
+        A record stands for the hour that ENDS at its stamp (EPW, TMY: hour-ending averages,
+        local standard time), so an instant t belongs to the hour ending at t rounded up to
+        the whole hour (an instant on the hour: the hour ending then). Month, day and hour
+        are matched in the file's standard time, the year ignored (a typical year mixes
+        years).
+
+        Raises
+        ------
+        UsageError
+            No record holds the hour (29 February in a file without it, a partial file).
+        """
+        import pandas as pd
+
+        ends = self.hour_end
+        key: dict = {}
+        for i, mdh in enumerate(zip(ends.month, ends.day, ends.hour)):
+            key.setdefault(tuple(int(v) for v in mdh), i)
+        out = []
+        for t in instants:
+            local = pd.Timestamp(t).tz_convert(ends.tz)
+            end = local.ceil("h")
+            i = key.get((end.month, end.day, end.hour))
+            if i is None:
+                raise UsageError(f"{Path(self.path).name} has no hour containing "
+                                 f"{local.strftime('%Y-%m-%d %H:%M')} (its standard time)")
+            out.append(i)
+        return np.asarray(out, np.int64)
+
     @property
     def sun_times(self):
         """The middle of each hour (``hour_end − 30 min``), local standard time: the instant

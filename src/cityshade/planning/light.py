@@ -61,7 +61,10 @@ def add_opening_light(comp, *, vsc: bool = True, weather=None, sky: str | None =
         weather_suns,
     )
 
-    scene_b, scene_a = comp.scene_before, comp.scene_after
+    from cityshade.geometry.vegetation import window_light_scene
+
+    # BRE 209 leaves deciduous trees out of these tests ([vegetation] window_trees).
+    scene_b, scene_a = window_light_scene(comp.scene_before), window_light_scene(comp.scene_after)
     groups = [op.polygons for op in comp.openings]
     points, normals = polygon_reference_points(scene_b, groups)
     ok = np.isfinite(points).all(axis=1) & np.isfinite(normals).all(axis=1)

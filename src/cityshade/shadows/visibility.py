@@ -107,27 +107,47 @@ def transmission(scene, origins, direction, t_days: float = 0.0, *, engine: str 
     if veg is None:
         return (~occluded(scene, origins, direction, t_days, engine=engine,
                           **options)).astype(np.float64)
+    tau = veg.transmissivity(vegetation_settings(scene), day_of_year)
+    return crown_transmission(scene, origins, direction, t_days, (tau,), engine=engine,
+                              **options)[1][0]
+
+
+def crown_transmission(scene, origins, direction, t_days: float, taus, *,
+                       engine: str = "raytrace", **options) -> tuple[np.ndarray, list]:
+    """The opaque pass once and the crowns' pass once per set of crown transmissivities.
+
+    ``taus``: a sequence of (C,) float64 arrays (:meth:`~cityshade.geometry.vegetation.
+    SceneVegetation.transmissivity_in`, e.g. in leaf and leafless) of a scene WITH vegetation
+    (:func:`~cityshade.geometry.vegetation.scene_vegetation` not None). Returns ``blocked``
+    (N,) bool (an opaque triangle is in the way) and one (N,) float64 transmission per entry
+    of ``taus`` (0 where blocked), as :func:`transmission` gives for each.
+    """
+    from cityshade.geometry.vegetation import scene_vegetation
+
+    veg = scene_vegetation(scene)
     origins = np.ascontiguousarray(origins, dtype=np.float64)
     direction = np.ascontiguousarray(direction, dtype=np.float64).reshape(3)
     blocked = occluded(veg.opaque, origins, direction, t_days, engine=engine, **options)
     rays = np.flatnonzero(~blocked)
-    out = np.zeros(len(origins), np.float64)
-    tau = veg.transmissivity(vegetation_settings(scene), day_of_year)
-    # The crowns' pass: izb's light-plane grid, or (raytrace, and exact: a crowns' tree is
-    # small) the crowns' kd-tree; the same bits either way.
-    if engine == "izb":
-        from cityshade.lightspace import MARGIN_REL
-        from cityshade.lightspace.vegetation import transmission as crowns
+    outs = []
+    for tau in taus:
+        out = np.zeros(len(origins), np.float64)
+        # The crowns' pass: izb's light-plane grid, or (raytrace, and exact: a crowns' tree is
+        # small) the crowns' kd-tree; the same bits either way.
+        if engine == "izb":
+            from cityshade.lightspace import MARGIN_REL
+            from cityshade.lightspace.vegetation import transmission as crowns
 
-        crowns(veg.vertices, veg.triangles, veg.t_begin_days, veg.t_end_days, veg.tri_crown,
-               tau, origins, direction, float(t_days), rays, out, MARGIN_REL)
-    else:
-        if engine != "exact":
-            _engine(engine)  # an unknown name fails here
-        from cityshade.trace.vegetation import transmission as crowns
+            crowns(veg.vertices, veg.triangles, veg.t_begin_days, veg.t_end_days,
+                   veg.tri_crown, tau, origins, direction, float(t_days), rays, out, MARGIN_REL)
+        else:
+            if engine != "exact":
+                _engine(engine)  # an unknown name fails here
+            from cityshade.trace.vegetation import transmission as crowns
 
-        crowns(veg.tree, origins, direction, float(t_days), rays, veg.tri_crown, tau, out)
-    return out
+            crowns(veg.tree, origins, direction, float(t_days), rays, veg.tri_crown, tau, out)
+        outs.append(out)
+    return blocked, outs
 
 
 def sunlit(scene, points, normals, sun_direction, t_days: float = 0.0, *,
