@@ -36,19 +36,6 @@ def error_line(result, code=1) -> str:
     return lines[0]
 
 
-@pytest.fixture(scope="module")
-def scene_file(tmp_path_factory):
-    """One box on a 60 m ground plane, dated 1900, built once for the module."""
-    from cityshade.build import build_file
-
-    tmp = tmp_path_factory.mktemp("messages")
-    src = tmp / "box.gml"
-    extra = "<bldg:yearOfConstruction>1900</bldg:yearOfConstruction>"
-    src.write_text(city(building("b1", box_polygons(X0, Y0, Z0, 10, 8, 6), extra=extra)))
-    out, _, _ = build_file(src, tmp / "box.cityshade")
-    return out
-
-
 # --- reading ---------------------------------------------------------------------------------
 
 def test_no_polygon_triangulated_says_why_in_words(tmp_path):
