@@ -31,10 +31,10 @@ def error_line(result, code=2) -> str:
     return lines[0]
 
 
-def _mask(scene_file, path, *args):
+def _mask(dated_box_file, path, *args):
     from cityshade.imageio import read_image
 
-    result = run("render", scene_file, *args, "--camera", "map", "--pixel-size", "1",
+    result = run("render", dated_box_file, *args, "--camera", "map", "--pixel-size", "1",
                  "--mask", path)
     assert result.exit_code == 0, result.output
     assert result.output.splitlines()[-1] == str(path)  # after a warning of an empty city
@@ -43,21 +43,21 @@ def _mask(scene_file, path, *args):
 
 # --- render: the city's state and the sun's day ------------------------------------------------
 
-def test_render_city_date_sets_the_state_and_date_the_sun(scene_file, tmp_path):
+def test_render_city_date_sets_the_state_and_date_the_sun(dated_box_file, tmp_path):
     """The box stands from 1900: in 1850 nothing casts a shadow (no 0 in the mask), in 1950
     and by default (the sun's day, 2024) it does. --date 1850 with angles is the same render
     as --city-date 1850."""
     shadow = 0  # imageio.MASK_SHADOW
-    before = _mask(scene_file, tmp_path / "a.png", "--city-date", "1850", *ANGLES)
-    short = _mask(scene_file, tmp_path / "b.png", "--date", "1850", *ANGLES)
-    after = _mask(scene_file, tmp_path / "c.png", "--city-date", "1950", *ANGLES)
+    before = _mask(dated_box_file, tmp_path / "a.png", "--city-date", "1850", *ANGLES)
+    short = _mask(dated_box_file, tmp_path / "b.png", "--date", "1850", *ANGLES)
+    after = _mask(dated_box_file, tmp_path / "c.png", "--city-date", "1950", *ANGLES)
     assert not (before == shadow).any() and (after == shadow).any()
     assert np.array_equal(before, short)
-    noon_1850 = _mask(scene_file, tmp_path / "d.png", "--city-date", "1850", *NOON)
-    noon_2024 = _mask(scene_file, tmp_path / "e.png", *NOON)
+    noon_1850 = _mask(dated_box_file, tmp_path / "d.png", "--city-date", "1850", *NOON)
+    noon_2024 = _mask(dated_box_file, tmp_path / "e.png", *NOON)
     assert not (noon_1850 == shadow).any() and (noon_2024 == shadow).any()
     # The same state said twice is no contradiction.
-    same = _mask(scene_file, tmp_path / "f.png", "--date", "1850", "--city-date", "1850-01-01",
+    same = _mask(dated_box_file, tmp_path / "f.png", "--date", "1850", "--city-date", "1850-01-01",
                  *ANGLES)
     assert np.array_equal(before, same)
     assert sorted(p.name for p in tmp_path.iterdir()) == [f"{c}.png" for c in "abcdef"]
@@ -78,36 +78,36 @@ def test_render_city_date_sets_the_state_and_date_the_sun(scene_file, tmp_path):
      "cannot read date '18x0'; use YYYY, YYYY-MM-DD, or YYYY-MM-DDTHH:MM[:SS][Z|±HH:MM] "
      "(e.g. 1850, 1850-06-21, 1850-06-21T15:00+01:00)"),
 ])
-def test_render_date_contradictions_are_one_line(scene_file, tmp_path, args, line):
-    result = run("render", scene_file, *args, "--png", tmp_path / "a.png")
+def test_render_date_contradictions_are_one_line(dated_box_file, tmp_path, args, line):
+    result = run("render", dated_box_file, *args, "--png", tmp_path / "a.png")
     assert error_line(result) == f"cityshade: error: {line}"
     assert list(tmp_path.iterdir()) == []
 
 
 # --- render: only the outputs asked for ---------------------------------------------------------
 
-def test_render_writes_only_a_png_or_only_a_mask(scene_file, tmp_path):
-    result = run("render", scene_file, "--date", "2000", *ANGLES, "--size", "64x48",
+def test_render_writes_only_a_png_or_only_a_mask(dated_box_file, tmp_path):
+    result = run("render", dated_box_file, "--date", "2000", *ANGLES, "--size", "64x48",
                  "--png", tmp_path / "p.png")
     assert result.exit_code == 0, result.output
     assert sorted(p.name for p in tmp_path.iterdir()) == ["p.png"]
-    result = run("render", scene_file, "--date", "2000", *ANGLES, "--camera", "map",
+    result = run("render", dated_box_file, "--date", "2000", *ANGLES, "--camera", "map",
                  "--pixel-size", "2", "--geotiff", tmp_path / "g.tif")
     assert result.exit_code == 0, result.output
     assert {p.suffix for p in tmp_path.iterdir()} - {".png"} <= {".tif", ".tfw", ".prj"}
     assert not list(tmp_path.glob("*.exr"))
 
 
-def test_render_without_any_output_says_so(scene_file, tmp_path):
-    result = run("render", scene_file, "--date", "2000", *ANGLES)
+def test_render_without_any_output_says_so(dated_box_file, tmp_path):
+    result = run("render", dated_box_file, "--date", "2000", *ANGLES)
     assert error_line(result) == ("cityshade: error: nothing to write: give -o FILE.exr, "
                                   "--png, --mask or --geotiff")
 
 
 # --- evaluate, compare, study: the same words -------------------------------------------------
 
-def test_evaluate_date_and_city_date(scene_file, tmp_path):
-    result = run("evaluate", scene_file, "--sun", "100,30", "--date", "1850", "--city-date",
+def test_evaluate_date_and_city_date(dated_box_file, tmp_path):
+    result = run("evaluate", dated_box_file, "--sun", "100,30", "--date", "1850", "--city-date",
                  "1990", "-o", tmp_path / "e")
     assert error_line(result) == (
         "cityshade: error: --date 1850 without a time of day is the city's state (short for "
@@ -121,23 +121,23 @@ BATCH = ("--date", "2024-06-21", "--from", "06:00", "--to", "18:00", "--every", 
 
 
 @pytest.mark.parametrize("command", ["compare", "study"])
-def test_compare_and_study_city_date_is_the_state_of_with(scene_file, tmp_path, command):
+def test_compare_and_study_city_date_is_the_state_of_with(dated_box_file, tmp_path, command):
     times = BATCH if command == "compare" else ("--tz", "Europe/Berlin")
     out = tmp_path / "o"
-    result = run(command, scene_file, *times, "--city-date", "1850", "--after", "1990",
+    result = run(command, dated_box_file, *times, "--city-date", "1850", "--after", "1990",
                  "-o", out)
     assert error_line(result) == (
         "cityshade: error: --city-date is the state of the city that --with adds a proposal "
         "to; two states of one model are --before and --after")
-    result = run(command, scene_file, *times, "--city-date", "1850", "--before", "1990",
-                 "--with", scene_file, "-o", out)
+    result = run(command, dated_box_file, *times, "--city-date", "1850", "--before", "1990",
+                 "--with", dated_box_file, "-o", out)
     assert error_line(result) == (
         "cityshade: error: --city-date 1850 and --before 1990 both give the state the "
         "proposal is added to, and they differ: give one of them")
     assert not out.exists()
 
 
-def test_compare_city_date_is_before_with_a_proposal(scene_file, tmp_path):
+def test_compare_city_date_is_before_with_a_proposal(dated_box_file, tmp_path):
     """--city-date X --with P is the request --before X --with P: the same provenance and
     the same sun-hours."""
     import re
@@ -150,7 +150,7 @@ def test_compare_city_date_is_before_with_a_proposal(scene_file, tmp_path):
     proposal, _, _ = build_file(src, tmp_path / "p.cityshade")
     runs = {}
     for name, state in (("a", ("--city-date", "1950")), ("b", ("--before", "1950"))):
-        result = run("compare", scene_file, *BATCH, *state, "--with", proposal,
+        result = run("compare", dated_box_file, *BATCH, *state, "--with", proposal,
                      "--no-surfaces", "-o", tmp_path / name)
         assert result.exit_code == 0, result.output
         report = (tmp_path / name / "report.md").read_text()
@@ -164,24 +164,24 @@ def test_compare_city_date_is_before_with_a_proposal(scene_file, tmp_path):
 
 # --- batch: a finished run is not computed again ------------------------------------------------
 
-def test_a_finished_batch_run_again_does_nothing(scene_file, tmp_path):
+def test_a_finished_batch_run_again_does_nothing(dated_box_file, tmp_path):
     out = tmp_path / "run"
-    assert run("batch", scene_file, *BATCH, "-o", out).exit_code == 0
+    assert run("batch", dated_box_file, *BATCH, "-o", out).exit_code == 0
     files = {p: p.stat().st_mtime_ns for p in out.rglob("*")}
     assert out / "sun_hours.exr" in files and out / "manifest.json" in files
-    result = run("batch", scene_file, *BATCH, "-o", out)
+    result = run("batch", dated_box_file, *BATCH, "-o", out)
     assert result.exit_code == 0, result.output
     assert result.output.splitlines() == [f"{out}: already complete (same request); nothing "
                                           f"to do (--overwrite computes it again)"]
     assert {p: p.stat().st_mtime_ns for p in out.rglob("*")} == files
     # Another request on the finished folder: refused as before, nothing touched.
-    result = run("batch", scene_file, *BATCH[:7], "3h", *BATCH[8:], "-o", out)
+    result = run("batch", dated_box_file, *BATCH[:7], "3h", *BATCH[8:], "-o", out)
     assert error_line(result) == (f"cityshade: error: {out} holds a run with other parameters "
                                   f"(differs in: every_s); use --overwrite or another -o "
                                   f"folder")
     assert {p: p.stat().st_mtime_ns for p in out.rglob("*")} == files
     # An output gone: the run is computed again and the output is back.
     (out / "sun_hours.png").unlink()
-    result = run("batch", scene_file, *BATCH, "-o", out)
+    result = run("batch", dated_box_file, *BATCH, "-o", out)
     assert result.exit_code == 0 and "already complete" not in result.output
     assert (out / "sun_hours.png").is_file()

@@ -4,8 +4,9 @@
 ``OUTDIR/manifest.json``; running again with the same request continues from the saved state
 (``state.npz``) without redoing finished sun positions and gives a bit-identical result; a run
 that finished with the same request and left all its outputs is not computed again
-(:attr:`BatchRun.already_complete`); other parameters are refused unless ``overwrite``. The untiled run is
-:func:`cityshade.sunhours.accumulate.compute`, the tiled, distributed and monthly one
+(:attr:`BatchRun.already_complete`); other parameters are refused unless ``overwrite``. The
+untiled run is :func:`cityshade.sunhours.accumulate.compute`, the tiled, distributed and
+monthly one
 :func:`cityshade.sunhours.tiled.run_tiled`; the outputs are written by
 :mod:`cityshade.sunhours.outputs`.
 """
