@@ -162,6 +162,22 @@ def test_compare_city_date_is_before_with_a_proposal(dated_box_file, tmp_path):
         assert np.array_equal(runs["a", raster], runs["b", raster], equal_nan=True)
 
 
+def test_batch_city_date_is_the_state(dated_box_file, tmp_path):
+    """06:00-18:00 CEST on 21 June in Munich the sun is up all along (it rises about 05:15,
+    sets about 21:20): without the box (1850) the level ground gets 6 × 2 h = 12 h on every
+    pixel; with it (the default state, the first --date day) some pixels get less."""
+    from cityshade.imageio import read_exr
+
+    hours = {}
+    for name, state in (("then", ("--city-date", "1850")), ("now", ())):
+        result = run("batch", dated_box_file, *BATCH, *state, "-o", tmp_path / name)
+        assert result.exit_code == 0, result.output
+        hours[name] = read_exr(tmp_path / name / "sun_hours.exr")[0]["sun_hours"]
+        assert np.isfinite(hours[name]).any()
+    assert (hours["then"][np.isfinite(hours["then"])] == 12.0).all()
+    assert (hours["now"][np.isfinite(hours["now"])] < 12.0).any()
+
+
 # --- batch: a finished run is not computed again ------------------------------------------------
 
 def test_a_finished_batch_run_again_does_nothing(dated_box_file, tmp_path):

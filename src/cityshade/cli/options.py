@@ -600,7 +600,9 @@ def time_plan_options(func):
     """``--date --from --to --every --tz --days --to-date --every-day`` (see
     :func:`cityshade.sunhours.plan.plan_steps`)."""
     options = [
-        click.option("--date", "date_text", required=True, help="First day, YYYY-MM-DD."),
+        click.option("--date", "date_text", required=True, help="First day of the sun "
+                     "positions, YYYY-MM-DD; the city's state too unless --city-date (or "
+                     "--before) says otherwise."),
         click.option("--from", "from_text", default="00:00", show_default=True,
                      help="Local start time of each day, HH:MM."),
         click.option("--to", "to_text", default="24:00", show_default=True,
