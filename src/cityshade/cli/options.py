@@ -540,7 +540,7 @@ class ProgressLines:
 
 
 # --- the city's state and the sun's day: one meaning in every command --------------------------
-# --city-date is the state of the city, --date the sun's day (docs/DESIGN.md §14). Where the
+# --city-date is the state of the city, --date the sun's day (docs/DESIGN.md §17). Where the
 # sun can be given as angles (render, evaluate --sun), a --date without a time of day has no
 # sun to date, so it keeps its old meaning as the short form of --city-date.
 

@@ -7,8 +7,8 @@ import click
 
 from cityshade.cli.helpfmt import GroupedCommand
 
-from cityshade.cli.options import (camera_options, ground_option, make_camera, parse_size,
-                                   parse_triple, shadow_options)
+from cityshade.cli.options import (camera_options, city_date_option, ground_option,
+                                   make_camera, parse_size, parse_triple, shadow_options)
 
 
 @click.command("render", cls=GroupedCommand)
@@ -17,8 +17,7 @@ from cityshade.cli.options import (camera_options, ground_option, make_camera, p
               "today), or the sun's instant 2025-06-21T15:00+02:00. Without a time of day "
               "(the sun given by --sun-azimuth/--sun-elevation) the short form of --city-date: "
               "--date 1850.")
-@click.option("--city-date", help="State of the city: a year or date, e.g. 1850 or 1850-06-21 "
-              "(default: the sun's instant, else today).")
+@city_date_option("the sun's instant, else today")
 @click.option("--tz", help="IANA time zone for a --date without UTC offset, e.g. Europe/Berlin; "
               "local-mean or local-apparent: mean or true solar time at the model's longitude "
               "(for historical dates).")
