@@ -7,9 +7,9 @@ out=${1:-demo}
 here=$(dirname "$0")
 cityshade build "$here/sample_city.gml" -o "$out/city.cityshade"
 for year in 1750 1990; do
-  cityshade render "$out/city.cityshade" --date $year --sun-azimuth 135 --sun-elevation 30 \
+  cityshade render "$out/city.cityshade" --city-date $year --sun-azimuth 135 --sun-elevation 30 \
     -o "$out/city_$year.exr" --png "$out/city_$year.png"
-  cityshade render "$out/city.cityshade" --date $year --sun-azimuth 135 --sun-elevation 30 \
+  cityshade render "$out/city.cityshade" --city-date $year --sun-azimuth 135 --sun-elevation 30 \
     --camera map --pixel-size 0.5 -o "$out/map_$year.exr" --mask "$out/map_${year}_mask.png" \
     --geotiff "$out/map_${year}_mask.tif" --decorate
 done

@@ -33,6 +33,23 @@ def sample_city_scene(tmp_path_factory):
     return sample_scene(tmp_path_factory.mktemp("sample_city"))
 
 
+@pytest.fixture(scope="session")
+def dated_box_file(tmp_path_factory):
+    """A scene file of one 10 × 8 × 6 m box built in 1900 (so absent in 1850), on the default
+    ground plane, built once per session (the CLI tests of messages and conventions)."""
+    from citygml_snippets import box_polygons, building, city
+
+    from cityshade.build import build_file
+
+    tmp = tmp_path_factory.mktemp("dated_box")
+    src = tmp / "box.gml"
+    extra = "<bldg:yearOfConstruction>1900</bldg:yearOfConstruction>"
+    src.write_text(city(building("b1", box_polygons(690_000.0, 5_336_000.0, 500.0, 10, 8, 6),
+                                 extra=extra)))
+    out, _, _ = build_file(src, tmp / "box.cityshade")
+    return out
+
+
 def run_with_and_without_jit(script: str) -> list:
     """Run ``script`` (``python -c``, the tests folder as ``sys.argv[1]``) with
     ``NUMBA_DISABLE_JIT=1`` and ``=0``; returns the JSON of each run's last output line."""

@@ -36,19 +36,6 @@ def error_line(result, code=1) -> str:
     return lines[0]
 
 
-@pytest.fixture(scope="module")
-def scene_file(tmp_path_factory):
-    """One box on a 60 m ground plane, dated 1900, built once for the module."""
-    from cityshade.build import build_file
-
-    tmp = tmp_path_factory.mktemp("messages")
-    src = tmp / "box.gml"
-    extra = "<bldg:yearOfConstruction>1900</bldg:yearOfConstruction>"
-    src.write_text(city(building("b1", box_polygons(X0, Y0, Z0, 10, 8, 6), extra=extra)))
-    out, _, _ = build_file(src, tmp / "box.cityshade")
-    return out
-
-
 # --- reading ---------------------------------------------------------------------------------
 
 def test_no_polygon_triangulated_says_why_in_words(tmp_path):
@@ -119,36 +106,36 @@ def test_plural_helper():
 # --- options ---------------------------------------------------------------------------------
 
 @pytest.mark.parametrize("date", ["99999", "0", "10000-01-01"])
-def test_a_date_out_of_range_says_so(scene_file, tmp_path, date):
-    result = run("render", scene_file, "--date", date, "--sun-azimuth", "100",
+def test_a_date_out_of_range_says_so(dated_box_file, tmp_path, date):
+    result = run("render", dated_box_file, "--date", date, "--sun-azimuth", "100",
                  "--sun-elevation", "30", "-o", tmp_path / "a.exr")
     assert error_line(result, 2) == (f"cityshade: error: date '{date}' is out of range (years 1 "
                                      f"to 9999 are supported)")
-    result = run("batch", scene_file, "--date", "99999-06-21", "--tz", "UTC",
+    result = run("batch", dated_box_file, "--date", "99999-06-21", "--tz", "UTC",
                  "-o", tmp_path / "b")
     assert error_line(result, 2) == ("cityshade: error: --date '99999-06-21' is out of range "
                                      "(years 1 to 9999 are supported)")
     assert not (tmp_path / "b").exists()
 
 
-def test_size_over_the_limit_gives_the_memory_it_would_need(scene_file, tmp_path):
+def test_size_over_the_limit_gives_the_memory_it_would_need(dated_box_file, tmp_path):
     # 290 bytes per pixel for an exact technique's frame (frame/pipeline.py
     # FRAME_BYTES_PER_PX): 1e10 pixels × 290 B = 2,900 GB.
-    result = run("render", scene_file, "--date", "2000", "--sun-azimuth", "100",
+    result = run("render", dated_box_file, "--date", "2000", "--sun-azimuth", "100",
                  "--sun-elevation", "30", "--size", "100000x100000", "-o", tmp_path / "a.exr")
     assert error_line(result, 2) == (
         "cityshade: error: --size 100000x100000 exceeds the limit of 16384 pixels a side (the "
         "picture would need about 2,900 GB: 290 bytes per pixel for exact)")
 
 
-def test_an_unwritable_output_fails_before_the_work(scene_file):
+def test_an_unwritable_output_fails_before_the_work(dated_box_file):
     """/proc passes a permission check (root, or its mode bits) but takes no new file: the
     render failed after the whole work, naming its temporary file."""
-    result = run("render", scene_file, "--date", "2000", "--sun-azimuth", "100",
+    result = run("render", dated_box_file, "--date", "2000", "--sun-azimuth", "100",
                  "--sun-elevation", "30", "-o", "/proc/x.exr")
     assert error_line(result) == ("cityshade: error: -o /proc/x.exr: cannot write in the "
                                   "folder /proc (No such file or directory)")
-    result = run("build", scene_file, "-o", "/proc/x.cityshade")
+    result = run("build", dated_box_file, "-o", "/proc/x.cityshade")
     assert error_line(result) == ("cityshade: error: -o /proc/x.cityshade: cannot write in the "
                                   "folder /proc (No such file or directory)")
 
@@ -178,16 +165,16 @@ BATCH = ("--date", "2024-06-21", "--from", "06:00", "--to", "18:00", "--every", 
          "Europe/Berlin", "--pixel-size", "4", "--no-gis", "--no-decorate")
 
 
-def test_a_resumed_batch_says_so_and_a_finished_one_drops_its_state(scene_file, tmp_path,
+def test_a_resumed_batch_says_so_and_a_finished_one_drops_its_state(dated_box_file, tmp_path,
                                                                     stop_batch_after):
     from cityshade.sunhours.checkpoint import STATE_NAME
 
     out = tmp_path / "run"
     stop_batch_after(2)
-    assert run("batch", scene_file, *BATCH, "-o", out).exit_code == 130
+    assert run("batch", dated_box_file, *BATCH, "-o", out).exit_code == 130
     assert (out / STATE_NAME).is_file()  # kept for the resume
     stop_batch_after(None)
-    result = run("batch", scene_file, *BATCH, "-o", out)
+    result = run("batch", dated_box_file, *BATCH, "-o", out)
     assert result.exit_code == 0, result.output
     # 06:00-18:00 every 2 h: 6 steps, the sun up in each (Munich, June), one position each.
     assert lines_of(result)[0] == (f"cityshade: resuming the run in {out}: 2 of 6 sun "
@@ -199,11 +186,11 @@ def test_a_resumed_batch_says_so_and_a_finished_one_drops_its_state(scene_file, 
     assert not (out / ".cityshade.lock").exists()
 
 
-def test_a_batch_refuses_a_folder_another_live_run_holds(scene_file, tmp_path):
+def test_a_batch_refuses_a_folder_another_live_run_holds(dated_box_file, tmp_path):
     out = tmp_path / "run"
     out.mkdir()
     (out / ".cityshade.lock").write_text("1\n")  # process 1 always runs
-    result = run("batch", scene_file, *BATCH, "-o", out)
+    result = run("batch", dated_box_file, *BATCH, "-o", out)
     assert error_line(result, 2) == (f"cityshade: error: {out} is in use by another cityshade "
                                      f"run (process 1); wait for it to end or choose another "
                                      f"-o folder")
@@ -211,14 +198,14 @@ def test_a_batch_refuses_a_folder_another_live_run_holds(scene_file, tmp_path):
     assert sorted(p.name for p in out.iterdir()) == [".cityshade.lock"]
 
 
-def test_a_stale_lock_is_taken_over_with_a_note(scene_file, tmp_path):
+def test_a_stale_lock_is_taken_over_with_a_note(dated_box_file, tmp_path):
     ended = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"],
                            capture_output=True, text=True, check=True)
     pid = int(ended.stdout)
     out = tmp_path / "run"
     out.mkdir()
     (out / ".cityshade.lock").write_text(f"{pid}\n")
-    result = run("batch", scene_file, *BATCH, "-o", out)
+    result = run("batch", dated_box_file, *BATCH, "-o", out)
     assert result.exit_code == 0, result.output
     assert lines_of(result)[0] == (f"cityshade: took over the lock {out / '.cityshade.lock'} "
                                    f"of process {pid}, which has ended")
@@ -272,10 +259,10 @@ SUN = ("--date", "2000", "--sun-azimuth", "100", "--sun-elevation", "30")
      "--no-refraction applies to the sun computed for a date and time; --sun-azimuth/"
      "--sun-elevation give the sun as it is"),
 ])
-def test_render_refuses_options_its_camera_or_sun_would_ignore(scene_file, tmp_path, args,
+def test_render_refuses_options_its_camera_or_sun_would_ignore(dated_box_file, tmp_path, args,
                                                                 line):
     args = [str(tmp_path / a) if a.endswith(".png") else a for a in args]
-    result = run("render", scene_file, *SUN, "-o", tmp_path / "a.exr", *args)
+    result = run("render", dated_box_file, *SUN, "-o", tmp_path / "a.exr", *args)
     assert error_line(result, 2) == f"cityshade: error: {line}"
     assert list(tmp_path.iterdir()) == []
 
@@ -289,18 +276,18 @@ def test_render_refuses_options_its_camera_or_sun_would_ignore(scene_file, tmp_p
                   "north), not -10"),
     ("100", "95", "sun elevation must be between -90 and 90 degrees, not 95"),
 ])
-def test_angles_out_of_range_are_refused_not_wrapped(scene_file, tmp_path, azimuth, elevation,
+def test_angles_out_of_range_are_refused_not_wrapped(dated_box_file, tmp_path, azimuth, elevation,
                                                      line):
-    result = run("render", scene_file, "--date", "2000", "--sun-azimuth", azimuth,
+    result = run("render", dated_box_file, "--date", "2000", "--sun-azimuth", azimuth,
                  "--sun-elevation", elevation, "-o", tmp_path / "a.exr")
     assert error_line(result, 2) == f"cityshade: error: {line}"
-    result = run("evaluate", scene_file, "--sun", f"{azimuth},{elevation}", "-o",
+    result = run("evaluate", dated_box_file, "--sun", f"{azimuth},{elevation}", "-o",
                  tmp_path / "e")
     assert error_line(result, 2) == f"cityshade: error: {line}"
     assert list(tmp_path.iterdir()) == []
 
 
-def test_batch_and_compare_refuse_options_that_would_change_nothing(scene_file, tmp_path):
+def test_batch_and_compare_refuse_options_that_would_change_nothing(dated_box_file, tmp_path):
     out = tmp_path / "o"
     cases = [
         (("batch", *BATCH, "--samples-per-m2", "2"),
@@ -316,16 +303,17 @@ def test_batch_and_compare_refuse_options_that_would_change_nothing(scene_file, 
          "skips: give one or the other"),
     ]
     for (command, *args), line in cases:
-        result = run(command, scene_file, *args, "-o", out)
+        result = run(command, dated_box_file, *args, "-o", out)
         assert error_line(result, 2) == f"cityshade: error: {line}", command
         assert not out.exists()
 
 
-def test_compare_of_two_states_that_are_the_same_city_is_refused(scene_file, tmp_path):
+def test_compare_of_two_states_that_are_the_same_city_is_refused(dated_box_file, tmp_path):
     out = tmp_path / "o"
     hint = ("so nothing would change; give --before/--after dates around a change "
             "(cityshade info FILE shows the time range), or the proposal with --with")
-    result = run("compare", scene_file, *BATCH, "--before", "1950", "--after", "2024", "-o", out)
+    result = run("compare", dated_box_file, *BATCH, "--before", "1950", "--after", "2024",
+                 "-o", out)
     assert error_line(result, 2) == ("cityshade: error: both states are the same city (no "
                                      f"object begins or ends between 1950 and 2024), {hint}")
     undated = tmp_path / "undated.gml"
@@ -338,11 +326,11 @@ def test_compare_of_two_states_that_are_the_same_city_is_refused(scene_file, tmp
     assert not out.exists()
 
 
-def test_compare_refuses_a_folder_another_live_run_holds(scene_file, tmp_path):
+def test_compare_refuses_a_folder_another_live_run_holds(dated_box_file, tmp_path):
     out = tmp_path / "c"
     out.mkdir()
     (out / ".cityshade.lock").write_text("1\n")
-    result = run("compare", scene_file, *BATCH, "--before", "1850", "--after", "1990",
+    result = run("compare", dated_box_file, *BATCH, "--before", "1850", "--after", "1990",
                  "-o", out)
     assert error_line(result, 2) == (f"cityshade: error: {out} is in use by another cityshade "
                                      f"run (process 1); wait for it to end or choose another "

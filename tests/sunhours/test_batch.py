@@ -393,10 +393,15 @@ def test_cli_batch_writes_everything(files, tmp_path):
     manifest = json.loads((out / "manifest.json").read_text())
     assert manifest["status"] == "finished" and manifest["finished_steps"] == list(range(16))
     assert manifest["params"]["tz"] == "Europe/Berlin" and len(manifest["key"]) == 64
-    # The same command again: a finished run keeps no state, so it computes again, the same.
+    # The same command again: the run is complete, nothing is computed; with --overwrite it
+    # computes again (a finished run keeps no state), the same.
     assert not (out / C.STATE_NAME).exists()
-    again = _run("batch", scene_path, *ARGS, "--frames", "--surfaces", "--samples-per-m2",
-                 "0.05", "-o", out, "-v")
+    args = (*ARGS, "--frames", "--surfaces", "--samples-per-m2", "0.05", "-o", out, "-v")
+    again = _run("batch", scene_path, *args)
+    assert again.exit_code == 0 and again.output.splitlines() == [
+        f"{out}: already complete (same request); nothing to do (--overwrite computes it "
+        f"again)"]
+    again = _run("batch", scene_path, *args, "--overwrite")
     assert again.exit_code == 0 and "16 sun positions computed, 0 taken" in again.output
     assert read_exr(out / "sun_hours.exr")[0]["sun_hours"].tobytes() == hours.tobytes()
 
@@ -527,8 +532,9 @@ def test_damaged_state_is_detected_and_its_steps_start_again(files, tmp_path, da
     # Finished: the state served its purpose and is gone, and the manifest names none.
     assert not state.exists() and "state_sha256" not in manifest
     third = _run("batch", scene_path, *ARGS, "-o", out, "-v")
-    assert "16 sun positions computed, 0 taken" in third.output
-    assert "warning" not in third.output and "resuming" not in third.output
+    assert third.exit_code == 0 and third.output.splitlines() == [
+        f"{out}: already complete (same request); nothing to do (--overwrite computes it "
+        f"again)"]
 
 
 def test_run_batch_from_python_resumes_and_refuses_other_parameters(files, tmp_path):
@@ -552,7 +558,10 @@ def test_run_batch_from_python_resumes_and_refuses_other_parameters(files, tmp_p
     assert first.manifest["status"] == "finished" and first.result.units_resumed == 0
     assert json.loads((out / "manifest.json").read_text())["key"] == first.manifest["key"]
     assert not (out / C.STATE_NAME).exists()  # a finished run keeps no state
-    again = R.run_batch(out, scene, request())
+    done = R.run_batch(out, scene, request())  # finished: nothing computed or written
+    assert done.already_complete and done.result is None
+    assert done.manifest == first.manifest and done.written == first.written
+    again = R.run_batch(out, scene, request(), overwrite=True)
     assert again.result.units_resumed == 0 and again.result.units == first.result.units > 0
     assert again.result.hours.tobytes() == first.result.hours.tobytes()
     # Other shadow settings are other parameters: refused, unless overwrite.

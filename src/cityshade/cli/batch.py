@@ -7,16 +7,15 @@ import click
 
 from cityshade.cli.helpfmt import GroupedCommand
 
-from cityshade.cli.options import (camera_options, ground_option, make_camera, parse_size,
-                                   parse_triple, presentation_options, shadow_options,
-                                   time_plan_options)
+from cityshade.cli.options import (camera_options, city_date_option, ground_option,
+                                   make_camera, parse_size, parse_triple, presentation_options,
+                                   shadow_options, time_plan_options)
 
 
 @click.command("batch", cls=GroupedCommand)
 @click.argument("file", type=click.Path(path_type=Path))
 @time_plan_options
-@click.option("--city-date", help="State of the city (default: --date); the city does not "
-              "change during a run.")
+@city_date_option("the first --date day; the city does not change during a run")
 @camera_options("map")
 @shadow_options("exact")
 @ground_option
@@ -38,7 +37,8 @@ from cityshade.cli.options import (camera_options, ground_option, make_camera, p
 @presentation_options
 @click.option("-o", "--output", "outdir", type=click.Path(file_okay=False, path_type=Path),
               required=True, help="Output folder (created; holds manifest.json and the state).")
-@click.option("--overwrite", is_flag=True, help="Discard a run of other parameters in OUTDIR.")
+@click.option("--overwrite", is_flag=True, help="Discard a run of other parameters in OUTDIR; compute a finished run of the same "
+              "parameters again.")
 @click.option("-v", "--verbose", is_flag=True, help="Timings, counts and the sun of each end.")
 def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_text, every_day,
           city_date, camera, eye, target, fov, size, pixel_size, cameras_file, settings, ground,
@@ -46,8 +46,9 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
           no_decorate, no_gis, outdir, overwrite, verbose):
     """Sun-hours of FILE (a .cityshade scene) from --date, each day from --from to --to every
     --every (local time in --tz): sun_hours.exr/.png (+ .tif for the map view), report.html,
-    optional frames, and with --surfaces surfaces.csv and results.gpkg in OUTDIR. Re-running the same command after an interruption
-    continues where it stopped."""
+    optional frames, and with --surfaces surfaces.csv and results.gpkg in OUTDIR. Running the
+    same command again continues an interrupted run where it stopped, and does nothing for a
+    finished one."""
     import dataclasses
     import time
 
@@ -112,6 +113,10 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     with Progress("tasks (tile × sun positions)" if request.tiled else "sun positions") as bar:
         run = run_batch(outdir, scene, request, overwrite=overwrite, on_plan=bar.plan,
                         on_step=bar.step, on_note=note)
+    if run.already_complete:
+        click.echo(f"{outdir}: already complete (same request); nothing to do "
+                   f"(--overwrite computes it again)")
+        return
     for warning in run.result.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
     if verbose:

@@ -8,7 +8,8 @@ import click
 
 from cityshade.cli.helpfmt import GroupedCommand
 
-from cityshade.cli.options import crs_option, ground_option, map_extent_options, shadow_options
+from cityshade.cli.options import (city_date_option, crs_option, ground_option,
+                                   map_extent_options, shadow_options)
 
 
 class _Bar:
@@ -55,8 +56,10 @@ def _int_list(text: str, what: str) -> tuple[int, ...]:
               help="Comma list: overview, map, or camera presets (render --help lists them).")
 @click.option("--sun", "sun_text", help="Sun positions 'AZ,EL;AZ,EL' in degrees (azimuth "
               "clockwise from true north). Default: '135,45;240,15'.")
-@click.option("--date", "date_text", help="City state (YYYY[-MM-DD]); with --times, the day "
-              "of the sun positions (default: today).")
+@click.option("--date", "date_text", help="Day of the --times suns, YYYY-MM-DD (default: "
+              "today). Without --times (the suns given by --sun) the short form of "
+              "--city-date: --date 1850.")
+@city_date_option("the --times day, else today")
 @click.option("--times", help="Local times HH:MM,HH:MM of --date: suns computed by SPA.")
 @click.option("--tz", help="IANA time zone of --times, e.g. Europe/Berlin; local-mean or "
               "local-apparent: solar time at the model's longitude.")
@@ -82,8 +85,8 @@ def _int_list(text: str, what: str) -> tuple[int, ...]:
                    "without --stress.")
 @crs_option
 @map_extent_options
-def evaluate(file, views, sun_text, date_text, times, tz, settings, sizes, size, pixel_size,
-             cameras_file, ground, repeat, stress, quick, output, crs):
+def evaluate(file, views, sun_text, date_text, city_date, times, tz, settings, sizes, size,
+             pixel_size, cameras_file, ground, repeat, stress, quick, output, crs):
     """Error of every shadow technique against the exact ray-traced shadows of FILE (a
     .cityshade scene, a tiled cache folder or a CityGML file), and its run time, per view,
     sun and map size."""
@@ -119,11 +122,14 @@ def evaluate(file, views, sun_text, date_text, times, tz, settings, sizes, size,
     eval_settings = dataclasses.replace(settings.evaluate, **changes)
     width, height = parse_size(size)
     day = date_text or dt.date.today().isoformat()
-    from cityshade.cli.options import (settings_for_source, solar_placeholder,
-                                       solar_zone_of_scene)
+    from cityshade.cli.options import (city_of_short_date, settings_for_source,
+                                       solar_placeholder, solar_zone_of_scene)
 
-    city_days = parse_user_date(day.split("T")[0] if times else day,
-                                solar_placeholder(tz)).city_days
+    if times:
+        city_text = city_date or day.split("T")[0]
+    else:  # no sun to date: --date is the city's state (short for --city-date)
+        city_text = city_of_short_date(date_text, city_date, tz, "--times") or day
+    city_days = parse_user_date(city_text, solar_placeholder(tz)).city_days
     scene = with_vegetation(load_or_build_scene(file, settings_for_source(file, crs, settings)),
                             settings.vegetation)
     tz = solar_zone_of_scene(tz, scene)

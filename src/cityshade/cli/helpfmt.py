@@ -12,10 +12,11 @@ import click
 
 #: Heading → parameter names (click's ``param.name``), in help order.
 SECTIONS: dict[str, tuple[str, ...]] = {
-    "City state": ("date_text", "city_date", "before_text", "after_text", "proposal",
+    "City state": ("city_date", "before_text", "after_text", "proposal",
                    "mesh_units", "up_axis", "place_text", "trees", "trees_crs",
                    "lod", "theme", "time_source", "time_attribute", "closure_surfaces"),
-    "Sun and time": ("instant_date", "time_text", "tz", "sun_azimuth", "sun_elevation", "from_text",
+    "Sun and time": ("date_text", "instant_date", "time_text", "tz", "sun_azimuth",
+                     "sun_elevation", "from_text",
                      "to_text", "every_text", "days", "to_date_text", "from_date", "to_date", "year", "days_text",
                      "times_text", "every_day", "times", "sun_text",
                      "no_refraction"),
@@ -50,6 +51,8 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
         "-o a.exr --png a.png",
         "cityshade render city.cityshade --date 2025-06-21 --time 15:00 --tz Europe/Berlin "
         "--camera map --pixel-size 0.5 -o m.exr --mask m.png --geotiff m.tif --decorate",
+        "cityshade render city.cityshade --city-date 1990 --date 2025-06-21 --time 15:00 "
+        "--tz Europe/Berlin --png then.png    # the city of 1990 in a 2025 sun; no EXR",
     ),
     "batch": (
         "cityshade batch city.cityshade --date 2025-06-21 --from 05:00 --to 21:00 "
@@ -86,6 +89,8 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
         "--year 2025 --tz Europe/Berlin -o study",
         "cityshade study city.cityshade --before 1750 --after 1990 --times 09:00,12:00,15:00 "
         "--tz local-apparent -o study1750",
+        "cityshade study city.cityshade --with proposal.gml --city-date 2024 --year 2025 "
+        "--tz Europe/Berlin -o study2024",
     ),
     "evaluate": (
         "cityshade evaluate city.cityshade --views overview,map --sun \"135,45;240,15\" "

@@ -550,13 +550,70 @@ class ProgressLines:
                        f"{eta})" + (f" {what}" if what else ""), err=True)
 
 
+# --- the city's state and the sun's day: one meaning in every command --------------------------
+# --city-date is the state of the city, --date the sun's day (docs/DESIGN.md §17). Where the
+# sun can be given as angles (render, evaluate --sun), a --date without a time of day has no
+# sun to date, so it keeps its old meaning as the short form of --city-date.
+
+def city_date_option(default: str):
+    """``--city-date``: the city's state, the same words in every command."""
+    return click.option("--city-date", help=f"State of the city: a year or date, e.g. 1850 or "
+                        f"1850-06-21 (default: {default}).")
+
+
+def city_of_short_date(date_text: str | None, city_date: str | None, tz,
+                       time_option: str) -> str | None:
+    """The city's state when ``--date`` carries no time of day and the sun is given as angles:
+    ``--date`` is then the short form of ``--city-date``; both given with different states is
+    a contradiction. ``time_option`` names what makes ``--date`` the sun's day (``--time``).
+
+    Raises
+    ------
+    UsageError
+        ``--date`` and ``--city-date`` name different states of the city.
+    """
+    from cityshade.errors import UsageError
+    from cityshade.geo.temporal import parse_user_date
+
+    if date_text is None or city_date is None:
+        return city_date if date_text is None else date_text
+    zone = solar_placeholder(tz)
+    if parse_user_date(date_text, zone).city_days != parse_user_date(city_date, zone).city_days:
+        raise UsageError(f"--date {date_text} without a time of day is the city's state (short "
+                         f"for --city-date), and --city-date says {city_date}: give one of "
+                         f"them, or {time_option} to make --date the sun's day")
+    return city_date
+
+
+def _with_city_date(kwargs) -> None:
+    """``--city-date`` of compare and study: the one state a ``--with`` proposal is added to,
+    that is ``--before`` (refused for two dates of one model, or beside another --before)."""
+    from cityshade.errors import UsageError
+    from cityshade.geo.temporal import parse_user_date
+
+    city_date = kwargs.pop("city_date")
+    if city_date is None:
+        return
+    if kwargs.get("proposal") is None:
+        raise UsageError("--city-date is the state of the city that --with adds a proposal "
+                         "to; two states of one model are --before and --after")
+    before = kwargs.get("before_text")
+    if before is not None and parse_user_date(before).city_days != \
+            parse_user_date(city_date).city_days:
+        raise UsageError(f"--city-date {city_date} and --before {before} both give the state "
+                         f"the proposal is added to, and they differ: give one of them")
+    kwargs["before_text"] = city_date
+
+
 # --- the time plan of batch and compare -------------------------------------------------------
 
 def time_plan_options(func):
     """``--date --from --to --every --tz --days --to-date --every-day`` (see
     :func:`cityshade.sunhours.plan.plan_steps`)."""
     options = [
-        click.option("--date", "date_text", required=True, help="First day, YYYY-MM-DD."),
+        click.option("--date", "date_text", required=True, help="First day of the sun "
+                     "positions, YYYY-MM-DD; the city's state too unless --city-date (or "
+                     "--before) says otherwise."),
         click.option("--from", "from_text", default="00:00", show_default=True,
                      help="Local start time of each day, HH:MM."),
         click.option("--to", "to_text", default="24:00", show_default=True,
@@ -577,11 +634,23 @@ def time_plan_options(func):
 
 
 def states_options(before_default: str, meshes: bool = False):
-    """``--before --after --with``: the two states of compare and study
+    """``--before --after --with --city-date``: the two states of compare and study
     (:class:`cityshade.planning.run.CompareStates`); ``before_default`` says what a missing
-    ``--before`` means; ``meshes``: the command has the mesh placement options."""
-    def decorate(func):
+    ``--before`` means; ``meshes``: the command has the mesh placement options. The command
+    does not receive ``--city-date``: it arrives as ``before_text`` (:func:`_with_city_date`)."""
+    import functools
+
+    def decorate(command):
+        @functools.wraps(command)
+        def func(*args, **kwargs):
+            _with_city_date(kwargs)
+            return command(*args, **kwargs)
+
         for option in reversed([
+            click.option("--city-date", help=f"State of the city that --with adds the "
+                         f"proposal to (the same as --before there; default: "
+                         f"{before_default}); two dates of one model are --before and "
+                         f"--after."),
             click.option("--before", "before_text", help=f"State of the city before (date or "
                          f"year); default: {before_default}."),
             click.option("--after", "after_text", help="State of the city after (date or "

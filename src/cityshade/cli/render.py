@@ -7,27 +7,31 @@ import click
 
 from cityshade.cli.helpfmt import GroupedCommand
 
-from cityshade.cli.options import (camera_options, ground_option, make_camera, parse_size,
-                                   parse_triple, shadow_options)
+from cityshade.cli.options import (camera_options, city_date_option, ground_option,
+                                   make_camera, parse_size, parse_triple, shadow_options)
 
 
 @click.command("render", cls=GroupedCommand)
 @click.argument("file", type=click.Path(path_type=Path))
-@click.option("--date", "date_text", help="City state: 1850, 1850-06-21 or 1850-06-21T15:00+01:00 "
-              "(default: today).")
+@click.option("--date", "date_text", help="Day of the sun for --time, YYYY-MM-DD (default: "
+              "today), or the sun's instant 2025-06-21T15:00+02:00. Without a time of day "
+              "(the sun given by --sun-azimuth/--sun-elevation) the short form of --city-date: "
+              "--date 1850.")
+@city_date_option("the sun's instant, else today")
 @click.option("--tz", help="IANA time zone for a --date without UTC offset, e.g. Europe/Berlin; "
               "local-mean or local-apparent: mean or true solar time at the model's longitude "
               "(for historical dates).")
-@click.option("--time", "time_text", help="Local time HH:MM[:SS] combined with a --date day "
-              "(the sun is then computed by SPA for the model's place).")
+@click.option("--time", "time_text", help="Local time HH:MM[:SS] of the --date day: the sun "
+              "is computed by SPA for the model's place at that instant.")
 @click.option("--no-refraction", is_flag=True, help="Geometric sun elevation (SPA without "
               "atmospheric refraction).")
 @click.option("--sun-azimuth", type=float, help="Degrees clockwise from true north.")
 @click.option("--sun-elevation", type=float, help="Degrees above the horizon.")
 @camera_options("overview")
 @shadow_options("exact")
-@click.option("-o", "--output", type=click.Path(dir_okay=False, path_type=Path), required=True,
-              help="EXR with colour, shadow, Z, normals, primid, objid and provenance.")
+@click.option("-o", "--output", type=click.Path(dir_okay=False, path_type=Path),
+              help="EXR with colour, shadow, Z, normals, primid, objid and provenance "
+              "(optional beside --png, --mask or --geotiff).")
 @click.option("--png", type=click.Path(dir_okay=False, path_type=Path), help="sRGB picture.")
 @click.option("--mask", type=click.Path(dir_okay=False, path_type=Path),
               help="8-bit shadow mask PNG: 255 sun, 0 shadow, 128 no surface.")
@@ -42,13 +46,13 @@ from cityshade.cli.options import (camera_options, ground_option, make_camera, p
               "goes in strips without it).")
 @click.option("--no-sky", is_flag=True, help="Black background instead of the sky gradient.")
 @click.option("-v", "--verbose", is_flag=True, help="Stage timings and technique diagnostics.")
-def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_elevation, camera,
-           eye, target, fov, size, pixel_size, cameras_file, settings, output, png, mask,
+def render(file, date_text, city_date, tz, time_text, no_refraction, sun_azimuth, sun_elevation,
+           camera, eye, target, fov, size, pixel_size, cameras_file, settings, output, png, mask,
            geotiff, decorate, ground, strip_rows, no_sky, verbose):
-    """Render FILE (a .cityshade scene) as the city stood on --date, lit by the sun at
-    --sun-azimuth/--sun-elevation or, for a --date with a time, by the sun computed for the
-    model's place (NREL SPA), from a perspective camera or as a top-down map."""
-    import datetime as dt
+    """Render FILE (a .cityshade scene) as the city stood on --city-date, lit by the sun at
+    --sun-azimuth/--sun-elevation or by the sun computed for the model's place (NREL SPA) at
+    --date and --time, from a perspective camera or as a top-down map. Writes the EXR (-o)
+    and any of --png, --mask, --geotiff."""
     import time
 
     from cityshade.geo.temporal import parse_user_date
@@ -60,6 +64,8 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     from cityshade.shadows import describe
 
     technique = describe(settings.shadows.technique)  # unknown names fail before any work
+    if output is None and png is None and mask is None and geotiff is None:
+        raise UsageError("nothing to write: give -o FILE.exr, --png, --mask or --geotiff")
     if (sun_azimuth is None) != (sun_elevation is None):
         raise UsageError("give both --sun-azimuth and --sun-elevation")
     if sun_azimuth is not None:
@@ -78,19 +84,18 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
         raise UsageError("give both --eye and --target, or neither")
     parse_triple(eye, "--eye"), parse_triple(target, "--target")  # fail early
     parse_size(size, settings.shadows.technique)
-    date_text = _with_time(date_text or dt.date.today().isoformat(), time_text)
-    user_date = parse_user_date(date_text, solar_placeholder(tz))  # fails early on bad text
-    if sun_azimuth is None and user_date.instant_utc is None:
-        raise UsageError("no sun position: give --sun-azimuth and --sun-elevation (degrees), "
-                         "or a --date with a time of day (e.g. 2024-06-21T15:00+02:00, or "
-                         "--time 15:00 --tz Europe/Berlin)")
+    sun_date, city_text = _dates(date_text, city_date, time_text, tz, sun_azimuth is not None)
+    label = _label(sun_date, city_text, city_date)
     check_frame_outputs(None, exr=output, png=png, mask=mask, georef=geotiff)  # before any work
     t0 = time.perf_counter()
     scene = open_scene(file)
     load_s = time.perf_counter() - t0
-    user_date = reparse_solar_date(user_date, tz, scene)
-    for warning in user_date.warnings:
-        click.echo(f"cityshade: warning: {warning}", err=True)
+    if sun_date is not None:
+        sun_date = reparse_solar_date(sun_date, tz, scene)
+        for warning in sun_date.warnings:
+            click.echo(f"cityshade: warning: {warning}", err=True)
+    city_days = (reparse_solar_date(parse_user_date(city_text, solar_placeholder(tz)), tz,
+                                    scene) if city_text is not None else sun_date).city_days
     cam = make_camera(scene, camera, eye, target, fov, size, pixel_size, cameras_file)
     check_frame_outputs(cam.kind, exr=output, png=png, mask=mask, georef=geotiff)  # the view
     if decorate and cam.kind != "map":
@@ -98,8 +103,8 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
                          "has no single scale or north")
     strip_rows_for(cam, technique, settings.shadows, strip_rows)  # refused before any work
     scene = with_vegetation(scene_for_camera(scene, cam, technique), settings.vegetation)
-    sun = _sun(scene, sun_azimuth, sun_elevation, user_date, settings, no_refraction)
-    frame = render_frame(scene, cam, user_date.city_days, sun, technique, settings.shadows,
+    sun = _sun(scene, sun_azimuth, sun_elevation, sun_date, settings, no_refraction)
+    frame = render_frame(scene, cam, city_days, sun, technique, settings.shadows,
                          sky=not no_sky, ground=ground, measure=verbose, strip_rows=strip_rows)
     for warning in frame.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
@@ -107,7 +112,7 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
 
     forget_casters(scene)  # this process renders one frame: the writers need the memory
     t1 = time.perf_counter()
-    written = write_frame(frame, scene, date_text, exr=output, png=png, mask=mask, georef=geotiff,
+    written = write_frame(frame, scene, label, exr=output, png=png, mask=mask, georef=geotiff,
                           decorate=decorate)
     if geotiff is not None:
         from cityshade.cli.options import warn_geotiff_without_crs
@@ -119,7 +124,53 @@ def render(file, date_text, tz, time_text, no_refraction, sun_azimuth, sun_eleva
     click.echo(" ".join(str(p) for p in written))
 
 
-def _sun(scene, sun_azimuth, sun_elevation, user_date, settings, no_refraction):
+def _dates(date_text, city_date, time_text, tz, angles: bool):
+    """(the sun's date or None, the city's state text or None: the sun's instant) of
+    --date, --time and --city-date; a --date without a time of day is the city's state
+    (:func:`cityshade.cli.options.city_of_short_date`). Every text is read here, before any
+    work.
+
+    Raises
+    ------
+    UsageError
+        No sun, a sun both from a date and from angles, contradicting states, bad text.
+    """
+    import datetime as dt
+
+    from cityshade.cli.options import city_of_short_date, solar_placeholder
+    from cityshade.errors import UsageError
+    from cityshade.geo.temporal import parse_user_date
+
+    if time_text is not None:
+        date_text = _with_time(date_text or dt.date.today().isoformat(), time_text)
+    sun_date = parse_user_date(date_text, solar_placeholder(tz)) if date_text else None
+    city_text = city_date
+    if sun_date is not None and sun_date.instant_utc is None:
+        city_text, sun_date = city_of_short_date(date_text, city_date, tz, "--time HH:MM"), None
+    if city_text is not None:
+        parse_user_date(city_text, solar_placeholder(tz))  # fails early on bad text
+    if sun_date is not None and angles:
+        raise UsageError(f"--date {date_text} has a time of day, for which the sun is "
+                         f"computed, and --sun-azimuth/--sun-elevation give it: use one or the "
+                         f"other (the city's state alone is --city-date)")
+    if sun_date is None and not angles:
+        raise UsageError("no sun position: give --sun-azimuth and --sun-elevation (degrees), "
+                         "or a --date with a time of day (e.g. 2024-06-21T15:00+02:00, or "
+                         "--time 15:00 --tz Europe/Berlin)")
+    if sun_date is None and city_text is None:
+        city_text = dt.date.today().isoformat()
+    return sun_date, city_text
+
+
+def _label(sun_date, city_text, city_date) -> str:
+    """The date a picture's title and provenance name: the sun's, and the city's state when
+    --city-date sets it apart."""
+    if sun_date is None:
+        return city_text
+    return sun_date.text if city_date is None else f"{sun_date.text} (city {city_date})"
+
+
+def _sun(scene, sun_azimuth, sun_elevation, sun_date, settings, no_refraction):
     """The sun of the flags: the given angles, else SPA at the model's place for the date's
     instant."""
     import dataclasses
@@ -134,7 +185,7 @@ def _sun(scene, sun_azimuth, sun_elevation, user_date, settings, no_refraction):
     spa = settings.sun
     if no_refraction:
         spa = dataclasses.replace(spa, refraction=False)
-    return sun_from_instant(user_date.instant_utc, scene.crs, scene.origin_m, spa)
+    return sun_from_instant(sun_date.instant_utc, scene.crs, scene.origin_m, spa)
 
 
 def _report(scene, frame, timings: dict[str, float]) -> None:

@@ -8,16 +8,18 @@ import click
 
 from cityshade.cli.helpfmt import GroupedCommand
 
-from cityshade.cli.options import (camera_options, ground_option, make_camera, parse_size,
-                                   parse_triple, presentation_options, shadow_options)
+from cityshade.cli.options import (camera_options, city_date_option, ground_option,
+                                   make_camera, parse_size, parse_triple, presentation_options,
+                                   shadow_options)
 
 
 @click.command("sky", cls=GroupedCommand)
 @click.argument("file", type=click.Path(path_type=Path))
-@click.option("--city-date", help="State of the city, YYYY-MM-DD (default: today).")
+@city_date_option("today")
 @camera_options("map")
-@shadow_options("izb", technique_help="Exact technique tracing the sky and the suns: izb "
-                "(default) or raytrace (the same answer).", map_px=False, tunables=False)
+@shadow_options("exact", technique_help="Exact technique tracing the sky and the suns: exact "
+                "(default: izb or raytrace, whichever is faster for the run), izb or raytrace "
+                "(the same answer).", map_px=False, tunables=False)
 @ground_option
 @click.option("--sky", "sky_name", default="reinhart2305", show_default=True,
               help="Sky directions: tregenza (145 patches), reinhart577, reinhart2305, or "
@@ -77,7 +79,6 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
     import datetime as dt
     import time
 
-    from cityshade.cli.batch import parse_day
     from cityshade.cli.options import ProgressLines
     from cityshade.errors import UsageError
     from cityshade.geo.temporal import parse_user_date
@@ -115,12 +116,11 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
         raise UsageError("give both --eye and --target, or neither")
     parse_triple(eye, "--eye"), parse_triple(target, "--target"), parse_size(size)
     city = parse_user_date(city_date or dt.date.today().isoformat())
-    if city_date:
-        parse_day(city_date, "--city-date")
     if season is None:   # auto has no date for a view factor: in leaf, the most shade
         season = "leaf-off" if settings.vegetation.season == "leaf_off" else "leaf-on"
     request = SkyRequest(sky=sky_name, technique=settings.shadows.technique, model=sky_model,
-                         albedo=albedo, svf=svf, vsc=vsc, season=season.replace("-", "_"), ground=ground, t_days=city.city_days,
+                         albedo=albedo, svf=svf, vsc=vsc, season=season.replace("-", "_"),
+                         ground=ground, t_days=city.city_days,
                          spa=settings.sun, samples_per_m2=density if surfaces else None,
                          decorate=not no_decorate, gis=not no_gis,
                          camera=None if no_map else "map")

@@ -31,8 +31,8 @@ class SkyRequest:
     When
         ``t_days`` (the city's state, days since 1970-01-01 UTC).
     How
-        ``sky`` (:func:`cityshade.light.sky.named_sky`), ``technique`` (an exact one: its
-        engine traces the sky and the suns), ``spa`` (sun settings).
+        ``sky`` (:func:`cityshade.light.sky.named_sky`), ``technique`` (an exact one, default
+        ``exact`` as in every command: its engine traces the sky and the suns), ``spa`` (sun settings).
     What
         ``svf`` (the sky view factor's outputs), ``vsc`` (the vertical sky component of
         every receiver on its own plane,
@@ -56,7 +56,7 @@ class SkyRequest:
     ground: str | None = None
     t_days: float = 0.0
     sky: str = "reinhart2305"
-    technique: str = "izb"
+    technique: str = "exact"
     spa: Any = None
     svf: bool = True
     vsc: bool = False

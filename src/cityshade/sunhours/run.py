@@ -2,9 +2,11 @@
 
 :func:`run_batch` hashes the request's identity (:func:`batch_params`, :func:`params_key`) into
 ``OUTDIR/manifest.json``; running again with the same request continues from the saved state
-(``state.npz``) without redoing finished sun positions and gives a bit-identical result; other
-parameters are refused unless ``overwrite``. The untiled run is
-:func:`cityshade.sunhours.accumulate.compute`, the tiled, distributed and monthly one
+(``state.npz``) without redoing finished sun positions and gives a bit-identical result; a run
+that finished with the same request and left all its outputs is not computed again
+(:attr:`BatchRun.already_complete`); other parameters are refused unless ``overwrite``. The
+untiled run is :func:`cityshade.sunhours.accumulate.compute`, the tiled, distributed and
+monthly one
 :func:`cityshade.sunhours.tiled.run_tiled`; the outputs are written by
 :mod:`cityshade.sunhours.outputs`.
 """
@@ -49,13 +51,25 @@ class BatchRun:
         One per step.
     write_s : float
         Time spent writing the outputs.
+    already_complete : bool
+        The folder held this very run, finished, with its outputs: nothing was computed or
+        written (``result`` is None, ``suns`` empty, ``written`` the outputs found).
     """
 
-    result: SunHours
+    result: SunHours | None
     written: list[Path]
     manifest: dict[str, Any]
     suns: list
     write_s: float
+    already_complete: bool = False
+
+
+def _relative(path: Path, outdir: Path) -> str:
+    """``path`` as the manifest names it: relative to the run's folder."""
+    try:
+        return Path(path).relative_to(outdir).as_posix()
+    except ValueError:
+        return Path(path).name
 
 
 def _iso(instant: datetime) -> str:
@@ -119,6 +133,25 @@ def _open_state(outdir: Path, params: dict[str, Any], overwrite: bool):
         else:
             state.sha256 = found
     return state, warning
+
+
+def _finished_run(outdir: Path, params: dict[str, Any], overwrite: bool) -> BatchRun | None:
+    """The run ``outdir`` already holds when it finished with the same request identity
+    (:func:`params_key`) and version and its outputs (and frames) are all there; None
+    otherwise (``overwrite`` computes it again). A run of other parameters is left to
+    :func:`_open_state`, which refuses it."""
+    if overwrite:
+        return None
+    old = read_manifest(outdir)
+    if old is None or old.get("status") != "finished" or old.get("key") != params_key(params) \
+            or old.get("cityshade_version") != __version__:
+        return None
+    written = [outdir / name for name in (old.get("summary") or {}).get("outputs") or []]
+    if not written or not all(p.is_file() for p in written) or \
+            params.get("frames") and not (outdir / "frames").is_dir():
+        return None
+    return BatchRun(result=None, written=written, manifest=old, suns=[], write_s=0.0,
+                    already_complete=True)
 
 
 def _check_memory(request: SunHoursRequest) -> None:
@@ -243,7 +276,8 @@ def run_batch(outdir, scene: "Scene", request: SunHoursRequest, *, overwrite: bo
         writes ``surfaces.csv``; ``tile_px``, ``scheduler`` (needs ``scene_path``) and
         ``step_month`` run over tiles (:mod:`cityshade.sunhours.tiled`), with the same numbers.
     overwrite : bool
-        Discard a run of other parameters (or a state without manifest) in ``outdir``.
+        Discard a run of other parameters (or a state without manifest) in ``outdir``; a
+        finished run of this request is computed again.
     on_plan : callable(units_to_compute), optional
         Called once the sun positions are known (progress bars).
     on_step : callable(units_done, units_total, unit), optional
@@ -254,7 +288,9 @@ def run_batch(outdir, scene: "Scene", request: SunHoursRequest, *, overwrite: bo
         of a run that ended without removing it.
 
     The folder is locked while the run lasts (:func:`cityshade.util.folder_lock`); the saved
-    state is removed once the outputs are written (it is kept only for a resume).
+    state is removed once the outputs are written (it is kept only for a resume). A folder
+    that holds this run finished, its outputs all there, is returned as it is
+    (:attr:`BatchRun.already_complete`): nothing is computed or written.
 
     Raises
     ------
@@ -285,6 +321,9 @@ def _run_locked(outdir: Path, scene, request: SunHoursRequest, params: dict[str,
     from cityshade.sunhours.plan import plan_units
     from cityshade.util import make_folder, plural
 
+    finished_run = _finished_run(outdir, params, overwrite)
+    if finished_run is not None:
+        return finished_run
     state, state_warning = _open_state(outdir, params, overwrite)
     steps = request.steps
     manifest: dict[str, Any] = {
@@ -336,7 +375,8 @@ def _run_locked(outdir: Path, scene, request: SunHoursRequest, params: dict[str,
         "steps_same_sun": result.steps_duplicate, "sun_positions": result.units,
         "sun_positions_resumed": result.units_resumed, "hours_total": result.hours_total,
         "hours_sun_up": result.hours_sun_up,
-        "outputs": [p.name for p in written],
+        # Relative to the folder (monthly/...): a run again checks they are all there.
+        "outputs": [_relative(p, outdir) for p in written],
         "timings_s": {**result.timings_s, "write_s": write_s},
     }
     write_manifest(outdir, manifest)
