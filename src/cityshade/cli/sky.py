@@ -7,7 +7,6 @@ from pathlib import Path
 import click
 
 from cityshade.cli.helpfmt import GroupedCommand
-
 from cityshade.cli.options import (camera_options, city_date_option, ground_option,
                                    make_camera, parse_size, parse_triple, presentation_options,
                                    shadow_options)
@@ -91,24 +90,8 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
     from cityshade.util import check_outputs
 
     t_start = time.perf_counter()
-    if irradiance and weather is None:
-        raise UsageError("--irradiance needs --weather FILE (an .epw, TMY3 .csv or TMY2 .tm2)")
-    if (instant_date is None) != (times_text is None):
-        raise UsageError("give --date and --times together (the instants of the irradiance "
-                         "in W/m²)")
-    if times_text is not None and weather is None:
-        raise UsageError("--times needs --weather FILE (an .epw, TMY3 .csv or TMY2 .tm2)")
-    if tz is not None and times_text is None:
-        raise UsageError("--tz is the time zone of --times; give --date and --times")
-    clocks = _clocks(times_text) if times_text is not None else ()
-    day = parse_day(instant_date, "--date") if instant_date is not None else None
-    if no_map and not surfaces:
-        raise UsageError("--no-map leaves nothing to compute without --surfaces")
-    if not svf and not vsc and not irradiance and not clocks:
-        raise UsageError("nothing to write: --no-svf without --vsc, --irradiance or --times")
-    if weather is not None and not irradiance and not clocks:
-        click.echo("cityshade: warning: --weather without --irradiance or --times: the "
-                   "weather file is not read", err=True)
+    clocks, day = _check_outputs_asked(irradiance, weather, instant_date, times_text, tz,
+                                       no_map, surfaces, svf, vsc)
     density = samples_per_m2 if samples_per_m2 is not None else settings.batch.samples_per_m2
     if surfaces:
         SampleSettings(samples_per_m2=density)
@@ -161,6 +144,34 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
                    f"per receiver", err=True)
     click.echo(" ".join(str(p) for p in written))
 
+
+
+def _check_outputs_asked(irradiance, weather, instant_date, times_text, tz, no_map, surfaces,
+                         svf, vsc):
+    """The options that go together checked before any file is read; (clock times of
+    --times, the --date day or None)."""
+    from cityshade.cli.batch import parse_day
+    from cityshade.errors import UsageError
+
+    if irradiance and weather is None:
+        raise UsageError("--irradiance needs --weather FILE (an .epw, TMY3 .csv or TMY2 .tm2)")
+    if (instant_date is None) != (times_text is None):
+        raise UsageError("give --date and --times together (the instants of the irradiance "
+                         "in W/m²)")
+    if times_text is not None and weather is None:
+        raise UsageError("--times needs --weather FILE (an .epw, TMY3 .csv or TMY2 .tm2)")
+    if tz is not None and times_text is None:
+        raise UsageError("--tz is the time zone of --times; give --date and --times")
+    clocks = _clocks(times_text) if times_text is not None else ()
+    day = parse_day(instant_date, "--date") if instant_date is not None else None
+    if no_map and not surfaces:
+        raise UsageError("--no-map leaves nothing to compute without --surfaces")
+    if not svf and not vsc and not irradiance and not clocks:
+        raise UsageError("nothing to write: --no-svf without --vsc, --irradiance or --times")
+    if weather is not None and not irradiance and not clocks:
+        click.echo("cityshade: warning: --weather without --irradiance or --times: the "
+                   "weather file is not read", err=True)
+    return clocks, day
 
 def _clocks(text: str) -> tuple[int, ...]:
     """``09:00,12:00`` → seconds after midnight, sorted, no repeats (before 24:00)."""

@@ -260,8 +260,7 @@ def hour_days(sun_times) -> np.ndarray:
 
 def irradiation(scene, points, normals, weather, directions, shares, *,
                 hours=None, t_days: float = 0.0, engine: str = "izb", model: str = "perez",
-                albedo: float = DEFAULT_ALBEDO, progress=None,
-                shares_leafless=None, sun_times=None) -> Irradiation:
+                albedo: float = DEFAULT_ALBEDO, progress=None) -> Irradiation:
     """Energy per m² of every receiver over the weather hours (see the module's docstring).
 
     Parameters
@@ -272,16 +271,15 @@ def irradiation(scene, points, normals, weather, directions, shares, *,
     weather : Weather
     directions : (H, 3) float64
         The sun of every weather hour (:func:`cityshade.light.sunlight.weather_suns`).
-    shares : pair of (N,) float64
+    shares : pair of (N,) float64, or {True: pair, False: pair}
         The sky share and horizon share of every receiver (:func:`sky_shares`; ones: no
-        obstruction of the sky); with vegetation, those of its crowns in leaf.
-    shares_leafless : pair of (N,) float64, optional
-        The same with the deciduous crowns leafless (``sky_shares(vis, leaf=False)``): an
-        hour out of leaf (the ``[vegetation]`` settings at the hour's UTC date) takes them.
-        None: ``shares`` for every hour.
-    sun_times : pandas.DatetimeIndex, optional
-        The instant of every record's sun (``directions``), for the extraterrestrial DNI and
-        the leaf state; default ``weather.sun_times`` (the middle of each hour).
+        obstruction of the sky). With vegetation, a mapping by leaf state: True those with
+        the crowns in leaf, False with the deciduous crowns leafless (``sky_shares(vis,
+        leaf=False)``); an hour takes the pair of its leaf state (the ``[vegetation]``
+        settings at the hour's UTC date). A plain pair serves every hour.
+        The instant of every record's sun (``directions``: the extraterrestrial DNI, the leaf
+        state) is ``weather.sun_times`` (the middle of each hour, or the instants a record
+        was taken for).
     hours : (H,) bool, optional
         Hours to sum (default all: the file's year).
     t_days : float
@@ -307,17 +305,16 @@ def irradiation(scene, points, normals, weather, directions, shares, *,
     pts = np.ascontiguousarray(points, np.float64).reshape(-1, 3)
     nrm = np.ascontiguousarray(normals, np.float64).reshape(-1, 3)
     tilt, azimuth, inverse = plane_angles(nrm)
-    times = weather.sun_times if sun_times is None else sun_times
+    times = weather.sun_times
     inputs = hourly_inputs(times, directions)
     use = np.ones(weather.n_hours, bool) if hours is None else np.asarray(hours, bool)
     use &= (weather.ghi_w_m2 > 0.0) | (weather.dni_w_m2 > 0.0) | (weather.dhi_w_m2 > 0.0)
     todo = np.flatnonzero(use)
     sums = np.zeros((len(pts), 3))
     receivers = SurfaceReceivers(pts, nrm) if len(pts) else None
-    share, hshare = (np.ascontiguousarray(s, np.float64) for s in shares)
-    leafless = share, hshare
-    if shares_leafless is not None:
-        leafless = tuple(np.ascontiguousarray(s, np.float64) for s in shares_leafless)
+    on, off = (shares[True], shares[False]) if isinstance(shares, dict) else (shares, shares)
+    share, hshare = (np.ascontiguousarray(s, np.float64) for s in on)
+    leafless = tuple(np.ascontiguousarray(s, np.float64) for s in off)
     days = hour_days(times)
     from cityshade.geometry.vegetation import scene_vegetation, vegetation_settings
 
@@ -349,7 +346,7 @@ def irradiation(scene, points, normals, weather, directions, shares, *,
 
 
 def irradiance_at(scene, points, normals, weather, instants, directions, shares, *,
-                  shares_leafless=None, t_days: float = 0.0, engine: str = "izb",
+                  t_days: float = 0.0, engine: str = "izb",
                   model: str = "perez", albedo: float = DEFAULT_ALBEDO) -> np.ndarray:
     """(K, N, 3) W/m² (direct, diffuse, reflected) of every receiver at K instants.
 
@@ -362,18 +359,19 @@ def irradiance_at(scene, points, normals, weather, instants, directions, shares,
     """
     import pandas as pd
 
+    import dataclasses
+
     rows = weather.hour_containing(instants)
-    records = weather.take(rows)
     times = pd.DatetimeIndex([pd.Timestamp(t) for t in instants]).tz_convert(
         weather.hour_end.tz)
+    records = dataclasses.replace(weather.take(rows), sun_at=times)
     dirs = np.ascontiguousarray(directions, np.float64).reshape(-1, 3)
     out = np.zeros((len(rows), len(np.asarray(points).reshape(-1, 3)), 3))
     for k in range(len(rows)):
         one = np.zeros(len(rows), bool)
         one[k] = True
         irr = irradiation(scene, points, normals, records, dirs, shares, hours=one,
-                          t_days=t_days, engine=engine, model=model, albedo=albedo,
-                          shares_leafless=shares_leafless, sun_times=times)
+                          t_days=t_days, engine=engine, model=model, albedo=albedo)
         # Wh/m² of one hour at a constant W/m² (the sums' unit is kWh): back to W/m².
         out[k] = np.stack([irr.direct_kwh_m2, irr.diffuse_kwh_m2, irr.reflected_kwh_m2],
                           axis=1) * 1000.0

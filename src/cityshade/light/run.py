@@ -224,6 +224,7 @@ def compute_sky(scene, request: SkyRequest, *, progress=None) -> SkyResult:
         warning = scene_location_warning(request.weather, scene)
         if warning:
             warnings.append(warning)
+    shares_by_leaf = shares if leafless is None else {True: shares, False: leafless}
     if request.instants:
         from cityshade.geo.sun import suns_from_instants
         from cityshade.light.irradiance import irradiance_at
@@ -233,7 +234,7 @@ def compute_sky(scene, request: SkyRequest, *, progress=None) -> SkyResult:
                                   request.spa)
         at = irradiance_at(scene, points, normals, request.weather, request.instants,
                            np.array([s.direction for s in suns], np.float64).reshape(-1, 3),
-                           shares, shares_leafless=leafless, t_days=request.t_days,
+                           shares_by_leaf, t_days=request.t_days,
                            engine=request.engine, model=request.model, albedo=request.albedo)
         timings["instants_s"] = time.perf_counter() - t0
     if request.weather is not None and request.period:
@@ -241,8 +242,7 @@ def compute_sky(scene, request: SkyRequest, *, progress=None) -> SkyResult:
 
         t0 = time.perf_counter()
         directions, _ = weather_suns(request.weather, scene, request.spa)
-        irr = irradiation(scene, points, normals, request.weather, directions, shares,
-                          shares_leafless=leafless,
+        irr = irradiation(scene, points, normals, request.weather, directions, shares_by_leaf,
                           hours=request.hours, t_days=request.t_days, engine=request.engine,
                           model=request.model, albedo=request.albedo,
                           progress=None if progress is None else

@@ -91,6 +91,9 @@ class Weather:
     dni_w_m2: np.ndarray
     dhi_w_m2: np.ndarray
     temp_air_c: np.ndarray
+    #: The instants the records' suns stand for, when not the middle of each hour (records
+    #: taken for instants: :func:`cityshade.light.irradiance.irradiance_at`).
+    sun_at: object = None
 
     @property
     def n_hours(self) -> int:
@@ -104,7 +107,8 @@ class Weather:
         return dataclasses.replace(
             self, hour_end=self.hour_end[rows], ghi_w_m2=self.ghi_w_m2[rows],
             dni_w_m2=self.dni_w_m2[rows], dhi_w_m2=self.dhi_w_m2[rows],
-            temp_air_c=self.temp_air_c[rows])
+            temp_air_c=self.temp_air_c[rows],
+            sun_at=None if self.sun_at is None else self.sun_at[rows])
 
     def hour_containing(self, instants) -> np.ndarray:
         """(K,) int: the record whose hour contains each aware datetime of ``instants``.
@@ -140,9 +144,11 @@ class Weather:
     @property
     def sun_times(self):
         """The middle of each hour (``hour_end − 30 min``), local standard time: the instant
-        the hour's sun is computed for."""
+        the hour's sun is computed for (``sun_at`` when set)."""
         import pandas as pd
 
+        if self.sun_at is not None:
+            return self.sun_at
         return self.hour_end - pd.Timedelta(minutes=30)
 
     def sunny(self, threshold_w_m2: float = SUNNY_DNI_W_M2) -> np.ndarray:
