@@ -113,9 +113,10 @@ def transmission(scene, origins, direction, t_days: float = 0.0, *, engine: str 
     rays = np.flatnonzero(~blocked)
     out = np.zeros(len(origins), np.float64)
     tau = veg.transmissivity(vegetation_settings(scene), day_of_year)
-    # The crowns' pass: izb's light-plane grid, or (raytrace, and exact: a crowns' tree is
-    # small) the crowns' kd-tree; the same bits either way.
-    if engine == "izb":
+    # The crowns' pass: the light-plane grid (izb, and exact: a crowns' pass has no early
+    # exit, so the tree's walk visits every leaf along each ray, 4-5x the grid's cost on a
+    # map's pixels), or the crowns' kd-tree (raytrace); the same bits either way.
+    if engine in ("izb", "exact"):
         from cityshade.lightspace import MARGIN_REL
         from cityshade.lightspace.vegetation import transmission as crowns
 
