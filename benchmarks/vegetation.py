@@ -24,7 +24,8 @@ printed too. A first run compiles changed kernels: pass ``--warm`` (one untimed 
 Usage, from the repository root::
 
     python benchmarks/vegetation.py [--runs 3] [--workdir bench_out/vegetation] [--warm]
-        [--only build,render,day,in_process] [--json out.json]
+        [--only build,render,day,in_process] [--day-engines izb,exact] [--src DIR]
+        [--json out.json]
 """
 from __future__ import annotations
 
@@ -46,13 +47,16 @@ DATA = REPO.parent / "shared" / "data" / "citygml" / "berlin-lichtenberg-trees"
 TREES = DATA / "semantic_3D_tree_model_berlin_test_area.gml"
 BUILDINGS = DATA / "lod2_buildings_berlin_test_area.gml"
 STATES = ("with", "no-vegetation", "buildings")
+#: The sources the child processes run (``--src``: another checkout's, for a before/after).
+SRC = REPO / "src"
+DAY_ENGINES = ("izb", "exact")
 SUNS = ((90.0, 20.0), (135.0, 40.0), (180.0, 60.0), (225.0, 40.0), (270.0, 20.0))
 
 
 def _run_child(*args: str) -> dict:
     """One ``python -m cityshade`` process: wall and CPU seconds (user + system, its threads
     included) and peak RSS, its own (the child reaped by ``wait4``)."""
-    env = dict(os.environ, PYTHONPATH=str(REPO / "src"))
+    env = dict(os.environ, PYTHONPATH=str(SRC))
     t0 = time.perf_counter()
     proc = subprocess.Popen([sys.executable, "-m", "cityshade", *args], env=env,
                             stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
@@ -127,7 +131,7 @@ def day_figures(work: Path, runs: int, warm: bool) -> dict:
                 "--every", "15min", "--tz", "Europe/Berlin", "--camera", "map", "--shadows",
                 engine, *extra, "-o", str(out)]
 
-    return _compare("day", args, ("izb", "exact"), work, runs, warm)
+    return _compare("day", args, DAY_ENGINES, work, runs, warm)
 
 
 def in_process_figures(work: Path, runs: int) -> dict:
@@ -178,13 +182,19 @@ def main(argv=None) -> dict:
     ap.add_argument("--workdir", type=Path, default=REPO / "bench_out" / "vegetation")
     ap.add_argument("--warm", action="store_true", help="One untimed round first (compiles).")
     ap.add_argument("--only", default="build,render,day,in_process")
+    ap.add_argument("--day-engines", default="izb,exact")
+    ap.add_argument("--src", type=Path, help="The children's sources (default: this "
+                    "checkout's src/); the in-process part imports what PYTHONPATH says.")
     ap.add_argument("--json", type=Path)
     args = ap.parse_args(argv)
+    global SRC, DAY_ENGINES
+    SRC = args.src or SRC
+    DAY_ENGINES = tuple(args.day_engines.split(","))
     if not TREES.exists():
         raise SystemExit(f"no Berlin data at {DATA}")
     args.workdir.mkdir(parents=True, exist_ok=True)
     only = set(args.only.split(","))
-    report: dict = {"commit": commit(), "machine": platform.node(), "cpus": os.cpu_count(),
+    report: dict = {"commit": commit(), "children_src": str(SRC), "machine": platform.node(), "cpus": os.cpu_count(),
                     "runs": args.runs, "load_before": [round(x, 2) for x in os.getloadavg()]}
     if "build" in only or not (args.workdir / "berlin.cityshade").exists():
         report["build"] = build_figures(args.workdir, args.runs if "build" in only else 1)
