@@ -157,3 +157,56 @@ def test_berlin_trees_raytrace_and_izb_equal_on_every_pixel(berlin):
         b = render_frame(berlin, cam, 0.0, sun, "izb").lit
         np.testing.assert_array_equal(a, b)
         assert ((a > 0) & (a < 1)).sum() > 50   # pixels lit only through crowns
+
+
+def _fresh_load(path, keep_stored: bool):
+    scene = load_scene(path)
+    if not keep_stored:
+        scene.__dict__.pop("stored_vegetation_kdtrees")
+    return scene
+
+
+def test_stored_crown_trees_give_the_same_bits_as_trees_built_per_process(crowns, tmp_path):
+    """The build stores the opaque triangles' and the crowns' kd-trees; a process that loads
+    them builds neither, and every engine answers as with trees built in the process."""
+    path = tmp_path / "again.cityshade"
+    from cityshade.store.scenefile import save_scene
+
+    save_scene(crowns, path, crowns.header["source"], crowns.header["build_options"])
+    stored, built = _fresh_load(path, True), _fresh_load(path, False)
+    assert set(stored.header["vegetation_kdtree_stats"]) == {"opaque", "crowns"}
+    veg_stored, veg_built = scene_vegetation(stored), scene_vegetation(built)
+    trees = stored.__dict__["stored_vegetation_kdtrees"]
+    assert veg_stored.tree is trees["crowns"] and veg_stored.opaque.kdtree is trees["opaque"]
+    assert without_vegetation(stored).kdtree is trees["opaque"]   # --no-vegetation builds none
+    for part, built_tree in (("crowns", veg_built.tree), ("opaque", veg_built.opaque.kdtree)):
+        for name, value in built_tree.to_arrays().items():
+            np.testing.assert_array_equal(trees[part].to_arrays()[name], value)
+    rng = np.random.default_rng(11)
+    origins = rng.uniform((-30, -30, -1), (40, 30, 22), (300, 3)) - crowns.origin_m
+    for az, el in ((0, 90), (135, 40), (250, 12)):
+        d = sun_from_angles(az, el).direction
+        want = transmission(built, origins, d, 0.0, engine="raytrace")
+        assert 0 < ((want > 0) & (want < 1)).sum() and (want == 0).any()
+        for engine in ("raytrace", "izb", "exact"):
+            np.testing.assert_array_equal(transmission(stored, origins, d, 0.0, engine=engine),
+                                          want)
+
+
+def test_a_scene_file_without_stored_crown_trees_still_works(crowns, tmp_path):
+    """A file written before the crowns' trees were stored (or a tile's) has none: the
+    process builds them, with the same answers."""
+    from cityshade.store.scenefile import save_scene
+
+    path = tmp_path / "old.cityshade"
+    save_scene(crowns, path, crowns.header["source"], crowns.header["build_options"],
+               vegetation_trees=False)
+    old = load_scene(path)
+    assert old.header["vegetation_kdtree_stats"] is None
+    assert "stored_vegetation_kdtrees" not in old.__dict__
+    origins = _rays(old, [(13, 0, 0.01), (0, 0, 0.01), (0, 0, 12.0), (25, 0, -0.5),
+                          (40, 0, 0.01)])
+    for engine in ("raytrace", "izb", "exact"):
+        np.testing.assert_array_equal(transmission(old, origins, UP, 0.0, engine=engine),
+                                      [TAU, TAU * TAU, TAU, 0.0, 1.0])
+    assert without_vegetation(old).n_triangles == old.n_triangles - 48

@@ -134,7 +134,8 @@ def _write_tile(part: Scene, globals_: dict[str, np.ndarray], tmp: Path, key, ti
     part.report = {"tile": [col, row], "tile_m": tile_m, "timings": timings}
     name = f"tile_{col}_{row}.cityshade"
     extra = {GLOBAL_PREFIX + g: np.asarray(globals_[g]).astype(np.int64) for g in TILE_GROUPS}
-    size = save_scene(part, tmp / name, source, build_options, extra_arrays=extra)
+    size = save_scene(part, tmp / name, source, build_options, extra_arrays=extra,
+                      vegetation_trees=False)  # a tiled view's vegetation casts as opaque
     digest = open_cache(tmp / name, verify=False).header_digest
     return {"key": [col, row], "file": name, "size": size, "header_blake2b": digest,
             "box_m": _box(part.vertices),

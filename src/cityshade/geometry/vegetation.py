@@ -59,21 +59,37 @@ def vegetation_mask(scene) -> np.ndarray:
     return by_object | (np.asarray(scene.tri_class) == SURFACE_CODE["vegetation"])
 
 
-def _subscene(scene, keep: np.ndarray, build_tree: bool = True):
-    """The scene with only the triangles ``keep`` (a bool mask), the object, polygon and
-    vertex tables unchanged, and a kd-tree of its own over them."""
-    from cityshade.accel.kdtree_build import build_kdtree
+#: The two kd-trees of a scene with vegetation (:func:`vegetation_kdtrees`), by name: the
+#: opaque triangles' and the crowns' (their records index the subset's triangles in order).
+KDTREE_PARTS = ("opaque", "crowns")
 
+
+def _subscene(scene, keep: np.ndarray, part: str):
+    """The scene with only the triangles ``keep`` (a bool mask), the object, polygon and
+    vertex tables unchanged, and a kd-tree of its own over them: the one its file stored for
+    ``part`` (:data:`KDTREE_PARTS`), else built here."""
     rows = np.flatnonzero(keep)
     fields = {name: np.ascontiguousarray(np.asarray(getattr(scene, name))[rows])
               for name in ("triangles", "tri_object", "tri_polygon", "tri_class",
                            "tri_material", "tri_texture", "tri_t_begin_days",
                            "tri_t_end_days")}
-    tree = None
-    if build_tree:
+    tree = (scene.__dict__.get("stored_vegetation_kdtrees") or {}).get(part)
+    if tree is None:
+        from cityshade.accel.kdtree_build import build_kdtree
+
         tree = build_kdtree(scene.vertices, fields["triangles"], fields["tri_t_begin_days"],
                             fields["tri_t_end_days"], fields["tri_material"])
     return dataclasses.replace(scene, kdtree=tree, **fields)
+
+
+def vegetation_kdtrees(scene) -> dict[str, Any] | None:
+    """The opaque triangles' and the crowns' kd-trees of ``scene`` by :data:`KDTREE_PARTS`
+    name (built once, as :func:`scene_vegetation` uses them), for a scene file to store: a
+    process that loads them builds neither (docs/DESIGN.md §21). None without vegetation."""
+    veg = scene_vegetation(scene)
+    if veg is None:
+        return None
+    return {"opaque": veg.opaque.kdtree, "crowns": veg.tree}
 
 
 def vegetation_settings(scene) -> VegetationSettings:
@@ -106,10 +122,7 @@ def without_vegetation(scene):
     if scene.is_tiled:
         raise UsageError("--no-vegetation is not available on a tiled cache: build the model "
                          "without --tile-m, or without its vegetation")
-    mask = vegetation_mask(scene)
-    if not mask.any():
-        return scene
-    return _subscene(scene, ~mask)
+    return _subscene(scene, ~mask, "opaque")
 
 
 def window_light_scene(scene):
@@ -187,14 +200,14 @@ def scene_vegetation(scene) -> SceneVegetation | None:
 
 
 def _make_vegetation(scene, mask: np.ndarray) -> SceneVegetation:
-    crowns = _subscene(scene, mask)
+    crowns = _subscene(scene, mask, "crowns")
     objects = np.asarray(crowns.tri_object)
     crown_object, tri_crown = np.unique(objects, return_inverse=True)
     classes = vegetation_objects(scene)[crown_object]
     # Triangles of surface class vegetation in an object of another type: solitary.
     classes = np.where(classes < 0, 0, classes).astype(np.int8)
     return SceneVegetation(
-        opaque=_subscene(scene, ~mask), tri=np.flatnonzero(mask).astype(np.int32),
+        opaque=_subscene(scene, ~mask, "opaque"), tri=np.flatnonzero(mask).astype(np.int32),
         tri_crown=tri_crown.astype(np.int32), crown_object=crown_object.astype(np.int32),
         crown_class=classes, tree=crowns.kdtree,
         vertices=np.ascontiguousarray(scene.vertices, dtype=np.float32),

@@ -19,7 +19,7 @@ import numpy as np
 from numba import njit, prange
 
 from cityshade.trace.kernels import hit_triangle, on_axes, ray_shear
-from cityshade.trace.vegetation import CROWN_SET, add_crown, crown_product
+from cityshade.trace.vegetation import CROWN_SET, add_crown, crown_product, has_crown
 
 #: Target receivers per grid cell, and the largest grid side.
 RECEIVERS_PER_CELL = 4
@@ -28,11 +28,22 @@ MAX_GRID_SIDE = 2048
 
 @njit(cache=True)
 def _project(origins, rays, kx, ky, kz, sx, sy, px, py):
+    """The rays' light-plane points ``px``, ``py``; returns their box (x0, x1, y0, y1) and
+    the largest coordinate magnitude of their origins (one pass: no gathered copies)."""
+    x0 = y0 = np.inf
+    x1 = y1 = -np.inf
+    magnitude = 0.0
     for j in range(rays.shape[0]):
         i = rays[j]
         okx, oky, okz = on_axes(origins[i, 0], origins[i, 1], origins[i, 2], kx, ky, kz)
         px[j] = okx - sx * okz
         py[j] = oky - sy * okz
+        x0 = min(x0, px[j])
+        x1 = max(x1, px[j])
+        y0 = min(y0, py[j])
+        y1 = max(y1, py[j])
+        magnitude = max(magnitude, abs(origins[i, 0]), abs(origins[i, 1]), abs(origins[i, 2]))
+    return x0, x1, y0, y1, magnitude
 
 
 @njit(cache=True)
@@ -120,10 +131,13 @@ def _query(vertices, triangles, tri_crown, crown_tau, origins, rays, px, py, x0,
                 if px[j] < boxes[t, 0] or px[j] > boxes[t, 1] or py[j] < boxes[t, 2] or \
                         py[j] > boxes[t, 3]:
                     continue
+                crown = tri_crown[t]
+                if has_crown(seen, m, crown):
+                    continue  # met already: its other triangles cannot change the set
                 hit, tt, _, _ = hit_triangle(vertices, triangles, t, okx, oky, okz, kx, ky, kz,
                                              sx, sy, sz)
                 if hit and tt >= 0.0:
-                    seen, m = add_crown(seen, m, tri_crown[t])
+                    seen, m = add_crown(seen, m, crown)
             out[i] = crown_product(seen, m, crown_tau)
 
 
@@ -140,11 +154,9 @@ def transmission(vertices, triangles, t_begin_days, t_end_days, tri_crown, crown
     kx, ky, kz, sx, sy, sz = ray_shear(*(float(c) for c in direction))
     px = np.empty(len(rays))
     py = np.empty(len(rays))
-    _project(origins, rays, kx, ky, kz, sx, sy, px, py)
-    x0, x1 = float(px.min()), float(px.max())
-    y0, y1 = float(py.min()), float(py.max())
-    magnitude = max(float(np.abs(origins[rays]).max()),
-                    float(np.abs(vertices).max()) if len(vertices) else 0.0, 1.0)
+    x0, x1, y0, y1, ray_magnitude = _project(origins, rays, kx, ky, kz, sx, sy, px, py)
+    magnitude = max(ray_magnitude, float(np.abs(vertices).max()) if len(vertices) else 0.0,
+                    1.0)
     margin = margin_rel * magnitude * (1.0 + max(abs(sx), abs(sy)))
     side = max(x1 - x0, y1 - y0, 1e-6)
     cells = max(1, min(MAX_GRID_SIDE, int(math.sqrt(len(rays) / RECEIVERS_PER_CELL))))

@@ -132,17 +132,17 @@ def crown_transmission(scene, origins, direction, t_days: float, taus, *,
     outs = []
     for tau in taus:
         out = np.zeros(len(origins), np.float64)
-        # The crowns' pass: izb's light-plane grid, or (raytrace, and exact: a crowns' tree is
-        # small) the crowns' kd-tree; the same bits either way.
-        if engine == "izb":
+        # The crowns' pass: the light-plane grid (izb, and exact: a crowns' pass has no early
+        # exit, so the tree's walk visits every leaf along each ray, 4-5x the grid's cost on a
+        # map's pixels), or the crowns' kd-tree (raytrace); the same bits either way.
+        if engine in ("izb", "exact"):
             from cityshade.lightspace import MARGIN_REL
             from cityshade.lightspace.vegetation import transmission as crowns
 
             crowns(veg.vertices, veg.triangles, veg.t_begin_days, veg.t_end_days,
                    veg.tri_crown, tau, origins, direction, float(t_days), rays, out, MARGIN_REL)
         else:
-            if engine != "exact":
-                _engine(engine)  # an unknown name fails here
+            _engine(engine)  # an unknown name fails here
             from cityshade.trace.vegetation import transmission as crowns
 
             crowns(veg.tree, origins, direction, float(t_days), rays, veg.tri_crown, tau, out)

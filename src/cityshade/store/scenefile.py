@@ -21,11 +21,14 @@ if TYPE_CHECKING:
     from cityshade.shadows import TechniqueSpec
 
 _KDTREE_PREFIX = "kdtree/"
+#: The vegetation's two kd-trees (docs/DESIGN.md §21) under ``vegetation/<part>/kdtree/``.
+_VEGETATION_PREFIX = "vegetation/"
 
 
 def save_scene(scene: Scene, path: str | os.PathLike, source: dict[str, Any],
                build_options: dict[str, Any],
-               extra_arrays: dict[str, np.ndarray] | None = None, consume: bool = False) -> int:
+               extra_arrays: dict[str, np.ndarray] | None = None, consume: bool = False,
+               vegetation_trees: bool = True) -> int:
     """Write ``scene`` (and its kd-tree, when built) to ``path``; returns the file size.
 
     Parameters
@@ -41,6 +44,11 @@ def save_scene(scene: Scene, path: str | os.PathLike, source: dict[str, Any],
         The scene is not used again (a build that returns the file's scene instead): its
         large arrays' memory goes back to the OS as they are written, and they then read as
         zeros (:func:`cityshade.store.cache.write_cache`).
+    vegetation_trees : bool
+        With the scene's kd-tree, also store the opaque triangles' and the crowns' kd-trees
+        of a scene with vegetation (:func:`cityshade.geometry.vegetation.vegetation_kdtrees`),
+        so no process that loads it builds them; a tile of a tiled cache has no use for them
+        (its vegetation casts as opaque).
     """
     arrays: dict[str, np.ndarray] = {name: getattr(scene, name) for name in Scene.ARRAY_FIELDS}
     type_names = sorted(set(scene.obj_types))
@@ -53,6 +61,17 @@ def save_scene(scene: Scene, path: str | os.PathLike, source: dict[str, Any],
         for name, value in scene.kdtree.to_arrays().items():
             arrays[_KDTREE_PREFIX + name] = value
         kdtree_stats = scene.kdtree.stats
+    vegetation_stats = None
+    if scene.kdtree is not None and vegetation_trees:
+        from cityshade.geometry.vegetation import vegetation_kdtrees
+
+        trees = vegetation_kdtrees(scene)
+        if trees is not None:
+            vegetation_stats = {}
+            for part, tree in trees.items():
+                for name, value in tree.to_arrays().items():
+                    arrays[f"{_VEGETATION_PREFIX}{part}/{_KDTREE_PREFIX}{name}"] = value
+                vegetation_stats[part] = tree.stats
     arrays.update(extra_arrays or {})
     header = {
         "kind": "cityshade-scene",
@@ -66,6 +85,7 @@ def save_scene(scene: Scene, path: str | os.PathLike, source: dict[str, Any],
         "textures": scene.textures,
         "report": scene.report,
         "kdtree_stats": kdtree_stats,
+        "vegetation_kdtree_stats": vegetation_stats,
     }
     return write_cache(path, header, arrays, consume=consume)
 
@@ -107,6 +127,15 @@ def scene_from_cache(cache, with_kdtree: bool = True) -> Scene:
         tree_arrays = {name[len(_KDTREE_PREFIX):]: cache.array(name)
                        for name in cache.names() if name.startswith(_KDTREE_PREFIX)}
         scene.kdtree = KdTree.from_arrays(tree_arrays, header["kdtree_stats"])
+        # A file of an earlier build has none: they are built when first needed.
+        stored = {}
+        for part, stats in (header.get("vegetation_kdtree_stats") or {}).items():
+            prefix = f"{_VEGETATION_PREFIX}{part}/{_KDTREE_PREFIX}"
+            stored[part] = KdTree.from_arrays(
+                {name[len(prefix):]: cache.array(name) for name in cache.names()
+                 if name.startswith(prefix)}, stats)
+        if stored:
+            scene.__dict__["stored_vegetation_kdtrees"] = stored
     scene.header = header
     return scene
 
@@ -117,9 +146,11 @@ def release_scene_pages(scene) -> int:
     from cityshade.runtime.memory import release_pages
 
     arrays = [getattr(scene, name, None) for name in Scene.ARRAY_FIELDS]
-    tree = getattr(scene, "kdtree", None)
-    if tree is not None and hasattr(tree, "to_arrays"):
-        arrays += list(tree.to_arrays().values())
+    trees = [getattr(scene, "kdtree", None),
+             *(scene.__dict__.get("stored_vegetation_kdtrees") or {}).values()]
+    for tree in trees:
+        if tree is not None and hasattr(tree, "to_arrays"):
+            arrays += list(tree.to_arrays().values())
     return release_pages(*arrays)
 
 

@@ -41,6 +41,16 @@ CROWN_SET = 16
 
 
 @njit(cache=True, inline="always")
+def has_crown(seen, n, crown):
+    """Whether ``crown`` is in the set ``seen[:n]``: a ray that has met a crown skips its
+    other triangles (the set, and so the product, is the same without their tests)."""
+    for j in range(n):
+        if seen[j] == crown:
+            return True
+    return False
+
+
+@njit(cache=True, inline="always")
 def add_crown(seen, n, crown):
     """Add ``crown`` to the set ``seen[:n]``; returns ``(seen, n)`` (``seen`` grown when
     full)."""
@@ -107,10 +117,13 @@ def crowns_range(tree, box_lo, box_hi, origins, direction, t_days, rays, tri_cro
                     for k in range(first, first + word_payload(w0)):
                         if not record_present(tree, k, t_days):
                             continue
+                        crown = tri_crown[record_id(tree, k)]
+                        if has_crown(seen, n, crown):
+                            continue  # counted once: another of its triangles cannot change it
                         hit, t, _, _ = hit_record(tree.recs, k, okx, oky, okz, kx, ky, kz, sx,
                                                   sy, sz)
                         if hit and t >= 0.0:
-                            seen, n = add_crown(seen, n, tri_crown[record_id(tree, k)])
+                            seen, n = add_crown(seen, n, crown)
                     if sp == 0:
                         break
                     sp -= 1
