@@ -108,6 +108,17 @@ def test_without_vegetation_trees_neither_cast_nor_receive(crowns):
     np.testing.assert_array_equal(transmission(bare, origins, UP, 0.0, engine="izb"), [1, 0])
 
 
+def test_the_auto_ground_plane_leaves_the_trees_out(crowns):
+    """The median of the objects' lowest points counted the crowns (bases 5-15 m here: 5 m
+    with them, 0 m without), so a run with trees and one with --no-vegetation drew their
+    ground planes apart; both now stand at the buildings' and terrain's 0 m."""
+    from cityshade.geometry.ground import ground_height_m
+
+    zero_m = 0.0 - float(crowns.origin_m[2])
+    assert ground_height_m(crowns, "auto") == zero_m
+    assert ground_height_m(without_vegetation(crowns), "auto") == zero_m
+
+
 def test_sun_hours_with_trees_lose_exactly_the_crowns_share(crowns):
     from cityshade.sunhours.accumulate import sun_hours
 

@@ -39,8 +39,16 @@ def ground_height_m(scene, mode: str) -> float:
         tris = np.asarray(scene.triangles)
         tri_z = np.minimum(np.minimum(z[tris[:, 0]], z[tris[:, 1]]), z[tris[:, 2]])
         tri_z = tri_z.astype(np.float64)
+        tri_object = np.asarray(scene.tri_object)
+        # Trees left out (when anything else is there): the plane is the same with and
+        # without vegetation (--no-vegetation), so the two runs compare the same pixels.
+        from cityshade.geometry.vegetation import vegetation_mask
+
+        crowns = vegetation_mask(scene)
+        if crowns.any() and not crowns.all():
+            tri_z, tri_object = tri_z[~crowns], tri_object[~crowns]
         lowest = np.full(len(scene.obj_ids), np.inf)
-        np.minimum.at(lowest, np.asarray(scene.tri_object), tri_z)
+        np.minimum.at(lowest, tri_object, tri_z)
         return float(np.median(lowest[np.isfinite(lowest)]))
     try:
         return float(mode) - float(scene.origin_m[2])

@@ -64,16 +64,17 @@ def vegetation_mask(scene) -> np.ndarray:
 KDTREE_PARTS = ("opaque", "crowns")
 
 
-def _subscene(scene, keep: np.ndarray, part: str):
+def _subscene(scene, keep: np.ndarray, part: str | None = None):
     """The scene with only the triangles ``keep`` (a bool mask), the object, polygon and
     vertex tables unchanged, and a kd-tree of its own over them: the one its file stored for
-    ``part`` (:data:`KDTREE_PARTS`), else built here."""
+    ``part`` (:data:`KDTREE_PARTS`; None: none matches ``keep``), else built here."""
     rows = np.flatnonzero(keep)
     fields = {name: np.ascontiguousarray(np.asarray(getattr(scene, name))[rows])
               for name in ("triangles", "tri_object", "tri_polygon", "tri_class",
                            "tri_material", "tri_texture", "tri_t_begin_days",
                            "tri_t_end_days")}
-    tree = (scene.__dict__.get("stored_vegetation_kdtrees") or {}).get(part)
+    tree = None if part is None else \
+        (scene.__dict__.get("stored_vegetation_kdtrees") or {}).get(part)
     if tree is None:
         from cityshade.accel.kdtree_build import build_kdtree
 
@@ -141,7 +142,8 @@ def window_light_scene(scene):
         drop = mask & ~evergreen[np.where(cls < 0, 0, cls)]
     if not drop.any():
         return scene
-    sub = _subscene(scene, ~drop)
+    # Every crown dropped: the opaque triangles, whose tree the file may hold.
+    sub = _subscene(scene, ~drop, "opaque" if np.array_equal(drop, mask) else None)
     sub.__dict__["vegetation_settings"] = settings
     return sub
 
