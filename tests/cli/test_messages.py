@@ -118,6 +118,21 @@ def test_a_date_out_of_range_says_so(dated_box_file, tmp_path, date):
     assert not (tmp_path / "b").exists()
 
 
+def test_a_time_zone_without_a_clock_time_is_not_ignored_silently(dated_box_file, tmp_path):
+    """--tz with the sun from angles and a state of whole days placed nothing, and said
+    nothing (issue 40: no silent ignore)."""
+    result = run("render", dated_box_file, "--date", "2000", "--sun-azimuth", "100",
+                 "--sun-elevation", "30", "--tz", "Europe/Berlin", "--png", tmp_path / "a.png")
+    assert result.exit_code == 0, result.output
+    assert lines_of(result)[0] == ("cityshade: warning: --tz is not used: the sun comes from "
+                                   "--sun-azimuth/--sun-elevation and the city's state is a day "
+                                   "(a zone places a --time)")
+    result = run("render", dated_box_file, "--date", "2000-06-21", "--time", "12:00", "--tz",
+                 "Europe/Berlin", "--png", tmp_path / "b.png")
+    assert result.exit_code == 0, result.output
+    assert "warning" not in result.output
+
+
 def test_size_over_the_limit_gives_the_memory_it_would_need(dated_box_file, tmp_path):
     # 290 bytes per pixel for an exact technique's frame (frame/pipeline.py
     # FRAME_BYTES_PER_PX): 1e10 pixels × 290 B = 2,900 GB.

@@ -85,6 +85,11 @@ def render(file, date_text, city_date, tz, time_text, no_refraction, sun_azimuth
     parse_triple(eye, "--eye"), parse_triple(target, "--target")  # fail early
     parse_size(size, settings.shadows.technique)
     sun_date, city_text = _dates(date_text, city_date, time_text, tz, sun_azimuth is not None)
+    if tz is not None and sun_date is None and len(city_text) <= 10:
+        # A zone places a clock time; the sun from angles and a state of whole days have none.
+        click.echo("cityshade: warning: --tz is not used: the sun comes from --sun-azimuth/"
+                   "--sun-elevation and the city's state is a day (a zone places a --time)",
+                   err=True)
     label = _label(sun_date, city_text, city_date)
     check_frame_outputs(None, exr=output, png=png, mask=mask, georef=geotiff)  # before any work
     t0 = time.perf_counter()
