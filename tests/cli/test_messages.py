@@ -133,6 +133,18 @@ def test_a_time_zone_without_a_clock_time_is_not_ignored_silently(dated_box_file
     assert "warning" not in result.output
 
 
+def test_evaluate_refuses_a_clock_time_with_suns_from_angles(dated_box_file, tmp_path):
+    """Without --times the suns are angles and --date the city's state: its time of day set
+    nothing and was taken silently (issue 40: no silent ignore)."""
+    result = run("evaluate", dated_box_file, "--date", "2020-06-21T15:00+02:00", "-o",
+                 tmp_path / "ev")
+    assert error_line(result, 2) == (
+        "cityshade: error: --date 2020-06-21T15:00+02:00 has a time of day, but the suns come "
+        "from --sun (angles): give --times HH:MM,... for suns of that day, or a day alone for "
+        "the city's state")
+    assert not (tmp_path / "ev").exists()
+
+
 def test_size_over_the_limit_gives_the_memory_it_would_need(dated_box_file, tmp_path):
     # 290 bytes per pixel for an exact technique's frame (frame/pipeline.py
     # FRAME_BYTES_PER_PX): 1e10 pixels × 290 B = 2,900 GB.

@@ -128,6 +128,10 @@ def evaluate(file, views, sun_text, date_text, city_date, times, tz, settings, s
     if times:
         city_text = city_date or day.split("T")[0]
     else:  # no sun to date: --date is the city's state (short for --city-date)
+        if date_text and parse_user_date(date_text, solar_placeholder(tz)).instant_utc:
+            raise UsageError(f"--date {date_text} has a time of day, but the suns come from "
+                             f"--sun (angles): give --times HH:MM,... for suns of that day, or "
+                             f"a day alone for the city's state")
         city_text = city_of_short_date(date_text, city_date, tz, "--times") or day
     city_days = parse_user_date(city_text, solar_placeholder(tz)).city_days
     scene = with_vegetation(load_or_build_scene(file, settings_for_source(file, crs, settings)),
