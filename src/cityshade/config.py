@@ -69,15 +69,10 @@ class BuildSettings:
     closure_surfaces: str = "omit"
 
     def __post_init__(self) -> None:
-        if self.closure_surfaces not in CLOSURE_SURFACES:
-            raise ConfigError(f"closure_surfaces must be one of {', '.join(CLOSURE_SURFACES)}, "
-                              f"not {self.closure_surfaces!r}")
-        if self.time_source not in TIME_SOURCES:
-            raise ConfigError(f"time_source must be one of {', '.join(TIME_SOURCES)}, "
-                              f"not {self.time_source!r}")
-        if self.axis_order is not None and self.axis_order not in AXIS_ORDERS:
-            raise ConfigError(f"axis_order must be one of {', '.join(AXIS_ORDERS)}, "
-                              f"not {self.axis_order!r}")
+        _one_of("closure_surfaces", self.closure_surfaces, CLOSURE_SURFACES)
+        _one_of("time_source", self.time_source, TIME_SOURCES)
+        if self.axis_order is not None:
+            _one_of("axis_order", self.axis_order, AXIS_ORDERS)
         if self.time_attribute is not None:
             from cityshade.geo.temporal import parse_time_attribute
             from cityshade.errors import UsageError
@@ -116,6 +111,12 @@ def _sun_settings():
 
 def _is_int(value) -> bool:
     return isinstance(value, numbers.Integral) and not isinstance(value, bool)
+
+
+def _one_of(key: str, value, choices) -> None:
+    """A :class:`ConfigError` naming ``key`` unless ``value`` is one of ``choices``."""
+    if value not in choices:
+        raise ConfigError(f"{key} must be one of {', '.join(choices)}, not {value!r}")
 
 
 def _is_number(value) -> bool:
@@ -419,12 +420,8 @@ class TreeSettings:
     ground: str = "model"
 
     def __post_init__(self) -> None:
-        if self.units not in LENGTH_UNITS_M:
-            raise ConfigError(f"units must be one of {', '.join(LENGTH_UNITS_M)}, "
-                              f"not {self.units!r}")
-        if self.ground not in TREE_GROUNDS:
-            raise ConfigError(f"ground must be one of {', '.join(TREE_GROUNDS)}, "
-                              f"not {self.ground!r}")
+        _one_of("units", self.units, LENGTH_UNITS_M)
+        _one_of("ground", self.ground, TREE_GROUNDS)
         if not (_is_number(self.trunk_diameter_m) and 0.0 < self.trunk_diameter_m <= 10.0):
             raise ConfigError(f"trunk_diameter_m must be in (0, 10], not {self.trunk_diameter_m}")
         if not (_is_int(self.crown_subdivisions) and 1 <= self.crown_subdivisions <= 5):
@@ -590,12 +587,8 @@ class VegetationSettings:
             value = getattr(self, name)
             if not (_is_int(value) and 1 <= value <= 366):
                 raise ConfigError(f"{name} must be a day of the year in 1..366, not {value}")
-        if self.season not in SEASONS:
-            raise ConfigError(f"season must be one of {', '.join(SEASONS)}, "
-                              f"not {self.season!r}")
-        if self.window_trees not in WINDOW_TREES:
-            raise ConfigError(f"window_trees must be one of {', '.join(WINDOW_TREES)}, "
-                              f"not {self.window_trees!r}")
+        _one_of("season", self.season, SEASONS)
+        _one_of("window_trees", self.window_trees, WINDOW_TREES)
 
     def in_leaf(self, day_of_year: int | None) -> bool:
         """Whether deciduous vegetation is in leaf on ``day_of_year`` (None: no date)."""
