@@ -1075,3 +1075,22 @@ def reference_classifier_polygons(scene, fold_rad=1e-3, min_area_m2=1e-4):
     folded = np.zeros(len(scene.poly_normal), bool)
     folded[poly[(length >= 2 * min_area_m2) & off]] = True
     return np.where(folded[poly], len(scene.poly_normal) + np.arange(len(tri)), poly)
+
+
+def reference_sky_bits(scene, points, normals, sky, t_days, engine):
+    """Packed sky visibility bits, the obvious way: per direction, the receivers in front of it
+    gathered, their shadow rays traced, the answers in an unpacked (N, P) table, packed."""
+    from cityshade.light.sky import in_front
+    from cityshade.shadows.visibility import occluded
+    from cityshade.trace import shadow_rays_from_surface
+
+    points = np.asarray(points, np.float64)
+    normals = np.asarray(normals, np.float64)
+    seen = np.zeros((len(points), sky.n), bool)
+    front = in_front(normals, sky.directions)
+    for j, d in enumerate(sky.directions):
+        rows = np.flatnonzero(front[:, j])
+        if len(rows):
+            origins = shadow_rays_from_surface(points[rows], normals[rows], d)
+            seen[rows, j] = ~occluded(scene, origins, d, t_days, engine=engine)
+    return np.packbits(seen, axis=1)

@@ -134,6 +134,26 @@ def test_engines_give_the_same_bits_on_the_sample_city(sample_city_scene):
     _assert_same_bits(scene, samples.points_m[rows], samples.normals[rows], sky, t)
 
 
+def test_packed_bits_equal_the_obvious_gather_and_pack(sample_city_scene):
+    """The per-direction kernels (rays of the receivers in front, answers straight into the
+    packed bits) against the twin that gathers, traces and packs with numpy."""
+    from reference import reference_sky_bits
+
+    from cityshade.sunhours.surfaces import sample_surfaces
+
+    scene = sample_city_scene
+    t = 7_300.0
+    samples = sample_surfaces(scene, 0.05, t)
+    rows = np.random.default_rng(2).choice(samples.n, min(samples.n, 1200), replace=False)
+    pts, nrm = samples.points_m[rows], samples.normals[rows]
+    sky = named_sky("tregenza")                # 145 directions: a partial last byte
+    for engine in ("izb", "raytrace"):
+        vis = sky_visibility(scene, pts, nrm, sky, t, engine=engine, block=40)
+        want = reference_sky_bits(scene, pts, nrm, sky, t, engine)
+        np.testing.assert_array_equal(vis.bits, want)
+        assert 0.05 < vis.visible().mean() < 0.95
+
+
 @pytest.mark.parametrize("relative", ["berlin-lichtenberg-trees/lod2_buildings_berlin_test_area.gml",
                                       "munich-tum-campus-lod2/TUM Munich.gml"])
 def test_engines_give_the_same_bits_on_real_buildings(relative):

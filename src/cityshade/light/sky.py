@@ -314,4 +314,10 @@ def in_front(normals, directions) -> np.ndarray:
     >>> in_front([[0.0, -1.0, 0.0]], [[0.0, -1.0, 0.0], [0.0, 0.0, 1.0]])  # a south wall
     array([[ True, False]])
     """
-    return np.asarray(normals, np.float64) @ np.asarray(directions, np.float64).T > FRONT_MIN_COS
+    from cityshade.light.kernels import in_front_table
+
+    n = np.ascontiguousarray(normals, np.float64).reshape(-1, 3)
+    d = np.ascontiguousarray(directions, np.float64).reshape(-1, 3)
+    out = np.empty((len(n), len(d)), bool)
+    in_front_table(n, d, FRONT_MIN_COS, out)  # the tracing's own test (light/kernels.py)
+    return out

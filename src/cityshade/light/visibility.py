@@ -12,9 +12,9 @@ coefficients): :mod:`cityshade.light.metrics` is arithmetic on them.
 
 Memory: the result holds ``ceil(P / 8)`` bytes per receiver for P directions (19 B for
 Tregenza's 145, 73 B for 577, 289 B for 2,305) plus the receivers' float64 normals (24 B).
-While tracing, one block of ``block`` directions is held unpacked (``block`` bytes per
-receiver, 64 by default) with one direction's ray origins (24 B per receiver) and the engine's
-own work arrays (docs/DESIGN.md §7, §6).
+While tracing, one direction's ray origins and rows (32 B per receiver) and the engine's own
+work arrays (docs/DESIGN.md §7, §6); the answers go straight into the packed bits
+(:mod:`cityshade.light.kernels`).
 
 Trees: on a scene with vegetation crowns (docs/DESIGN.md §21) a bit says "no opaque triangle
 in the way", and the rays that cross crowns are listed apart (:class:`SkyCrowns`: 24 bytes per
@@ -34,8 +34,8 @@ from cityshade.errors import UsageError
 #: The exact engines a sky can be traced with (:func:`cityshade.shadows.visibility.occluded`).
 ENGINES = ("izb", "raytrace")
 
-#: Directions traced per block before they are packed: a multiple of 8 (whole bytes); 64 keeps
-#: the unpacked block at 64 B per receiver, a third of the packed 2,305-direction result.
+#: Directions between two progress calls (a multiple of 8: whole bytes); ``raytrace`` on a few
+#: receivers (:data:`BATCH_RAYS`) traces a block in one call, unpacked (64 B per receiver).
 DEFAULT_BLOCK = 64
 
 #: ``raytrace`` takes a direction per ray: up to this many rays (24 B of origins and 24 B of
@@ -141,7 +141,8 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
         ``izb`` (default; one light-space pass per direction) or ``raytrace``; both give the
         same bits.
     block : int
-        Directions traced before a pack (a multiple of 8): memory ``block`` bytes per receiver.
+        Directions between progress calls (a multiple of 8); ``raytrace`` on few receivers
+        traces a block in one call (``block`` bytes per receiver).
     progress : callable, optional
         Called as ``progress(done, total)`` directions after each block.
 
@@ -164,9 +165,11 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
     145
     """
     from cityshade.geometry.vegetation import scene_vegetation, vegetation_settings
-    from cityshade.light.sky import in_front
+    from cityshade.light.sky import FRONT_MIN_COS, in_front
     from cityshade.shadows.visibility import crown_transmission, occluded
-    from cityshade.trace import shadow_rays_from_surface
+    from cityshade.light.kernels import front_origins, set_visible_bits
+    from cityshade.trace import (SHADOW_OFFSET_MIN_SCALE_M, SHADOW_OFFSET_REL,
+                                 shadow_rays_from_surface)
 
     if engine == "exact":      # one choice for the whole sky: its directions share the set-up
         from cityshade.shadows.exact import engine_for_run
@@ -183,7 +186,9 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
         raise UsageError(f"points {pts.shape} and normals {nrm.shape} differ in shape")
     n, p_total = len(pts), sky.n
     bits = np.zeros((n, (p_total + 7) // 8), np.uint8)
-    work = np.zeros((n, int(block)), bool)
+    if n:
+        shadow_rays_from_surface(pts, nrm, sky.directions[0])  # the checks, once
+    rows_buf, origins_buf = np.empty(n, np.int64), np.empty((n, 3), np.float64)
     veg = scene_vegetation(scene)
     if veg is not None:
         # Both seasons in one tracing: one opaque pass and two crowns' passes per direction.
@@ -194,35 +199,33 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
         crown_parts: list[tuple] = []
     for start in range(0, p_total, int(block)):
         stop = min(start + int(block), p_total)
-        work[:] = False
         dirs = sky.directions[start:stop]
-        front = in_front(nrm, dirs)
-        if veg is not None:
-            for j, d in enumerate(dirs):
-                rows = np.flatnonzero(front[:, j])
-                if len(rows):
-                    origins = shadow_rays_from_surface(pts[rows], nrm[rows], d)
-                    blocked, outs = crown_transmission(scene, origins, d, t_days,
-                                                       taus[:1] if same else taus,
-                                                       engine=engine)
-                    on, off = outs[0], outs[-1]
-                    work[rows, j] = ~blocked
-                    part = ~blocked & ((on != 1.0) | (off != 1.0))
-                    if part.any():
-                        crown_parts.append((rows[part], start + j, on[part], off[part]))
-        elif engine == "raytrace" and n * len(dirs) <= BATCH_RAYS:
-            rows, cols = np.nonzero(front)
+        if veg is None and engine == "raytrace" and n * len(dirs) <= BATCH_RAYS:
+            work = np.zeros((n, stop - start), bool)
+            rows, cols = np.nonzero(in_front(nrm, dirs))
             if len(rows):
                 d = np.ascontiguousarray(dirs[cols])
                 origins = shadow_rays_from_surface(pts[rows], nrm[rows], d)
                 work[rows, cols] = ~occluded(scene, origins, d, t_days, engine=engine)
+            bits[:, start // 8:(stop + 7) // 8] = np.packbits(work, axis=1)
         else:
             for j, d in enumerate(dirs):
-                rows = np.flatnonzero(front[:, j])
-                if len(rows):
-                    origins = shadow_rays_from_surface(pts[rows], nrm[rows], d)
-                    work[rows, j] = ~occluded(scene, origins, d, t_days, engine=engine)
-        bits[:, start // 8:(stop + 7) // 8] = np.packbits(work[:, :stop - start], axis=1)
+                k = front_origins(pts, nrm, d, FRONT_MIN_COS, SHADOW_OFFSET_REL,
+                                  SHADOW_OFFSET_MIN_SCALE_M, rows_buf, origins_buf)
+                if not k:
+                    continue
+                rows, origins = rows_buf[:k], origins_buf[:k]
+                if veg is None:
+                    blocked = occluded(scene, origins, d, t_days, engine=engine)
+                else:
+                    blocked, outs = crown_transmission(scene, origins, d, t_days,
+                                                       taus[:1] if same else taus,
+                                                       engine=engine)
+                    on, off = outs[0], outs[-1]
+                    part = ~blocked & ((on != 1.0) | (off != 1.0))
+                    if part.any():
+                        crown_parts.append((rows[part], start + j, on[part], off[part]))
+                set_visible_bits(bits, rows, blocked, start + j)
         if progress is not None:
             progress(stop, p_total)
     crowns = None
