@@ -185,3 +185,20 @@ def test_bad_requests(canyon):
                        block=12)
     vis = sky_visibility(canyon, np.zeros((0, 3)), np.zeros((0, 3)), named_sky("tregenza"))
     assert vis.bits.shape == (0, 19) and sky_view_factor(vis).shape == (0,)
+
+
+def test_distinct_normals_equal_numpy_s_unique_rows():
+    from cityshade.light.metrics import NORMAL_ROUND, distinct_normals
+
+    rng = np.random.default_rng(3)
+    n = rng.normal(size=(5000, 3))
+    n /= np.linalg.norm(n, axis=1, keepdims=True)
+    axes = np.array([[0, 0, 1], [0, 0, -1], [1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0]], float)
+    walls = n[:50] + rng.normal(scale=1e-7, size=(50, 3))   # float32-like scatter: merges
+    normals = np.concatenate([n, axes, axes + 3e-8, walls, n[:50]])
+    unique, inverse = distinct_normals(normals)
+    want_u, want_inv = np.unique(np.round(normals / NORMAL_ROUND) * NORMAL_ROUND, axis=0,
+                                 return_inverse=True)
+    np.testing.assert_array_equal(unique, want_u)
+    np.testing.assert_array_equal(inverse, want_inv.reshape(-1))
+    assert len(unique) < len(normals)

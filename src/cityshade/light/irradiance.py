@@ -113,13 +113,11 @@ def plane_angles(normals) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     --------
     >>> t, a, inv = plane_angles([[0.0, 0.0, 1.0], [0.0, -1.0, 0.0], [0.0, 0.0, 1.0]])
     >>> t.tolist(), a.tolist(), inv.tolist()
-    ([90.0, 0.0], [180.0, 0.0], [0, 1, 1])
+    ([90.0, 0.0], [180.0, 0.0], [1, 0, 1])
     """
-    nrm = np.asarray(normals, np.float64).reshape(-1, 3)
-    if not np.isfinite(nrm).all():
-        raise UsageError("receiver normals contain NaN or infinite values")
-    rounded = np.round(nrm / NORMAL_ROUND) * NORMAL_ROUND
-    unique, inverse = np.unique(rounded, axis=0, return_inverse=True)
+    from cityshade.light.metrics import distinct_normals
+
+    unique, inverse = distinct_normals(normals)
     unique = unique / np.linalg.norm(unique, axis=1, keepdims=True)
     tilt = np.degrees(np.arccos(np.clip(unique[:, 2], -1.0, 1.0)))
     horizontal = np.hypot(unique[:, 0], unique[:, 1]) < NORMAL_ROUND

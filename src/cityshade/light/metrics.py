@@ -81,6 +81,40 @@ def subsamples_per_axis(sky) -> int:
     return max(2, int(round(math.sqrt(TARGET_SUBSAMPLES / sky.n))))
 
 
+def distinct_normals(normals) -> tuple[np.ndarray, np.ndarray]:
+    """The distinct rows of ``normals`` rounded to :data:`NORMAL_ROUND`, sorted as
+    ``np.unique(rounded, axis=0)`` sorts them, and the row of each normal.
+
+    ``np.unique`` along an axis sorts rows as opaque records (17 s for a 1 m map's 2.14 M
+    receivers on a loaded 2-core machine); the rounded components are integers of at most 21
+    bits (|n| <= 1), so one int64 key per row orders them the same way, at a plain sort's cost.
+
+    Returns
+    -------
+    unique : (U, 3) float64
+        The rounded distinct normals (not renormalised).
+    inverse : (N,) int64
+
+    Examples
+    --------
+    >>> u, inv = distinct_normals([[0.0, 0.0, 1.0], [0.0, -1.0, 0.0], [0.0, 0.0, 1.0 + 1e-8]])
+    >>> u.tolist(), inv.tolist()
+    ([[0.0, -1.0, 0.0], [0.0, 0.0, 1.0]], [1, 0, 1])
+    """
+    nrm = np.asarray(normals, np.float64).reshape(-1, 3)
+    if not np.isfinite(nrm).all():
+        raise UsageError("receiver normals contain NaN or infinite values")
+    steps = np.round(nrm / NORMAL_ROUND)
+    if np.abs(steps).max(initial=0.0) >= 2.0 ** 20:
+        raise UsageError("receiver normals must be unit vectors")
+    cells = (steps + 2.0 ** 20).astype(np.int64)          # 0 .. 2^21 - 1 per component
+    keys = (cells[:, 0] << 42) | (cells[:, 1] << 21) | cells[:, 2]
+    unique_keys, inverse = np.unique(keys, return_inverse=True)
+    unique = np.stack([((unique_keys >> s) & ((1 << 21) - 1)) - 2 ** 20 for s in (42, 21, 0)],
+                      axis=1).astype(np.float64) * NORMAL_ROUND
+    return unique, inverse.reshape(-1)
+
+
 def patch_weights(sky, normals, luminance=uniform_luminance, *, k: int | None = None
                   ) -> tuple[np.ndarray, np.ndarray]:
     """The weight of every patch for every distinct receiver normal.
@@ -115,11 +149,7 @@ def patch_weights(sky, normals, luminance=uniform_luminance, *, k: int | None = 
     """
     from cityshade.light.sky import in_front
 
-    nrm = np.asarray(normals, np.float64).reshape(-1, 3)
-    if not np.isfinite(nrm).all():
-        raise UsageError("receiver normals contain NaN or infinite values")
-    rounded = np.round(nrm / NORMAL_ROUND) * NORMAL_ROUND
-    unique, inverse = np.unique(rounded, axis=0, return_inverse=True)
+    unique, inverse = distinct_normals(normals)
     d, w = sky.subsamples(subsamples_per_axis(sky) if k is None else k)
     lw = w * luminance(d)                       # (P, k²)
     centres = sky.directions
