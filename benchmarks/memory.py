@@ -7,10 +7,14 @@ frame (kernels loaded, caches warm), then reset the process's peak resident set
 (``/proc/self/clear_refs``), run the frame at full size and read the peak (``VmHWM``) minus the
 resident set before it. Two sizes per case give the bytes per pixel as the slope (fixed costs
 such as a shadow map's texels cancel) and the fixed part as the intercept. render = render_frame
-+ write_frame (EXR + PNG); batch = sun_hours over ``--steps`` sun positions + its outputs.
++ write_frame (EXR + PNG); batch = sun_hours over ``--steps`` sun positions + its outputs;
+sky = ``cityshade sky``'s run and outputs (``sky:tregenza``: the sky view factor and VSC of the
+map with that sky; ``irradiance:tregenza``: with the irradiance of the first ``--steps`` days of
+pvlib's TMY3 file).
 
 Usage: python benchmarks/memory.py [--scene city.cityshade] [--pixels 1000000,4000000]
-       [--cases map:raytrace,persp:izb,...] [--steps 4] [--json out.json]
+       [--cases map:raytrace,persp:izb,sky:tregenza,irradiance:tregenza,...] [--steps 4]
+       [--json out.json]
 Linux only (``/proc``).
 """
 from __future__ import annotations
@@ -40,7 +44,7 @@ def _status_kb(field: str) -> int:
 def _camera(scene, view: str, pixels: int):
     from cityshade.raster import camera as C
 
-    if view in ("map", "batch"):
+    if view in ("map", "batch", "sky", "irradiance"):
         box = C.scene_box(scene, DAY_2000)
         area_m2 = float((box[1, 0] - box[0, 0]) * (box[1, 1] - box[0, 1]))
         return C.map_view(scene, pixel_size_m=math.sqrt(area_m2 / pixels))
@@ -65,6 +69,26 @@ def _run(scene, view: str, technique: str, pixels: int, steps: int, out: Path) -
         result = sun_hours(scene, cam, instants, DAY_2000, technique=technique)
         write_exr(out / "h.exr", {"sun_hours": result.hours}, {})
         write_png_rgb(out / "h.png", colour_map_png(result.hours))
+    elif view in ("sky", "irradiance"):
+        import os
+
+        import numpy as np
+        import pvlib
+
+        from cityshade.light.run import SkyRequest, run_sky
+        from cityshade.light.weather import read_weather
+
+        weather, hours = None, None
+        if view == "irradiance":                       # the first `steps` days of pvlib's TMY
+            weather = read_weather(Path(os.path.dirname(pvlib.__file__)) / "data"
+                                   / "723170TYA.CSV")
+            hours = np.zeros(weather.n_hours, bool)
+            hours[:24 * steps] = True
+        request = SkyRequest(camera=cam, ground="auto", t_days=DAY_2000, sky=technique,
+                             weather=weather, hours=hours, vsc=True)
+        for f in out.iterdir():                        # run_sky writes into an empty folder
+            f.unlink()
+        run_sky(out, scene, request)
     else:
         from cityshade.frame.render import render_frame, write_frame
 

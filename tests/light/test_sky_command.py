@@ -254,3 +254,27 @@ def test_bad_instants_say_one_line(small_file, tmp_path, extra, line):
     assert result.exit_code == 2, result.output
     assert result.output.splitlines() == [line]
     assert not (tmp_path / "out").exists()
+
+
+def test_a_sky_that_does_not_fit_in_memory_is_refused_before_any_work(small_file, tmp_path,
+                                                                      monkeypatch):
+    """The camera pass (290 B a pixel, batch's measured figure) and the sky's own bytes per
+    receiver (48 point and normal + 19 bits of 145 directions + 32 origins and rows + 24 view
+    factor and shares + 8 plane + 8 VSC = 139 B) are counted together."""
+    import re
+
+    import cityshade.frame.pipeline as pipeline
+
+    monkeypatch.setattr(pipeline, "available_memory_bytes", lambda: 1000)
+    result = run("sky", small_file, "-o", tmp_path / "out", "--sky", "tregenza",
+                 "--pixel-size", "0.05")
+    assert result.exit_code == 2, result.output
+    m = re.fullmatch(r"cityshade: error: ([\d,]+) receivers need about ([\d.]+) GB \(139 bytes "
+                     r"each besides the camera's ([\d.]+) GB\) but 0\.0 GB are available: use a "
+                     r"larger --pixel-size, fewer --samples-per-m2 or a coarser --sky",
+                     result.output.strip())
+    assert m, result.output
+    n = int(m.group(1).replace(",", ""))
+    assert n > 10**6                            # a real size: the GB figures are not 0.0
+    assert m.group(2) == f"{n * (290 + 139) / 1e9:.1f}" and m.group(3) == f"{n * 290 / 1e9:.1f}"
+    assert not (tmp_path / "out").exists()

@@ -147,33 +147,41 @@ class SkyResult:
 
 
 def sky_bytes_per_receiver(n_directions: int, irradiance: bool, instants: int = 0) -> int:
-    """Peak bytes per receiver of a sky run: point and normal (48), the packed bits
-    (ceil(P / 8)), the block of unpacked directions (64) and one direction's ray origins (24)
-    while tracing, the view factor and two shares (24), the plane index (8), the VSC (8); with
-    irradiance the three float64 sums (24), the sun's bits and origins per hour (25); per
-    instant its three float64 W/m² (24). Not counted: the rays through vegetation crowns
-    (24 B each, :class:`~cityshade.light.visibility.SkyCrowns`), known only after tracing."""
-    return 48 + (n_directions + 7) // 8 + 64 + 24 + 24 + 8 + 8 \
+    """Bytes per receiver a sky run keeps beside the batch's camera pass
+    (:data:`cityshade.frame.pipeline.BATCH_BYTES_PER_PX`): point and normal (48), the packed
+    bits (ceil(P / 8)), one direction's ray origins and rows while tracing (32), the view
+    factor and two shares (24), the plane index (8), the VSC (8); with irradiance the three
+    float64 sums (24), the sun's bits and origins per hour (25); per instant its three float64
+    W/m² (24). Not counted: the rays through vegetation crowns (24 B each,
+    :class:`~cityshade.light.visibility.SkyCrowns`), known only after tracing.
+
+    With the camera pass, 290 + 139 B per map pixel for 145 directions and 290 + 188 B with
+    irradiance; measured (``python benchmarks/memory.py --cases sky:tregenza,irradiance:tregenza
+    --pixels 500000,2000000 --steps 2``, e5e5e42, the sample city): 327 and 426 B per pixel.
+    """
+    return 48 + (n_directions + 7) // 8 + 32 + 24 + 8 + 8 \
         + (49 if irradiance or instants else 0) + 24 * int(instants)
 
 
 def _check_memory(request: SkyRequest, n_directions: int, n_samples_max: int) -> int:
     """Refuse a run whose receivers would not fit, before any work: the camera's frame
     (batch's estimate) and the receivers (:func:`sky_bytes_per_receiver`; every pixel of the
-    camera counted as a receiver)."""
-    from cityshade.frame.pipeline import available_memory_bytes, check_frame_memory
+    camera counted as a receiver), together."""
+    from cityshade.frame.pipeline import available_memory_bytes, frame_bytes
 
     per = sky_bytes_per_receiver(n_directions, request.weather is not None and request.period,
                                  len(request.instants))
-    n = n_samples_max
+    n, frame = n_samples_max, 0
     if request.camera is not None:
-        check_frame_memory(request.camera, technique=request.technique, batch=True)
+        frame = frame_bytes(request.camera, batch=True)[0]
         n += request.camera.width_px * request.camera.height_px
     have = available_memory_bytes()
-    if have is not None and n * per > have:
-        raise UsageError(f"{n:,} receivers need about {n * per / 1e9:.1f} GB ({per} bytes "
-                         f"each) but {have / 1e9:.1f} GB are available: use a larger "
-                         f"--pixel-size, fewer --samples-per-m2 or a coarser --sky")
+    need = frame + n * per
+    if have is not None and need > have:
+        raise UsageError(f"{n:,} receivers need about {need / 1e9:.1f} GB ({per} bytes "
+                         f"each besides the camera's {frame / 1e9:.1f} GB) but "
+                         f"{have / 1e9:.1f} GB are available: use a larger --pixel-size, fewer "
+                         f"--samples-per-m2 or a coarser --sky")
     return per
 
 
