@@ -443,6 +443,20 @@ def test_uncompressed_exr_reads_back_as_the_zip_one(tmp_path):
     assert differ <= {"compression", "DateTime", "oiio:RowsPerChunk"} and "compression" in differ
 
 
+def test_exr_with_ids_beyond_float32_keeps_its_half_channels_in_the_zip_parts(tmp_path):
+    # No single uncompressed part can hold uint32 ids: the two zip parts, R still half.
+    r = np.array([[0.1, 1 / 3, 7.0]], np.float32)
+    ids = np.array([[-1, 2 ** 24 + 1, 4_000_000_000]])
+    path = tmp_path / "big.exr"
+    write_exr(path, {"R": r, "Z": r * 2, "primid": ids}, half=("R",), compression="none")
+    types, stored = _stored_types(path)
+    assert stored == "zip" and types == {"R": "half", "Z": "float"}
+    back, _ = read_exr(path)
+    np.testing.assert_array_equal(back["R"], r.astype(np.float16).astype(np.float32))
+    np.testing.assert_array_equal(back["Z"], r * 2)
+    np.testing.assert_array_equal(back["primid"], ids)
+
+
 @pytest.mark.parametrize("kwargs, message", [
     ({"compression": "piz"}, "EXR compression must be zip or none, not 'piz'$"),
     ({"half": ("primid",)}, "half channels must be float channels: primid$"),
