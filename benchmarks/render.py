@@ -432,8 +432,6 @@ def techniques_main(argv=None) -> dict:
     ap.add_argument("--date-days", type=float, default=DAY_2000)
     ap.add_argument("--json", type=Path)
     args = ap.parse_args(argv)
-    import numpy as np
-
     from cityshade.raster.camera import map_view, overview
     from cityshade.frame.render import render_frame, write_frame
     from cityshade.store.scenefile import load_scene
@@ -474,6 +472,7 @@ def techniques_main(argv=None) -> dict:
                 # CPU seconds of all threads: steadier than wall time on a shared machine.
                 cpu_izb.append(c1 - c0)
                 cpu_exr.append(time.process_time() - c1)
+            exr_mb = (Path(tmp) / "frame.exr").stat().st_size / 1e6
         izb_same = bool((fr.lit == ref.lit).all())
         valid = ref.surfaces.valid
         truth = ref.lit >= 0.5
@@ -514,6 +513,7 @@ def techniques_main(argv=None) -> dict:
             "izb_frame_with_exr_ms_median": 1000 * statistics.median(t_izb_exr[1:]),
             "izb_frame_cpu_ms_median": 1000 * statistics.median(cpu_izb[1:]),
             "izb_exr_cpu_ms_median": 1000 * statistics.median(cpu_exr[1:]),
+            "izb_exr_mb": exr_mb,
             "izb_frame_stages_ms": {k: 1000 * v for k, v in fr.timings_s.items()},
             "izb_lit_identical_to_raytrace": izb_same,
             "techniques": rows}
@@ -524,7 +524,7 @@ def techniques_main(argv=None) -> dict:
               f"{v['izb_frame_ms_median']:.0f} ms, with EXR {v['izb_frame_with_exr_ms_median']:.0f}"
               f" ms (lit identical to raytrace: {v['izb_lit_identical_to_raytrace']}); CPU of "
               f"all threads: frame {v['izb_frame_cpu_ms_median']:.0f} ms, EXR "
-              f"{v['izb_exr_cpu_ms_median']:.0f} ms")
+              f"{v['izb_exr_cpu_ms_median']:.0f} ms ({v['izb_exr_mb']:.1f} MB)")
         print(f"{'technique':<18} {'shadow ms':>10} {'wrong %':>9} {'false-lit %':>12} "
               f"{'false-shadow %':>15} {'traced %':>9} {'cpu user/sys ms':>16}  "
               f"stages ms (median)")

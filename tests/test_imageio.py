@@ -378,3 +378,93 @@ def test_georeferenced_refusals_leave_no_files(tmp_path):
     with pytest.raises(CityshadeError, match="CRS"):
         write_georeferenced(tmp_path / "a.tif", mask, (0, 1, 0, 0, 0, -1), epsg=999999)
     assert list(tmp_path.iterdir()) == []
+
+
+def _stored_types(path):
+    """Channel name → type stored in the file (half, float, uint), and the compression."""
+    import OpenImageIO as oiio
+
+    inp = oiio.ImageInput.open(str(path))
+    try:
+        spec = inp.spec()
+        formats = [str(f) for f in spec.channelformats] or [str(spec.format)] * spec.nchannels
+        return dict(zip(spec.channelnames, formats)), spec.get_string_attribute("compression")
+    finally:
+        inp.close()
+
+
+@pytest.mark.parametrize("compression", ["none", "zip"])
+def test_exr_half_channels_read_back_rounded_as_numpy_rounds_them(tmp_path, compression):
+    # 150 x 9 rows (strips of 64, an odd width: the half rows leave the float rows unaligned),
+    # a lazy channel, NaN, ±inf, ids up to 2**24, values past the half range.
+    from cityshade.imageio import EXR_STRIP_ROWS, LazyChannel
+
+    h = 2 * EXR_STRIP_ROWS + 22
+    channels = _frame_channels(h, 9)
+    channels["R"][0, :3] = [70000.0, -1e-8, 65519.0]      # → inf, -0, 65504
+    z = channels["Z"]
+    channels["Z"] = LazyChannel(z.shape, lambda y0, y1: z[y0:y1])
+    half = ("R", "G", "B", "N.x", "N.y", "N.z")
+    attrs = {"cityshade:technique": "raytrace", "cityshade:crs_epsg": 25832,
+             "cityshade:sun_elevation_deg": 30.5, "cityshade:a_name_longer_than_31_bytes": "x"}
+    path = tmp_path / "f.exr"
+    write_exr(path, channels, attrs, half=half, compression=compression)
+    types, stored = _stored_types(path)
+    assert stored == compression
+    assert types == {n: ("half" if n in half else "float") for n in channels}
+    back, got = read_exr(path)
+    assert got["channel_names"] == tuple(channels)
+    for name, values in channels.items():
+        want = z if name == "Z" else values
+        if name in half:   # numpy's float32 → float16 rounding, not the writer's
+            with np.errstate(over="ignore"):     # 70000 → inf on purpose
+                want = values.astype(np.float16).astype(np.float32)
+        np.testing.assert_array_equal(back[name], want, err_msg=name)
+    assert back["R"][0, :3].tolist() == [np.inf, 0.0, 65504.0]
+    assert back["primid"].dtype.kind == "i" and back["primid"][0, 1] == 2 ** 24
+    assert (got["cityshade:technique"], got["cityshade:crs_epsg"]) == ("raytrace", 25832)
+    assert got["cityshade:sun_elevation_deg"] == 30.5
+    assert got["cityshade:a_name_longer_than_31_bytes"] == "x"
+    assert [p.name for p in tmp_path.iterdir()] == ["f.exr"]
+
+
+def test_uncompressed_exr_reads_back_as_the_zip_one(tmp_path):
+    # The direct writer and OpenImageIO's: the same channels, values and header for a reader.
+    channels = _frame_channels(70, 5)
+    attrs = {"cityshade:technique": "izb", "cityshade:n": 3, "cityshade:f": 0.25}
+    write_exr(tmp_path / "a.exr", channels, attrs, compression="none")
+    write_exr(tmp_path / "b.exr", channels, attrs, compression="zip")
+    a, got_a = read_exr(tmp_path / "a.exr")
+    b, got_b = read_exr(tmp_path / "b.exr")
+    assert list(a) == list(b) == list(channels)
+    for name in channels:
+        np.testing.assert_array_equal(a[name], b[name], err_msg=name)
+    differ = {k for k in set(got_a) | set(got_b) if got_a.get(k) != got_b.get(k)}
+    # OpenImageIO adds its write time and chunk height; only those and the compression differ.
+    assert differ <= {"compression", "DateTime", "oiio:RowsPerChunk"} and "compression" in differ
+
+
+def test_exr_with_ids_beyond_float32_keeps_its_half_channels_in_the_zip_parts(tmp_path):
+    # No single uncompressed part can hold uint32 ids: the two zip parts, R still half.
+    r = np.array([[0.1, 1 / 3, 7.0]], np.float32)
+    ids = np.array([[-1, 2 ** 24 + 1, 4_000_000_000]])
+    path = tmp_path / "big.exr"
+    write_exr(path, {"R": r, "Z": r * 2, "primid": ids}, half=("R",), compression="none")
+    types, stored = _stored_types(path)
+    assert stored == "zip" and types == {"R": "half", "Z": "float"}
+    back, _ = read_exr(path)
+    np.testing.assert_array_equal(back["R"], r.astype(np.float16).astype(np.float32))
+    np.testing.assert_array_equal(back["Z"], r * 2)
+    np.testing.assert_array_equal(back["primid"], ids)
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    ({"compression": "piz"}, "EXR compression must be zip or none, not 'piz'$"),
+    ({"half": ("primid",)}, "half channels must be float channels: primid$"),
+    ({"half": ("R", "nope")}, "half channels must be float channels: nope$"),
+])
+def test_exr_refuses_bad_half_or_compression(tmp_path, kwargs, message):
+    channels = {"R": np.zeros((2, 2), np.float32), "primid": np.zeros((2, 2), np.int32)}
+    with pytest.raises(ImageIOError, match=message):
+        write_exr(tmp_path / "x.exr", channels, **kwargs)
+    assert list(tmp_path.iterdir()) == []

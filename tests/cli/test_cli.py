@@ -174,6 +174,32 @@ def test_render_outputs(built, tmp_path):
     assert set(np.unique(m).tolist()) <= {0, 128, 255} and (m == 255).any() and (m == 0).any()
 
 
+def test_render_exr_precision_half_by_default_full_on_request(built, tmp_path):
+    import OpenImageIO as oiio
+
+    from cityshade import imageio
+
+    args = ("render", built, "--date", "1950", "--sun-azimuth", "135", "--sun-elevation", "30",
+            "--size", "48x32")
+    types = {}
+    for name, extra in (("half", ()), ("full", ("--exr-precision", "full"))):
+        result = run(*args, *extra, "-o", tmp_path / f"{name}.exr")
+        assert result.exit_code == 0, result.output
+        inp = oiio.ImageInput.open(str(tmp_path / f"{name}.exr"))
+        spec = inp.spec()   # one type for every channel: no per-channel formats
+        formats = [str(f) for f in spec.channelformats] or [str(spec.format)] * spec.nchannels
+        types[name] = dict(zip(spec.channelnames, formats))
+        inp.close()
+    halves = {"R", "G", "B", "N.x", "N.y", "N.z"}
+    assert types["half"] == {n: "half" if n in halves else "float" for n in types["half"]}
+    assert set(types["full"].values()) == {"float"} and types["full"].keys() == types["half"].keys()
+    half, _ = imageio.read_exr(tmp_path / "half.exr")
+    full, _ = imageio.read_exr(tmp_path / "full.exr")
+    for name in full:   # the same frame: the half channels are the full ones rounded
+        want = full[name].astype(np.float16).astype(np.float32) if name in halves else full[name]
+        np.testing.assert_array_equal(half[name], want, err_msg=name)
+
+
 def test_render_map_georeferenced(built, tmp_path):
     tif = tmp_path / "mask.tif"
     result = run("render", built, "--date", "1950", "--sun-azimuth", "180", "--sun-elevation", "40",

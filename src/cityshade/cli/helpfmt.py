@@ -29,7 +29,7 @@ SECTIONS: dict[str, tuple[str, ...]] = {
                 "pcf_kernel", "vsm_blur", "cascades", "sizes"),
     "Receivers and rules": ("surfaces", "no_surfaces", "samples_per_m2", "min_stretch_text",
                             "rule_files", "area_text"),
-    "Outputs": ("column", "range_text", "unit", "ply", "output", "outdir", "png", "mask", "geotiff", "decorate", "no_decorate", "no_gis",
+    "Outputs": ("column", "range_text", "unit", "ply", "output", "exr_precision", "outdir", "png", "mask", "geotiff", "decorate", "no_decorate", "no_gis",
                 "frames", "monthly", "as_json", "overwrite", "tile_m", "no_map"),
     "Execution": ("tile_px", "scheduler", "strip_rows", "repeat", "stress", "quick", "verify",
                   "config_path", "verbose", "quiet"),

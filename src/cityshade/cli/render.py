@@ -32,6 +32,9 @@ from cityshade.cli.options import (camera_options, city_date_option, ground_opti
 @click.option("-o", "--output", type=click.Path(dir_okay=False, path_type=Path),
               help="EXR with colour, shadow, Z, normals, primid, objid and provenance "
               "(optional beside --png, --mask or --geotiff).")
+@click.option("--exr-precision", type=click.Choice(["half", "full"]), default="half",
+              show_default=True, help="EXR channel types: half = colour and normals 16-bit, "
+              "shadow, Z and ids 32-bit; full = every channel 32-bit float.")
 @click.option("--png", type=click.Path(dir_okay=False, path_type=Path), help="sRGB picture.")
 @click.option("--mask", type=click.Path(dir_okay=False, path_type=Path),
               help="8-bit shadow mask PNG: 255 sun, 0 shadow, 128 no surface.")
@@ -48,7 +51,7 @@ from cityshade.cli.options import (camera_options, city_date_option, ground_opti
 @click.option("-v", "--verbose", is_flag=True, help="Stage timings and technique diagnostics.")
 def render(file, date_text, city_date, tz, time_text, no_refraction, sun_azimuth, sun_elevation,
            camera, eye, target, fov, size, pixel_size, cameras_file, settings, output, png, mask,
-           geotiff, decorate, ground, strip_rows, no_sky, verbose):
+           exr_precision, geotiff, decorate, ground, strip_rows, no_sky, verbose):
     """Render FILE (a .cityshade scene) as the city stood on --city-date, lit by the sun at
     --sun-azimuth/--sun-elevation or by the sun computed for the model's place (NREL SPA) at
     --date and --time, from a perspective camera or as a top-down map. Writes the EXR (-o)
@@ -118,7 +121,7 @@ def render(file, date_text, city_date, tz, time_text, no_refraction, sun_azimuth
     forget_casters(scene)  # this process renders one frame: the writers need the memory
     t1 = time.perf_counter()
     written = write_frame(frame, scene, label, exr=output, png=png, mask=mask, georef=geotiff,
-                          decorate=decorate)
+                          decorate=decorate, exr_precision=exr_precision)
     if geotiff is not None:
         from cityshade.cli.options import warn_geotiff_without_crs
 
