@@ -157,6 +157,29 @@ def test_sigint_during_batch(tmp_path, scene_file):
     assert interrupted
 
 
+def test_sigint_during_sky(tmp_path, scene_file):
+    """The sky's outputs are one group: an interrupted run leaves none of them (and no
+    folder it made), a finished one all of them."""
+    args = ["sky", scene_file, "--sky", "tregenza", "--pixel-size", "6", "--vsc"]
+    warm = subprocess.run([sys.executable, "-m", "cityshade", *map(str, args), "-o",
+                           tmp_path / "warm"], capture_output=True, text=True, timeout=600)
+    assert warm.returncode == 0, warm.stderr
+    complete = sorted(p.name for p in (tmp_path / "warm").iterdir())
+    assert "svf.exr" in complete and "vsc.tif" in complete
+    interrupted = 0
+    for k, delay in enumerate((0.8, 1.5, 2.5)):
+        folder = tmp_path / f"k{k}"
+        rc, err = _interrupt([*args, "-o", folder], delay, tmp_path)
+        if rc == 130:
+            assert not folder.exists() or not any(folder.iterdir()), list(folder.iterdir())
+        folder.mkdir(exist_ok=True)
+        if _check(rc, err, folder):
+            interrupted += 1
+        else:
+            assert sorted(p.name for p in folder.iterdir()) == complete
+    assert interrupted
+
+
 def test_sigint_during_a_first_call_compile(tmp_path):
     """A fresh Numba cache, as after an install: the render compiles its kernels first. A
     SIGINT that landed in the compiler printed llvmlite's traceback after the one line
