@@ -331,21 +331,28 @@ def pack_casters(recs, keys, boxes, kept, dest, kx, ky, kz, sx, sy, sgn, scale_m
 
 @njit(cache=True, parallel=True)
 def estimate_refs(boxes, cell_sizes_m):
-    """Cell references the kept casters would make for each candidate cell size (K,)."""
-    n_k = cell_sizes_m.shape[0]
+    """Cell references the kept casters would make for each candidate cell size (K,):
+    the sum over boxes of ``(w / s + 1) (h / s + 1)``, from the boxes' sums of ``w h``,
+    ``w + h`` and their count (one pass, not one per size: 28 of the 1M map's 29 ms)."""
     n = boxes.shape[0]
     n_chunks = 64
     per = (n + n_chunks - 1) // n_chunks
-    part = np.zeros((n_chunks, n_k))
+    part = np.zeros((n_chunks, 3))
     for c in prange(n_chunks):
         for j in range(c * per, min(n, (c + 1) * per)):
             if np.isnan(boxes[j, 0]):
                 continue
             w = boxes[j, 1] - boxes[j, 0]
             h = boxes[j, 3] - boxes[j, 2]
-            for k in range(n_k):
-                part[c, k] += (w / cell_sizes_m[k] + 1.0) * (h / cell_sizes_m[k] + 1.0)
-    return part.sum(axis=0)
+            part[c, 0] += w * h
+            part[c, 1] += w + h
+            part[c, 2] += 1.0
+    sums = part.sum(axis=0)
+    out = np.empty(cell_sizes_m.shape[0])
+    for k in range(cell_sizes_m.shape[0]):
+        inv = 1.0 / cell_sizes_m[k]
+        out[k] = sums[0] * inv * inv + sums[1] * inv + sums[2]
+    return out
 
 
 @njit(cache=True, parallel=True)
@@ -669,12 +676,20 @@ def _query_caster_major(packed, refs, p0, p1, origins, c0, m, kx, ky, kz, sx, sy
     shadowed or the casters lie behind the lowest one. Returns (tests, last occluder)."""
     tests = 0
     k_low = np.inf
+    bx0 = np.inf
+    bx1 = -np.inf
+    by0 = np.inf
+    by1 = -np.inf
     for q in range(m):
         okz = origins[c0 + q, kz]
         rx[q] = origins[c0 + q, kx] - sx * okz
         ry[q] = origins[c0 + q, ky] - sy * okz
         rk[q] = sgn * okz
         k_low = min(k_low, rk[q])
+        bx0 = min(bx0, rx[q])
+        bx1 = max(bx1, rx[q])
+        by0 = min(by0, ry[q])
+        by1 = max(by1, ry[q])
         out[c0 + q] = False
     # Lanes up to a multiple of QUERY_LANES, dead: a receiver's key of +inf fails the mask's
     # first test (a shadowed receiver gets it too), so the mask loop has no scalar tail.
@@ -703,6 +718,10 @@ def _query_caster_major(packed, refs, p0, p1, origins, c0, m, kx, ky, kz, sx, sy
         x1 = np.float64(packed[j, PACK_BOX + 1])
         y0 = np.float64(packed[j, PACK_BOX + 2])
         y1 = np.float64(packed[j, PACK_BOX + 3])
+        # No receiver of the chunk in the box: every lane's box test below would fail
+        # (``rx - x0 >= 0`` is ``rx >= x0`` exactly), so the caster is skipped unread.
+        if bx1 < x0 or bx0 > x1 or by1 < y0 or by0 > y1:
+            continue
         pa = np.float64(packed[j, PACK_PLANE])
         pb = np.float64(packed[j, PACK_PLANE + 1])
         kc = key + np.float64(packed[j, PACK_PLANE + 2])
