@@ -341,12 +341,6 @@ def forget_casters(tree) -> None:
         _CASTERS.pop(kd, None)
 
 
-def _mark(timing, name):
-    now = time.perf_counter()
-    timing["fine_" + name] = now - timing.get("_last", now)
-    timing["_last"] = now
-
-
 def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     """The engine behind :func:`occluded` on validated inputs, work arrays from ``ws``; fills and
     returns ``out``."""
@@ -360,14 +354,12 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
 
     # Project the receivers; their light-plane box and lowest key bound the casters.
     t0 = time.perf_counter()
-    timing["_last"] = t0
     n_chunks = max(1, numba.get_num_threads())
     xs = ws.get("xs", n)
     ys = ws.get("ys", n)
     rkeys = ws.get("rkeys", n)
     part = np.empty((n_chunks, K.N_STATS))
     K.project_receivers(origins, kx, ky, kz, sx, sy, sgn, n_chunks, xs, ys, rkeys, part)
-    _mark(timing, 'proj_rec')
     if part[:, 5].sum() > 0:
         raise TraceInputError("ray origins contain NaN or infinite values")
     box = np.array([part[:, 0].min(), part[:, 1].max(), part[:, 2].min(), part[:, 3].max()])
@@ -388,7 +380,6 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     occ_inv = 1.0 / max((box[1] - box[0]) / onx, (box[3] - box[2]) / ony, 1e-9 * scale)
     occupied = ws.get("occupied", (ony + 1, onx + 1), np.int32)
     K.occupancy_table(xs, ys, box[0], box[2], occ_inv, onx, ony, occupied)
-    _mark(timing, 'occ')
     # The casters a chunk at a time: the box work array stays small.
     n_recs = recs.shape[0]
     chunk_boxes = ws.get("boxes", (max(1, min(n_recs, CULL_ROWS)), 4))
@@ -414,7 +405,6 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
             kept_boxes[q:q + local.size] = local_boxes
         q += local.size
     boxes = kept_boxes
-    _mark(timing, 'cull')
     timing["project_s"] = time.perf_counter() - t0
 
     # Grid over the receivers' box, cell size from the counts.
@@ -425,7 +415,6 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     max_cells = max(MAX_CELLS_PER_RECEIVER * n, 1024)
     size = (float(cell_m) if cell_m else
             _choose_cell_m(boxes, xs, ys, box, ext_x, ext_y, max_cells))
-    _mark(timing, 'choose')
     nx = max(1, math.ceil(ext_x / size))
     ny = max(1, math.ceil(ext_y / size))
     inv = 1.0 / size
@@ -439,10 +428,8 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     rec_order = ws.get("rec_order", n, np.int32)
     rec_origins = ws.get("rec_origins", (n, 3))
     K.fill_receivers(cells, counts, origins, rec_order, rec_origins)
-    _mark(timing, 'receivers')
     ranges = ws.get("ranges", (kept_size, 4), np.int64)
     K.caster_ranges(boxes, box[0], box[2], inv, inv, nx, ny, ranges)
-    _mark(timing, 'ranges')
     refs = np.empty(0, np.int32)
     # The packed rows in the order the query reads them (K.tile_order).
     tile_counts = ws.get("tile_counts", (n_chunks, n_cells // K.TILE_CELLS), np.int32)
@@ -450,16 +437,11 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     K.tile_order(ranges, ntx, tile_counts, False, dest)
     K.prefix_sum(tile_counts, ws.get("tile_start", n_cells // K.TILE_CELLS + 1, np.int64))
     K.tile_order(ranges, ntx, tile_counts, True, dest)
-    import os
-    if os.environ.get('IZB_NO_RELABEL') == '1':
-        dest[:] = np.arange(kept_size)
     K.scatter_casters(ranges, rec_start, nx, counts, dest, refs, False)
     ref_start = ws.get("ref_start", n_cells + 1, np.int64)
     n_refs = K.prefix_sum(counts, ref_start)
-    _mark(timing, 'count')
     refs = ws.get("refs", n_refs, np.int32)
     K.scatter_casters(ranges, rec_start, nx, counts, dest, refs, True)
-    _mark(timing, 'fill')
     packed = ws.get("packed", (kept_size, K.PACK_WORDS), np.float32)
     q = 0
     for c0, c1, local, _ in parts:
@@ -467,7 +449,6 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
                        dest[q:q + local.size], kx, ky, kz, sx, sy, sgn, scale, packed)
         q += local.size
     del parts
-    _mark(timing, 'pack')
     timing["bin_s"] = time.perf_counter() - t0
 
     # Test each receiver against its cell's casters, nearest-to-the-sun first.
@@ -478,13 +459,10 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     run_chunks(K.query, n_tiles, K.QUERY_CHUNK_TILES, packed, ref_start, refs, rec_start,
                rec_origins, kx, ky, kz, sx, sy, sz, sgn,
                DEPTH_MARGIN_M + DEPTH_MARGIN_REL * scale, 0.0, np.inf, hit_sorted, tests)
-    _mark(timing, 'qkernel')
     K.scatter_back(rec_order, hit_sorted, out)
     timing["query_s"] = time.perf_counter() - t0
-    timing.pop("_last", None)
     if stats is not None:
         stats.update(timing)
-        stats["scans"] = int((np.diff(rec_start) * np.diff(ref_start)).sum())
         stats.update(receivers=n, casters=int(kept_size),
                      grid=(nx, ny), cell_m=size, references=int(n_refs),
                      walked_casters=-1 if rows is None else int(rows.size),
