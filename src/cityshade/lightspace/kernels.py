@@ -692,8 +692,9 @@ def _query_caster_major(packed, refs, p0, p1, origins, c0, m, kx, ky, kz, sx, sy
         by1 = max(by1, ry[q])
         out[c0 + q] = False
     # Lanes up to a multiple of QUERY_LANES, dead: a receiver's key of +inf fails the mask's
-    # first test (a shadowed receiver gets it too), so the mask loop has no scalar tail.
-    m_pad = -(-m // QUERY_LANES) * QUERY_LANES
+    # first test (a shadowed receiver gets it too), so the mask loop has no scalar tail. A
+    # chunk of fewer receivers is not padded (a cell of 1-2 receivers would test 8 lanes).
+    m_pad = m if m < QUERY_LANES else -(-m // QUERY_LANES) * QUERY_LANES
     for q in range(m, m_pad):
         rx[q] = 0.0
         ry[q] = 0.0
