@@ -1094,3 +1094,28 @@ def reference_sky_bits(scene, points, normals, sky, t_days, engine):
             origins = shadow_rays_from_surface(points[rows], normals[rows], d)
             seen[rows, j] = ~occluded(scene, origins, d, t_days, engine=engine)
     return np.packbits(seen, axis=1)
+
+
+def reference_tile_order(ranges, tile, ntx):
+    """Twin of :func:`cityshade.lightspace.kernels.tile_order`: each caster's row when the
+    casters are stably sorted by the tile (``tile`` cells square, ``ntx`` tiles per row) of
+    their range's first cell (ix0 = ranges[:, 0], iy0 = ranges[:, 2])."""
+    ranges = np.asarray(ranges)
+    first = (ranges[:, 2] // tile) * ntx + ranges[:, 0] // tile
+    order = np.argsort(first, kind="stable")
+    dest = np.empty(len(first), np.int64)
+    dest[order] = np.arange(len(first))
+    return dest
+
+
+def reference_refs_per_size(boxes, sizes):
+    """Twin of :func:`cityshade.lightspace.kernels.estimate_refs`: the sum over the boxes (x0,
+    x1, y0, y1; NaN x0: culled) of (w / s + 1) (h / s + 1), box by box and size by size."""
+    out = []
+    for s in sizes:
+        total = 0.0
+        for x0, x1, y0, y1 in boxes:
+            if not np.isnan(x0):
+                total += ((x1 - x0) / s + 1.0) * ((y1 - y0) / s + 1.0)
+        out.append(total)
+    return np.array(out)

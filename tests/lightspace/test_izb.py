@@ -458,3 +458,54 @@ def test_forget_casters_drops_what_the_tree_kept():
     lightspace.forget_casters(tree)
     assert tree not in lightspace._CASTERS
     np.testing.assert_array_equal(lightspace.occluded(tree, origins, d), first)
+
+
+def test_cells_numbered_tile_by_tile_are_each_cell_once_and_a_tile_is_one_block():
+    """tile_cell maps the nx by ny grid one to one into the padded range, each tile's cells
+    to TILE_CELLS consecutive indices (the query's block), rows of tiles in order."""
+    from cityshade.lightspace import kernels as K
+
+    for nx, ny in ((1, 1), (7, 3), (8, 8), (17, 9), (64, 33)):
+        ntx, n_cells = K.tiled_cells(nx, ny)
+        idx = np.array([[K.tile_cell(ix, iy, ntx) for ix in range(nx)] for iy in range(ny)])
+        assert len(np.unique(idx)) == nx * ny and idx.min() >= 0 and idx.max() < n_cells
+        assert n_cells == -(-nx // K.TILE) * -(-ny // K.TILE) * K.TILE_CELLS
+        for iy in range(ny):
+            for ix in range(nx):
+                tile = (iy // K.TILE) * ntx + ix // K.TILE
+                assert idx[iy, ix] // K.TILE_CELLS == tile
+
+
+def test_tile_order_is_the_stable_order_by_first_tile_for_any_thread_count():
+    from reference import reference_tile_order
+    from cityshade.lightspace import kernels as K
+
+    rng = np.random.default_rng(8)
+    nx, ny, n = 45, 30, 5000
+    ntx, n_cells = K.tiled_cells(nx, ny)
+    ix0 = rng.integers(0, nx, n)
+    iy0 = rng.integers(0, ny, n)
+    ranges = np.column_stack([ix0, np.minimum(ix0 + rng.integers(0, 4, n), nx - 1),
+                              iy0, np.minimum(iy0 + rng.integers(0, 4, n), ny - 1)])
+    want = reference_tile_order(ranges, K.TILE, ntx)
+    for n_chunks in (1, 2, 3):
+        counts = np.full((n_chunks, n_cells // K.TILE_CELLS), 7, np.int32)
+        dest = np.empty(n, np.int32)
+        K.tile_order(ranges, ntx, counts, False, dest)
+        K.prefix_sum(counts, np.empty(n_cells // K.TILE_CELLS + 1, np.int64))
+        K.tile_order(ranges, ntx, counts, True, dest)
+        np.testing.assert_array_equal(dest, want)
+
+
+def test_estimated_references_are_the_box_by_box_sum():
+    from reference import reference_refs_per_size
+    from cityshade.lightspace import kernels as K
+
+    rng = np.random.default_rng(5)
+    x0, y0 = rng.uniform(-50, 50, (2, 400))
+    w, h = rng.uniform(0, 9, (2, 400))
+    boxes = np.column_stack([x0, x0 + w, y0, y0 + h])
+    boxes[::13, 0] = np.nan
+    sizes = np.array([0.7, 2.0, 5.5, 30.0])
+    np.testing.assert_allclose(K.estimate_refs(boxes, sizes),
+                               reference_refs_per_size(boxes, sizes), rtol=1e-12)

@@ -392,21 +392,18 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
         K.cull_unoccupied(b, box[0], box[2], occ_inv, onx, ony, occupied)
         local = np.flatnonzero(~np.isnan(b[:, 0]))
         if local.size:
-            # One chunk (up to 10^6 casters) packs from its boxes in place; more chunks keep
-            # their kept boxes, since the next chunk reuses the work array.
+            # One chunk (up to 10^6 casters) keeps its boxes in the work array; more chunks
+            # keep their kept boxes, since the next chunk reuses it.
             parts.append((c0, c1, local, None if n_recs <= CULL_ROWS else b[local]))
     kept_size = sum(p[2].size for p in parts)
-    packed = ws.get("packed", (kept_size, K.PACK_WORDS), np.float32)
     kept_boxes = ws.get("kept_boxes", (kept_size, 4))
     q = 0
     for c0, c1, local, local_boxes in parts:   # in key order, as one pass would
-        b = chunk_boxes[:c1 - c0]
-        if local_boxes is not None:
-            b[local] = local_boxes
-        K.pack_casters(recs[c0:c1], keys[c0:c1], b, local, kx, ky, kz, sx, sy, sgn, scale,
-                       packed[q:q + local.size], kept_boxes[q:q + local.size])
+        if local_boxes is None:
+            K.gather_rows(chunk_boxes[:c1 - c0], local, kept_boxes[q:q + local.size])
+        else:
+            kept_boxes[q:q + local.size] = local_boxes
         q += local.size
-    del parts
     boxes = kept_boxes
     timing["project_s"] = time.perf_counter() - t0
 
@@ -421,7 +418,7 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     nx = max(1, math.ceil(ext_x / size))
     ny = max(1, math.ceil(ext_y / size))
     inv = 1.0 / size
-    n_cells = nx * ny
+    ntx, n_cells = K.tiled_cells(nx, ny)
     cells = ws.get("cells", n, np.int64)
     K.receiver_cells(xs, ys, box[0], box[2], inv, inv, nx, ny, cells)
     counts = ws.get("counts", (n_chunks, n_cells), np.int32)
@@ -434,20 +431,34 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     ranges = ws.get("ranges", (kept_size, 4), np.int64)
     K.caster_ranges(boxes, box[0], box[2], inv, inv, nx, ny, ranges)
     refs = np.empty(0, np.int32)
-    K.scatter_casters(ranges, rec_start, nx, counts, refs, False)
+    # The packed rows in the order the query reads them (K.tile_order).
+    tile_counts = ws.get("tile_counts", (n_chunks, n_cells // K.TILE_CELLS), np.int32)
+    dest = ws.get("dest", kept_size, np.int32)
+    K.tile_order(ranges, ntx, tile_counts, False, dest)
+    K.prefix_sum(tile_counts, ws.get("tile_start", n_cells // K.TILE_CELLS + 1, np.int64))
+    K.tile_order(ranges, ntx, tile_counts, True, dest)
+    K.scatter_casters(ranges, rec_start, nx, counts, dest, refs, False)
     ref_start = ws.get("ref_start", n_cells + 1, np.int64)
     n_refs = K.prefix_sum(counts, ref_start)
     refs = ws.get("refs", n_refs, np.int32)
-    K.scatter_casters(ranges, rec_start, nx, counts, refs, True)
+    K.scatter_casters(ranges, rec_start, nx, counts, dest, refs, True)
+    packed = ws.get("packed", (kept_size, K.PACK_WORDS), np.float32)
+    q = 0
+    for c0, c1, local, _ in parts:
+        K.pack_casters(recs[c0:c1], keys[c0:c1], kept_boxes[q:q + local.size], local,
+                       dest[q:q + local.size], kx, ky, kz, sx, sy, sgn, scale, packed)
+        q += local.size
+    del parts
     timing["bin_s"] = time.perf_counter() - t0
 
     # Test each receiver against its cell's casters, nearest-to-the-sun first.
     t0 = time.perf_counter()
-    n_blocks = (n_cells + K.QUERY_BLOCK_CELLS - 1) // K.QUERY_BLOCK_CELLS
-    tests = np.zeros(n_blocks, np.int64)
+    n_tiles = n_cells // K.TILE_CELLS
+    tests = np.zeros(n_tiles, np.int64)
     hit_sorted = ws.get("hit_sorted", n, np.bool_)
-    K.query(packed, ref_start, refs, rec_start, rec_origins, kx, ky, kz, sx, sy, sz, sgn,
-            DEPTH_MARGIN_M + DEPTH_MARGIN_REL * scale, 0.0, np.inf, hit_sorted, tests)
+    run_chunks(K.query, n_tiles, K.QUERY_CHUNK_TILES, packed, ref_start, refs, rec_start,
+               rec_origins, kx, ky, kz, sx, sy, sz, sgn,
+               DEPTH_MARGIN_M + DEPTH_MARGIN_REL * scale, 0.0, np.inf, hit_sorted, tests)
     K.scatter_back(rec_order, hit_sorted, out)
     timing["query_s"] = time.perf_counter() - t0
     if stats is not None:

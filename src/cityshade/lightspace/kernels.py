@@ -33,7 +33,6 @@ import numpy as np
 from numba import njit, prange
 
 from cityshade.accel.kdtree_layout import REC_T_BEGIN64, REC_T_END64
-from cityshade.trace.bricks import stripe_interleave
 from cityshade.trace.kernels import hit_record, ray_shear
 
 #: Statistics columns of :func:`project_receivers`: light-plane box, lowest depth key, count of
@@ -246,25 +245,24 @@ _EDGE_WIDEN = 2.0 ** -20
 
 
 @njit(cache=True, parallel=True)
-def pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, scale_m, out,
-                 out_boxes):
-    """(len(kept), PACK_WORDS) float32 records of the kept casters, in key order: columns 0-8
-    the vertices (as in the tree's records), ``PACK_KEY`` the key (float32 values, exact),
-    ``PACK_BOX`` .. +3 the light-plane box rounded outward to float32, ``PACK_PLANE`` .. +2 the
-    depth plane ``sgn * z = key + c + a (x - box x0) + b (y - box y0)`` as (a, b, c), moved
-    sunward by its rounding bound, or (0, 0, +inf) where the plane is not trusted (never
-    skips). ``out_boxes`` (len(kept), 4) gets the float64 boxes of the kept casters."""
+def pack_casters(recs, keys, boxes, kept, dest, kx, ky, kz, sx, sy, sgn, scale_m, out):
+    """Float32 records (PACK_WORDS) of the kept casters ``kept`` (rows of ``recs``), each
+    written to row ``dest[q]`` of ``out`` (:func:`tile_order`): columns 0-8 the vertices (as
+    in the tree's records), ``PACK_KEY`` the key (float32 values, exact), ``PACK_BOX`` .. +3
+    the light-plane box ``boxes[q]`` (float64, of kept caster q) rounded outward to float32,
+    ``PACK_PLANE`` .. +2 the depth plane ``sgn * z = key + c + a (x - box x0) + b (y - box
+    y0)`` as (a, b, c), moved sunward by its rounding bound, or (0, 0, +inf) where the plane
+    is not trusted (never skips)."""
     for q in prange(kept.shape[0]):
         j = kept[q]
-        for c in range(4):
-            out_boxes[q, c] = boxes[j, c]
+        d = dest[q]
         for c in range(9):
-            out[q, c] = recs[j, c]
-        out[q, PACK_KEY] = keys[j]
+            out[d, c] = recs[j, c]
+        out[d, PACK_KEY] = keys[j]
         for c in range(4):
-            b = boxes[j, c]
+            b = boxes[q, c]
             w = abs(b) * _F32_WIDEN + 2.0 ** -40
-            out[q, PACK_BOX + c] = b - w if c % 2 == 0 else b + w
+            out[d, PACK_BOX + c] = b - w if c % 2 == 0 else b + w
         # Depth plane through the three projected vertices (float64, vertex 0 as origin).
         z0 = sgn * np.float64(recs[j, kz])
         x0 = np.float64(recs[j, kx]) - sx * np.float64(recs[j, kz])
@@ -276,22 +274,22 @@ def pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, scale_m, out,
         x2 = np.float64(recs[j, 6 + kx]) - sx * np.float64(recs[j, 6 + kz]) - x0
         y2 = np.float64(recs[j, 6 + ky]) - sy * np.float64(recs[j, 6 + kz]) - y0
         det = x1 * y2 - y1 * x2
-        bw = boxes[j, 1] - boxes[j, 0]
-        bh = boxes[j, 3] - boxes[j, 2]
+        bw = boxes[q, 1] - boxes[q, 0]
+        bh = boxes[q, 3] - boxes[q, 2]
         pa = 0.0
         pb = 0.0
         pc = np.inf
         if det != 0.0 and (bw * bw + bh * bh) <= _PLANE_MAX_ASPECT * abs(det):
             pa = (z1 * y2 - z2 * y1) / det
             pb = (x1 * z2 - x2 * z1) / det
-            bx0 = np.float64(out[q, PACK_BOX])
-            by0 = np.float64(out[q, PACK_BOX + 2])
+            bx0 = np.float64(out[d, PACK_BOX])
+            by0 = np.float64(out[d, PACK_BOX + 2])
             pc = z0 + pa * (bx0 - x0) + pb * (by0 - y0) - keys[j]
             pc += _PLANE_WIDEN * (abs(pa) * (bw + 1.0) + abs(pb) * (bh + 1.0) + abs(pc)
                                   + abs(keys[j]))
-        out[q, PACK_PLANE] = pa
-        out[q, PACK_PLANE + 1] = pb
-        out[q, PACK_PLANE + 2] = pc
+        out[d, PACK_PLANE] = pa
+        out[d, PACK_PLANE + 1] = pb
+        out[d, PACK_PLANE + 2] = pc
         # Edge half-planes a (x - box x0) + b (y - box y0) + c >= 0 holding the triangle, with
         # (a, b) the inward unit normal (float32) and c moved outward (see _EDGE_WIDEN), or
         # (0, 0, +inf) (never rejects) where the plane is not trusted. Why they are safe: a
@@ -301,12 +299,12 @@ def pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, scale_m, out,
         # |edge| >= |det| / diag >= diag 2^-20 (the trust condition) a receiver more than
         # 2^-27 (scale + diag) outside an edge's line gets that edge's sign from hit_record.
         diag = np.sqrt(bw * bw + bh * bh)
-        bx0 = np.float64(out[q, PACK_BOX])
-        by0 = np.float64(out[q, PACK_BOX + 2])
+        bx0 = np.float64(out[d, PACK_BOX])
+        by0 = np.float64(out[d, PACK_BOX + 2])
         for e in range(3):
-            out[q, PACK_EDGE + 3 * e] = 0.0
-            out[q, PACK_EDGE + 3 * e + 1] = 0.0
-            out[q, PACK_EDGE + 3 * e + 2] = np.inf
+            out[d, PACK_EDGE + 3 * e] = 0.0
+            out[d, PACK_EDGE + 3 * e + 1] = 0.0
+            out[d, PACK_EDGE + 3 * e + 2] = np.inf
         if pc < np.inf:
             widen = _EDGE_WIDEN * (scale_m + diag)
             sign = 1.0 if det > 0.0 else -1.0
@@ -326,28 +324,35 @@ def pack_casters(recs, keys, boxes, kept, kx, ky, kz, sx, sy, sgn, scale_m, out,
                 # c: minus the normal's value at the edge's start, in box-corner coordinates.
                 c = -(np.float64(a32) * (ex0 + x0 - bx0) + np.float64(b32) * (ey0 + y0 - by0))
                 c += widen + abs(c) * 2.0 ** -22
-                out[q, PACK_EDGE + 3 * e] = a32
-                out[q, PACK_EDGE + 3 * e + 1] = b32
-                out[q, PACK_EDGE + 3 * e + 2] = c
+                out[d, PACK_EDGE + 3 * e] = a32
+                out[d, PACK_EDGE + 3 * e + 1] = b32
+                out[d, PACK_EDGE + 3 * e + 2] = c
 
 
 @njit(cache=True, parallel=True)
 def estimate_refs(boxes, cell_sizes_m):
-    """Cell references the kept casters would make for each candidate cell size (K,)."""
-    n_k = cell_sizes_m.shape[0]
+    """Cell references the kept casters would make for each candidate cell size (K,):
+    the sum over boxes of ``(w / s + 1) (h / s + 1)``, from the boxes' sums of ``w h``,
+    ``w + h`` and their count (one pass, not one per size: 28 of the 1M map's 29 ms)."""
     n = boxes.shape[0]
     n_chunks = 64
     per = (n + n_chunks - 1) // n_chunks
-    part = np.zeros((n_chunks, n_k))
+    part = np.zeros((n_chunks, 3))
     for c in prange(n_chunks):
         for j in range(c * per, min(n, (c + 1) * per)):
             if np.isnan(boxes[j, 0]):
                 continue
             w = boxes[j, 1] - boxes[j, 0]
             h = boxes[j, 3] - boxes[j, 2]
-            for k in range(n_k):
-                part[c, k] += (w / cell_sizes_m[k] + 1.0) * (h / cell_sizes_m[k] + 1.0)
-    return part.sum(axis=0)
+            part[c, 0] += w * h
+            part[c, 1] += w + h
+            part[c, 2] += 1.0
+    sums = part.sum(axis=0)
+    out = np.empty(cell_sizes_m.shape[0])
+    for k in range(cell_sizes_m.shape[0]):
+        inv = 1.0 / cell_sizes_m[k]
+        out[k] = sums[0] * inv * inv + sums[1] * inv + sums[2]
+    return out
 
 
 @njit(cache=True, parallel=True)
@@ -416,11 +421,34 @@ def cull_unoccupied(boxes, x0, y0, inv, nx, ny, table):
             boxes[j, 0] = np.nan
 
 
+#: Cells are numbered tile by tile (:func:`tile_cell`): a tile of TILE x TILE cells is one
+#: query block, so the casters a block loads are those over a square of cells (a caster over
+#: 2 x 2 cells is loaded once per tile it touches; a row of 64 cells loaded it once per row).
+TILE = 8
+TILE_CELLS = TILE * TILE
+
+
+@njit(cache=True, inline="always")
+def tile_cell(ix, iy, ntx):
+    """Index of cell (ix, iy) when cells are numbered tile by tile (``ntx`` tiles per row,
+    tiles row-major, cells row-major inside a tile)."""
+    return (((iy // TILE) * ntx + ix // TILE) * TILE_CELLS + (iy % TILE) * TILE
+            + ix % TILE)
+
+
+def tiled_cells(nx: int, ny: int) -> tuple[int, int]:
+    """(tiles per row, cell indices) of an ``nx`` by ``ny`` grid numbered by :func:`tile_cell`
+    (padded to whole tiles)."""
+    ntx = -(-nx // TILE)
+    return ntx, ntx * -(-ny // TILE) * TILE_CELLS
+
+
 @njit(cache=True, parallel=True)
 def receiver_cells(xs, ys, x0, y0, inv_x, inv_y, nx, ny, out_cell):
-    """Grid cell of each receiver (row-major, ``iy * nx + ix``)."""
+    """Grid cell of each receiver, numbered by :func:`tile_cell`."""
+    ntx = (nx + TILE - 1) // TILE
     for i in prange(xs.shape[0]):
-        out_cell[i] = _cell(ys[i], y0, inv_y, ny) * nx + _cell(xs[i], x0, inv_x, nx)
+        out_cell[i] = tile_cell(_cell(xs[i], x0, inv_x, nx), _cell(ys[i], y0, inv_y, ny), ntx)
 
 
 @njit(cache=True, parallel=True)
@@ -437,6 +465,28 @@ def caster_ranges(boxes, x0, y0, inv_x, inv_y, nx, ny, out_range):
 
 
 @njit(cache=True, parallel=True)
+def tile_order(ranges, ntx, counts, fill, out_dest):
+    """Rows of the packed casters in the order the query first needs them: by the tile of
+    their box's first cell (:func:`tile_cell`), key order inside a tile, so a chunk of tiles
+    reads its casters from a few contiguous stretches instead of all over the array (the
+    query's loads of caster records were cache misses). Count pass (``fill`` False:
+    ``counts`` (n_chunks, n_tiles) int32, any content, gets the casters per tile of each fixed
+    chunk) or fill pass (``fill`` True: ``counts`` the cursors of :func:`prefix_sum`;
+    ``out_dest[j]`` the row of caster j). The same order for any thread count."""
+    n = ranges.shape[0]
+    n_chunks = counts.shape[0]
+    per = (n + n_chunks - 1) // n_chunks
+    for c in prange(n_chunks):
+        if not fill:
+            counts[c, :] = 0
+        for j in range(c * per, min(n, (c + 1) * per)):
+            t = (ranges[j, 2] // TILE) * ntx + ranges[j, 0] // TILE
+            if fill:
+                out_dest[j] = counts[c, t]
+            counts[c, t] += 1
+
+
+@njit(cache=True, parallel=True)
 def count_receivers(cells, out_counts):
     """``out_counts`` (n_chunks, n_cells) int32 (any content; each chunk clears its own row):
     receivers per cell in each fixed chunk of receivers."""
@@ -450,16 +500,18 @@ def count_receivers(cells, out_counts):
 
 
 @njit(cache=True, parallel=True)
-def scatter_casters(ranges, rec_start, nx, cursor, out_refs, fill):
+def scatter_casters(ranges, rec_start, nx, cursor, dest, out_refs, fill):
     """Count pass (``fill`` False: ``cursor`` (n_chunks, n_cells) int32, any content, gets the
-    references per cell of each fixed chunk of casters; each chunk clears its own row first) or fill pass (``fill`` True: ``cursor`` holds the
-    write positions of :func:`prefix_sum` and ``out_refs`` gets the caster indices, in caster =
-    key order inside a cell). Only cells holding a receiver (``rec_start`` (n_cells + 1,), the
-    receivers' list starts) get references.
+    references per cell of each fixed chunk of casters; each chunk clears its own row first)
+    or fill pass (``fill`` True: ``cursor`` holds the write positions of :func:`prefix_sum`
+    and ``out_refs`` gets the casters' packed rows ``dest[j]``, in caster = key order inside a
+    cell). Only cells holding a receiver (``rec_start`` (n_cells + 1,), the receivers' list
+    starts) get references.
     """
     n = ranges.shape[0]
     n_chunks = cursor.shape[0]
     per = (n + n_chunks - 1) // n_chunks
+    ntx = (nx + TILE - 1) // TILE
     for c in prange(n_chunks):
         if not fill:
             cursor[c, :] = 0
@@ -467,12 +519,11 @@ def scatter_casters(ranges, rec_start, nx, cursor, out_refs, fill):
             if ranges[j, 0] < 0:
                 continue
             for iy in range(ranges[j, 2], ranges[j, 3] + 1):
-                row = iy * nx
                 for ix in range(ranges[j, 0], ranges[j, 1] + 1):
-                    cell = row + ix
+                    cell = tile_cell(ix, iy, ntx)
                     if rec_start[cell + 1] > rec_start[cell]:
                         if fill:
-                            out_refs[cursor[c, cell]] = j
+                            out_refs[cursor[c, cell]] = dest[j]
                         cursor[c, cell] += 1
 
 
@@ -508,6 +559,14 @@ def fill_receivers(cells, cursor, origins, out_order, out_origins):
             out_origins[q, 1] = origins[i, 1]
             out_origins[q, 2] = origins[i, 2]
             cursor[c, cell] += 1
+
+
+@njit(cache=True, parallel=True)
+def gather_rows(src, rows, out):
+    """``out[q] = src[rows[q]]`` (2-D rows)."""
+    for q in prange(rows.shape[0]):
+        for w in range(src.shape[1]):
+            out[q, w] = src[rows[q], w]
 
 
 @njit(cache=True, parallel=True)
@@ -550,14 +609,9 @@ def _inside_edges(packed, j, rx, ry):
     return True
 
 
-#: Cells per parallel work item of the query: neighbouring cells share casters, so a block
-#: keeps its last-occluder cache warm; small enough for the two cores to balance.
-QUERY_BLOCK_CELLS = 64
-#: Stripes of the block interleave (as in :mod:`cityshade.trace.bricks`, but few): each thread
-#: takes part of every stripe so the cores finish together, and consecutive blocks of a stripe
-#: are neighbouring cells whose casters (sorted by key, i.e. along the shear axis) are close in
-#: memory; many stripes would spread one thread's working set over the whole caster array.
-QUERY_STRIPES = 8
+#: Tiles per chunk of the query handed to a thread (:func:`query`): consecutive tiles of a
+#: row share casters, so a chunk keeps them in cache; small enough for the threads to balance.
+QUERY_CHUNK_TILES = 8
 
 
 #: A cell whose list holds at most this many casters is queried caster by caster over chunks of
@@ -569,6 +623,8 @@ QUERY_STRIPES = 8
 #: / 311 ms, map at a 3 deg sun 202 / 208 / 248 / 329 ms.
 QUERY_SHORT_LIST = 60
 QUERY_CHUNK = 64
+#: Lanes of the caster-major mask are padded to a multiple of this (see _query_caster_major).
+QUERY_LANES = 8
 
 
 @njit(cache=True, inline="always")
@@ -611,7 +667,7 @@ def _query_receiver_major(packed, refs, p0, p1, origins, r0, r1, kx, ky, kz, sx,
 
 @njit(cache=True, inline="always")
 def _query_caster_major(packed, refs, p0, p1, origins, c0, m, kx, ky, kz, sx, sy, sz, sgn,
-                        depth_margin_m, tmin, tmax, out, cache_k, rx, ry, rk, alive, cand):
+                        depth_margin_m, tmin, tmax, out, cache_k, rx, ry, rk, cand):
     """Receivers c0..c0+m of one cell (m <= QUERY_CHUNK; ``rx .. cand`` scratch of that size)
     against the last occluder, then the cell's list in key order: per caster one branch-free
     mask over the receivers still lit (the skips of :func:`_may_hit`, the same float
@@ -620,14 +676,29 @@ def _query_caster_major(packed, refs, p0, p1, origins, c0, m, kx, ky, kz, sx, sy
     shadowed or the casters lie behind the lowest one. Returns (tests, last occluder)."""
     tests = 0
     k_low = np.inf
+    bx0 = np.inf
+    bx1 = -np.inf
+    by0 = np.inf
+    by1 = -np.inf
     for q in range(m):
         okz = origins[c0 + q, kz]
         rx[q] = origins[c0 + q, kx] - sx * okz
         ry[q] = origins[c0 + q, ky] - sy * okz
         rk[q] = sgn * okz
         k_low = min(k_low, rk[q])
-        alive[q] = True
+        bx0 = min(bx0, rx[q])
+        bx1 = max(bx1, rx[q])
+        by0 = min(by0, ry[q])
+        by1 = max(by1, ry[q])
         out[c0 + q] = False
+    # Lanes up to a multiple of QUERY_LANES, dead: a receiver's key of +inf fails the mask's
+    # first test (a shadowed receiver gets it too), so the mask loop has no scalar tail. A
+    # chunk of fewer receivers is not padded (a cell of 1-2 receivers would test 8 lanes).
+    m_pad = m if m < QUERY_LANES else -(-m // QUERY_LANES) * QUERY_LANES
+    for q in range(m, m_pad):
+        rx[q] = 0.0
+        ry[q] = 0.0
+        rk[q] = np.inf
     left = m
     first = cache_k
     for p in range(p0 - 1, p1):
@@ -648,6 +719,10 @@ def _query_caster_major(packed, refs, p0, p1, origins, c0, m, kx, ky, kz, sx, sy
         x1 = np.float64(packed[j, PACK_BOX + 1])
         y0 = np.float64(packed[j, PACK_BOX + 2])
         y1 = np.float64(packed[j, PACK_BOX + 3])
+        # No receiver of the chunk in the box: every lane's box test below would fail
+        # (``rx - x0 >= 0`` is ``rx >= x0`` exactly), so the caster is skipped unread.
+        if bx1 < x0 or bx0 > x1 or by1 < y0 or by0 > y1:
+            continue
         pa = np.float64(packed[j, PACK_PLANE])
         pb = np.float64(packed[j, PACK_PLANE + 1])
         kc = key + np.float64(packed[j, PACK_PLANE + 2])
@@ -661,11 +736,11 @@ def _query_caster_major(packed, refs, p0, p1, origins, c0, m, kx, ky, kz, sx, sy
         eb2 = np.float64(packed[j, PACK_EDGE + 7])
         ec2 = np.float64(packed[j, PACK_EDGE + 8])
         n_cand = 0
-        for q in range(m):
+        for q in range(m_pad):
             dx = rx[q] - x0
             dy = ry[q] - y0
             zp = kc + pa * dx + pb * dy
-            ok = (alive[q] & (rk[q] <= key) & (dx >= 0.0) & (rx[q] <= x1) & (dy >= 0.0)
+            ok = ((rk[q] <= key) & (dx >= 0.0) & (rx[q] <= x1) & (dy >= 0.0)
                   & (ry[q] <= y1) & (zp >= rk[q] - depth_margin_m)
                   & (ea0 * dx + eb0 * dy + ec0 >= 0.0) & (ea1 * dx + eb1 * dy + ec1 >= 0.0)
                   & (ea2 * dx + eb2 * dy + ec2 >= 0.0))
@@ -681,7 +756,7 @@ def _query_caster_major(packed, refs, p0, p1, origins, c0, m, kx, ky, kz, sx, sy
                                           origins[i, kz], kx, ky, kz, sx, sy, sz)
                 if hit and tmin <= t <= tmax:
                     out[i] = True
-                    alive[q] = False
+                    rk[q] = np.inf
                     cache_k = j
                     left -= 1
         if left == 0:
@@ -689,39 +764,35 @@ def _query_caster_major(packed, refs, p0, p1, origins, c0, m, kx, ky, kz, sx, sy
     return tests, cache_k
 
 
-@njit(cache=True, parallel=True)
+@njit(cache=True, nogil=True)
 def query(packed, ref_start, refs, rec_start, origins, kx, ky, kz, sx, sy, sz, sgn,
-          depth_margin_m, tmin, tmax, out, out_tests):
-    """``out[q]`` (every entry written) True when the shadow ray of receiver q (in cell order)
-    hits a caster of its cell.
+          depth_margin_m, tmin, tmax, out, out_tests, b0, b1):
+    """``out[q]`` (every entry of tiles ``b0 .. b1`` written) True when the shadow ray of
+    receiver q (in cell order) hits a caster of its cell.
 
-    ``packed`` (M, PACK_WORDS) float32 caster records of :func:`pack_casters` sorted by key
-    (descending), ``refs`` the cells' caster lists (``ref_start`` (n_cells + 1,)),
-    ``origins`` the receivers' origins grouped by cell (``rec_start``). A receiver outside a
-    caster's widened box is outside the triangle (the binning argument), so the box check only
-    skips tests that cannot hit; so does the depth plane: a caster whose plane lies more than
-    ``depth_margin_m`` behind the receiver along the shear axis gives t < 0. The test is
-    :func:`hit_record` with ``tmin <= t <= tmax``, exactly as in
-    :func:`cityshade.trace.kernels.any_hit`; the decision is "some candidate passes", so the
-    order in which a cell's pairs are tested (receiver- or caster-major, see
-    :data:`QUERY_SHORT_LIST`) changes only the time. ``out_tests`` (n_blocks,) int64 counts the
-    triangle tests per block (a profile, not used for the answer).
+    ``packed`` (M, PACK_WORDS) float32 caster records of :func:`pack_casters`, ``refs`` the
+    cells' caster lists in key order (descending; ``ref_start`` (n_cells + 1,)), ``origins``
+    the receivers' origins grouped by cell (``rec_start``), cells numbered by
+    :func:`tile_cell`. A receiver outside a caster's widened box is outside the triangle (the
+    binning argument), so the box check only skips tests that cannot hit; so does the depth
+    plane: a caster whose plane lies more than ``depth_margin_m`` behind the receiver along
+    the shear axis gives t < 0. The test is :func:`hit_record` with ``tmin <= t <= tmax``,
+    exactly as in :func:`cityshade.trace.kernels.any_hit`; the decision is "some candidate
+    passes", so the order in which a cell's pairs are tested (receiver- or caster-major, see
+    :data:`QUERY_SHORT_LIST`) changes only the time. ``out_tests`` (n_tiles,) int64 counts the
+    triangle tests per tile (a profile, not used for the answer). A serial ``nogil`` kernel
+    over a range of tiles, for :func:`cityshade.runtime.threadpool.run_chunks` (a ``prange``
+    body loaded from Numba's cache may run slower than its first compile).
     """
     n_cells = ref_start.shape[0] - 1
-    n_blocks = (n_cells + QUERY_BLOCK_CELLS - 1) // QUERY_BLOCK_CELLS
-    n_iter = QUERY_STRIPES * ((n_blocks + QUERY_STRIPES - 1) // QUERY_STRIPES)
-    for it in prange(n_iter):
-        b = stripe_interleave(it, n_blocks, QUERY_STRIPES)
-        if b < 0:
-            continue
-        rx = np.empty(QUERY_CHUNK)
-        ry = np.empty(QUERY_CHUNK)
-        rk = np.empty(QUERY_CHUNK)
-        alive = np.empty(QUERY_CHUNK, np.bool_)
-        cand = np.empty(QUERY_CHUNK, np.bool_)
+    rx = np.empty(QUERY_CHUNK)
+    ry = np.empty(QUERY_CHUNK)
+    rk = np.empty(QUERY_CHUNK)
+    cand = np.empty(QUERY_CHUNK, np.bool_)
+    cache_k = -1
+    for b in range(b0, b1):
         tests = 0
-        cache_k = -1
-        for cell in range(b * QUERY_BLOCK_CELLS, min(n_cells, (b + 1) * QUERY_BLOCK_CELLS)):
+        for cell in range(b * TILE_CELLS, min(n_cells, (b + 1) * TILE_CELLS)):
             r0 = rec_start[cell]
             r1 = rec_start[cell + 1]
             p0 = ref_start[cell]
@@ -739,6 +810,6 @@ def query(packed, ref_start, refs, rec_start, origins, kx, ky, kz, sx, sy, sz, s
                     n_t, cache_k = _query_caster_major(
                         packed, refs, p0, p1, origins, c0, min(r1, c0 + QUERY_CHUNK) - c0,
                         kx, ky, kz, sx, sy, sz, sgn, depth_margin_m, tmin, tmax, out, cache_k,
-                        rx, ry, rk, alive, cand)
+                        rx, ry, rk, cand)
                     tests += n_t
         out_tests[b] = tests
