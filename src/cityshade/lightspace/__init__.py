@@ -422,23 +422,9 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     ny = max(1, math.ceil(ext_y / size))
     inv = 1.0 / size
     n_cells = nx * ny
-    cells = ws.get("cells", n, np.int64)
-    K.receiver_cells(xs, ys, box[0], box[2], inv, inv, nx, ny, cells)
-    counts = ws.get("counts", (n_chunks, n_cells), np.int32)
-    K.count_receivers(cells, counts)
-    rec_start = ws.get("rec_start", n_cells + 1, np.int64)
-    K.prefix_sum(counts, rec_start)
-    rec_order = ws.get("rec_order", n, np.int32)
-    rec_origins = ws.get("rec_origins", (n, 3))
-    K.fill_receivers(cells, counts, origins, rec_order, rec_origins)
-    ranges = ws.get("ranges", (kept_size, 4), np.int64)
-    K.caster_ranges(boxes, box[0], box[2], inv, inv, nx, ny, ranges)
-    refs = np.empty(0, np.int32)
-    K.scatter_casters(ranges, rec_start, nx, counts, refs, False)
-    ref_start = ws.get("ref_start", n_cells + 1, np.int64)
-    n_refs = K.prefix_sum(counts, ref_start)
-    refs = ws.get("refs", n_refs, np.int32)
-    K.scatter_casters(ranges, rec_start, nx, counts, refs, True)
+    rec_start, rec_order, rec_origins, ref_start, refs = bin_grid(
+        ws, xs, ys, origins, boxes, box[0], box[2], inv, nx, ny, n_chunks)
+    n_refs = refs.size
     timing["bin_s"] = time.perf_counter() - t0
 
     # Test each receiver against its cell's casters, nearest-to-the-sun first.
@@ -457,6 +443,34 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
                      walked_casters=-1 if rows is None else int(rows.size),
                      tests=int(tests.sum()), occluded=int(out.sum()))
     return out
+
+
+def bin_grid(ws, xs, ys, origins, boxes, x0, y0, inv, nx, ny, n_chunks):
+    """Receivers and casters binned into one grid (``nx`` by ``ny`` cells of ``1 / inv`` from
+    ``(x0, y0)``), work arrays from the :class:`~cityshade.runtime.memory.Scratch` ``ws``:
+    ``rec_start`` (cells + 1,) and ``rec_order``/``rec_origins`` the receivers grouped by cell
+    (receiver order inside a cell) and their origins; ``ref_start`` (cells + 1,) and ``refs``
+    each cell's casters (rows of ``boxes``, NaN in column 0 for a culled one) in row order,
+    only in cells holding a receiver. The same lists whatever the thread count."""
+    n = xs.shape[0]
+    n_cells = nx * ny
+    cells = ws.get("cells", n, np.int64)
+    K.receiver_cells(xs, ys, x0, y0, inv, inv, nx, ny, cells)
+    counts = ws.get("counts", (n_chunks, n_cells), np.int32)
+    K.count_receivers(cells, counts)
+    rec_start = ws.get("rec_start", n_cells + 1, np.int64)
+    K.prefix_sum(counts, rec_start)
+    rec_order = ws.get("rec_order", n, np.int32)
+    rec_origins = ws.get("rec_origins", (n, 3))
+    K.fill_receivers(cells, counts, origins, rec_order, rec_origins)
+    ranges = ws.get("ranges", (boxes.shape[0], 4), np.int64)
+    K.caster_ranges(boxes, x0, y0, inv, inv, nx, ny, ranges)
+    K.scatter_casters(ranges, rec_start, nx, counts, np.empty(0, np.int32), False)
+    ref_start = ws.get("ref_start", n_cells + 1, np.int64)
+    n_refs = K.prefix_sum(counts, ref_start)
+    refs = ws.get("refs", n_refs, np.int32)
+    K.scatter_casters(ranges, rec_start, nx, counts, refs, True)
+    return rec_start, rec_order, rec_origins, ref_start, refs
 
 
 def _near_rows(kd, casters, box, min_key, shear, t_days: float):
