@@ -55,13 +55,15 @@ def building(bid, faces, solid_refs=True, extra="", srs="EPSG:25832") -> str:
     return f'<bldg:Building gml:id="{bid}">{extra}{solid}{bounded}</bldg:Building>'
 
 
-def tree(tid, faces, kind="SolitaryVegetationObject") -> str:
+def tree(tid, faces, kind="SolitaryVegetationObject", codes=()) -> str:
     """A vegetation object (``veg:SolitaryVegetationObject`` or ``veg:PlantCover``) whose
-    LoD2 geometry is the polygons ``faces`` ((class, id, points) as :func:`box_polygons`)."""
+    LoD2 geometry is the polygons ``faces`` ((class, id, points) as :func:`box_polygons`),
+    with the attributes ``codes`` ((name, value): ``veg:class``, ``veg:species``...)."""
     members = "".join(f"<gml:surfaceMember>{polygon(pts, pid)}</gml:surfaceMember>"
                       for _, pid, pts in faces)
     prop = "lod2Geometry" if kind == "SolitaryVegetationObject" else "lod2MultiSurface"
-    return (f'<veg:{kind} gml:id="{tid}"><veg:{prop}><gml:MultiSurface>{members}'
+    attrs = "".join(f"<veg:{name}>{value}</veg:{name}>" for name, value in codes)
+    return (f'<veg:{kind} gml:id="{tid}">{attrs}<veg:{prop}><gml:MultiSurface>{members}'
             f"</gml:MultiSurface></veg:{prop}></veg:{kind}>")
 
 

@@ -579,6 +579,16 @@ class VegetationSettings:
     #: ones counted with their transmissivity), "all" (every crown: in leaf for the VSC, each
     #: hour's leaf state for the sunlight), "none".
     window_trees: str = "evergreen"
+    #: Values of a vegetation object's ``class``, ``function``, ``usage`` or ``species`` in
+    #: the data (CityGML ``veg:`` elements, CityJSON attributes of those names) that make its
+    #: crown evergreen (its in-leaf transmissivity all year), compared whole, without case.
+    #: The defaults are the plain words of English and German data; no numeric code, since
+    #: the code lists differ (SIG3D's for CityGML 2.0, PLATEAU's SolitaryVegetationObject_
+    #: function, which codes evergreen/deciduous and needle/broadleaf) and were not at hand
+    #: to cite: add a file's evergreen codes here.
+    evergreen_values: tuple[str, ...] = ("evergreen", "conifer", "coniferous", "needleleaf",
+                                         "needle-leaved", "immergrün", "nadelbaum",
+                                         "nadelgehölz", "konifere")
     solitary: VegetationClassSettings = _table(VegetationClassSettings)
     plant_cover: VegetationClassSettings = _table(VegetationClassSettings)
 
@@ -589,6 +599,13 @@ class VegetationSettings:
                 raise ConfigError(f"{name} must be a day of the year in 1..366, not {value}")
         _one_of("season", self.season, SEASONS)
         _one_of("window_trees", self.window_trees, WINDOW_TREES)
+
+    def is_evergreen(self, codes: dict) -> bool:
+        """Whether an object's codes (name → list of values, as the reader keeps them) hold
+        one of :attr:`evergreen_values`."""
+        wanted = {v.strip().casefold() for v in self.evergreen_values}
+        return any(str(v).strip().casefold() in wanted
+                   for values in codes.values() for v in values)
 
     def in_leaf(self, day_of_year: int | None) -> bool:
         """Whether deciduous vegetation is in leaf on ``day_of_year`` (None: no date)."""

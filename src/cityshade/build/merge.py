@@ -57,6 +57,8 @@ class SceneMerger:
         self.textures: list[dict] = []
         self.texture_index: dict[str, int] = {}
         self.reports: list[tuple[str, dict]] = []
+        #: [merged object, codes] of the vegetation objects kept (report "vegetation_codes").
+        self.vegetation_codes: list = []
         self.obj_ids: list[str] = []
         self.obj_types: list[str] = []
         self.poly_ids: list[str] = []
@@ -128,6 +130,8 @@ class SceneMerger:
         self.n_obj, self.n_poly, self.n_vert = (next_index, self.n_poly + len(kept_poly),
                                                 self.n_vert + len(world))
         self.n_tri += int(len(kept_tri))
+        self.vegetation_codes += [[int(remap[i]), codes] for i, codes in
+                                  (scene.report or {}).get("vegetation_codes", []) if keep[i]]
         self.reports.append((name, scene.report))
         self.files.append({"path": name, "objects": n, "duplicates": dropped,
                            "triangles": int(len(kept_tri))})
@@ -224,6 +228,9 @@ class SceneMerger:
                            for w, names in by_text.items()]
         rep["time_sources_used"] = dict(sorted(Counter(
             TIME_SOURCE_NAMES[int(c)] for c in fields["obj_time_source"]).items()))
+        rep.pop("vegetation_codes", None)
+        if self.vegetation_codes:
+            rep["vegetation_codes"] = self.vegetation_codes
         rep["tiles"] = {"files": len(self.files),
                         "duplicate_objects": int(sum(self.duplicates.values())),
                         "per_file": self.files}

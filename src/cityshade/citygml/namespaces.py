@@ -123,6 +123,13 @@ SKIPPED_CITYGML = frozenset("""
 IMPLICIT_PROPERTIES = frozenset(f"lod{n}ImplicitRepresentation" for n in range(5))
 
 #: Attributes that give an object's validity interval (docs/DESIGN.md §1).
+#: Object types whose ``class``, ``function``, ``usage`` and ``species`` codes are kept
+#: (:attr:`cityshade.citygml.reader.RawModel.obj_codes`: which crowns are evergreen,
+#: docs/DESIGN.md §21), and those attribute names (CityGML 1.0-3.0 ``veg:`` elements,
+#: CityJSON attributes).
+VEGETATION_CODE_TYPES = frozenset({"SolitaryVegetationObject", "PlantCover"})
+VEGETATION_CODE_NAMES = ("class", "function", "usage", "species")
+
 TIME_ATTRIBUTES = frozenset({
     "validFrom", "validTo", "yearOfConstruction", "yearOfDemolition", "dateOfConstruction",
     "dateOfDemolition", "creationDate", "terminationDate",

@@ -76,6 +76,9 @@ class RawModel:
     obj_parent: list[int] = field(default_factory=list)
     obj_time: list[dict[str, str]] = field(default_factory=list)
     obj_line: list[int] = field(default_factory=list)
+    #: Per vegetation object (index) its ``class``/``function``/``usage``/``species`` values
+    #: as the file spells them (``ns.VEGETATION_CODE_NAMES``; function and usage may repeat).
+    obj_codes: dict[int, dict[str, list[str]]] = field(default_factory=dict)
     # Polygons (one entry per polygon element); int64 arrays once reading is finished.
     poly_obj: np.ndarray = field(default_factory=lambda: np.empty(0, np.int64))
     poly_cls: np.ndarray = field(default_factory=lambda: np.empty(0, np.int64))
@@ -300,6 +303,10 @@ class _Walker:
                 self.generic_attribute(child, times)
             elif local == "lod" and child.text and child.text.strip().isdigit():
                 relief_lod = int(child.text.strip())  # dem:lod of a relief
+            elif (local in ns.VEGETATION_CODE_NAMES and obj_type in ns.VEGETATION_CODE_TYPES
+                  and child.text and child.text.strip()):
+                m.obj_codes.setdefault(index, {}).setdefault(local, []).append(
+                    child.text.strip())
         m.obj_time.append(times)
         default_cls = ns.SURFACE_CODE[ns.OBJECT_DEFAULT_CLASS.get(obj_type, "unclassified")]
         self.walk(el, index, default_cls, relief_lod, 0)

@@ -224,6 +224,7 @@ def merge(a, b) -> None:
     a.obj_types += b.obj_types
     a.obj_parent += [p + n_obj if p >= 0 else p for p in b.obj_parent]
     a.obj_time += b.obj_time
+    a.obj_codes.update({i + n_obj: codes for i, codes in b.obj_codes.items()})
     a.obj_line += b.obj_line
     a.poly_obj = np.concatenate([a.poly_obj, b.poly_obj + n_obj])
     a.poly_cls = np.concatenate([a.poly_cls, b.poly_cls])

@@ -480,6 +480,15 @@ class _Reader:
                     text = _time_text(attrs.get(name))
                     if text is not None:
                         times[GENERIC_PREFIX + name] = text
+                if obj_type in ns.VEGETATION_CODE_TYPES:
+                    codes = {name: [str(v).strip() for v in (value if isinstance(value, list)
+                                                            else [value])
+                                    if isinstance(v, (str, int, float)) and str(v).strip()]
+                             for name in ns.VEGETATION_CODE_NAMES
+                             if (value := attrs.get(name)) is not None}
+                    codes = {k: v for k, v in codes.items() if v}
+                    if codes:
+                        m.obj_codes[index] = codes
             m.obj_time.append(times)
             default_cls = ns.SURFACE_CODE[ns.OBJECT_DEFAULT_CLASS.get(
                 _TYPE_ALIASES.get(obj_type, obj_type), "unclassified")]

@@ -12,8 +12,9 @@ from cityshade.cli.helpfmt import GroupedCommand
 from cityshade.cli.options import crs_option
 
 
-def describe(scene) -> dict:
-    """The ``info --json`` object of a scene."""
+def describe(scene, vegetation=None) -> dict:
+    """The ``info --json`` object of a scene; ``vegetation`` the ``[vegetation]`` settings
+    that say which crowns are evergreen (default: the defaults)."""
     import numpy as np
 
     from cityshade.citygml.namespaces import SURFACE_CLASSES
@@ -39,7 +40,28 @@ def describe(scene) -> dict:
         "textures": [t["uri"] for t in scene.textures],
         "kdtree": scene.kdtree.stats if scene.kdtree is not None else None,
     })
+    crowns = _crowns(scene, vegetation)
+    if crowns:
+        out["vegetation"] = crowns
     return out
+
+
+def _crowns(scene, settings) -> dict | None:
+    """Crowns (vegetation objects with triangles), how many are evergreen and how many carry
+    class/function/usage/species codes in the data (docs/DESIGN.md §21)."""
+    import numpy as np
+
+    from cityshade.config import VegetationSettings
+    from cityshade.geometry.vegetation import evergreen_objects, object_codes, vegetation_mask
+
+    mask = vegetation_mask(scene)
+    if not mask.any():
+        return None
+    crowns = np.unique(np.asarray(scene.tri_object)[mask])
+    codes = object_codes(scene)
+    evergreen = evergreen_objects(scene, settings or VegetationSettings())[crowns]
+    return {"crowns": int(crowns.size), "evergreen": int(evergreen.sum()),
+            "with_codes": sum(1 for c in crowns.tolist() if c in codes)}
 
 
 def describe_tiled(tiled) -> dict:
@@ -131,6 +153,10 @@ def _text(d: dict) -> str:
         unresolved = imp.get("references_unresolved")
         add(f"implicit      {imp['prototypes']:,} prototypes, {imp['instances']:,} instances "
             f"placed" + (f", {unresolved:,} references unresolved" if unresolved else ""))
+    veg = d.get("vegetation")
+    if veg:
+        add(f"vegetation    {veg['crowns']:,} crowns, {veg['evergreen']:,} evergreen; "
+            f"{veg['with_codes']:,} with class/function/usage/species codes")
     add(f"triangles     {d['triangles']:,} ({d['vertices']:,} vertices)")
     add("surfaces      " + ", ".join(f"{k} {v:,}" for k, v in d["surface_classes"].items()))
     lods = ", ".join(f"LoD{k}: {v}" for k, v in d["lods"].items()) or "none"
@@ -236,7 +262,7 @@ def info(file: Path, as_json: bool, crs: str | None, verify: bool) -> None:
         from cityshade.build import build_scene_from_file
 
         scene = build_scene_from_file(file, settings)
-    d = describe(scene)
+    d = describe(scene, settings.vegetation if settings is not None else None)
     if checked:
         d["verified"] = checked
     if as_json:

@@ -581,6 +581,9 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
     openings = _opening_groups(getattr(raw, "openings", ()), orig_poly)
     if openings:
         report["openings"] = openings
+    codes = getattr(raw, "obj_codes", None)
+    if codes:  # the scene's objects are the raw model's, one for one
+        report["vegetation_codes"] = [[i, codes[i]] for i in sorted(codes)]
     obj_begin, obj_end = times.begin_days, times.end_days
     return Scene(
         origin_m=origin.astype(np.float64), crs=crs, vertices=vertices, uv=look.uv,

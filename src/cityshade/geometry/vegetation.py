@@ -59,6 +59,37 @@ def vegetation_mask(scene) -> np.ndarray:
     return by_object | (np.asarray(scene.tri_class) == SURFACE_CODE["vegetation"])
 
 
+def object_codes(scene) -> dict[int, dict]:
+    """Object index → its vegetation codes from the data (``class``, ``function``, ``usage``,
+    ``species``: name → values, the build report's ``vegetation_codes``); a part without
+    codes of its own takes its nearest ancestor's."""
+    codes = {int(i): c for i, c in (scene.report or {}).get("vegetation_codes", [])}
+    if not codes:
+        return {}
+    parent = np.asarray(scene.obj_parent)
+    out = {}
+    for i in np.flatnonzero(vegetation_objects(scene) >= 0).tolist():
+        j, depth = i, 0
+        while j >= 0 and j not in codes and depth < 16:
+            j, depth = int(parent[j]), depth + 1
+        if j >= 0 and j in codes:
+            out[i] = codes[j]
+    return out
+
+
+def evergreen_objects(scene, settings: VegetationSettings) -> np.ndarray:
+    """(O,) bool: objects whose crowns keep their in-leaf transmissivity all year: their
+    class table says ``evergreen``, or their codes in the data are one of
+    ``evergreen_values``. Objects that are not vegetation count as solitary (a triangle of
+    surface class vegetation in them is a crown of that class)."""
+    code = vegetation_objects(scene)
+    by_class = np.array([getattr(settings, n).evergreen for n in CLASS_TABLES])
+    out = by_class[np.where(code < 0, 0, code)] if code.size else np.zeros(0, bool)
+    for i, codes in object_codes(scene).items():
+        out[i] |= settings.is_evergreen(codes)
+    return out
+
+
 #: The two kd-trees of a scene with vegetation (:func:`vegetation_kdtrees`), by name: the
 #: opaque triangles' and the crowns' (their records index the subset's triangles in order).
 KDTREE_PARTS = ("opaque", "crowns")
@@ -137,9 +168,7 @@ def window_light_scene(scene):
         return scene
     drop = mask
     if settings.window_trees == "evergreen":
-        cls = vegetation_objects(scene)[np.asarray(scene.tri_object)]
-        evergreen = np.array([getattr(settings, n).evergreen for n in CLASS_TABLES])
-        drop = mask & ~evergreen[np.where(cls < 0, 0, cls)]
+        drop = mask & ~evergreen_objects(scene, settings)[np.asarray(scene.tri_object)]
     if not drop.any():
         return scene
     # Every crown dropped: the opaque triangles, whose tree the file may hold.
@@ -168,6 +197,18 @@ class SceneVegetation:
     triangles: np.ndarray
     t_begin_days: np.ndarray
     t_end_days: np.ndarray
+    #: Crown index → its object's codes from the data (:func:`object_codes`), crowns with
+    #: codes only.
+    crown_codes: dict = dataclasses.field(default_factory=dict)
+
+    def evergreen(self, settings: VegetationSettings) -> np.ndarray:
+        """(C,) bool: crowns with their in-leaf transmissivity all year, by their class table
+        or their codes (:func:`evergreen_objects`' rule)."""
+        by_class = np.array([getattr(settings, n).evergreen for n in CLASS_TABLES])
+        out = by_class[self.crown_class]
+        for c, codes in self.crown_codes.items():
+            out[c] |= settings.is_evergreen(codes)
+        return out
 
     def transmissivity(self, settings: VegetationSettings,
                        day_of_year: int | None) -> np.ndarray:
@@ -177,13 +218,14 @@ class SceneVegetation:
 
     def transmissivity_in(self, settings: VegetationSettings, leaf: bool) -> np.ndarray:
         """(C,) float64: each crown's transmissivity with deciduous crowns in leaf (``leaf``)
-        or leafless; an evergreen class keeps its in-leaf value."""
-        per_class = []
-        for name in CLASS_TABLES:
-            cls = getattr(settings, name)
-            on = leaf or cls.evergreen
-            per_class.append(cls.leaf_on_transmissivity if on else cls.leaf_off_transmissivity)
-        return np.asarray(per_class, np.float64)[self.crown_class]
+        or leafless; an evergreen crown (:meth:`evergreen`) keeps its in-leaf value."""
+        tables = [getattr(settings, name) for name in CLASS_TABLES]
+        on = np.asarray([t.leaf_on_transmissivity for t in tables], np.float64)[self.crown_class]
+        if leaf:
+            return on
+        off = np.asarray([t.leaf_off_transmissivity for t in tables],
+                         np.float64)[self.crown_class]
+        return np.where(self.evergreen(settings), on, off)
 
 
 def scene_vegetation(scene) -> SceneVegetation | None:
@@ -202,6 +244,7 @@ def scene_vegetation(scene) -> SceneVegetation | None:
 
 
 def _make_vegetation(scene, mask: np.ndarray) -> SceneVegetation:
+    codes = object_codes(scene)
     crowns = _subscene(scene, mask, "crowns")
     objects = np.asarray(crowns.tri_object)
     crown_object, tri_crown = np.unique(objects, return_inverse=True)
@@ -215,7 +258,8 @@ def _make_vegetation(scene, mask: np.ndarray) -> SceneVegetation:
         vertices=np.ascontiguousarray(scene.vertices, dtype=np.float32),
         triangles=np.ascontiguousarray(crowns.triangles, dtype=np.int32),
         t_begin_days=np.ascontiguousarray(crowns.tri_t_begin_days, dtype=np.float64),
-        t_end_days=np.ascontiguousarray(crowns.tri_t_end_days, dtype=np.float64))
+        t_end_days=np.ascontiguousarray(crowns.tri_t_end_days, dtype=np.float64),
+        crown_codes={c: codes[o] for c, o in enumerate(crown_object.tolist()) if o in codes})
 
 
 def day_of_year(sun) -> int | None:

@@ -418,30 +418,9 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     nx = max(1, math.ceil(ext_x / size))
     ny = max(1, math.ceil(ext_y / size))
     inv = 1.0 / size
-    ntx, n_cells = K.tiled_cells(nx, ny)
-    cells = ws.get("cells", n, np.int64)
-    K.receiver_cells(xs, ys, box[0], box[2], inv, inv, nx, ny, cells)
-    counts = ws.get("counts", (n_chunks, n_cells), np.int32)
-    K.count_receivers(cells, counts)
-    rec_start = ws.get("rec_start", n_cells + 1, np.int64)
-    K.prefix_sum(counts, rec_start)
-    rec_order = ws.get("rec_order", n, np.int32)
-    rec_origins = ws.get("rec_origins", (n, 3))
-    K.fill_receivers(cells, counts, origins, rec_order, rec_origins)
-    ranges = ws.get("ranges", (kept_size, 4), np.int64)
-    K.caster_ranges(boxes, box[0], box[2], inv, inv, nx, ny, ranges)
-    refs = np.empty(0, np.int32)
-    # The packed rows in the order the query reads them (K.tile_order).
-    tile_counts = ws.get("tile_counts", (n_chunks, n_cells // K.TILE_CELLS), np.int32)
-    dest = ws.get("dest", kept_size, np.int32)
-    K.tile_order(ranges, ntx, tile_counts, False, dest)
-    K.prefix_sum(tile_counts, ws.get("tile_start", n_cells // K.TILE_CELLS + 1, np.int64))
-    K.tile_order(ranges, ntx, tile_counts, True, dest)
-    K.scatter_casters(ranges, rec_start, nx, counts, dest, refs, False)
-    ref_start = ws.get("ref_start", n_cells + 1, np.int64)
-    n_refs = K.prefix_sum(counts, ref_start)
-    refs = ws.get("refs", n_refs, np.int32)
-    K.scatter_casters(ranges, rec_start, nx, counts, dest, refs, True)
+    rec_start, rec_order, rec_origins, ref_start, refs, dest, n_cells = bin_grid(
+        ws, xs, ys, origins, kept_boxes, box[0], box[2], inv, nx, ny, n_chunks, True)
+    n_refs = refs.size
     packed = ws.get("packed", (kept_size, K.PACK_WORDS), np.float32)
     q = 0
     for c0, c1, local, _ in parts:
@@ -468,6 +447,48 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
                      walked_casters=-1 if rows is None else int(rows.size),
                      tests=int(tests.sum()), occluded=int(out.sum()))
     return out
+
+
+def bin_grid(ws, xs, ys, origins, boxes, x0, y0, inv, nx, ny, n_chunks, tile_ordered):
+    """Receivers and casters binned into one grid (``nx`` by ``ny`` cells of ``1 / inv`` from
+    ``(x0, y0)``, numbered tile by tile: :func:`~cityshade.lightspace.kernels.tile_cell`), work
+    arrays from the :class:`~cityshade.runtime.memory.Scratch` ``ws``. Returns ``rec_start``
+    (cells + 1,) and ``rec_order``/``rec_origins`` the receivers grouped by cell (receiver
+    order inside a cell) and their origins; ``ref_start`` (cells + 1,) and ``refs`` each
+    cell's casters in row order, only in cells holding a receiver, as the rows ``dest`` the
+    casters (rows of ``boxes``, NaN in column 0 for a culled one) get in the packed array:
+    with ``tile_ordered`` the order of their first tile
+    (:func:`~cityshade.lightspace.kernels.tile_order`, the opaque query's), else their own
+    rows; and the number of cells. The same lists whatever the thread count."""
+    n = xs.shape[0]
+    ntx, n_cells = K.tiled_cells(nx, ny)
+    cells = ws.get("cells", n, np.int64)
+    K.receiver_cells(xs, ys, x0, y0, inv, inv, nx, ny, cells)
+    counts = ws.get("counts", (n_chunks, n_cells), np.int32)
+    K.count_receivers(cells, counts)
+    rec_start = ws.get("rec_start", n_cells + 1, np.int64)
+    K.prefix_sum(counts, rec_start)
+    rec_order = ws.get("rec_order", n, np.int32)
+    rec_origins = ws.get("rec_origins", (n, 3))
+    K.fill_receivers(cells, counts, origins, rec_order, rec_origins)
+    m = boxes.shape[0]
+    ranges = ws.get("ranges", (m, 4), np.int64)
+    K.caster_ranges(boxes, x0, y0, inv, inv, nx, ny, ranges)
+    dest = ws.get("dest", m, np.int32)
+    if tile_ordered:
+        tile_counts = ws.get("tile_counts", (n_chunks, n_cells // K.TILE_CELLS), np.int32)
+        K.tile_order(ranges, ntx, tile_counts, False, dest)
+        K.prefix_sum(tile_counts, ws.get("tile_start", n_cells // K.TILE_CELLS + 1, np.int64))
+        K.tile_order(ranges, ntx, tile_counts, True, dest)
+    else:
+        dest[:] = np.arange(m, dtype=np.int32)
+    refs = np.empty(0, np.int32)
+    K.scatter_casters(ranges, rec_start, nx, counts, dest, refs, False)
+    ref_start = ws.get("ref_start", n_cells + 1, np.int64)
+    n_refs = K.prefix_sum(counts, ref_start)
+    refs = ws.get("refs", n_refs, np.int32)
+    K.scatter_casters(ranges, rec_start, nx, counts, dest, refs, True)
+    return rec_start, rec_order, rec_origins, ref_start, refs, dest, n_cells
 
 
 def _near_rows(kd, casters, box, min_key, shear, t_days: float):

@@ -1,174 +1,291 @@
 """Transmission of sun rays through vegetation crowns in the sun's light plane (``izb``).
 
-The same idea as the opaque engine (docs/DESIGN.md §7): all rays share the sun direction, so
-in the watertight test's sheared frame a ray from o can meet a triangle only where o's
-light-plane point lies in the triangle's projection. The crowns' triangles are binned by their
-light-plane boxes (widened by :data:`cityshade.lightspace.MARGIN_REL` of the coordinate
-magnitude, the same margin and argument as the opaque engine's box) into a grid over the
-receivers' points; each receiver tests its cell's triangles with the same watertight test as
-``raytrace`` (:func:`cityshade.trace.kernels.hit_triangle`, the same float32 vertices as the
-tree's records) at ``t >= 0``, collects the distinct crowns, and multiplies their
-transmissivities in ascending crown order (:func:`cityshade.trace.vegetation.crown_product`):
-``raytrace``'s answer, bit for bit.
+The opaque engine's idea and set-up (docs/DESIGN.md §7), run on the crowns: all rays share the
+sun direction, so in the watertight test's sheared frame a ray from o can meet a triangle only
+where o's light-plane point lies in the triangle's projection. Per sun the crowns' triangles
+that stand, reach the lowest receiver's depth key and whose widened light-plane box overlaps a
+cell holding a receiver are packed (:func:`cityshade.lightspace.kernels.pack_casters`: box,
+depth plane, edge half-planes), and receivers and packed crowns are binned into one grid by
+the opaque engine's kernels. The query is caster-major per cell: the cell's crown triangles in
+ascending crown order against each of its receivers; a triangle the filters cannot rule out
+gets the watertight test (:func:`cityshade.trace.kernels.hit_record`, the same float32 vertices
+as the tree's records) at ``t >= 0``, and a hit multiplies the receiver's transmission by its
+crown's transmissivity once (the receiver remembers the last crown it met: the triangles come
+crown by crown). Crowns are met in ascending order, so the product is
+:func:`cityshade.trace.vegetation.crown_product`'s, bit for bit: ``raytrace``'s answer.
+
+What does not change with the sun is made once per scene (:func:`crown_records`): the crowns'
+triangles as records in crown order, their crowns, their coordinate magnitude, work arrays.
+Rays an opaque triangle blocks never reach this pass (:func:`cityshade.shadows.visibility.
+crown_transmission` hands over the others only).
 """
 from __future__ import annotations
 
 import math
 
+import numba
 import numpy as np
 from numba import njit, prange
 
-from cityshade.trace.kernels import hit_triangle, on_axes, ray_shear
-from cityshade.trace.vegetation import CROWN_SET, add_crown, crown_product, has_crown
+from cityshade.accel.kdtree_layout import triangle_records
+from cityshade.lightspace import (DEPTH_MARGIN_M, DEPTH_MARGIN_REL, MARGIN_REL,
+                                  MAX_CELLS_PER_RECEIVER, OCCUPANCY_CELLS, bin_grid)
+from cityshade.lightspace import kernels as K
+from cityshade.runtime.memory import Scratch
+from cityshade.trace.kernels import hit_record, ray_shear
 
-#: Target receivers per grid cell, and the largest grid side.
-RECEIVERS_PER_CELL = 4
-MAX_GRID_SIDE = 2048
-
-
-@njit(cache=True)
-def _project(origins, rays, kx, ky, kz, sx, sy, px, py):
-    """The rays' light-plane points ``px``, ``py``; returns their box (x0, x1, y0, y1) and
-    the largest coordinate magnitude of their origins (one pass: no gathered copies)."""
-    x0 = y0 = np.inf
-    x1 = y1 = -np.inf
-    magnitude = 0.0
-    for j in range(rays.shape[0]):
-        i = rays[j]
-        okx, oky, okz = on_axes(origins[i, 0], origins[i, 1], origins[i, 2], kx, ky, kz)
-        px[j] = okx - sx * okz
-        py[j] = oky - sy * okz
-        x0 = min(x0, px[j])
-        x1 = max(x1, px[j])
-        y0 = min(y0, py[j])
-        y1 = max(y1, py[j])
-        magnitude = max(magnitude, abs(origins[i, 0]), abs(origins[i, 1]), abs(origins[i, 2]))
-    return x0, x1, y0, y1, magnitude
+#: Target receivers per grid cell: the query is caster-major per cell, so a cell's crown
+#: triangles are read once for all its receivers; bigger cells mean longer lists per receiver.
+#: 32 was the fastest of 2, 4, 8, 16, 32 on the Berlin trees' map over a day (CPU, one thread).
+RECEIVERS_PER_CELL = 32
+#: Cells per parallel work item of the query (fixed, so the work split never changes a bit).
+QUERY_BLOCK_CELLS = 64
 
 
-@njit(cache=True)
-def _triangle_cells(vertices, triangles, t_begin, t_end, t_days, kx, ky, kz, sx, sy, margin,
-                    x0, y0, inv_cell, nx, ny, c_lo, c_hi, boxes):
-    """Per triangle its widened light-plane box ``boxes`` (xmin, xmax, ymin, ymax) and its
-    cell range ``c_lo``/``c_hi`` (ix0, iy0) / (ix1, iy1), empty (lo > hi) when not standing
-    or outside the grid."""
-    for t in range(triangles.shape[0]):
-        c_lo[t, 0] = 1
-        c_lo[t, 1] = 1
-        c_hi[t, 0] = 0
-        c_hi[t, 1] = 0
-        if not (t_begin[t] <= t_days < t_end[t]):
-            continue
-        xmin = np.inf
-        xmax = -np.inf
-        ymin = np.inf
-        ymax = -np.inf
-        for c in range(3):
-            v = triangles[t, c]
-            vx = np.float64(vertices[v, kx])
-            vy = np.float64(vertices[v, ky])
-            vz = np.float64(vertices[v, kz])
-            qx = vx - sx * vz
-            qy = vy - sy * vz
-            xmin = min(xmin, qx)
-            xmax = max(xmax, qx)
-            ymin = min(ymin, qy)
-            ymax = max(ymax, qy)
-        boxes[t, 0] = xmin - margin
-        boxes[t, 1] = xmax + margin
-        boxes[t, 2] = ymin - margin
-        boxes[t, 3] = ymax + margin
-        ix0 = math.floor((xmin - margin - x0) * inv_cell)
-        ix1 = math.floor((xmax + margin - x0) * inv_cell)
-        iy0 = math.floor((ymin - margin - y0) * inv_cell)
-        iy1 = math.floor((ymax + margin - y0) * inv_cell)
-        if ix1 < 0 or iy1 < 0 or ix0 >= nx or iy0 >= ny:
-            continue
-        c_lo[t, 0] = max(ix0, 0)
-        c_lo[t, 1] = max(iy0, 0)
-        c_hi[t, 0] = min(ix1, nx - 1)
-        c_hi[t, 1] = min(iy1, ny - 1)
+class CrownRecords:
+    """The crowns' triangles as the light-plane pass takes them, made once per scene: tree
+    records (:func:`cityshade.accel.kdtree_layout.triangle_records`) in ascending crown order
+    (stable), the crown of each, the largest coordinate magnitude, and work arrays."""
+
+    def __init__(self, vertices, triangles, t_begin_days, t_end_days, tri_crown):
+        tri_crown = np.asarray(tri_crown)
+        order = np.argsort(tri_crown, kind="stable").astype(np.int64)
+        self.records = triangle_records(vertices, np.ascontiguousarray(triangles, np.int64),
+                                        np.ascontiguousarray(t_begin_days, np.float64),
+                                        np.ascontiguousarray(t_end_days, np.float64),
+                                        np.zeros(len(tri_crown), np.int32), order)
+        self.crown = np.ascontiguousarray(tri_crown[order], np.int32)
+        self.magnitude_m = float(np.abs(self.records[:, :9]).max()) if len(order) else 0.0
+        self.scratch = Scratch()
 
 
-@njit(cache=True)
-def _bin(c_lo, c_hi, nx, ny):
-    """Cell lists (CSR): ``start`` (nx·ny + 1,), ``items`` the triangles in ascending order."""
-    count = np.zeros(nx * ny + 1, np.int64)
-    for t in range(c_lo.shape[0]):
-        for iy in range(c_lo[t, 1], c_hi[t, 1] + 1):
-            for ix in range(c_lo[t, 0], c_hi[t, 0] + 1):
-                count[iy * nx + ix + 1] += 1
-    for c in range(nx * ny):
-        count[c + 1] += count[c]
-    items = np.empty(count[nx * ny], np.int32)
-    fill = count[:-1].copy()
-    for t in range(c_lo.shape[0]):
-        for iy in range(c_lo[t, 1], c_hi[t, 1] + 1):
-            for ix in range(c_lo[t, 0], c_hi[t, 0] + 1):
-                c = iy * nx + ix
-                items[fill[c]] = t
-                fill[c] += 1
-    return count, items
+def crown_records(veg) -> CrownRecords:
+    """The :class:`CrownRecords` of a :class:`~cityshade.geometry.vegetation.SceneVegetation`,
+    made once and kept with it (a batch's suns share them)."""
+    made = veg.__dict__.get("_light_plane_crowns")
+    if made is None:
+        made = veg.__dict__["_light_plane_crowns"] = CrownRecords(
+            veg.vertices, veg.triangles, veg.t_begin_days, veg.t_end_days, veg.tri_crown)
+    return made
 
 
 @njit(cache=True, parallel=True)
-def _query(vertices, triangles, tri_crown, crown_tau, origins, rays, px, py, x0, y0, inv_cell,
-           nx, ny, start, items, boxes, kx, ky, kz, sx, sy, sz, out):
-    n = rays.shape[0]
-    chunk = 256
-    for b in prange((n + chunk - 1) // chunk):
-        seen = np.empty(CROWN_SET, np.int32)
-        for j in range(b * chunk, min(n, (b + 1) * chunk)):
-            i = rays[j]
-            okx, oky, okz = on_axes(origins[i, 0], origins[i, 1], origins[i, 2], kx, ky, kz)
-            ix = min(max(math.floor((px[j] - x0) * inv_cell), 0), nx - 1)
-            iy = min(max(math.floor((py[j] - y0) * inv_cell), 0), ny - 1)
-            c = iy * nx + ix
-            m = 0
-            for e in range(start[c], start[c + 1]):
-                t = items[e]
-                # Outside the widened box: no hit (the cells' own argument, per triangle).
-                if px[j] < boxes[t, 0] or px[j] > boxes[t, 1] or py[j] < boxes[t, 2] or \
-                        py[j] > boxes[t, 3]:
+def _gather(origins, rays, out):
+    """``out[j] = origins[rays[j]]``: the rays this pass decides, contiguous."""
+    for j in prange(rays.shape[0]):
+        i = rays[j]
+        out[j, 0] = origins[i, 0]
+        out[j, 1] = origins[i, 1]
+        out[j, 2] = origins[i, 2]
+
+
+@njit(cache=True, parallel=True)
+def _query(packed, kept_crown, ref_start, refs, rec_start, rec_origins, rec_order, rays, kx, ky,
+           kz, sx, sy, sz, sgn, depth_margin_m, taus, max_cell, out):
+    """Per cell (blocks of :data:`QUERY_BLOCK_CELLS` in parallel), its crown triangles in
+    ascending crown order against each of its receivers (at most ``max_cell``);
+    ``out[s, rays[rec_order[q]]]`` the product of ``taus[s]`` over the crowns receiver ``q``
+    crosses, in ascending crown order."""
+    n_cells = rec_start.shape[0] - 1
+    n_sets = taus.shape[0]
+    for b in prange((n_cells + QUERY_BLOCK_CELLS - 1) // QUERY_BLOCK_CELLS):
+        last = np.empty(max_cell, np.int32)
+        val = np.empty((max_cell, n_sets))
+        rx = np.empty(max_cell)
+        ry = np.empty(max_cell)
+        rk = np.empty(max_cell)
+        may = np.empty(max_cell, np.bool_)
+        for c in range(b * QUERY_BLOCK_CELLS, min(n_cells, (b + 1) * QUERY_BLOCK_CELLS)):
+            r0 = rec_start[c]
+            m = rec_start[c + 1] - r0
+            if m == 0:
+                continue
+            for q in range(m):
+                okz = rec_origins[r0 + q, kz]
+                rx[q] = rec_origins[r0 + q, kx] - sx * okz
+                ry[q] = rec_origins[r0 + q, ky] - sy * okz
+                rk[q] = sgn * okz
+                last[q] = -1
+                for s in range(n_sets):
+                    val[q, s] = 1.0
+            for e in range(ref_start[c], ref_start[c + 1]):
+                j = refs[e]
+                crown = kept_crown[j]
+                # The filters of the opaque query (pack_casters' layout and arguments,
+                # docs/DESIGN.md §7 (a)-(d)), each false only where hit_record cannot pass at
+                # t >= 0: behind by the key, outside the widened box, behind the depth plane,
+                # outside a widened edge half-plane. Branch-free over the cell's receivers.
+                key = np.float64(packed[j, K.PACK_KEY])
+                bx0 = np.float64(packed[j, K.PACK_BOX])
+                bx1 = np.float64(packed[j, K.PACK_BOX + 1])
+                by0 = np.float64(packed[j, K.PACK_BOX + 2])
+                by1 = np.float64(packed[j, K.PACK_BOX + 3])
+                pa = np.float64(packed[j, K.PACK_PLANE])
+                pb = np.float64(packed[j, K.PACK_PLANE + 1])
+                pc = key + np.float64(packed[j, K.PACK_PLANE + 2])
+                e0a = np.float64(packed[j, K.PACK_EDGE])
+                e0b = np.float64(packed[j, K.PACK_EDGE + 1])
+                e0c = np.float64(packed[j, K.PACK_EDGE + 2])
+                e1a = np.float64(packed[j, K.PACK_EDGE + 3])
+                e1b = np.float64(packed[j, K.PACK_EDGE + 4])
+                e1c = np.float64(packed[j, K.PACK_EDGE + 5])
+                e2a = np.float64(packed[j, K.PACK_EDGE + 6])
+                e2b = np.float64(packed[j, K.PACK_EDGE + 7])
+                e2c = np.float64(packed[j, K.PACK_EDGE + 8])
+                any_ = False
+                for q in range(m):
+                    dx = rx[q] - bx0
+                    dy = ry[q] - by0
+                    ok = ((last[q] != crown) & (key >= rk[q]) & (rx[q] >= bx0) & (rx[q] <= bx1)
+                          & (ry[q] >= by0) & (ry[q] <= by1)
+                          & (pc + pa * dx + pb * dy >= rk[q] - depth_margin_m)
+                          & (e0a * dx + e0b * dy + e0c >= 0.0)
+                          & (e1a * dx + e1b * dy + e1c >= 0.0)
+                          & (e2a * dx + e2b * dy + e2c >= 0.0))
+                    may[q] = ok
+                    any_ |= ok
+                if not any_:
                     continue
-                crown = tri_crown[t]
-                if has_crown(seen, m, crown):
-                    continue  # met already: its other triangles cannot change the set
-                hit, tt, _, _ = hit_triangle(vertices, triangles, t, okx, oky, okz, kx, ky, kz,
-                                             sx, sy, sz)
-                if hit and tt >= 0.0:
-                    seen, m = add_crown(seen, m, crown)
-            out[i] = crown_product(seen, m, crown_tau)
+                for q in range(m):
+                    if not may[q]:
+                        continue
+                    hit, t, _, _ = hit_record(packed, j, rec_origins[r0 + q, kx],
+                                              rec_origins[r0 + q, ky], rec_origins[r0 + q, kz],
+                                              kx, ky, kz, sx, sy, sz)
+                    if hit and t >= 0.0:
+                        last[q] = crown
+                        for s in range(n_sets):
+                            val[q, s] *= taus[s, crown]
+            for q in range(m):
+                i = rays[rec_order[r0 + q]]
+                for s in range(n_sets):
+                    out[s, i] = val[q, s]
 
 
-def transmission(vertices, triangles, t_begin_days, t_end_days, tri_crown, crown_tau, origins,
-                 direction, t_days, rays, out, margin_rel: float) -> None:
-    """Fill ``out[rays]`` with the transmission of those sun rays through the crowns
-    ``triangles`` (vertex indices into ``vertices`` (V, 3) float32; validity ``[begin, end)``;
-    ``tri_crown`` the crown of each; ``crown_tau`` (C,) the transmissivity of each crown).
-    ``origins`` (N, 3) float64, ``direction`` (3,) unit, one for every ray; ``margin_rel``
-    the boxes' widening per metre of coordinate magnitude."""
+@njit(cache=True)
+def _select(coarse, covered, origins, xs, ys, rays, out_origins, out_x, out_y, out_rays):
+    """The receivers whose coarse cell is ``covered``, compacted in order; returns their
+    count."""
+    m = 0
+    for i in range(coarse.shape[0]):
+        if covered[coarse[i]]:
+            out_origins[m, 0] = origins[i, 0]
+            out_origins[m, 1] = origins[i, 1]
+            out_origins[m, 2] = origins[i, 2]
+            out_x[m] = xs[i]
+            out_y[m] = ys[i]
+            out_rays[m] = rays[i]
+            m += 1
+    return m
+
+
+@njit(cache=True)
+def _mark_covered(ranges, nx, out_table):
+    """``out_table`` (cells,) uint8, zeroed: 1 in every cell (numbered as
+    :func:`~cityshade.lightspace.kernels.receiver_cells` numbers them, tile by tile) a kept
+    crown box's cell range (:func:`~cityshade.lightspace.kernels.caster_ranges`) covers."""
+    ntx = (nx + K.TILE - 1) // K.TILE
+    for j in range(ranges.shape[0]):
+        if ranges[j, 0] < 0:
+            continue
+        for iy in range(ranges[j, 2], ranges[j, 3] + 1):
+            for ix in range(ranges[j, 0], ranges[j, 1] + 1):
+                out_table[K.tile_cell(ix, iy, ntx)] = 1
+
+
+def transmission(crowns: CrownRecords, origins, direction, t_days, rays, taus, outs) -> None:
+    """Fill ``outs[s][rays]`` with the transmission of those sun rays through the crowns with
+    the transmissivities ``taus[s]`` ((C,) float64 per crown) for every ``s``. ``origins``
+    (N, 3) float64, ``direction`` (3,) unit, one for every ray; ``rays`` indices into
+    ``origins``; ``outs`` (S, N) float64."""
     rays = np.ascontiguousarray(rays, dtype=np.int64)
-    if len(rays) == 0:
+    n = len(rays)
+    if n == 0:
         return
+    taus = np.ascontiguousarray(np.asarray(taus, np.float64).reshape(len(outs), -1))
+    if len(crowns.crown) == 0:
+        outs[:, rays] = 1.0
+        return
+    ws = crowns.scratch.take()
+    try:
+        _transmission(crowns, ws, np.ascontiguousarray(origins, np.float64), direction,
+                      float(t_days), rays, taus, outs)
+    finally:
+        ws.give_back()
+
+
+def _transmission(crowns, ws, origins, direction, t_days, rays, taus, outs):
+    n = len(rays)
     kx, ky, kz, sx, sy, sz = ray_shear(*(float(c) for c in direction))
-    px = np.empty(len(rays))
-    py = np.empty(len(rays))
-    x0, x1, y0, y1, ray_magnitude = _project(origins, rays, kx, ky, kz, sx, sy, px, py)
-    magnitude = max(ray_magnitude, float(np.abs(vertices).max()) if len(vertices) else 0.0,
-                    1.0)
-    margin = margin_rel * magnitude * (1.0 + max(abs(sx), abs(sy)))
-    side = max(x1 - x0, y1 - y0, 1e-6)
-    cells = max(1, min(MAX_GRID_SIDE, int(math.sqrt(len(rays) / RECEIVERS_PER_CELL))))
-    cell = side / cells * (1.0 + 1e-9)
-    nx = max(1, min(MAX_GRID_SIDE, int((x1 - x0) / cell) + 1))
-    ny = max(1, min(MAX_GRID_SIDE, int((y1 - y0) / cell) + 1))
-    inv_cell = 1.0 / cell
-    c_lo = np.empty((len(triangles), 2), np.int64)
-    c_hi = np.empty((len(triangles), 2), np.int64)
-    boxes = np.empty((len(triangles), 4))
-    _triangle_cells(vertices, triangles, t_begin_days, t_end_days, float(t_days), kx, ky, kz,
-                    sx, sy, margin, x0, y0, inv_cell, nx, ny, c_lo, c_hi, boxes)
-    start, items = _bin(c_lo, c_hi, nx, ny)
-    _query(vertices, triangles, tri_crown, np.ascontiguousarray(crown_tau, np.float64), origins,
-           rays, px, py, x0, y0, inv_cell, nx, ny, start, items, boxes, kx, ky, kz, sx, sy, sz, out)
+    sgn = 1.0 if sz > 0.0 else -1.0
+    o = ws.get("origins", (n, 3))
+    _gather(origins, rays, o)
+    n_chunks = max(1, numba.get_num_threads())
+    xs, ys, rkeys = ws.get("xs", n), ws.get("ys", n), ws.get("rkeys", n)
+    part = np.empty((n_chunks, K.N_STATS))
+    K.project_receivers(o, kx, ky, kz, sx, sy, sgn, n_chunks, xs, ys, rkeys, part)
+    box = np.array([part[:, 0].min(), part[:, 1].max(), part[:, 2].min(), part[:, 3].max()])
+    min_key = float(part[:, 4].min())
+    scale = max(crowns.magnitude_m, float(np.abs(box).max()), 1.0)
+
+    # The crowns that can reach a receiver, in crown order, packed with their filters.
+    recs = crowns.records
+    m = recs.shape[0]
+    neg_keys = ws.get("neg_keys", m)
+    K.caster_keys(recs, np.arange(m, dtype=np.int64), kz, sgn, neg_keys)
+    keys = ws.get("keys", m, np.float32)
+    np.negative(neg_keys, out=keys, casting="same_kind")   # ± a float32 coordinate: exact
+    boxes = ws.get("boxes", (m, 4))
+    K.cull_casters(recs, recs.view(np.float64), keys, t_days, kx, ky, kz, sx, sy,
+                   MARGIN_REL * scale, box, min_key, boxes)
+    floor_m = 1e-9 * scale
+    ext_x = max(box[1] - box[0], floor_m)
+    ext_y = max(box[3] - box[2], floor_m)
+    occ = math.sqrt(ext_x * ext_y / max(1, min(n, OCCUPANCY_CELLS)))
+    onx = max(1, min(OCCUPANCY_CELLS, math.ceil(ext_x / occ)))
+    ony = max(1, min(OCCUPANCY_CELLS // onx, math.ceil(ext_y / occ)))
+    occ_inv = 1.0 / max(ext_x / onx, ext_y / ony)
+    occupied = ws.get("occupied", (ony + 1, onx + 1), np.int32)
+    K.occupancy_table(xs, ys, box[0], box[2], occ_inv, onx, ony, occupied)
+    K.cull_unoccupied(boxes, box[0], box[2], occ_inv, onx, ony, occupied)
+    kept = np.flatnonzero(~np.isnan(boxes[:, 0]))
+    if kept.size == 0:
+        outs[:, rays] = 1.0
+        return
+    packed = ws.get("packed", (kept.size, K.PACK_WORDS), np.float32)
+    kept_boxes = boxes[kept]
+    # Packed in kept (= crown) order: the query below multiplies in ascending crown order.
+    K.pack_casters(recs, keys, kept_boxes, kept, np.arange(kept.size, dtype=np.int32), kx, ky,
+                   kz, sx, sy, sgn, scale, packed)
+    kept_crown = crowns.crown[kept]
+
+    # Most receivers lie under no crown: those whose coarse cell no kept box covers get 1
+    # (they lie outside every box: cells are monotone in x, y) and are never binned.
+    coarse = ws.get("cells", n, np.int64)
+    K.receiver_cells(xs, ys, box[0], box[2], occ_inv, occ_inv, onx, ony, coarse)
+    ranges = ws.get("ranges", (kept.size, 4), np.int64)
+    K.caster_ranges(kept_boxes, box[0], box[2], occ_inv, occ_inv, onx, ony, ranges)
+    covered = np.zeros(K.tiled_cells(onx, ony)[1], np.uint8)
+    _mark_covered(ranges, onx, covered)
+    outs[:, rays] = 1.0
+    o_sel, x_sel, y_sel = ws.get("o_sel", (n, 3)), ws.get("x_sel", n), ws.get("y_sel", n)
+    rays_sel = ws.get("rays_sel", n, np.int64)
+    n = _select(coarse, covered, o, xs, ys, rays, o_sel, x_sel, y_sel, rays_sel)
+    if n == 0:
+        return
+    o, xs, ys, rays = o_sel[:n], x_sel[:n], y_sel[:n], rays_sel[:n]
+    covered_m2 = int(covered.sum()) / (occ_inv * occ_inv)
+
+    # One grid over the receivers' box, cells of about RECEIVERS_PER_CELL of the covered
+    # receivers: receivers in cell order, each cell's crown triangles in kept (= crown)
+    # order, whatever the thread count.
+    size = max(math.sqrt(covered_m2 * RECEIVERS_PER_CELL / n), floor_m,
+               math.sqrt(ext_x * ext_y / (MAX_CELLS_PER_RECEIVER * n)))
+    nx = max(1, math.ceil(ext_x / size))
+    ny = max(1, math.ceil(ext_y / size))
+    inv = 1.0 / size
+    rec_start, rec_order, rec_origins, ref_start, refs, _, _ = bin_grid(
+        ws, xs, ys, o, kept_boxes, box[0], box[2], inv, nx, ny, n_chunks, False)
+    max_cell = int(np.diff(rec_start).max())
+    _query(packed, kept_crown, ref_start, refs, rec_start, rec_origins, rec_order, rays, kx, ky,
+           kz, sx, sy, sz, sgn, DEPTH_MARGIN_M + DEPTH_MARGIN_REL * scale, taus, max_cell, outs)

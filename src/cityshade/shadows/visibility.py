@@ -132,23 +132,21 @@ def crown_transmission(scene, origins, direction, t_days: float, taus, *,
     # The crowns' pass: the light-plane grid (izb, and exact: a crowns' pass has no early
     # exit, so the tree's walk visits every leaf along each ray, 4-5x the grid's cost on a
     # map's pixels), or the crowns' kd-tree (raytrace); the same bits either way.
-    grid = engine in ("izb", "exact")
-    if grid:
-        from cityshade.lightspace import MARGIN_REL
+    if engine in ("izb", "exact"):
+        from cityshade.lightspace.vegetation import crown_records
         from cityshade.lightspace.vegetation import transmission as grid_crowns
-    else:
-        _engine(engine)  # an unknown name fails here
-        from cityshade.trace.vegetation import transmission as tree_crowns
+
+        outs = np.zeros((len(taus), len(origins)), np.float64)
+        grid_crowns(crown_records(veg), origins, direction, float(t_days), rays,
+                    np.stack([np.asarray(tau, np.float64) for tau in taus]), outs)
+        return blocked, list(outs)
+    _engine(engine)  # an unknown name fails here
+    from cityshade.trace.vegetation import transmission as tree_crowns
+
     outs = []
     for tau in taus:
         out = np.zeros(len(origins), np.float64)
-        if grid:
-            grid_crowns(veg.vertices, veg.triangles, veg.t_begin_days, veg.t_end_days,
-                        veg.tri_crown, tau, origins, direction, float(t_days), rays, out,
-                        MARGIN_REL)
-        else:
-            tree_crowns(veg.tree, origins, direction, float(t_days), rays, veg.tri_crown, tau,
-                        out)
+        tree_crowns(veg.tree, origins, direction, float(t_days), rays, veg.tri_crown, tau, out)
         outs.append(out)
     return blocked, outs
 
