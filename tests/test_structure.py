@@ -35,7 +35,7 @@ def test_evaluate_is_imported_only_by_itself_and_its_command():
 #: docs/DESIGN.md's map. ``cityshade`` is the package's ``__init__`` (its ``__version__``).
 TIERS: list[set[str]] = [
     {"errors"},
-    {"util", "runtime", "plotting"},
+    {"util", "runtime", "plotting", "halffloat"},
     {"cityshade"},
     {"geo", "accel"},
     {"config", "imageio"},

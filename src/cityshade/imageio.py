@@ -356,14 +356,65 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
         integers outside -1 … 2**32 - 2, bad names or attributes, an unknown compression or
         ``half`` naming no float channel, or a write failure.
     """
-    from cityshade.runtime.memory import release_pages
-
     path = Path(path)
     if path.suffix.lower() != ".exr":
         raise ImageIOError(f"write_exr needs a .exr path, not {path.suffix or '(none)'!r}",
                            path=str(path))
     if not channels:
         raise ImageIOError("write_exr needs at least one channel", path=str(path))
+    shape, float_names, float_planes, uint_names, uint_planes, int_names = \
+        _sorted_channels(path, channels)
+    if compression not in ("zip", "none"):
+        raise ImageIOError(f"EXR compression must be zip or none, not {compression!r}",
+                           path=str(path))
+    half = frozenset(half)
+    stray = sorted(half.difference(float_names).union(half.intersection(int_names)))
+    if stray:
+        raise ImageIOError(f"half channels must be float channels: {', '.join(stray)}",
+                           path=str(path))
+    attrs = dict(attributes or {})
+    if int_names:
+        attrs[_INT_CHANNELS_ATTRIBUTE] = ",".join(int_names)
+    if compression == "none" and not uint_names:
+        if len(set(float_names)) != len(float_names):
+            raise ImageIOError(f"channel names must be distinct: {float_names!r}",
+                               path=str(path))
+        for name, value in attrs.items():   # the checks and types OpenImageIO's path applies
+            _set_attribute(_AttributeCheck(), path, name, value)
+        _write_exr_uncompressed(path, float_names, float_planes, attrs, half)
+        return
+    parts = []
+    for part_name, names, planes in (("data", float_names, float_planes),
+                                     ("ids", uint_names, uint_planes)):
+        if not names:
+            continue
+        if len(set(names)) != len(names):
+            raise ImageIOError(f"channel names must be distinct: {names!r}", path=str(path))
+        # Interleaved strips, each plane converted straight into them (exact: integers in the
+        # float part are at most 2**24 in magnitude).
+        pixels = Strips(shape + (len(planes),), np.dtype(np.float32 if part_name == "data"
+                                                          else np.uint32),
+                        _interleaver(planes, part_name == "ids"))
+        part_attrs = dict(attrs)
+        part_attrs["name"] = part_name
+        if pixels.dtype == np.uint32:
+            spec = _make_uint32_spec(path, pixels, part_attrs, names)
+        else:
+            spec = _make_spec(path, ".exr", pixels, part_attrs, names)
+            if half:   # OpenImageIO rounds the float32 strips into the half channels
+                import OpenImageIO as oiio
+
+                spec.channelformats = tuple(oiio.TypeDesc("half" if n in half else "float")
+                                            for n in names)
+        parts.append((spec, pixels))
+    _write_atomically(path, parts)
+
+
+def _sorted_channels(path: Path, channels: Mapping) -> tuple:
+    """:func:`write_exr`'s channels checked and sorted: (shape, float names, float planes,
+    uint32 id names, their planes, the names of the integer channels stored as floats)."""
+    from cityshade.runtime.memory import release_pages
+
     shape = None
     float_names, float_planes, uint_names, uint_planes = [], [], [], []
     int_names = []
@@ -412,50 +463,7 @@ def write_exr(path: str | os.PathLike, channels: Mapping[str, np.ndarray],
         else:
             raise ImageIOError(f"channel {name!r} has type {values.dtype}; EXR stores floats "
                                f"and integer ids", path=str(path))
-    if compression not in ("zip", "none"):
-        raise ImageIOError(f"EXR compression must be zip or none, not {compression!r}",
-                           path=str(path))
-    half = frozenset(half)
-    stray = sorted(half.difference(float_names).union(half.intersection(int_names)))
-    if stray:
-        raise ImageIOError(f"half channels must be float channels: {', '.join(stray)}",
-                           path=str(path))
-    attrs = dict(attributes or {})
-    if int_names:
-        attrs[_INT_CHANNELS_ATTRIBUTE] = ",".join(int_names)
-    if compression == "none" and not uint_names:
-        if len(set(float_names)) != len(float_names):
-            raise ImageIOError(f"channel names must be distinct: {float_names!r}",
-                               path=str(path))
-        for name, value in attrs.items():   # the checks and types OpenImageIO's path applies
-            _set_attribute(_AttributeCheck(), path, name, value)
-        _write_exr_uncompressed(path, float_names, float_planes, attrs, half)
-        return
-    parts = []
-    for part_name, names, planes in (("data", float_names, float_planes),
-                                     ("ids", uint_names, uint_planes)):
-        if not names:
-            continue
-        if len(set(names)) != len(names):
-            raise ImageIOError(f"channel names must be distinct: {names!r}", path=str(path))
-        # Interleaved strips, each plane converted straight into them (exact: integers in the
-        # float part are at most 2**24 in magnitude).
-        pixels = Strips(shape + (len(planes),), np.dtype(np.float32 if part_name == "data"
-                                                          else np.uint32),
-                        _interleaver(planes, part_name == "ids"))
-        part_attrs = dict(attrs)
-        part_attrs["name"] = part_name
-        if pixels.dtype == np.uint32:
-            spec = _make_uint32_spec(path, pixels, part_attrs, names)
-        else:
-            spec = _make_spec(path, ".exr", pixels, part_attrs, names)
-            if half:   # OpenImageIO rounds the float32 strips into the half channels
-                import OpenImageIO as oiio
-
-                spec.channelformats = tuple(oiio.TypeDesc("half" if n in half else "float")
-                                            for n in names)
-        parts.append((spec, pixels))
-    _write_atomically(path, parts)
+    return shape, float_names, float_planes, uint_names, uint_planes, int_names
 
 
 def _interleaver(planes, ids: bool) -> Callable[[int, int], np.ndarray]:

@@ -87,20 +87,25 @@ def camera_params(camera: "Camera") -> dict[str, Any]:
 def batch_params(request: SunHoursRequest) -> dict[str, Any]:
     """The identity of a batch (what a resume compares, hashed by :func:`params_key`): the
     caller's provenance, the city's date, camera, technique and its tunables, ground,
-    refraction, outputs and, for a tiled run, the tile size."""
+    refraction, outputs and, for a tiled run, the tile size. In the form the manifest gives
+    back (JSON: tuples as lists), so a request compares equal to its own stored run."""
+    import json
+
     from cityshade.config import Settings
 
     spa = request.spa if request.spa is not None else Settings().sun
     shadows = request.shadows if request.shadows is not None else Settings().shadows
-    return {**(request.provenance or {}), "city_days": float(request.t_days),
-            "camera": camera_params(request.camera),
-            "technique": request.technique, "ground": request.ground,
-            "refraction": bool(spa.refraction), "frames": request.frames,
-            "samples_per_m2": request.samples_per_m2,
-            **({"tile_px": request.tile_px} if request.tiled else {}),
-            **({"monthly": True} if request.step_month is not None else {}),
-            "stretches": True,
-            "shadow_settings": dataclasses.asdict(dataclasses.replace(shadows, technique=None))}
+    params = {**(request.provenance or {}), "city_days": float(request.t_days),
+              "camera": camera_params(request.camera),
+              "technique": request.technique, "ground": request.ground,
+              "refraction": bool(spa.refraction), "frames": request.frames,
+              "samples_per_m2": request.samples_per_m2,
+              **({"tile_px": request.tile_px} if request.tiled else {}),
+              **({"monthly": True} if request.step_month is not None else {}),
+              "stretches": True,
+              "shadow_settings": dataclasses.asdict(dataclasses.replace(shadows,
+                                                                        technique=None))}
+    return json.loads(json.dumps(params))
 
 
 def _open_state(outdir: Path, params: dict[str, Any], overwrite: bool):
