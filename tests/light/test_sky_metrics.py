@@ -202,3 +202,22 @@ def test_distinct_normals_equal_numpy_s_unique_rows():
     np.testing.assert_array_equal(unique, want_u)
     np.testing.assert_array_equal(inverse, want_inv.reshape(-1))
     assert len(unique) < len(normals)
+
+
+@pytest.mark.parametrize("name", ["tregenza", "reinhart577", "reinhart2305"])
+def test_directions_are_traced_grouped_by_the_casters_key_order(name):
+    """izb sorts its casters again at each change of key order: the tracing order visits each
+    direction once and changes order only between the hemisphere's five groups (Tregenza's own
+    band order changes it 21 times), keeping the sky's order inside a group."""
+    from cityshade.light.visibility import direction_order
+    from cityshade.lightspace import caster_order
+
+    dirs = named_sky(name).directions
+    order = direction_order(dirs)
+    assert sorted(order.tolist()) == list(range(len(dirs)))
+    keys = [caster_order(dirs[i]) for i in order]
+    changes = sum(a != b for a, b in zip(keys[:-1], keys[1:]))
+    assert changes == len(set(keys)) - 1 <= 4
+    for key in set(keys):
+        inside = [i for i, k in zip(order, keys) if k == key]
+        assert inside == sorted(inside)

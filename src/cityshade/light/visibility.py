@@ -197,6 +197,10 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
         # Every crown the same in both seasons (evergreen classes, equal values): one pass.
         same = np.array_equal(taus[0], taus[1])
         crown_parts: list[tuple] = []
+    # izb sorts the casters again whenever a direction's key order changes (lightspace.
+    # caster_order: 5 orders over a hemisphere, but 22 changes in Tregenza's band order):
+    # directions are traced grouped by it, each into its own column, so the bits are the same.
+    order = direction_order(sky.directions)
     for start in range(0, p_total, int(block)):
         stop = min(start + int(block), p_total)
         dirs = sky.directions[start:stop]
@@ -209,7 +213,8 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
                 work[rows, cols] = ~occluded(scene, origins, d, t_days, engine=engine)
             bits[:, start // 8:(stop + 7) // 8] = np.packbits(work, axis=1)
         else:
-            for j, d in enumerate(dirs):
+            for col in order[start:stop]:
+                d = sky.directions[col]
                 k = front_origins(pts, nrm, d, FRONT_MIN_COS, SHADOW_OFFSET_REL,
                                   SHADOW_OFFSET_MIN_SCALE_M, rows_buf, origins_buf)
                 if not k:
@@ -224,12 +229,13 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
                     on, off = outs[0], outs[-1]
                     part = ~blocked & ((on != 1.0) | (off != 1.0))
                     if part.any():
-                        crown_parts.append((rows[part], start + j, on[part], off[part]))
-                set_visible_bits(bits, rows, blocked, start + j)
+                        crown_parts.append((rows[part], int(col), on[part], off[part]))
+                set_visible_bits(bits, rows, blocked, int(col))
         if progress is not None:
             progress(stop, p_total)
     crowns = None
     if veg is not None:
+        crown_parts.sort(key=lambda part: part[1])    # direction-major, as the sky's order
         crowns = SkyCrowns(
             rows=np.concatenate([r for r, *_ in crown_parts] or [np.zeros(0)]).astype(np.int32),
             cols=np.concatenate([np.full(len(r), c) for r, c, *_ in crown_parts]
@@ -238,6 +244,18 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
             leaf_off=np.concatenate([off for *_, off in crown_parts] or [np.zeros(0)]))
     return SkyVisibility(sky=sky, bits=bits, normals=nrm, t_days=float(t_days), engine=engine,
                          crowns=crowns)
+
+
+def direction_order(directions) -> np.ndarray:
+    """(P,) int64: the directions' indices grouped by the light-space engine's caster key order
+    (:func:`cityshade.lightspace.caster_order`), first appearance first, the sky's order
+    inside a group: the order :func:`sky_visibility` traces them in."""
+    from cityshade.lightspace import caster_order
+
+    groups: dict = {}
+    for i, d in enumerate(np.asarray(directions, np.float64)):
+        groups.setdefault(caster_order(d), []).append(i)
+    return np.array([i for g in groups.values() for i in g], np.int64)
 
 
 def map_receivers(camera_pass) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
