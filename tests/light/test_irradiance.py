@@ -204,3 +204,21 @@ def pd_timestamp(t):
     import pandas as pd
 
     return pd.Timestamp(t)
+
+
+def test_exact_is_chosen_once_for_the_hours(setting, monkeypatch):
+    """``exact`` picks one engine for the whole run of hours (as batch does): chosen hour by
+    hour, each hour would count izb's caster sort as its own and never take izb."""
+    import cityshade.light.irradiance as irr
+    from cityshade.shadows.exact import engine_for_run
+
+    scene, weather, hours, directions = setting
+    points = np.array([[X0, Y0, 0.0]]) - scene.origin_m
+    normals = np.array([[0.0, 0.0, 1.0]])
+    used = []
+    real = irr.receiver_sun
+    monkeypatch.setattr(irr, "receiver_sun", lambda *a: used.append(a[5]) or real(*a))
+    todo = hours & ((weather.ghi_w_m2 > 0) | (weather.dni_w_m2 > 0) | (weather.dhi_w_m2 > 0))
+    irr.irradiation(scene, points, normals, weather, directions, (np.ones(1), np.ones(1)),
+                    hours=hours, engine="exact")
+    assert used and set(used) == {engine_for_run("exact", scene, 1, int(todo.sum()))}

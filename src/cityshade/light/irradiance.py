@@ -308,6 +308,12 @@ def irradiation(scene, points, normals, weather, directions, shares, *,
     use = np.ones(weather.n_hours, bool) if hours is None else np.asarray(hours, bool)
     use &= (weather.ghi_w_m2 > 0.0) | (weather.dni_w_m2 > 0.0) | (weather.dhi_w_m2 > 0.0)
     todo = np.flatnonzero(use)
+    if engine == "exact":
+        # One choice for the run, as batch makes it: chosen per hour, each hour would count
+        # izb's caster sort as its own and take raytrace for every hour of the year.
+        from cityshade.shadows.exact import engine_for_run
+
+        engine = engine_for_run(engine, scene, len(pts), max(len(todo), 1))
     sums = np.zeros((len(pts), 3))
     receivers = SurfaceReceivers(pts, nrm) if len(pts) else None
     on, off = (shares[True], shares[False]) if isinstance(shares, dict) else (shares, shares)
