@@ -75,6 +75,36 @@ def test_stretches_match_the_reference_with_gaps_duplicates_and_resume():
     assert np.array_equal(b.samples.qualified_h, qualified)
 
 
+def test_a_night_of_steps_closes_the_stretches_once(monkeypatch):
+    """Steps with the sun down close every stretch; the second and later of a night change
+    nothing and are skipped (the same numbers as the reference, one close per night)."""
+    import cityshade.sunhours.stretches as S
+
+    n_steps, n = 30, 9
+    starts = [1e9 + 600.0 * i for i in range(n_steps)]
+    ends = [s + 600.0 for s in starts]
+    down = set(range(8, 14)) | set(range(22, 30))            # two nights of steps
+    unit_of_step, units = [], []
+    for i in range(n_steps):
+        unit_of_step.append(-1 if i in down else len(units))
+        if i not in down:
+            units.append(SimpleNamespace(steps=(i,)))
+    lit_unit = np.random.default_rng(3).random((len(units), n)) < 0.7
+    lit_steps = np.array([lit_unit[u] if u >= 0 else np.zeros(n, bool) for u in unit_of_step])
+    longest, qualified = reference_stretches(lit_steps, starts, ends, min_stretch_h=0.5)
+    calls = []
+    real = S.close_stretches
+    monkeypatch.setattr(S, "close_stretches", lambda *a: calls.append(1) or real(*a))
+    st = S.Stretches(starts, ends, min_stretch_h=0.5)
+    st.plan(units, None, n)
+    for k in range(len(units)):
+        st.add(k, None, lit_unit[k])
+    st.finish()
+    assert np.array_equal(st.samples.longest_h, longest)
+    assert np.array_equal(st.samples.qualified_h, qualified)
+    assert len(calls) == 2        # one per night; the end of the run finds them closed
+
+
 def test_stretch_kernels_by_hand():
     from cityshade.sunhours.stretches import close_stretches, update_stretches
 
