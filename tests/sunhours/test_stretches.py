@@ -21,6 +21,16 @@ def _units(order_of_step):
     return [SimpleNamespace(steps=tuple(units[k])) for k in sorted(units)]
 
 
+def _run_and_check(st, units, lit_unit, n, longest, qualified):
+    """Every unit's flags for ``n`` samples, in unit order: the reference's numbers."""
+    st.plan(units, None, n)
+    for k in range(len(units)):
+        st.add(k, None, lit_unit[k])
+    st.finish()
+    assert np.array_equal(st.samples.longest_h, longest)
+    assert np.array_equal(st.samples.qualified_h, qualified)
+
+
 def test_stretches_match_the_reference_with_gaps_duplicates_and_resume():
     from cityshade.sunhours.stretches import Stretches
 
@@ -51,13 +61,8 @@ def test_stretches_match_the_reference_with_gaps_duplicates_and_resume():
     longest, qualified = reference_stretches(lit_steps, starts, ends, min_stretch_h=0.4)
     assert longest.max() > 0.5 and 0 < (qualified > 0).sum() < n
 
-    st = Stretches(starts, ends, min_stretch_h=0.4)
-    st.plan(units, None, n)
-    for k in range(len(units)):
-        st.add(k, None, lit_unit[k])
-    st.finish()
-    assert np.array_equal(st.samples.longest_h, longest)
-    assert np.array_equal(st.samples.qualified_h, qualified)
+    _run_and_check(Stretches(starts, ends, min_stretch_h=0.4), units, lit_unit, n, longest,
+                   qualified)
 
     # Interrupted after unit 12 and restored from the saved state: the same numbers.
     a = Stretches(starts, ends, min_stretch_h=0.4)
@@ -95,13 +100,8 @@ def test_a_night_of_steps_closes_the_stretches_once(monkeypatch):
     calls = []
     real = S.close_stretches
     monkeypatch.setattr(S, "close_stretches", lambda *a: calls.append(1) or real(*a))
-    st = S.Stretches(starts, ends, min_stretch_h=0.5)
-    st.plan(units, None, n)
-    for k in range(len(units)):
-        st.add(k, None, lit_unit[k])
-    st.finish()
-    assert np.array_equal(st.samples.longest_h, longest)
-    assert np.array_equal(st.samples.qualified_h, qualified)
+    _run_and_check(S.Stretches(starts, ends, min_stretch_h=0.5), units, lit_unit, n, longest,
+                   qualified)
     assert len(calls) == 2        # one per night; the end of the run finds them closed
 
 
