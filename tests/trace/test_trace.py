@@ -284,6 +284,14 @@ def test_input_validation(tree):
         shadow_rays_from_surface(o, d, [0, 0, 2.0])
     empty = occluded(tree, np.empty((0, 3)), np.empty((0, 3)))
     assert empty.shape == (0,)
+    # A caller's own buffer gets the same origins; one of another shape or type is refused.
+    n = d / np.linalg.norm(d, axis=1, keepdims=True)
+    buf = np.empty((4, 3))
+    assert shadow_rays_from_surface(o, n, [0.0, 0.0, 1.0], out=buf) is buf
+    assert np.array_equal(buf, shadow_rays_from_surface(o, n, [0.0, 0.0, 1.0]))
+    for bad in (np.empty((3, 3)), np.empty((4, 3), np.float32), np.empty((3, 4)).T):
+        with pytest.raises(TraceInputError, match="out must be a C-contiguous float64"):
+            shadow_rays_from_surface(o, n, [0.0, 0.0, 1.0], out=bad)
 
 
 def test_tile_order_is_a_permutation_of_tiles():

@@ -186,9 +186,9 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
         raise UsageError(f"points {pts.shape} and normals {nrm.shape} differ in shape")
     n, p_total = len(pts), sky.n
     bits = np.zeros((n, (p_total + 7) // 8), np.uint8)
-    if n:
-        shadow_rays_from_surface(pts, nrm, sky.directions[0])  # the checks, once
     rows_buf, origins_buf = np.empty(n, np.int64), np.empty((n, 3), np.float64)
+    if n:   # the checks, once, into the buffer the directions' origins reuse
+        shadow_rays_from_surface(pts, nrm, sky.directions[0], out=origins_buf)
     veg = scene_vegetation(scene)
     if veg is not None:
         # Both seasons in one tracing: one opaque pass and two crowns' passes per direction.

@@ -193,7 +193,8 @@ def shadow_offset_m(points) -> np.ndarray:
     return SHADOW_OFFSET_REL * scale
 
 
-def shadow_rays_from_surface(points, normals, sun_dir) -> np.ndarray:
+def shadow_rays_from_surface(points, normals, sun_dir, *, out: np.ndarray | None = None
+                             ) -> np.ndarray:
     """Origins of shadow rays: surface points pushed off their surface along the normal.
 
     Parameters
@@ -205,6 +206,9 @@ def shadow_rays_from_surface(points, normals, sun_dir) -> np.ndarray:
     sun_dir : (3,) or (N, 3) float array
         Unit direction towards the sun (not used for the offset, which is along the normal;
         checked so that a bad sun fails here rather than in the kernel).
+    out : (N, 3) float64 C-contiguous array, optional
+        Written instead of a new array (a caller that checks its receivers once and keeps a
+        buffer of their size: the sky's 2 M receivers, 51 MB).
 
     Returns
     -------
@@ -234,7 +238,11 @@ def shadow_rays_from_surface(points, normals, sun_dir) -> np.ndarray:
         raise TraceInputError("sun_dir contain NaN or infinite values")
     if np.abs(np.linalg.norm(sun, axis=-1) - 1.0).max(initial=0.0) > UNIT_LENGTH_TOL:
         raise TraceInputError("sun_dir must be unit length")
-    out = _ORIGINS.empty((points.shape[0], 3), np.float64)
+    if out is None:
+        out = _ORIGINS.empty((points.shape[0], 3), np.float64)
+    elif out.shape != points.shape or out.dtype != np.float64 or not out.flags.c_contiguous:
+        raise TraceInputError(f"out must be a C-contiguous float64 array of shape "
+                              f"{points.shape}")
     # One parallel pass: the checks and the offset (the numpy twin: tests/reference.py).
     with bricks.one_thread_when_small(points.shape[0]):
         code = bricks.shadow_origins(points, normals, np.ascontiguousarray(sun.reshape(-1, 3)),
