@@ -222,3 +222,36 @@ def test_exact_is_chosen_once_for_the_hours(setting, monkeypatch):
     irr.irradiation(scene, points, normals, weather, directions, (np.ones(1), np.ones(1)),
                     hours=hours, engine="exact")
     assert used and set(used) == {engine_for_run("exact", scene, 1, int(todo.sum()))}
+
+
+def test_hours_are_traced_grouped_by_the_casters_key_order(setting, monkeypatch):
+    """The hours go to the engine grouped by izb's caster key order (five groups at most, where
+    eight days in time order change it three times a day), and the sums match those of one hour
+    at a time in time order."""
+    import cityshade.light.irradiance as irr
+    from cityshade.lightspace import caster_order
+
+    scene, weather, hours, directions = setting
+    points = np.array([[X0, Y0, 0.0], [X0, Y0 - 19.0, 2.5]]) - scene.origin_m
+    normals = np.array([[0.0, 0.0, 1.0], [0.0, -1.0, 0.0]])
+    shares = (np.ones(2), np.ones(2))
+    seen = []
+    real = irr.receiver_sun
+    monkeypatch.setattr(irr, "receiver_sun",
+                        lambda *a: seen.append(caster_order(a[3])) or real(*a))
+    got = irr.irradiation(scene, points, normals, weather, directions, shares, hours=hours,
+                          engine="raytrace")
+    changes = sum(a != b for a, b in zip(seen[:-1], seen[1:]))
+    assert len(seen) > 50 and changes == len(set(seen)) - 1 <= 4
+    monkeypatch.setattr(irr, "receiver_sun", real)
+    one_by_one = np.zeros((2, 3))
+    for h in np.flatnonzero(hours):
+        mask = np.zeros_like(hours)
+        mask[h] = True
+        part = irr.irradiation(scene, points, normals, weather, directions, shares, hours=mask,
+                               engine="raytrace")
+        one_by_one += np.stack([part.direct_kwh_m2, part.diffuse_kwh_m2,
+                                part.reflected_kwh_m2], axis=1)
+    np.testing.assert_allclose(np.stack([got.direct_kwh_m2, got.diffuse_kwh_m2,
+                                         got.reflected_kwh_m2], axis=1), one_by_one,
+                               rtol=1e-12)
