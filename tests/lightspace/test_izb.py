@@ -509,3 +509,32 @@ def test_estimated_references_are_the_box_by_box_sum():
     sizes = np.array([0.7, 2.0, 5.5, 30.0])
     np.testing.assert_allclose(K.estimate_refs(boxes, sizes),
                                reference_refs_per_size(boxes, sizes), rtol=1e-12)
+
+
+def test_last_calls_let_the_work_arrays_go_and_answer_the_same(sample_scene):
+    """Inside ``lightspace.last_calls`` a call drops its work arrays as it returns (a one-frame
+    render's memory), keeps the sorted casters, and answers as a call outside it; outside,
+    the arrays stay for the next sun. A render with ``last_frame`` equals one without."""
+    from cityshade.frame.render import render_frame
+    from cityshade.raster.camera import map_view
+
+    kd = sample_scene.kdtree
+    rng = np.random.default_rng(5)
+    lo, hi = kd.bounds[0, :3], kd.bounds[1, :3]
+    origins = lo + (hi - lo) * rng.random((4000, 3))
+    sun = unit([0.3, -0.5, 0.8])
+    kept = lightspace.occluded(kd, origins, sun)
+    scratch = lightspace.casters_of(kd).scratch
+    assert scratch._arrays                                   # kept for the next sun
+    with lightspace.last_calls(sample_scene):
+        assert np.array_equal(lightspace.occluded(kd, origins, sun), kept)
+    assert not scratch._arrays and lightspace.casters_ready(kd, *lightspace.caster_order(sun))
+    assert np.array_equal(lightspace.occluded(kd, origins, sun), kept)
+    assert scratch._arrays
+    view = map_view(sample_scene, 2.0)
+    s = sun_from_angles(135.0, 30.0)
+    frames = [render_frame(sample_scene, view, 19000.0, s, "izb", last_frame=last)
+              for last in (False, True)]
+    assert np.array_equal(frames[0].lit, frames[1].lit)
+    assert np.array_equal(frames[0].rgb, frames[1].rgb)
+    assert sample_scene.kdtree not in lightspace._CASTERS

@@ -529,6 +529,10 @@ def test_scratch_hands_out_kept_arrays_one_holder_at_a_time():
     bigger = again.get("x", (5, 3))
     assert bigger.shape == (5, 3) and not np.shares_memory(bigger, a)
     assert again.get("i", 7, np.int32).dtype == np.int32
+    # One name, arrays of other types one after the other: the same bytes, aligned.
+    as_int = again.get("x", (6, 2), np.int64)
+    assert as_int.dtype == np.int64 and np.shares_memory(as_int, bigger)
+    assert again.get("x", 30, np.float32).ctypes.data == bigger.ctypes.data
     again.give_back()
 
 

@@ -113,7 +113,8 @@ def render(file, date_text, city_date, tz, time_text, no_refraction, sun_azimuth
     scene = with_vegetation(scene_for_camera(scene, cam, technique), settings.vegetation)
     sun = _sun(scene, sun_azimuth, sun_elevation, sun_date, settings, no_refraction)
     frame = render_frame(scene, cam, city_days, sun, technique, settings.shadows,
-                         sky=not no_sky, ground=ground, measure=verbose, strip_rows=strip_rows)
+                         sky=not no_sky, ground=ground, measure=verbose, strip_rows=strip_rows,
+                         last_frame=True)
     for warning in frame.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
     from cityshade.lightspace import forget_casters

@@ -7,6 +7,7 @@ from __future__ import annotations
 import math
 import sys
 import threading
+import weakref
 
 import numpy as np
 
@@ -67,6 +68,20 @@ def release_freed_memory() -> None:
         pass
 
 
+#: Every :class:`Scratch` and :class:`Recycler` of the process (:func:`release_kept_memory`).
+_KEPT: "weakref.WeakSet" = weakref.WeakSet()
+
+
+def release_kept_memory() -> None:
+    """Drop the buffers every :class:`Scratch` and :class:`Recycler` keeps for the next frame
+    (arrays in use stay valid: they hold their memory themselves) and trim the C heap, for a
+    process done with the work they serve (a one-frame render before it shades and writes:
+    the kd-tree's shadow-ray origins, the rasterizer's triangle set-up)."""
+    for kept in list(_KEPT):
+        kept.clear()
+    release_freed_memory()
+
+
 class Scratch:
     """Grow-only work arrays kept between calls, for per-frame temporaries of the same sizes.
 
@@ -81,6 +96,7 @@ class Scratch:
     def __init__(self):
         self._arrays: dict = {}
         self._lock = threading.Lock()
+        _KEPT.add(self)
 
     def take(self) -> "Scratch":
         """``self`` when free (release with :meth:`give_back`), else a fresh private one."""
@@ -92,16 +108,19 @@ class Scratch:
 
     def get(self, name: str, shape, dtype=None):
         """An uninitialised C-contiguous array of ``shape`` (default dtype float64): the first
-        ``prod(shape)`` items of a kept buffer that only grows."""
+        bytes of a kept byte buffer of that name that only grows. One name may serve arrays of
+        other types one after the other (a caller reuses the memory of an array it is done
+        with: every earlier array of the name then sees the new one's values)."""
         import numpy as np
 
         dtype = np.dtype(np.float64 if dtype is None else dtype)
         shape = tuple(int(x) for x in (shape if isinstance(shape, tuple) else (shape,)))
-        size = math.prod(shape)
+        nbytes = math.prod(shape) * dtype.itemsize
         buf = self._arrays.get(name)
-        if buf is None or buf.dtype != dtype or buf.size < size:
-            buf = self._arrays[name] = np.empty(max(size, 1), dtype)
-        return buf[:size].reshape(shape)
+        if buf is None or buf.size < nbytes:
+            self._arrays[name] = None      # the old buffer goes before the new one comes
+            buf = self._arrays[name] = np.empty(max(nbytes, 1), np.uint8)
+        return buf[:nbytes].view(dtype).reshape(shape)
 
     def clear(self) -> None:
         """Drop the kept arrays (their memory)."""
@@ -125,6 +144,7 @@ class Recycler:
         self._keep = int(keep)
         self._buffers: list = []
         self._lock = threading.Lock()
+        _KEPT.add(self)
 
     def empty(self, shape, dtype):
         """An uninitialised C-contiguous array of ``shape`` and ``dtype``."""
