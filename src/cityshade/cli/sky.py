@@ -91,13 +91,12 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
     import datetime as dt
     import time
 
-    from cityshade.cli.batch import Progress, note
-    from cityshade.cli.options import ProgressLines, check_scheduler_scene
+    from cityshade.cli.options import check_scheduler_scene
     from cityshade.errors import UsageError
     from cityshade.geo.temporal import parse_user_date
     from cityshade.geometry.vegetation import with_vegetation
     from cityshade.light.irradiance import hours_between
-    from cityshade.light.run import SkyRequest, run_sky
+    from cityshade.light.run import SkyRequest
     from cityshade.light.weather import read_weather
     from cityshade.store.scenefile import open_scene, scene_for_camera
     from cityshade.sunhours.surfaces import SampleSettings
@@ -146,35 +145,48 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
         "weather": Path(weather).name if wx is not None else None, "from_date": from_date,
         "to_date": to_date, "technique": request.technique, "date": instant_date,
         "times": times_text, "tz": tz})
-    lines = {"sky": ProgressLines("sky directions"), "hours": ProgressLines("weather hours")}
-    with Progress("tiles") as bar:
-        run = run_sky(outdir, scene, request, overwrite=overwrite,
-                      progress=lambda phase, d, t: lines[phase](d, t),
-                      on_plan=lambda todo, total: bar.plan(todo if total > 1 else 0),
-                      on_tile=lambda done, total: bar.step(done, total, None), on_note=note)
+    run = _run(outdir, scene, request, overwrite)
     if run.already_complete:
         click.echo(f"{outdir}: already complete (same request); nothing to do "
                    f"(--overwrite computes it again)")
         return
-    result, written = run.result, run.written
-    for warning in result.warnings:
+    for warning in run.result.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
     if verbose:
-        timings = {**result.timings_s, "command_s": time.perf_counter() - t_start}
-        click.echo("timings  " + "  ".join(f"{k[:-2]} {v:.2f} s" for k, v in timings.items()),
-                   err=True)
-        click.echo(f"receivers {len(result.svf):,} ({result.n_pixels:,} map pixels), "
-                   f"{result.sky.n} sky directions, about {result.bytes_per_receiver} bytes "
-                   f"per receiver", err=True)
-        tiles = result.tiles
-        if tiles["tile_px"] is not None or scheduler is not None:
-            click.echo(f"tiles    {tiles['tiles']} of {tiles['tile_px'] or 'all'} px, "
-                       f"{tiles['tiles_resumed']} taken from the saved state"
-                       + (f", {tiles['workers']} Dask workers ({scheduler}), "
-                          f"{tiles['tasks_on_driver']} tiles run here while they started"
-                          if scheduler is not None else ""), err=True)
-    click.echo(" ".join(str(p) for p in written))
+        _echo_verbose(run.result, scheduler, time.perf_counter() - t_start)
+    click.echo(" ".join(str(p) for p in run.written))
 
+
+def _run(outdir, scene, request, overwrite: bool):
+    """:func:`cityshade.light.run.run_sky` with batch's progress: a bar (or lines) of tiles,
+    within a run of one tile lines of sky directions and weather hours; resume notes."""
+    from cityshade.cli.batch import Progress, note
+    from cityshade.cli.options import ProgressLines
+    from cityshade.light.run import run_sky
+
+    lines = {"sky": ProgressLines("sky directions"), "hours": ProgressLines("weather hours")}
+    with Progress("tiles") as bar:
+        return run_sky(outdir, scene, request, overwrite=overwrite,
+                       progress=lambda phase, d, t: lines[phase](d, t),
+                       on_plan=lambda todo, total: bar.plan(todo if total > 1 else 0),
+                       on_tile=lambda done, total: bar.step(done, total, None), on_note=note)
+
+
+def _echo_verbose(result, scheduler, command_s: float) -> None:
+    """``-v``: timings, counts, tiles."""
+    timings = {**result.timings_s, "command_s": command_s}
+    click.echo("timings  " + "  ".join(f"{k[:-2]} {v:.2f} s" for k, v in timings.items()),
+               err=True)
+    click.echo(f"receivers {len(result.svf):,} ({result.n_pixels:,} map pixels), "
+               f"{result.sky.n} sky directions, about {result.bytes_per_receiver} bytes "
+               f"per receiver", err=True)
+    tiles = result.tiles
+    if tiles["tile_px"] is not None or scheduler is not None:
+        click.echo(f"tiles    {tiles['tiles']} of {tiles['tile_px'] or 'all'} px, "
+                   f"{tiles['tiles_resumed']} taken from the saved state"
+                   + (f", {tiles['workers']} Dask workers ({scheduler}), "
+                      f"{tiles['tasks_on_driver']} tiles run here while they started"
+                      if scheduler is not None else ""), err=True)
 
 
 def _check_outputs_asked(irradiance, weather, instant_date, times_text, tz, no_map, surfaces,

@@ -380,13 +380,10 @@ def compute_sky(scene, request: SkyRequest, *, progress=None, checkpoint=None, w
     on_note : callable(text), optional
         Told that the run resumes and how much was done before.
     """
-    from cityshade.light.sky import sky_for_scene
-    from cityshade.light.visibility import map_receivers
     from cityshade.geometry.vegetation import scene_vegetation
+    from cityshade.light.sky import sky_for_scene
     from cityshade.sunhours.accumulate import receivers_pass
     from cityshade.sunhours.checkpoint import SaveThrottle
-    from cityshade.sunhours.tiled import plan_receivers
-    from cityshade.util import plural
 
     request.check(scene)
     timings: dict[str, float] = {"checkpoint_s": 0.0}
@@ -394,36 +391,12 @@ def compute_sky(scene, request: SkyRequest, *, progress=None, checkpoint=None, w
     per = _check_memory(request, sky.n, 0, scene_vegetation(scene) is not None)
     cp, samples = receivers_pass(scene, request.camera, request.t_days, request.ground,
                                  request.samples_per_m2, timings, {})
-    pixels, shape = np.zeros(0, np.int64), None
-    if cp is not None:
-        pixels = map_receivers(cp)[2]
-        shape = tuple(cp.valid.shape)
     tile_px = request.tile_px
-    plan = plan_receivers(cp, samples, request.camera, tile_px)
-    n = len(plan.data)
-    if tile_px is None:      # one tile: the sky traced once for all receivers, as before
-        plan.start = np.array([0, n], np.int64)
-    # The place of each tiled receiver in the untiled order: map pixels row-major, then samples.
-    n_px = plan.pixel_shape[0] * plan.pixel_shape[1]
-    place = np.where(plan.slot < n_px, np.searchsorted(pixels, plan.slot),
-                     len(pixels) + plan.slot - n_px)
+    plan, place, pixels = _plan(cp, samples, request.camera, tile_px)
+    shape = None if cp is None else tuple(cp.valid.shape)
     cols = _value_columns(request)
-    n_tiles = plan.n_tiles
-    values = np.zeros((n, max(c.stop for c in cols.values())))
-    tile_done = np.zeros(n_tiles, bool)
-    tile_stats = np.zeros((n_tiles, N_STATS))
-    saved = None if checkpoint is None else checkpoint.load_arrays(
-        ("tile_done", "values", "tile_stats"))
-    if saved is not None:
-        if saved["tile_done"].shape != tile_done.shape or saved["values"].shape != values.shape \
-                or saved["tile_stats"].shape != tile_stats.shape:
-            checkpoint.refuse_misfit()
-        tile_done, values, tile_stats = (saved["tile_done"].astype(bool),
-                                         saved["values"].astype(np.float64),
-                                         saved["tile_stats"].astype(np.float64))
-        if tile_done.any() and on_note is not None:
-            on_note(f"resuming the run in {Path(checkpoint.path).parent}: "
-                    f"{int(tile_done.sum())} of {plural(n_tiles, 'tile')} were done before")
+    n, n_tiles = len(plan.data), plan.n_tiles
+    tile_done, values, tile_stats = _saved_tiles(checkpoint, n_tiles, n, cols, on_note)
     warnings: list[str] = []
     if request.weather is not None:
         from cityshade.light.weather import scene_location_warning
@@ -480,30 +453,77 @@ def compute_sky(scene, request: SkyRequest, *, progress=None, checkpoint=None, w
     timings["sky_s"] = float(tile_stats[:, 3].sum())
     if request.weather is not None:
         timings["hours_s"] = float(tile_stats[:, 4].sum())
-    irr = at = vsc = None
+    return SkyResult(svf=values[:, 0].copy(), shape=shape, pixels=pixels, cp=cp,
+                     samples=samples, sky=sky, bytes_per_receiver=per, timings_s=timings,
+                     warnings=warnings, **_unpacked(request, values, tile_stats),
+                     tiles={"tiles": n_tiles, "tile_px": tile_px,
+                            "tiles_resumed": n_tiles - len(todo), "receivers": n,
+                            "crown_rays": int(tile_stats[:, 2].sum()),
+                            "workers": getattr(executor, "workers", 0),
+                            "tasks_on_driver": getattr(executor, "tasks_on_driver", 0)})
+
+
+def _plan(cp, samples, camera, tile_px):
+    """(tile plan, place of each planned receiver in the untiled order, the map's pixels with
+    a surface): batch's tiles, or one tile of every receiver without ``tile_px`` (the sky
+    traced once for all, as before tiles)."""
+    from cityshade.light.visibility import map_receivers
+    from cityshade.sunhours.tiled import plan_receivers
+
+    pixels = np.zeros(0, np.int64) if cp is None else map_receivers(cp)[2]
+    plan = plan_receivers(cp, samples, camera, tile_px)
+    if tile_px is None:
+        plan.start = np.array([0, len(plan.data)], np.int64)
+    # The untiled order: the map's pixels row-major, then the samples.
+    n_px = plan.pixel_shape[0] * plan.pixel_shape[1]
+    place = np.where(plan.slot < n_px, np.searchsorted(pixels, plan.slot),
+                     len(pixels) + plan.slot - n_px)
+    return plan, place, pixels
+
+
+def _saved_tiles(checkpoint, n_tiles: int, n: int, cols: dict, on_note):
+    """(tile_done (T,) bool, values (N, C), tile_stats (T, N_STATS)): zeros, or the saved
+    state's (the run resumes; ``on_note`` told how much was done)."""
+    from cityshade.util import plural
+
+    arrays = (np.zeros(n_tiles, bool), np.zeros((n, max(c.stop for c in cols.values()))),
+              np.zeros((n_tiles, N_STATS)))
+    names = ("tile_done", "values", "tile_stats")
+    saved = None if checkpoint is None else checkpoint.load_arrays(names)
+    if saved is None:
+        return arrays
+    if any(saved[k].shape != a.shape for k, a in zip(names, arrays)):
+        checkpoint.refuse_misfit()
+    tile_done, values, tile_stats = (saved["tile_done"].astype(bool),
+                                     saved["values"].astype(np.float64),
+                                     saved["tile_stats"].astype(np.float64))
+    if tile_done.any() and on_note is not None:
+        on_note(f"resuming the run in {Path(checkpoint.path).parent}: "
+                f"{int(tile_done.sum())} of {plural(n_tiles, 'tile')} were done before")
+    return tile_done, values, tile_stats
+
+
+def _unpacked(request: SkyRequest, values: np.ndarray, tile_stats: np.ndarray) -> dict:
+    """The ``vsc``, ``irradiation`` and ``instants_w_m2`` of a :class:`SkyResult` from the
+    run's value columns (:func:`_value_columns`)."""
+    cols = _value_columns(request)
+    out: dict[str, Any] = {"vsc": None, "irradiation": None, "instants_w_m2": None}
     if "irradiation" in cols:
         from cityshade.light.irradiance import Irradiation
 
         kwh = values[:, cols["irradiation"]]
         # Every tile sums the same hours; the hours some tile traced, at least.
-        irr = Irradiation(direct_kwh_m2=kwh[:, 0].copy(), diffuse_kwh_m2=kwh[:, 1].copy(),
-                          reflected_kwh_m2=kwh[:, 2].copy(),
-                          hours=int(tile_stats[:, 0].max(initial=0)),
-                          sun_hours_traced=int(tile_stats[:, 1].max(initial=0)),
-                          model=request.model, albedo=float(request.albedo))
+        out["irradiation"] = Irradiation(
+            direct_kwh_m2=kwh[:, 0].copy(), diffuse_kwh_m2=kwh[:, 1].copy(),
+            reflected_kwh_m2=kwh[:, 2].copy(), hours=int(tile_stats[:, 0].max(initial=0)),
+            sun_hours_traced=int(tile_stats[:, 1].max(initial=0)), model=request.model,
+            albedo=float(request.albedo))
     if "instants" in cols:
-        at = values[:, cols["instants"]].reshape(n, -1, 3).transpose(1, 0, 2).copy()
+        out["instants_w_m2"] = values[:, cols["instants"]].reshape(
+            len(values), -1, 3).transpose(1, 0, 2).copy()
     if "vsc" in cols:
-        vsc = values[:, cols["vsc"].start].copy()
-    result = SkyResult(svf=values[:, 0].copy(), irradiation=irr, shape=shape, pixels=pixels,
-                       cp=cp, samples=samples, sky=sky, bytes_per_receiver=per,
-                       instants_w_m2=at, vsc=vsc, timings_s=timings, warnings=warnings,
-                       tiles={"tiles": n_tiles, "tile_px": tile_px,
-                              "tiles_resumed": n_tiles - len(todo), "receivers": n,
-                              "crown_rays": int(tile_stats[:, 2].sum()),
-                              "workers": getattr(executor, "workers", 0),
-                              "tasks_on_driver": getattr(executor, "tasks_on_driver", 0)})
-    return result
+        out["vsc"] = values[:, cols["vsc"].start].copy()
+    return out
 
 
 def _work(scene, request: SkyRequest, sky) -> SkyWork:
