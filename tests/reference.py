@@ -1096,6 +1096,19 @@ def reference_sky_bits(scene, points, normals, sky, t_days, engine):
     return np.packbits(seen, axis=1)
 
 
+def reference_visible_weight_sums(bits, inverse, weights):
+    """Twin of :func:`cityshade.light.kernels.visible_weight_sums`: the bits unpacked, then per
+    receiver a plain loop adding the visible directions' weights in order."""
+    seen = np.unpackbits(np.asarray(bits), axis=1, count=weights.shape[1]).astype(bool)
+    out = np.zeros(len(seen))
+    for i, row in enumerate(seen):
+        s = 0.0
+        for p in np.flatnonzero(row):
+            s += float(weights[inverse[i], p])
+        out[i] = s
+    return out
+
+
 def reference_tile_order(ranges, tile, ntx):
     """Twin of :func:`cityshade.lightspace.kernels.tile_order`: each caster's row when the
     casters are stably sorted by the tile (``tile`` cells square, ``ntx`` tiles per row) of

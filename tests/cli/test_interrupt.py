@@ -12,6 +12,7 @@ import time
 from pathlib import Path
 
 import click
+import numpy as np
 import pytest
 
 
@@ -178,6 +179,45 @@ def test_sigint_during_sky(tmp_path, scene_file):
         else:
             assert sorted(p.name for p in folder.iterdir()) == complete
     assert interrupted
+
+
+def test_sigint_during_a_tiled_sky_then_the_same_command_resumes(tmp_path, scene_file):
+    """A sky run in tiles stopped by Ctrl-C keeps its finished tiles (``state.npz`` and
+    ``manifest.json``, nothing half-written); the same command again says in one line that
+    it resumes and writes the maps of an uninterrupted run, bit for bit, and leaves only its
+    outputs."""
+    from cityshade.imageio import read_exr
+
+    args = ["sky", scene_file, "--sky", "tregenza", "--pixel-size", "6", "--vsc",
+            "--tile-px", "32"]
+    warm = subprocess.run([sys.executable, "-m", "cityshade", *map(str, args), "-o",
+                           tmp_path / "warm"], capture_output=True, text=True, timeout=600)
+    assert warm.returncode == 0, warm.stderr
+    complete = sorted(p.name for p in (tmp_path / "warm").iterdir())
+    assert "svf.exr" in complete and "state.npz" not in complete
+    resumed = 0
+    for k, delay in enumerate((3.0, 4.5, 6.5)):
+        folder = tmp_path / f"t{k}"
+        rc, err = _interrupt([*args, "-o", folder], delay, tmp_path)
+        folder.mkdir(exist_ok=True)
+        if not _check(rc, err, folder) or not (folder / "state.npz").exists():
+            continue
+        assert sorted(p.name for p in folder.iterdir()) == ["manifest.json", "state.npz"]
+        again = subprocess.run([sys.executable, "-m", "cityshade", *map(str, args), "-o",
+                                folder], capture_output=True, text=True, timeout=600)
+        assert again.returncode == 0, again.stderr
+        notes = [line for line in again.stderr.splitlines() if "resuming" in line]
+        assert len(notes) == 1 and re.fullmatch(
+            rf"cityshade: resuming the run in {re.escape(str(folder))}: \d+ of \d+ tiles "
+            rf"were done before", notes[0]), again.stderr
+        assert sorted(p.name for p in folder.iterdir()) == complete
+        for name in ("svf.exr", "vsc.exr"):
+            want, got = read_exr(tmp_path / "warm" / name)[0], read_exr(folder / name)[0]
+            assert want.keys() == got.keys()
+            for channel in want:
+                np.testing.assert_array_equal(got[channel], want[channel])
+        resumed += 1
+    assert resumed, "no run was stopped with finished tiles: the delays do not fit this machine"
 
 
 def test_sigint_during_a_first_call_compile(tmp_path):

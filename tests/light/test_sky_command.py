@@ -130,6 +130,9 @@ def test_maps_surfaces_and_irradiance_files(small_file, tmp_path):
     (["--weather", "MISSING.epw", "--irradiance"],
      "cityshade: error: MISSING.epw: no such weather file"),  # a bad input file: status 1
     (["--weather", "MISSING.epw"], None),  # no --irradiance: the weather is not read
+    (["--tile-px", "0"], "cityshade: error: --tile-px must be >= 1, not 0"),
+    (["--scheduler", "lokal:2"],
+     "cityshade: error: --scheduler is local, local:N or tcp://HOST:PORT, not 'lokal:2'"),
 ])
 def test_bad_requests_say_one_line(small_file, tmp_path, extra, line):
     if line is None:
@@ -254,6 +257,29 @@ def test_bad_instants_say_one_line(small_file, tmp_path, extra, line):
     assert result.exit_code == 2, result.output
     assert result.output.splitlines() == [line]
     assert not (tmp_path / "out").exists()
+
+
+def test_a_finished_run_again_does_nothing_and_other_parameters_are_refused(small_file,
+                                                                            tmp_path):
+    """The same command on a finished folder says so in one line and computes nothing; other
+    parameters are refused, naming what differs; ``--overwrite`` computes them."""
+    args = ["sky", small_file, "-o", tmp_path / "out", "--sky", "tregenza", "--no-map",
+            "--surfaces", "--samples-per-m2", "0.01", "--tile-px", "4"]
+    first = run(*args)
+    assert first.exit_code == 0, first.output
+    again = run(*args)
+    assert again.exit_code == 0, again.output
+    assert again.output.splitlines() == [f"{tmp_path / 'out'}: already complete (same "
+                                         f"request); nothing to do (--overwrite computes it "
+                                         f"again)"]
+    other = run(*args, "--vsc")
+    assert other.exit_code == 2
+    assert other.output.splitlines() == [
+        f"cityshade: error: {tmp_path / 'out'} holds a run with other parameters (differs in: "
+        f"vsc); use --overwrite or another -o folder"]
+    over = run(*args, "--vsc", "--overwrite")
+    assert over.exit_code == 0, over.output
+    assert "vsc_pct" in (tmp_path / "out" / "surfaces.csv").read_text().splitlines()[0]
 
 
 def test_a_sky_that_does_not_fit_in_memory_is_refused_before_any_work(small_file, tmp_path,

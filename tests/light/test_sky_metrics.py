@@ -154,6 +154,28 @@ def test_packed_bits_equal_the_obvious_gather_and_pack(sample_city_scene):
         assert 0.05 < vis.visible().mean() < 0.95
 
 
+def test_weighted_sums_equal_the_plain_loop_and_do_not_depend_on_the_other_rows():
+    """The kernel adding each receiver's visible weights from the packed bits equals the twin's
+    plain loop exactly, and a receiver's sum is the same computed alone, in any subset or
+    order: what makes a tiled sky run equal an untiled one."""
+    from reference import reference_visible_weight_sums
+
+    from cityshade.light.kernels import visible_weight_sums
+
+    rng = np.random.default_rng(5)
+    n, p, u = 257, 145, 7                    # 145 directions: a partial last byte
+    bits = np.packbits(rng.random((n, p)) < 0.6, axis=1)
+    weights = rng.random((u, p)) * 1e-2
+    inverse = rng.integers(0, u, n).astype(np.int64)
+    out = np.zeros(n)
+    visible_weight_sums(bits, inverse, weights, out)
+    np.testing.assert_array_equal(out, reference_visible_weight_sums(bits, inverse, weights))
+    for rows in (np.arange(3, 40), rng.permutation(n)[:101], np.array([n - 1])):
+        part = np.zeros(len(rows))
+        visible_weight_sums(np.ascontiguousarray(bits[rows]), inverse[rows], weights, part)
+        np.testing.assert_array_equal(part, out[rows])
+
+
 @pytest.mark.parametrize("relative", ["berlin-lichtenberg-trees/lod2_buildings_berlin_test_area.gml",
                                       "munich-tum-campus-lod2/TUM Munich.gml"])
 def test_engines_give_the_same_bits_on_real_buildings(relative):

@@ -52,18 +52,17 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     import dataclasses
     import time
 
-    from cityshade.cli.options import check_every_day, solar_zone_of_scene, warn_lmt
+    from cityshade.cli.options import (check_every_day, check_scheduler_scene,
+                                       solar_zone_of_scene, warn_lmt)
     from cityshade.errors import UsageError
     from cityshade.geo.temporal import parse_user_date
     from cityshade.shadows import get_technique
     from cityshade.geometry.vegetation import with_vegetation
     from cityshade.store.scenefile import open_scene, scene_for_camera
-    from cityshade.store.tiled import is_tiled_cache
     from cityshade.sunhours.plan import parse_clock_s, parse_duration_s, plan_steps, step_months
     from cityshade.sunhours.request import SunHoursRequest, check_execution
     from cityshade.sunhours.run import run_batch
     from cityshade.util import check_outputs
-    from cityshade.config import VegetationSettings
 
     t_start = time.perf_counter()
     technique = settings.shadows.technique
@@ -89,12 +88,7 @@ def batch(file, date_text, from_text, to_text, every_text, tz, days, to_date_tex
     warn_lmt([step.start_utc for step in steps[:1]], tz)
     city = parse_user_date(city_date or first_day.isoformat())
     cam = make_camera(scene, camera, eye, target, fov, size, pixel_size, cameras_file)
-    if scheduler is not None and settings.vegetation != VegetationSettings():
-        raise UsageError("--scheduler: Dask workers open the scene with the default "
-                         "[vegetation] settings; run without --scheduler to change them")
-    if scheduler is not None and is_tiled_cache(file):
-        raise UsageError("--scheduler needs one cache file: a tiled cache is not read by "
-                         "Dask workers yet")
+    check_scheduler_scene(scheduler, settings, file)
     scene = with_vegetation(scene_for_camera(scene, None if surfaces else cam, technique),
                             settings.vegetation)
     provenance = {

@@ -78,6 +78,8 @@ EXAMPLES: dict[str, tuple[str, ...]] = {
         "cityshade sky trees.cityshade --pixel-size 1 --season leaf-off -o winter  # crowns leafless",
         "cityshade sky city.cityshade --weather london.epw --date 2025-06-21 --times 09:00,12:00 "
         "--tz Europe/London -o noon      # W/m² at instants",
+        "cityshade sky city.cityshade --pixel-size 1 --tile-px 512 --scheduler local:2 -o svf  "
+        "# tiled, on Dask; again after Ctrl-C: resumes",
     ),
     "export": (
         "cityshade export city.cityshade sunhours/surfaces.csv -o sunhours.glb",

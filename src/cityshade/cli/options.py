@@ -519,6 +519,23 @@ def inapplicable_flags(technique: str, flags: dict) -> list[str]:
             and not any(_flag_applies(flag, n) for n in names)]
 
 
+def check_scheduler_scene(scheduler, settings, file) -> None:
+    """Refuse ``--scheduler`` where Dask workers would not see the scene the command sees:
+    non-default ``[vegetation]`` settings, a tiled cache (``batch`` and ``sky``)."""
+    from cityshade.config import VegetationSettings
+    from cityshade.errors import UsageError
+    from cityshade.store.tiled import is_tiled_cache
+
+    if scheduler is None:
+        return
+    if settings.vegetation != VegetationSettings():
+        raise UsageError("--scheduler: Dask workers open the scene with the default "
+                         "[vegetation] settings; run without --scheduler to change them")
+    if is_tiled_cache(file):
+        raise UsageError("--scheduler needs one cache file: a tiled cache is not read by "
+                         "Dask workers yet")
+
+
 class ProgressLines:
     """Progress for a stderr that is not a terminal (a log, CI): one plain line every
     ``every_s`` seconds or every tenth of the work, whichever comes first."""

@@ -59,31 +59,44 @@ from cityshade.cli.options import (camera_options, city_date_option, ground_opti
 @click.option("--samples-per-m2", type=float, help="Density of the surface sample points "
               "(default 1, or [batch] samples_per_m2).")
 @click.option("--no-map", is_flag=True, help="Surfaces only: no map (with --surfaces).")
+@click.option("--tile-px", type=int, help="Split the map pixels (and the surface samples) "
+              "into tiles of N × N pixels, each a separate task whose work alone is in "
+              "memory; finished tiles are kept, so the same command after Ctrl-C resumes; the "
+              "numbers are identical.")
+@click.option("--scheduler", help="Run the tiles on Dask, as batch does: local or local:N (N "
+              "worker processes here) or tcp://HOST:8786 (a running cluster; workers must see "
+              "FILE and the output folder under the same paths). Needs the [dask] extra.")
 @presentation_options
 @click.option("-o", "--output", "outdir", type=click.Path(file_okay=False, path_type=Path),
-              required=True, help="Output folder (created).")
+              required=True, help="Output folder (created; holds manifest.json, and the "
+              "state of an unfinished run).")
+@click.option("--overwrite", is_flag=True, help="Discard a run of other parameters in OUTDIR; "
+              "compute a finished run of the same parameters again.")
 @click.option("-v", "--verbose", is_flag=True, help="Timings and counts.")
 def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_file, settings,
         ground, sky_name, svf, vsc, season, weather, irradiance, instant_date, times_text, tz,
         sky_model, albedo, from_date, to_date,
-        surfaces, samples_per_m2, no_map, no_decorate, no_gis, outdir, verbose):
+        surfaces, samples_per_m2, no_map, tile_px, scheduler, no_decorate, no_gis, outdir,
+        overwrite, verbose):
     """Sky view factor of FILE (a .cityshade scene) per map pixel (svf.exr/.tif/.png) and,
     with --surfaces, per polygon and building; with --vsc the vertical sky component; with
     --weather FILE --irradiance, the kWh/m² received over the file's hours (direct, diffuse
     from pvlib's sky model and ground-reflected, each weighted by what the receiver sees of
     it), and with --date and --times the W/m² at those instants. Tree crowns let their
-    transmissivity through.
+    transmissivity through. With --tile-px the receivers run in tiles (here or on Dask with
+    --scheduler); running the same command again continues an interrupted run where it
+    stopped, and does nothing for a finished one.
     """
     import dataclasses
     import datetime as dt
     import time
 
-    from cityshade.cli.options import ProgressLines
+    from cityshade.cli.options import check_scheduler_scene
     from cityshade.errors import UsageError
     from cityshade.geo.temporal import parse_user_date
     from cityshade.geometry.vegetation import with_vegetation
     from cityshade.light.irradiance import hours_between
-    from cityshade.light.run import SkyRequest, run_sky
+    from cityshade.light.run import SkyRequest
     from cityshade.light.weather import read_weather
     from cityshade.store.scenefile import open_scene, scene_for_camera
     from cityshade.sunhours.surfaces import SampleSettings
@@ -106,8 +119,9 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
                          ground=ground, t_days=city.city_days,
                          spa=settings.sun, samples_per_m2=density if surfaces else None,
                          decorate=not no_decorate, gis=not no_gis,
-                         camera=None if no_map else "map")
-    request.check()  # the sky, model and technique, before the files are read
+                         camera=None if no_map else "map", tile_px=tile_px,
+                         scheduler=scheduler, scene_path=file)
+    request.check()  # the sky, model, technique and tiles, before the files are read
     if tz is not None:
         from cityshade.geo.temporal import SOLAR_TIME_ZONES, zone_info
 
@@ -116,6 +130,7 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
     wx = read_weather(weather) if weather is not None and (irradiance or clocks) else None
     hours = hours_between(wx, from_date, to_date) if wx is not None else None
     check_outputs(("-o", outdir, None))
+    check_scheduler_scene(scheduler, settings, file)
     scene = open_scene(file)
     cam = None if no_map else make_camera(scene, camera, eye, target, fov, size, pixel_size,
                                           cameras_file)
@@ -130,20 +145,48 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
         "weather": Path(weather).name if wx is not None else None, "from_date": from_date,
         "to_date": to_date, "technique": request.technique, "date": instant_date,
         "times": times_text, "tz": tz})
-    lines = {"sky": ProgressLines("sky directions"), "hours": ProgressLines("weather hours")}
-    result, written = run_sky(outdir, scene, request,
-                              progress=lambda phase, d, t: lines[phase](d, t))
-    for warning in result.warnings:
+    run = _run(outdir, scene, request, overwrite)
+    if run.already_complete:
+        click.echo(f"{outdir}: already complete (same request); nothing to do "
+                   f"(--overwrite computes it again)")
+        return
+    for warning in run.result.warnings:
         click.echo(f"cityshade: warning: {warning}", err=True)
     if verbose:
-        timings = {**result.timings_s, "command_s": time.perf_counter() - t_start}
-        click.echo("timings  " + "  ".join(f"{k[:-2]} {v:.2f} s" for k, v in timings.items()),
-                   err=True)
-        click.echo(f"receivers {len(result.svf):,} ({result.n_pixels:,} map pixels), "
-                   f"{result.sky.n} sky directions, about {result.bytes_per_receiver} bytes "
-                   f"per receiver", err=True)
-    click.echo(" ".join(str(p) for p in written))
+        _echo_verbose(run.result, scheduler, time.perf_counter() - t_start)
+    click.echo(" ".join(str(p) for p in run.written))
 
+
+def _run(outdir, scene, request, overwrite: bool):
+    """:func:`cityshade.light.run.run_sky` with batch's progress: a bar (or lines) of tiles,
+    within a run of one tile lines of sky directions and weather hours; resume notes."""
+    from cityshade.cli.batch import Progress, note
+    from cityshade.cli.options import ProgressLines
+    from cityshade.light.run import run_sky
+
+    lines = {"sky": ProgressLines("sky directions"), "hours": ProgressLines("weather hours")}
+    with Progress("tiles") as bar:
+        return run_sky(outdir, scene, request, overwrite=overwrite,
+                       progress=lambda phase, d, t: lines[phase](d, t),
+                       on_plan=lambda todo, total: bar.plan(todo if total > 1 else 0),
+                       on_tile=lambda done, total: bar.step(done, total, None), on_note=note)
+
+
+def _echo_verbose(result, scheduler, command_s: float) -> None:
+    """``-v``: timings, counts, tiles."""
+    timings = {**result.timings_s, "command_s": command_s}
+    click.echo("timings  " + "  ".join(f"{k[:-2]} {v:.2f} s" for k, v in timings.items()),
+               err=True)
+    click.echo(f"receivers {len(result.svf):,} ({result.n_pixels:,} map pixels), "
+               f"{result.sky.n} sky directions, about {result.bytes_per_receiver} bytes "
+               f"per receiver", err=True)
+    tiles = result.tiles
+    if tiles["tile_px"] is not None or scheduler is not None:
+        click.echo(f"tiles    {tiles['tiles']} of {tiles['tile_px'] or 'all'} px, "
+                   f"{tiles['tiles_resumed']} taken from the saved state"
+                   + (f", {tiles['workers']} Dask workers ({scheduler}), "
+                      f"{tiles['tasks_on_driver']} tiles run here while they started"
+                      if scheduler is not None else ""), err=True)
 
 
 def _check_outputs_asked(irradiance, weather, instant_date, times_text, tz, no_map, surfaces,

@@ -62,3 +62,26 @@ def set_visible_bits(bits, rows, blocked, column):
     for k in range(blocked.shape[0]):
         if not blocked[k]:
             bits[rows[k], byte] |= mask
+
+
+@njit(cache=True)
+def visible_weight_sums(bits, inverse, weights, out):
+    """``out[i] = Σ_p bit(i, p) · weights[inverse[i], p]``, the directions added in increasing
+    ``p`` from 0.0, one receiver at a time, straight from the packed bits (big bit order).
+
+    One row's sum never depends on the other rows, so any split of the receivers (a sky run's
+    tiles) gives the same bits; BLAS's product of the unpacked bits did not promise that (its
+    kernels sum a row in an order that depends on the row's place in the block)."""
+    n_p = weights.shape[1]
+    for i in range(bits.shape[0]):
+        u = inverse[i]
+        s = 0.0
+        for byte in range(bits.shape[1]):
+            b = bits[i, byte]
+            if b == 0:
+                continue
+            base = byte * 8
+            for k in range(8):
+                if b & (0x80 >> k) and base + k < n_p:
+                    s += weights[u, base + k]
+        out[i] = s

@@ -187,17 +187,17 @@ def sky_integral(visibility, luminance=uniform_luminance, *, k: int | None = Non
 
 def weighted_sum(visibility, weights, inverse, *, leaf: bool = True) -> np.ndarray:
     """(N,) ``Σ_p bit_p τ_p weights[inverse[i], p]``: the visible part of per-plane patch
-    weights (:func:`patch_weights`), unpacking 8 Ki receivers at a time. A ray through crowns
+    weights (:func:`patch_weights`), each receiver's directions added in order from the
+    packed bits (:func:`cityshade.light.kernels.visible_weight_sums`: the same number for a
+    receiver whatever other receivers it is computed with). A ray through crowns
     (:attr:`~cityshade.light.visibility.SkyVisibility.crowns`) gives back ``(1 − τ)`` of its
     weight, τ in leaf or leafless (``leaf``); without vegetation nothing is subtracted."""
+    from cityshade.light.kernels import visible_weight_sums
+
     out = np.zeros(visibility.n_receivers)
-    order = np.argsort(inverse, kind="stable")
-    bounds = np.searchsorted(inverse[order], np.arange(len(weights) + 1))
-    for u in range(len(weights)):
-        rows = order[bounds[u]:bounds[u + 1]]
-        for s in range(0, len(rows), 8192):     # unpacked: 8 Ki receivers × P bytes at most
-            part = rows[s:s + 8192]
-            out[part] = visibility.visible(part) @ weights[u]
+    visible_weight_sums(np.ascontiguousarray(visibility.bits),
+                        np.ascontiguousarray(inverse, np.int64),
+                        np.ascontiguousarray(weights, np.float64), out)
     crowns = visibility.crowns
     if crowns is not None and len(crowns.rows):
         loss = (1.0 - crowns.transmission(leaf)) * weights[inverse[crowns.rows], crowns.cols]

@@ -21,8 +21,8 @@ import numpy as np
 from cityshade.errors import UsageError
 
 __all__ = ["Checkpoint", "SaveThrottle", "ManifestProgress", "params_key", "read_manifest",
-           "write_manifest", "MANIFEST_NAME", "STATE_NAME", "CHECKPOINT_EVERY_S",
-           "MANIFEST_EVERY_S"]
+           "write_manifest", "open_state", "finished_outputs", "relative_output",
+           "MANIFEST_NAME", "STATE_NAME", "CHECKPOINT_EVERY_S", "MANIFEST_EVERY_S"]
 
 MANIFEST_NAME = "manifest.json"
 STATE_NAME = "state.npz"
@@ -68,26 +68,52 @@ class Checkpoint:
         UsageError
             The state belongs to other parameters, does not fit this run, or is damaged.
         """
-        if not self.path.exists():
+        z = self.load_arrays(("units_done", "pixel_sum", "sample_sum"))
+        if z is None:
             return None
-        hint = "re-run with --overwrite to start afresh"
-        try:
-            with np.load(self.path, allow_pickle=False) as z:
-                key = str(z["key"])
-                done = int(z["units_done"])
-                pixel_sum = np.array(z["pixel_sum"], dtype=np.float64)
-                sample_sum = np.array(z["sample_sum"], dtype=np.float64)
-                self.extra = {n[2:]: np.array(z[n]) for n in z.files if n.startswith("x_")}
-        except (OSError, ValueError, KeyError, zipfile.BadZipFile) as exc:
-            raise UsageError(f"the saved state {self.path} is damaged ({exc}); {hint}") from None
-        if key != self.key:
-            raise UsageError(f"the saved state {self.path} belongs to a run with other "
-                             f"parameters; {hint}")
+        done = int(z["units_done"])
+        pixel_sum = z["pixel_sum"].astype(np.float64, copy=False)
+        sample_sum = z["sample_sum"].astype(np.float64, copy=False)
+        self.extra = {n[2:]: v for n, v in z.items() if n.startswith("x_")}
         shape = tuple(pixel_shape) if pixel_shape is not None else (0, 0)
         if pixel_sum.shape != shape or sample_sum.shape != (n_samples,) or not \
                 0 <= done <= n_units:
-            raise UsageError(f"the saved state {self.path} does not fit this run; {hint}")
+            self.refuse_misfit()
         return done, pixel_sum, sample_sum
+
+    #: What a refused state's message advises.
+    HINT = "re-run with --overwrite to start afresh"
+
+    def load_arrays(self, required: Iterable[str] = ()) -> dict[str, np.ndarray] | None:
+        """Every array of the saved state (``required`` among them; ``key`` checked and left
+        out), or None when there is none: the one reader of a run's state (a batch's, plain or
+        tiled, and a sky run's, :mod:`cityshade.light.run`).
+
+        Raises
+        ------
+        UsageError
+            The state belongs to other parameters or is damaged.
+        """
+        if not self.path.exists():
+            return None
+        try:
+            with np.load(self.path, allow_pickle=False) as z:
+                key = str(z["key"])
+                arrays = {n: np.array(z[n]) for n in z.files if n != "key"}
+            missing = [n for n in required if n not in arrays]
+            if missing:
+                raise KeyError(f"no {missing[0]!r}")
+        except (OSError, ValueError, KeyError, zipfile.BadZipFile) as exc:
+            raise UsageError(f"the saved state {self.path} is damaged ({exc}); {self.HINT}") \
+                from None
+        if key != self.key:
+            raise UsageError(f"the saved state {self.path} belongs to a run with other "
+                             f"parameters; {self.HINT}")
+        return arrays
+
+    def refuse_misfit(self):
+        """Raise the one message of a state whose arrays do not fit the run."""
+        raise UsageError(f"the saved state {self.path} does not fit this run; {self.HINT}")
 
     def units_done(self) -> int:
         """Units recorded as done in the saved state (0 without a state or for another key)."""
@@ -197,6 +223,76 @@ def write_manifest(outdir, manifest: dict[str, Any]) -> Path:
                              json.dumps(manifest, indent=2, sort_keys=True) + "\n",
                              what="the manifest")
 
+
+def relative_output(path, outdir) -> str:
+    """``path`` as a manifest names it: relative to the run's folder."""
+    try:
+        return Path(path).relative_to(outdir).as_posix()
+    except ValueError:
+        return Path(path).name
+
+
+def open_state(outdir, params: dict[str, Any], overwrite: bool
+               ) -> tuple[Checkpoint, str | None]:
+    """(checkpoint, warning or None): the saved state of ``outdir`` when it belongs to these
+    parameters and its checksum matches the manifest; a run's resume rule (a batch's and a sky
+    run's).
+
+    Raises
+    ------
+    UsageError
+        ``outdir`` holds a run of other parameters (the message names what differs) or a state
+        without manifest, and not ``overwrite`` (which discards them).
+    """
+    outdir = Path(outdir)
+    key = params_key(params)
+    old = read_manifest(outdir)
+    state = Checkpoint(outdir / STATE_NAME, key)
+    if old is not None and old.get("key") != key:
+        if not overwrite:
+            before = old.get("params", {})
+            changed = sorted(k for k in set(params) | set(before) if params.get(k) != before.get(k))
+            raise UsageError(f"{outdir} holds a run with other parameters (differs in: "
+                             f"{', '.join(changed) or 'version'}); use --overwrite or another "
+                             f"-o folder")
+        state.remove()
+    elif old is None and state.path.exists():
+        if not overwrite:
+            raise UsageError(f"{state.path} has no manifest next to it; use --overwrite")
+        state.remove()
+    warning = None
+    if old is not None and state.path.exists():
+        # The manifest holds the checksum of the last state saved: a truncated or altered state
+        # is discarded and its work is done again, never half-read.
+        found = state.file_sha256()
+        if found not in (old.get("state_sha256") or []):
+            warning = (f"the saved state {state.path} is damaged (its checksum does not "
+                       f"match the manifest); the unfinished steps start again")
+            state.remove()
+        else:
+            state.sha256 = found
+    return state, warning
+
+
+def finished_outputs(outdir, params: dict[str, Any], version: str, overwrite: bool,
+                     folders: Iterable[str] = ()) -> tuple[list[Path], dict[str, Any]] | None:
+    """(outputs, manifest) of the run ``outdir`` already holds when it finished with the same
+    request identity (:func:`params_key`) and ``version`` and its outputs (listed in the
+    manifest's summary, relative to the folder) and ``folders`` are all there; None otherwise
+    (``overwrite`` computes it again). A run of other parameters is left to
+    :func:`open_state`, which refuses it."""
+    if overwrite:
+        return None
+    outdir = Path(outdir)
+    old = read_manifest(outdir)
+    if old is None or old.get("status") != "finished" or old.get("key") != params_key(params) \
+            or old.get("cityshade_version") != version:
+        return None
+    written = [outdir / name for name in (old.get("summary") or {}).get("outputs") or []]
+    if not written or not all(p.is_file() for p in written) or \
+            not all((outdir / f).is_dir() for f in folders):
+        return None
+    return written, old
 
 
 class ManifestProgress:

@@ -72,11 +72,12 @@ def _opened(path: str, loader):
 
 
 def _worker_task(scene_path: str, scene_sha: str, receivers_path: str, lo: int, hi: int,
-                 directions: np.ndarray, t_days: float, engine: str) -> np.ndarray:
-    """One task on a worker: memory-map the scene and receivers (once per process) and
-    return the packed lit bits (:func:`cityshade.sunhours.tiled.task_lit`)."""
+                 fn: Callable, args: tuple):
+    """One task on a worker: memory-map the scene and receivers (once per process) and return
+    ``fn(scene, receivers, lo, hi, *args)`` (a batch's packed lit bits,
+    :func:`cityshade.sunhours.tiled.task_lit`; a sky tile's values,
+    :func:`cityshade.light.run.sky_tile`)."""
     from cityshade.store.scenefile import load_scene
-    from cityshade.sunhours.tiled import task_lit
 
     # The driver verified the cache file; a worker checks it is the same file.
     scene = _opened(scene_path, lambda p: load_scene(p, verify=False))
@@ -85,7 +86,7 @@ def _worker_task(scene_path: str, scene_sha: str, receivers_path: str, lo: int, 
         raise DistributedError(f"the worker's {scene_path} is another scene than the driver's; "
                                f"give every worker the same cache file")
     data = _opened(receivers_path, lambda p: np.load(p, mmap_mode="r"))
-    return task_lit(scene, data, lo, hi, directions, t_days, engine)
+    return fn(scene, data, lo, hi, *args)
 
 
 def _warm_worker(scene_path: str, scene_sha: str, direction, t_days: float,
@@ -99,6 +100,7 @@ def _warm_worker(scene_path: str, scene_sha: str, direction, t_days: float,
     scene = _opened(scene_path, lambda p: load_scene(p, verify=False))
     if (scene.header or {}).get("source", {}).get("sha256", "") != scene_sha:
         return  # the first task says so in its own words
+    # A sky run gives no sun: the scene mapped is the warm-up (its kernels load per tile).
     kd = scene.kdtree
     if direction is None or kd is None:
         return
@@ -267,8 +269,22 @@ class DaskExecutor:
 
     def run(self, plan, tasks: Sequence[tuple[int, int, int]], directions: np.ndarray,
             t_days: float, engine: str, workdir, finished: Callable) -> None:
-        """Run ``tasks`` (tile, first, end sun position) and call ``finished(tile, first,
-        bits)`` for each as it comes back."""
+        """A batch's ``tasks`` (tile, first, end sun position): ``finished(tile, first, bits)``
+        for each as it comes back (:func:`cityshade.sunhours.tiled.task_lit`)."""
+        from cityshade.sunhours.tiled import task_lit
+
+        self.run_tasks(plan, task_lit, [
+            (t, (t, lo), (np.ascontiguousarray(directions[lo:hi]), t_days, engine))
+            for t, lo, hi in tasks], workdir, lambda key, out: finished(*key, out),
+            lambda key: f"tile{key[0]}-sun{key[1]}")
+
+    def run_tasks(self, plan, fn: Callable, tasks: Sequence[tuple[int, Any, tuple]],
+                  workdir, finished: Callable, name: Callable = str) -> None:
+        """Run ``fn(scene, plan.data, lo, hi, *args)`` for each task ``(tile, key, args)``
+        (``lo:hi`` the tile's receivers) and call ``finished(key, result)`` as each comes back.
+        ``fn`` is a module-level function (workers import it by name); the receivers go to
+        ``workdir/receivers.npy`` for the workers to memory-map; ``name(key)`` names the
+        task in Dask (``cityshade-NAME-...``)."""
         from cityshade.util import atomic_path
 
         if not tasks:
@@ -279,14 +295,11 @@ class DaskExecutor:
         try:
             first = 0
             if self.driver_tasks and self._scene is not None and self._starting is not None:
-                from cityshade.sunhours.tiled import task_lit
-
                 # The cluster is still starting: run tasks here, in order, meanwhile.
                 while first < len(tasks) and not self.ready.is_set():
-                    t, lo, hi = tasks[first]
+                    t, key, args = tasks[first]
                     a, b = int(plan.start[t]), int(plan.start[t + 1])
-                    finished(t, lo, task_lit(self._scene, plan.data, a, b, directions[lo:hi],
-                                             t_days, engine))
+                    finished(key, fn(self._scene, plan.data, a, b, *args))
                     first += 1
                 self.tasks_on_driver = first
                 if first == len(tasks):
@@ -297,22 +310,20 @@ class DaskExecutor:
             from distributed.scheduler import KilledWorker
 
             futures = {}
-            for t, lo, hi in tasks[first:]:
+            for t, key, args in tasks[first:]:
                 a, b = int(plan.start[t]), int(plan.start[t + 1])
                 fut = client.submit(_worker_task, self.scene_path, self.scene_sha,
-                                    str(recv.resolve()), a, b,
-                                    np.ascontiguousarray(directions[lo:hi]), t_days, engine,
-                                    pure=False, key=f"cityshade-tile{t}-sun{lo}-{os.getpid()}"
-                                                    f"-{id(self)}")
-                futures[fut] = (t, lo)
+                                    str(recv.resolve()), a, b, fn, args, pure=False,
+                                    key=f"cityshade-{name(key)}-{os.getpid()}-{id(self)}")
+                futures[fut] = key
             try:
                 for fut in as_completed(futures):
-                    t, lo = futures.pop(fut)
-                    bits = fut.result()
+                    key = futures.pop(fut)
+                    out = fut.result()
                     # Let go of the result before adding it: a worker lost from here on does
                     # not make Dask compute it again.
                     fut.release()
-                    finished(t, lo, bits)
+                    finished(key, out)
             except KilledWorker as exc:
                 raise DistributedError(f"Dask workers died while running a task ({exc}); "
                                        f"the finished tasks are saved, run the command "

@@ -24,8 +24,8 @@ import numpy as np
 from cityshade import __version__
 from cityshade.errors import UsageError
 from cityshade.sunhours.accumulate import SunHours
-from cityshade.sunhours.checkpoint import (STATE_NAME, Checkpoint, ManifestProgress, params_key,
-                                           read_manifest, write_manifest)
+from cityshade.sunhours.checkpoint import (Checkpoint, ManifestProgress, finished_outputs,
+                                           open_state, relative_output, write_manifest)
 from cityshade.sunhours.plan import Unit
 from cityshade.sunhours.request import SunHoursRequest
 
@@ -64,14 +64,6 @@ class BatchRun:
     already_complete: bool = False
 
 
-def _relative(path: Path, outdir: Path) -> str:
-    """``path`` as the manifest names it: relative to the run's folder."""
-    try:
-        return Path(path).relative_to(outdir).as_posix()
-    except ValueError:
-        return Path(path).name
-
-
 def _iso(instant: datetime) -> str:
     return instant.isoformat().replace("+00:00", "Z")
 
@@ -108,54 +100,14 @@ def batch_params(request: SunHoursRequest) -> dict[str, Any]:
     return json.loads(json.dumps(params))
 
 
-def _open_state(outdir: Path, params: dict[str, Any], overwrite: bool):
-    """(checkpoint, earlier manifest or None, warning or None): the saved state of ``outdir``
-    when it belongs to these parameters and its checksum matches the manifest."""
-    key = params_key(params)
-    old = read_manifest(outdir)
-    state = Checkpoint(outdir / STATE_NAME, key)
-    if old is not None and old.get("key") != key:
-        if not overwrite:
-            before = old.get("params", {})
-            changed = sorted(k for k in set(params) | set(before) if params.get(k) != before.get(k))
-            raise UsageError(f"{outdir} holds a run with other parameters (differs in: "
-                             f"{', '.join(changed) or 'version'}); use --overwrite or another "
-                             f"-o folder")
-        state.remove()
-    elif old is None and state.path.exists():
-        if not overwrite:
-            raise UsageError(f"{state.path} has no manifest next to it; use --overwrite")
-        state.remove()
-    warning = None
-    if old is not None and state.path.exists():
-        # The manifest holds the checksum of the last state saved: a truncated or altered state
-        # is discarded and its steps are computed again, never half-read.
-        found = state.file_sha256()
-        if found not in (old.get("state_sha256") or []):
-            warning = (f"the saved state {state.path} is damaged (its checksum does not "
-                       f"match the manifest); the unfinished steps start again")
-            state.remove()
-        else:
-            state.sha256 = found
-    return state, warning
-
-
 def _finished_run(outdir: Path, params: dict[str, Any], overwrite: bool) -> BatchRun | None:
-    """The run ``outdir`` already holds when it finished with the same request identity
-    (:func:`params_key`) and version and its outputs (and frames) are all there; None
-    otherwise (``overwrite`` computes it again). A run of other parameters is left to
-    :func:`_open_state`, which refuses it."""
-    if overwrite:
+    """The run ``outdir`` already holds, finished with the same request, its outputs (and
+    frames) all there (:func:`cityshade.sunhours.checkpoint.finished_outputs`); else None."""
+    found = finished_outputs(outdir, params, __version__, overwrite,
+                             ("frames",) if params.get("frames") else ())
+    if found is None:
         return None
-    old = read_manifest(outdir)
-    if old is None or old.get("status") != "finished" or old.get("key") != params_key(params) \
-            or old.get("cityshade_version") != __version__:
-        return None
-    written = [outdir / name for name in (old.get("summary") or {}).get("outputs") or []]
-    if not written or not all(p.is_file() for p in written) or \
-            params.get("frames") and not (outdir / "frames").is_dir():
-        return None
-    return BatchRun(result=None, written=written, manifest=old, suns=[], write_s=0.0,
+    return BatchRun(result=None, written=found[0], manifest=found[1], suns=[], write_s=0.0,
                     already_complete=True)
 
 
@@ -329,7 +281,7 @@ def _run_locked(outdir: Path, scene, request: SunHoursRequest, params: dict[str,
     finished_run = _finished_run(outdir, params, overwrite)
     if finished_run is not None:
         return finished_run
-    state, state_warning = _open_state(outdir, params, overwrite)
+    state, state_warning = open_state(outdir, params, overwrite)
     steps = request.steps
     manifest: dict[str, Any] = {
         "cityshade_version": __version__, "key": state.key, "params": params,
@@ -381,7 +333,7 @@ def _run_locked(outdir: Path, scene, request: SunHoursRequest, params: dict[str,
         "sun_positions_resumed": result.units_resumed, "hours_total": result.hours_total,
         "hours_sun_up": result.hours_sun_up,
         # Relative to the folder (monthly/...): a run again checks they are all there.
-        "outputs": [_relative(p, outdir) for p in written],
+        "outputs": [relative_output(p, outdir) for p in written],
         "timings_s": {**result.timings_s, "write_s": write_s},
     }
     write_manifest(outdir, manifest)

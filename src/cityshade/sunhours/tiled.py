@@ -36,7 +36,7 @@ from cityshade.errors import UsageError
 from cityshade.sunhours.checkpoint import SaveThrottle
 from cityshade.sunhours.request import SunHoursRequest
 
-__all__ = ["TilePlan", "plan_tiles", "receiver_lit", "task_lit", "accumulate", "add_lit", "halo_m",
+__all__ = ["TilePlan", "plan_tiles", "plan_receivers", "receiver_lit", "task_lit", "accumulate", "add_lit", "halo_m",
            "tiled_sun_hours", "run_tiled", "RECEIVERS_NAME"]
 
 RECEIVERS_NAME = "receivers.npy"
@@ -259,31 +259,21 @@ class TiledState:
 
 
 def _load_state(checkpoint, n_tiles: int, n_units: int, shape: tuple[int, int]):
-    """A saved tiled state that fits, else None (see :class:`cityshade.sunhours.checkpoint.Checkpoint`)."""
-    import zipfile
-
-    if checkpoint is None or not checkpoint.path.exists():
+    """A saved tiled state that fits, else None
+    (:meth:`cityshade.sunhours.checkpoint.Checkpoint.load_arrays`)."""
+    z = None if checkpoint is None else checkpoint.load_arrays(("tile_done", "sums"))
+    if z is None:
         return None
-    hint = "re-run with --overwrite to start afresh"
-    try:
-        with np.load(checkpoint.path, allow_pickle=False) as z:
-            key = str(z["key"])
-            tile_done = np.array(z["tile_done"], dtype=np.int64)
-            sums = np.array(z["sums"], dtype=np.float64)
-            stretches: dict[int, dict[str, np.ndarray]] = {}
-            for name in z.files:
-                if name.startswith("st") and "_" in name and name[2:name.index("_")].isdigit():
-                    t = int(name[2:name.index("_")])
-                    stretches.setdefault(t, {})[name[name.index("_") + 1:]] = np.array(z[name])
-    except (OSError, ValueError, KeyError, zipfile.BadZipFile) as exc:
-        raise UsageError(f"the saved state {checkpoint.path} is damaged ({exc}); {hint}") \
-            from None
-    if key != checkpoint.key:
-        raise UsageError(f"the saved state {checkpoint.path} belongs to a run with other "
-                         f"parameters; {hint}")
+    tile_done = z["tile_done"].astype(np.int64, copy=False)
+    sums = z["sums"].astype(np.float64, copy=False)
+    stretches: dict[int, dict[str, np.ndarray]] = {}
+    for name, value in z.items():
+        if name.startswith("st") and "_" in name and name[2:name.index("_")].isdigit():
+            stretches.setdefault(int(name[2:name.index("_")]), {})[name[name.index("_") + 1:]] \
+                = value
     if tile_done.shape != (n_tiles,) or sums.shape != shape or \
             not ((tile_done >= 0) & (tile_done <= n_units)).all():
-        raise UsageError(f"the saved state {checkpoint.path} does not fit this run; {hint}")
+        checkpoint.refuse_misfit()
     return TiledState(tile_done, sums, stretches)
 
 
@@ -327,17 +317,22 @@ def _resume(checkpoint, plan: TilePlan, units, n_rows: int, pixel_shape, stretch
     return state, parts
 
 
-def _plan_receivers(scene, request: SunHoursRequest, prep) -> tuple[TilePlan, float]:
-    """The receivers of a prepared run in tiles, and the reach of their shadow rays."""
-    cp, samples = prep.cp, prep.samples
-    camera, tile_px = request.camera, request.tile_px
+def plan_receivers(cp, samples, camera, tile_px: int | None) -> TilePlan:
+    """:func:`plan_tiles` of a camera pass's pixels (``cp``, or None) and surface samples
+    (or None): the samples in squares as wide as a tile of the map's pixels (1 m a pixel for
+    a perspective view). A batch's and a sky run's tiles."""
     pixel_m = float(camera.pixel_size_m) if camera is not None and camera.kind == "map" else 1.0
-    plan = plan_tiles(None if cp is None else cp.valid,
+    return plan_tiles(None if cp is None else cp.valid,
                       None if cp is None else cp.surfaces.position_m,
                       None if cp is None else cp.normal,
                       None if samples is None else samples.points_m,
                       None if samples is None else samples.normals,
                       tile_px, (tile_px or 1) * pixel_m)
+
+
+def _plan_receivers(scene, request: SunHoursRequest, prep) -> tuple[TilePlan, float]:
+    """The receivers of a prepared run in tiles, and the reach of their shadow rays."""
+    plan = plan_receivers(prep.cp, prep.samples, request.camera, request.tile_px)
     low_z = float(plan.data[:, 2].min()) if plan.data.shape[0] else 0.0
     return plan, halo_m(scene, low_z, [u.sun.elevation_deg for u in prep.units])
 
