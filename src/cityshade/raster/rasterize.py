@@ -26,6 +26,7 @@ from cityshade.raster.camera import Camera
 from cityshade.raster.gbuffer import GBuffer
 from cityshade.trace.bricks import static_schedule
 from cityshade.runtime.memory import Recycler
+from cityshade.runtime.threadpool import ROW_CHUNK, run_chunks
 from cityshade.util import check_t_days
 
 #: Side of the blocks of the hierarchical max-depth buffer (8 blocks per tile side).
@@ -122,8 +123,8 @@ def _raster_tiles(order, start, items, ids, coef, vals, bbox, xs, ys, near, far,
 def _raster_tile(tile, start, items, ids, coef, vals, bbox, xs, ys, near, far, ortho, tile_px,
                  tiles_x, prim, depth, bary, update_hiz, hiz_block, hiz_tile, block_px):
     """:func:`_raster_tiles` of one tile. A function of its own, not the ``prange`` body:
-    Numba's parallel passes over the whole body tripled the first compile (9.3 s against
-    3.0 s, render of the sample city with an empty cache)."""
+    Numba's parallel passes over the whole body nearly doubled the first compile (6.1 CPU s
+    against 3.4, render of the sample city with an empty cache)."""
     m0, m1, tc0, tc1, tr0, tr1 = tc.tile_span(start, tile, tiles_x, tile_px, prim.shape)
     if m0 == m1:
         return
@@ -179,10 +180,10 @@ def _raster_tile(tile, start, items, ids, coef, vals, bbox, xs, ys, near, far, o
 _GBUFFERS = Recycler(keep=6)
 
 
-@njit(cache=True, parallel=True)
-def _clear(prim, depth, bary):
+@njit(cache=True, nogil=True)
+def _clear(prim, depth, bary, r0, r1):
     """``prim = -1``, ``depth = +inf``, ``bary = 0``, rows in parallel."""
-    for r in prange(prim.shape[0]):
+    for r in range(r0, r1):
         for c in range(prim.shape[1]):
             prim[r, c] = -1
             depth[r, c] = np.inf
@@ -207,7 +208,7 @@ class _Target:
         self.prim = _GBUFFERS.empty((h, w), np.int32)
         self.depth = _GBUFFERS.empty((h, w), np.float32)
         self.bary = _GBUFFERS.empty((h, w, 2), np.float32)
-        _clear(self.prim, self.depth, self.bary)
+        run_chunks(_clear, h, ROW_CHUNK, self.prim, self.depth, self.bary)
         self.occlusion = occlusion
         self.hiz_block = np.full((-(-h // BLOCK_PX), -(-w // BLOCK_PX)), np.inf, np.float32)
         self.hiz_tile = np.full((self.tiles_y, self.tiles_x), np.inf, np.float32)

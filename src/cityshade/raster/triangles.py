@@ -312,9 +312,9 @@ def _setup_range(vertices, triangles, tree, from_records, items, view, depth_pas
                  vals, bbox, j0, j1):
     """:func:`setup_triangles` of triangles ``[j0, j1)``, for
     :func:`cityshade.runtime.threadpool.run_chunks`: a serial kernel, not a ``prange`` one,
-    because Numba's parallel passes over this body took most of the first ``render``'s
-    compiling (the setup and the tile kernel 18.8 CPU s against 9.0 serial, sample city,
-    empty cache)."""
+    because Numba's parallel passes over this body doubled its first compile (this module's
+    and the G-buffer's tile kernels: 18.8 CPU s with both ``prange``, 9.0 with both serial;
+    sample city, empty cache)."""
     for j in range(j0, j1):
         _setup_one(vertices, triangles, tree, from_records, items, view, depth_pass, ids, coef,
                    vals, bbox, j)
