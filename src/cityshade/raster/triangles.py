@@ -31,9 +31,9 @@ Determinism
   nearest fragment wins and exact ties go to the lower id. The result does not depend on
   drawing order, so it is the same for any thread count, tile size, batch split or culling.
 
-Parallelism: triangles are set up in chunks on threads (:func:`setup_triangles`), binned into
-square tiles in drawing order (one thread: see :func:`bin_triangles`), and the passes rasterize
-tiles in parallel (``prange``); each tile owns its pixels.
+Parallelism: triangles are set up in parallel, binned into square tiles in drawing order
+(one thread: see :func:`bin_triangles`), and the passes rasterize tiles in parallel
+(``prange``); each tile owns its pixels.
 """
 from __future__ import annotations
 
@@ -41,13 +41,12 @@ import time
 from typing import NamedTuple
 
 import numpy as np
-from numba import njit
+from numba import njit, prange
 
 from cityshade.accel.kdtree_layout import KdTree, KdViews, record_id
 from cityshade.errors import UsageError
 from cityshade.raster import culling as cull
 from cityshade.runtime.memory import Scratch
-from cityshade.runtime.threadpool import run_chunks
 
 #: Tile side in pixels: 64² pixels × (4 + 4 + 8 bytes) = 64 KiB of G-buffer per tile fits the
 #: L2 cache, and 1080p gives 510 tiles, plenty to balance two cores (a 4096² depth map: 4096).
@@ -272,11 +271,7 @@ def _vertex(vertices, triangles, tree, from_records, item, corner):
     return np.float64(vertices[q, 0]), np.float64(vertices[q, 1]), np.float64(vertices[q, 2])
 
 
-#: Triangles a thread sets up at a time (:func:`setup_triangles`): a few milliseconds of work, so
-#: the call per chunk (some 20 µs) is lost in it, and a batch still makes 8-16 chunks to share.
-SETUP_CHUNK = 16384
-
-
+@njit(cache=True, parallel=True)
 def setup_triangles(vertices, triangles, tree, from_records, items, view, depth_pass, ids, coef,
                     vals, bbox):
     """Per triangle: edge functions, vertex depths and the pixel bounding box.
@@ -303,116 +298,97 @@ def setup_triangles(vertices, triangles, tree, from_records, items, view, depth_
     bbox : (N, 4) int32 out
         col0, col1, row0, row1 inclusive; col0 > col1 when the triangle covers no pixel.
     """
-    run_chunks(_setup_range, items.shape[0], SETUP_CHUNK, vertices, triangles, tree,
-               bool(from_records), items, view, bool(depth_pass), ids, coef, vals, bbox)
-
-
-@njit(cache=True, nogil=True)
-def _setup_range(vertices, triangles, tree, from_records, items, view, depth_pass, ids, coef,
-                 vals, bbox, j0, j1):
-    """:func:`setup_triangles` of triangles ``[j0, j1)``, for
-    :func:`cityshade.runtime.threadpool.run_chunks`: a serial kernel, not a ``prange`` one,
-    because Numba's parallel passes over this body doubled its first compile (this module's
-    and the G-buffer's tile kernels: 18.8 CPU s with both ``prange``, 9.0 with both serial;
-    sample city, empty cache)."""
-    for j in range(j0, j1):
-        _setup_one(vertices, triangles, tree, from_records, items, view, depth_pass, ids, coef,
-                   vals, bbox, j)
-
-
-@njit(cache=True, inline="always")
-def _setup_one(vertices, triangles, tree, from_records, items, view, depth_pass, ids, coef,
-               vals, bbox, j):
-    """Triangle ``j`` of :func:`setup_triangles`."""
+    n = items.shape[0]
     m = view.m
     org = view.origin
     to_px = view.to_px
     w_is_z = view.w_is_z
-    bbox[j, 0] = 1
-    bbox[j, 1] = 0
-    bbox[j, 2] = 1
-    bbox[j, 3] = 0
-    item = items[j]
-    ids[j] = record_id(tree, item) if from_records else item
-    px, py, pz = _vertex(vertices, triangles, tree, from_records, item, 0)
-    x0, y0, z0, w0 = _transform(m, org, w_is_z, px, py, pz)
-    px, py, pz = _vertex(vertices, triangles, tree, from_records, item, 1)
-    x1, y1, z1, w1 = _transform(m, org, w_is_z, px, py, pz)
-    px, py, pz = _vertex(vertices, triangles, tree, from_records, item, 2)
-    x2, y2, z2, w2 = _transform(m, org, w_is_z, px, py, pz)
-    wmax = max(w0, w1, w2)
-    if depth_pass:
-        if not wmax > 0.0:
-            return              # entirely behind the projection centre (or NaN)
-        if z0 > w0 and z1 > w1 and z2 > w2:
-            return              # entirely beyond the far plane
-    elif max(z0, z1, z2) < view.near or min(z0, z1, z2) > view.far:
-        return
-    # Screen box of the part with W >= wn.
-    wn = max(view.w_clip, W_NEAR_REL * max(wmax, -min(w0, w1, w2)))
-    box = (np.inf, -np.inf, np.inf, -np.inf)
-    if w0 >= wn:
-        box = _grow(box, _over_w(x0, w0), _over_w(y0, w0))
-    if w1 >= wn:
-        box = _grow(box, _over_w(x1, w1), _over_w(y1, w1))
-    if w2 >= wn:
-        box = _grow(box, _over_w(x2, w2), _over_w(y2, w2))
-    if (w0 >= wn) != (w1 >= wn):
-        sx, sy = _w_cross(x0, y0, w0, x1, y1, w1, wn)
-        box = _grow(box, sx, sy)
-    if (w1 >= wn) != (w2 >= wn):
-        sx, sy = _w_cross(x1, y1, w1, x2, y2, w2, wn)
-        box = _grow(box, sx, sy)
-    if (w2 >= wn) != (w0 >= wn):
-        sx, sy = _w_cross(x2, y2, w2, x0, y0, w0, wn)
-        box = _grow(box, sx, sy)
-    # Pixel centres inside the box (screen y up, rows down; a sub-pixel triangle between
-    # centres gets none).
-    c0 = max(np.ceil(to_px[0] * box[0] + to_px[1] - BOX_SLACK_PX), 0.0)
-    c1 = min(np.floor(to_px[0] * box[1] + to_px[1] + BOX_SLACK_PX), view.width - 1.0)
-    r0 = max(np.ceil(to_px[2] * box[3] + to_px[3] - BOX_SLACK_PX), 0.0)
-    r1 = min(np.floor(to_px[2] * box[2] + to_px[3] + BOX_SLACK_PX), view.height - 1.0)
-    if not (c0 <= c1 and r0 <= r1):
-        return
-    # Edge function of the edge opposite vertex i: v~_j x v~_k with v~ = (X, Y, W).
-    a0 = y1 * w2 - w1 * y2
-    b0 = w1 * x2 - x1 * w2
-    k0 = x1 * y2 - y1 * x2
-    a1 = y2 * w0 - w2 * y0
-    b1 = w2 * x0 - x2 * w0
-    k1 = x2 * y0 - y2 * x0
-    a2 = y0 * w1 - w0 * y1
-    b2 = w0 * x1 - x0 * w1
-    k2 = x0 * y1 - y0 * x1
-    det = x0 * a0 + y0 * b0 + w0 * k0
-    if not (det > 0.0 or det < 0.0):
-        return          # plane through the eye (or zero area, or NaN): covers nothing
-    sign = 1.0 if det > 0.0 else -1.0
-    coef[j, 0] = sign * a0
-    coef[j, 1] = sign * b0
-    coef[j, 2] = sign * k0
-    coef[j, 3] = sign * a1
-    coef[j, 4] = sign * b1
-    coef[j, 5] = sign * k1
-    coef[j, 6] = sign * a2
-    coef[j, 7] = sign * b2
-    coef[j, 8] = sign * k2
-    for i in range(3):
-        # Top-left rule: the edge owns its exact zeros when it is a left edge (a > 0) or a
-        # top edge (a == 0, b < 0; screen y grows upwards).
-        a = coef[j, 3 * i]
-        b = coef[j, 3 * i + 1]
-        coef[j, 9 + i] = 1.0 if (a > 0.0 or (a == 0.0 and b < 0.0)) else 0.0
-    vals[j, Z_WORD] = z0
-    vals[j, Z_WORD + 1] = z1
-    vals[j, Z_WORD + 2] = z2
-    if depth_pass:
-        _depth_words(coef, vals, j, x0, y0, z0, w0, x1, y1, z1, w1, x2, y2, z2, w2, to_px,
-                     c1 - c0 >= NARROW_COLS)
-    bbox[j, 0] = int(c0)
-    bbox[j, 1] = int(c1)
-    bbox[j, 2] = int(r0)
-    bbox[j, 3] = int(r1)
+    for j in prange(n):
+        bbox[j, 0] = 1
+        bbox[j, 1] = 0
+        bbox[j, 2] = 1
+        bbox[j, 3] = 0
+        item = items[j]
+        ids[j] = record_id(tree, item) if from_records else item
+        px, py, pz = _vertex(vertices, triangles, tree, from_records, item, 0)
+        x0, y0, z0, w0 = _transform(m, org, w_is_z, px, py, pz)
+        px, py, pz = _vertex(vertices, triangles, tree, from_records, item, 1)
+        x1, y1, z1, w1 = _transform(m, org, w_is_z, px, py, pz)
+        px, py, pz = _vertex(vertices, triangles, tree, from_records, item, 2)
+        x2, y2, z2, w2 = _transform(m, org, w_is_z, px, py, pz)
+        wmax = max(w0, w1, w2)
+        if depth_pass:
+            if not wmax > 0.0:
+                continue            # entirely behind the projection centre (or NaN)
+            if z0 > w0 and z1 > w1 and z2 > w2:
+                continue            # entirely beyond the far plane
+        elif max(z0, z1, z2) < view.near or min(z0, z1, z2) > view.far:
+            continue
+        # Screen box of the part with W >= wn.
+        wn = max(view.w_clip, W_NEAR_REL * max(wmax, -min(w0, w1, w2)))
+        box = (np.inf, -np.inf, np.inf, -np.inf)
+        if w0 >= wn:
+            box = _grow(box, _over_w(x0, w0), _over_w(y0, w0))
+        if w1 >= wn:
+            box = _grow(box, _over_w(x1, w1), _over_w(y1, w1))
+        if w2 >= wn:
+            box = _grow(box, _over_w(x2, w2), _over_w(y2, w2))
+        if (w0 >= wn) != (w1 >= wn):
+            sx, sy = _w_cross(x0, y0, w0, x1, y1, w1, wn)
+            box = _grow(box, sx, sy)
+        if (w1 >= wn) != (w2 >= wn):
+            sx, sy = _w_cross(x1, y1, w1, x2, y2, w2, wn)
+            box = _grow(box, sx, sy)
+        if (w2 >= wn) != (w0 >= wn):
+            sx, sy = _w_cross(x2, y2, w2, x0, y0, w0, wn)
+            box = _grow(box, sx, sy)
+        # Pixel centres inside the box (screen y up, rows down; a sub-pixel triangle between
+        # centres gets none).
+        c0 = max(np.ceil(to_px[0] * box[0] + to_px[1] - BOX_SLACK_PX), 0.0)
+        c1 = min(np.floor(to_px[0] * box[1] + to_px[1] + BOX_SLACK_PX), view.width - 1.0)
+        r0 = max(np.ceil(to_px[2] * box[3] + to_px[3] - BOX_SLACK_PX), 0.0)
+        r1 = min(np.floor(to_px[2] * box[2] + to_px[3] + BOX_SLACK_PX), view.height - 1.0)
+        if not (c0 <= c1 and r0 <= r1):
+            continue
+        # Edge function of the edge opposite vertex i: v~_j x v~_k with v~ = (X, Y, W).
+        a0 = y1 * w2 - w1 * y2
+        b0 = w1 * x2 - x1 * w2
+        k0 = x1 * y2 - y1 * x2
+        a1 = y2 * w0 - w2 * y0
+        b1 = w2 * x0 - x2 * w0
+        k1 = x2 * y0 - y2 * x0
+        a2 = y0 * w1 - w0 * y1
+        b2 = w0 * x1 - x0 * w1
+        k2 = x0 * y1 - y0 * x1
+        det = x0 * a0 + y0 * b0 + w0 * k0
+        if not (det > 0.0 or det < 0.0):
+            continue        # plane through the eye (or zero area, or NaN): covers nothing
+        sign = 1.0 if det > 0.0 else -1.0
+        coef[j, 0] = sign * a0
+        coef[j, 1] = sign * b0
+        coef[j, 2] = sign * k0
+        coef[j, 3] = sign * a1
+        coef[j, 4] = sign * b1
+        coef[j, 5] = sign * k1
+        coef[j, 6] = sign * a2
+        coef[j, 7] = sign * b2
+        coef[j, 8] = sign * k2
+        for i in range(3):
+            # Top-left rule: the edge owns its exact zeros when it is a left edge (a > 0) or a
+            # top edge (a == 0, b < 0; screen y grows upwards).
+            a = coef[j, 3 * i]
+            b = coef[j, 3 * i + 1]
+            coef[j, 9 + i] = 1.0 if (a > 0.0 or (a == 0.0 and b < 0.0)) else 0.0
+        vals[j, Z_WORD] = z0
+        vals[j, Z_WORD + 1] = z1
+        vals[j, Z_WORD + 2] = z2
+        if depth_pass:
+            _depth_words(coef, vals, j, x0, y0, z0, w0, x1, y1, z1, w1, x2, y2, z2, w2, to_px,
+                         c1 - c0 >= NARROW_COLS)
+        bbox[j, 0] = int(c0)
+        bbox[j, 1] = int(c1)
+        bbox[j, 2] = int(r0)
+        bbox[j, 3] = int(r1)
 
 
 @njit(cache=True, inline="always")
