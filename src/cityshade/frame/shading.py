@@ -440,7 +440,7 @@ def shade(scene, surfaces, camera, lit_fraction: np.ndarray, sun_dir_render, *,
                            f"{(height, width, 3)}")
 
     # Every row-parallel kernel below takes rows a few at a time (dynamic scheduling: the row
-    # kernels through run_chunks, the texture kernels' prange under dynamic_bricks): the
+    # kernels through run_chunks, the texture-inputs kernel's prange under dynamic_bricks): the
     # surfaces and the sky of a view are uneven over its rows (the sky kernel alone, rows
     # split in two halves, scaled 1.67x at two threads).
     with dynamic_bricks():
