@@ -42,13 +42,14 @@ STUDIES = {
 }
 
 
-def _cityshade(*args: str) -> tuple[float, float]:
-    """(wall seconds, CPU seconds: user + system) of one ``python -m cityshade`` process. On
-    a shared machine the CPU time is the steadier figure: the wall time waits for the
-    other processes' turns."""
+def _cityshade(*args: str, env: dict | None = None) -> tuple[float, float]:
+    """(wall seconds, CPU seconds: user + system) of one ``python -m cityshade`` process
+    (``env``: its environment, default this one with this checkout's ``src/``). On a shared
+    machine the CPU time is the steadier figure: the wall time waits for the other processes'
+    turns."""
     import resource
 
-    env = dict(os.environ, PYTHONPATH=str(REPO / "src"))
+    env = env or dict(os.environ, PYTHONPATH=str(REPO / "src"))
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
     out = subprocess.run([sys.executable, "-m", "cityshade", *args], env=env,

@@ -47,3 +47,41 @@ def test_a_new_folder_prunes_old_and_surplus_ones(tmp_path):
     (tmp_path / "recent9").mkdir()
     cityshade._mark_used_and_prune(str(current), now=now)
     assert (tmp_path / "recent9").exists()
+
+
+_COMPILE_ONE_KERNEL = """
+import cityshade  # first: it points Numba's cache at the sources' folder
+import numba.core.event as ev
+import numpy as np
+compiled = []
+class Listener(ev.Listener):
+    def on_start(self, event):
+        pass
+    def on_end(self, event):
+        compiled.append(event.data["dispatcher"].py_func.__qualname__)
+ev.register("numba:compile", Listener())
+from cityshade.geometry.bounds import used_vertex_box
+used_vertex_box(np.zeros((2, 3), np.int64), np.zeros((3, 3)), np.zeros((2, 3)))
+print(",".join(compiled))
+"""
+
+
+def test_a_reinstall_of_the_same_code_compiles_nothing(tmp_path):
+    """The same sources written again at the same place (what ``pip install .`` does: new
+    modification times) reuse the machine code: the folder is keyed by content, and so are
+    Numba's own stamps of each file."""
+    import subprocess
+    import sys
+
+    env = {k: v for k, v in os.environ.items() if k != "NUMBA_CACHE_DIR"}
+    env.update(XDG_CACHE_HOME=str(tmp_path / "cache"), PYTHONPATH=str(tmp_path / "site"))
+    runs = []
+    for install in range(2):
+        shutil.rmtree(tmp_path / "site", ignore_errors=True)
+        pkg = _copy_sources(tmp_path / "site" / "cityshade")
+        for path in pkg.rglob("*.py"):
+            os.utime(path, (1_000_000 + install, 1_000_000 + install))
+        out = subprocess.run([sys.executable, "-c", _COMPILE_ONE_KERNEL], env=env,
+                             capture_output=True, text=True, check=True)
+        runs.append(out.stdout.strip())
+    assert runs == ["used_vertex_box", ""]

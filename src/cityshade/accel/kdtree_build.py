@@ -725,8 +725,9 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
     st_n[0] = n_tri
     st_ord[0] = 0
     st_sorted[0] = False
-    st_blo[0] = root_lo
-    st_bhi[0] = root_hi
+    for c in range(4):  # loops, not row copies: see _grow
+        st_blo[0, c] = root_lo[c]
+        st_bhi[0, c] = root_hi[c]
     st_depth[0] = depth0
     st_parent[0] = -1
     st_task[0] = -1

@@ -35,6 +35,7 @@ from cityshade.trace.bricks import dynamic_bricks
 from cityshade.frame.textures import (TextureSet, composite_textures, load_texture_set,
                                 lod_from_uv_neighbours, srgb_to_linear)
 from cityshade.runtime.memory import Recycler
+from cityshade.runtime.threadpool import ROW_CHUNK, run_chunks
 
 __all__ = ["ShadingError", "ShadingSettings", "DEFAULT_PALETTE_SRGB8", "shade", "to_srgb8",
            "albedo_of_surfaces"]
@@ -184,12 +185,12 @@ def _texture_set(textures: list[dict], used: np.ndarray) -> TextureSet:
     return hit
 
 
-@njit(cache=True, parallel=True)
-def _base_albedo_kernel(valid, material, klass, mat_colours, mat_usable, palette, out):
+@njit(cache=True, nogil=True)
+def _base_albedo_kernel(valid, material, klass, mat_colours, mat_usable, palette, out, r0, r1):
     """Material colour where usable, else the palette colour of the class (0 = unclassified)."""
     height, width = valid.shape
     n_mat = len(mat_usable)
-    for r in prange(height):
+    for r in range(r0, r1):
         for c in range(width):
             if not valid[r, c]:
                 for k in range(3):
@@ -267,8 +268,8 @@ def albedo_of_surfaces(scene, surfaces, *, settings: ShadingSettings | None = No
     materials = list(getattr(scene, "materials", []) or [])
     colours, usable = _material_table(materials)
     albedo = _IMAGES.empty((height, width, 3), np.float32)
-    _base_albedo_kernel(valid, np.ascontiguousarray(material), np.ascontiguousarray(klass),
-                        colours, usable, palette, albedo)
+    run_chunks(_base_albedo_kernel, height, ROW_CHUNK, valid, np.ascontiguousarray(material),
+               np.ascontiguousarray(klass), colours, usable, palette, albedo)
     textures = list(getattr(scene, "textures", []) or [])
     if not (settings.textures and textures):
         return albedo
@@ -304,11 +305,11 @@ def albedo_of_surfaces(scene, surfaces, *, settings: ShadingSettings | None = No
 
 # --- lighting --------------------------------------------------------------------------------
 
-@njit(cache=True, parallel=True)
+@njit(cache=True, nogil=True)
 def _shade_kernel(valid, normal, position, albedo, lit, sun_dir, eye, view_dir, perspective,
-                  sun_rgb, sky_rgb, ground_rgb, out):
+                  sun_rgb, sky_rgb, ground_rgb, out, r0, r1):
     height, width = valid.shape
-    for r in prange(height):
+    for r in range(r0, r1):
         for c in range(width):
             if not valid[r, c]:
                 out[r, c, 0] = np.nan       # no surface (the sky kernel may paint it)
@@ -340,10 +341,10 @@ def _shade_kernel(valid, normal, position, albedo, lit, sun_dir, eye, view_dir, 
                 out[r, c, k] = albedo[r, c, k] * (sun_rgb[k] * sun + ambient)
 
 
-@njit(cache=True, parallel=True)
-def _sky_kernel(valid, xs, ys, right, up, fwd, zenith, horizon, below, out):
+@njit(cache=True, nogil=True)
+def _sky_kernel(valid, xs, ys, right, up, fwd, zenith, horizon, below, out, r0, r1):
     height, width = valid.shape
-    for r in prange(height):
+    for r in range(r0, r1):
         for c in range(width):
             if valid[r, c]:
                 continue
@@ -438,25 +439,27 @@ def shade(scene, surfaces, camera, lit_fraction: np.ndarray, sun_dir_render, *,
         raise ShadingError(f"surfaces.position_m has shape {position.shape}, expected "
                            f"{(height, width, 3)}")
 
-    # Every row-parallel kernel below takes rows a few at a time (dynamic scheduling): the
+    # Every row-parallel kernel below takes rows a few at a time (dynamic scheduling: the row
+    # kernels through run_chunks, the texture-inputs kernel's prange under dynamic_bricks): the
     # surfaces and the sky of a view are uneven over its rows (the sky kernel alone, rows
     # split in two halves, scaled 1.67x at two threads).
     with dynamic_bricks():
         albedo = albedo_of_surfaces(scene, surfaces, settings=settings, prim_id=prim_id,
                                     report=report)
         out = _IMAGES.empty((height, width, 3), np.float32)     # every pixel written
-        _shade_kernel(valid, normal, position, np.ascontiguousarray(albedo, np.float32), lit,
-                      sun, eye, view_dir, perspective, np.array(settings.sun_rgb),
-                      np.array(settings.sky_ambient_rgb),
-                      np.array(settings.ground_ambient_rgb), out)
+        run_chunks(_shade_kernel, height, ROW_CHUNK, valid, normal, position,
+                   np.ascontiguousarray(albedo, np.float32), lit, sun, eye, view_dir, perspective,
+                   np.array(settings.sun_rgb), np.array(settings.sky_ambient_rgb),
+                   np.array(settings.ground_ambient_rgb), out)
         if perspective and sky and not valid.all():
             xs, ys = camera.screen_coordinates()
             if xs.shape != (width,) or ys.shape != (height,):
                 raise ShadingError(f"camera gives {len(xs)}×{len(ys)} pixels for "
                                    f"{height}×{width}")
             right, up, fwd = camera.frame()
-            _sky_kernel(valid, xs, ys, right, up, fwd, np.array(settings.sky_zenith_rgb),
-                        np.array(settings.sky_horizon_rgb), np.array(settings.sky_below_rgb), out)
+            run_chunks(_sky_kernel, height, ROW_CHUNK, valid, xs, ys, right, up, fwd,
+                       np.array(settings.sky_zenith_rgb), np.array(settings.sky_horizon_rgb),
+                       np.array(settings.sky_below_rgb), out)
     return out
 
 
@@ -480,7 +483,8 @@ def to_srgb8(rgb: np.ndarray, *, nodata_srgb8=(0, 0, 0)) -> np.ndarray:
         raise ShadingError(f"rgb must have shape (H, W, 3), not {rgb.shape}")
     nodata = np.asarray(nodata_srgb8, np.uint8).reshape(3)
     out = np.empty(rgb.shape, np.uint8)
-    _encode_kernel(np.ascontiguousarray(rgb, dtype=np.float32), _SRGB8_THRESHOLDS, nodata, out)
+    run_chunks(_encode_kernel, rgb.shape[0], ROW_CHUNK, np.ascontiguousarray(rgb, dtype=np.float32),
+               _SRGB8_THRESHOLDS, nodata, out)
     return out
 
 
@@ -503,10 +507,10 @@ def _srgb_to_linear_f64(encoded: np.ndarray) -> np.ndarray:
 _SRGB8_THRESHOLDS = _srgb8_thresholds()
 
 
-@njit(cache=True, parallel=True)
-def _encode_kernel(rgb, thresholds, nodata, out):
+@njit(cache=True, nogil=True)
+def _encode_kernel(rgb, thresholds, nodata, out, r0, r1):
     height, width, _ = rgb.shape
-    for r in prange(height):
+    for r in range(r0, r1):
         for c in range(width):
             if not (math.isfinite(rgb[r, c, 0]) and math.isfinite(rgb[r, c, 1])
                     and math.isfinite(rgb[r, c, 2])):

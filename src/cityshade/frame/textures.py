@@ -33,6 +33,8 @@ from pathlib import Path
 import numpy as np
 from numba import njit, prange
 
+from cityshade.runtime.threadpool import ROW_CHUNK, run_chunks
+
 __all__ = [
     "WRAP_MODES", "MipPyramid", "TextureSet", "srgb_to_linear", "linear_to_srgb",
     "texels_from_image", "build_mip_levels", "load_mip_pyramid", "load_texture_set",
@@ -530,12 +532,14 @@ def sample_trilinear(texture_set: TextureSet, tex_id: np.ndarray, uv: np.ndarray
     return out
 
 
-@njit(cache=True, parallel=True)
+@njit(cache=True, nogil=True)
 def _composite_kernel(texels, level_offset, level_width, level_height, first_level, wrap, border,
-                      tex_id, uv, lod, albedo):
+                      tex_id, uv, lod, albedo, r0, r1):
+    """Rows ``[r0, r1)`` of :func:`composite_textures` (serial, for ``run_chunks``: see
+    ``runtime.threadpool.ROW_CHUNK``)."""
     height, width = tex_id.shape
     one = np.float32(1.0)
-    for r in prange(height):
+    for r in range(r0, r1):
         acc = np.zeros(4, np.float64)
         for c in range(width):
             k = tex_id[r, c]
@@ -573,8 +577,9 @@ def composite_textures(texture_set: TextureSet, tex_id: np.ndarray, uv: np.ndarr
         raise ValueError("tex_id (H, W), uv (H, W, 2), lod (H, W) and float32 albedo (H, W, 3) "
                          "must describe the same pixels")
     ts = texture_set
-    _composite_kernel(ts.texels, ts.level_offset, ts.level_width, ts.level_height,
-                      ts.first_level, ts.wrap, ts.border, tex_id, uv, lod, albedo)
+    run_chunks(_composite_kernel, tex_id.shape[0], ROW_CHUNK, ts.texels, ts.level_offset,
+               ts.level_width, ts.level_height, ts.first_level, ts.wrap, ts.border, tex_id, uv,
+               lod, albedo)
 
 
 # --- level of detail -------------------------------------------------------------------------
@@ -602,10 +607,11 @@ def _shorter_uv_step(uv, group, tex, normal, r, c, rr, cc, tw, th, best):
     return d if best < 0.0 or d < best else best
 
 
-@njit(cache=True, parallel=True)
-def _lod_kernel(uv, tex, group, normal, base_w, base_h, n_levels, bias, out):
+@njit(cache=True, nogil=True)
+def _lod_kernel(uv, tex, group, normal, base_w, base_h, n_levels, bias, out, r0, r1):
+    """Rows ``[r0, r1)`` of :func:`lod_from_uv_neighbours` (serial, for ``run_chunks``)."""
     height, width = tex.shape
-    for r in prange(height):
+    for r in range(r0, r1):
         for c in range(width):
             k = tex[r, c]
             if k < 0 or k >= len(base_w) or n_levels[k] == 0:
@@ -692,5 +698,6 @@ def lod_from_uv_neighbours(uv: np.ndarray, texture: np.ndarray, group: np.ndarra
             base_w[k] = ts.level_width[ts.first_level[k]]
             base_h[k] = ts.level_height[ts.first_level[k]]
     out = np.empty((height, width), np.float32)
-    _lod_kernel(uv, texture, group, normal, base_w, base_h, n_levels, float(bias), out)
+    run_chunks(_lod_kernel, height, ROW_CHUNK, uv, texture, group, normal, base_w, base_h,
+               n_levels, float(bias), out)
     return out

@@ -11,11 +11,11 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-from numba import njit, prange
+from numba import njit
 
 from cityshade.errors import UsageError
-from cityshade.trace.bricks import dynamic_bricks
 from cityshade.runtime.memory import Recycler
+from cityshade.runtime.threadpool import ROW_CHUNK, run_chunks
 
 
 @dataclass(eq=False)
@@ -66,9 +66,9 @@ class Surfaces:
         return self.cls
 
 
-@njit(cache=True, parallel=True)
+@njit(cache=True, nogil=True)
 def _resolve_kernel(prim, bary, verts, tris, uvs, tri_object, tri_material, tri_texture,
-                    tri_class, position, normal, uv, obj_id, material, texture, cls):
+                    tri_class, position, normal, uv, obj_id, material, texture, cls, r0, r1):
     """Fill every pixel's attributes: the no-surface values (NaN position, zero normal and
     texture coordinates, -1 ids, class 0) where ``prim`` is -1, else the triangle's. Every
     value is the same float64 expression, in the same order, as the numpy twin
@@ -76,7 +76,7 @@ def _resolve_kernel(prim, bary, verts, tris, uvs, tri_object, tri_material, tri_
     fills before the kernel were a serial quarter of the resolve.)"""
     height, width = prim.shape
     has_uv = uvs.shape[0] > 0
-    for r in prange(height):
+    for r in range(r0, r1):
         for c in range(width):
             tri = prim[r, c]
             normal[r, c, 0] = np.float32(0.0)
@@ -155,23 +155,23 @@ def resolve(scene, gbuf: GBuffer) -> Surfaces:
     material = _SURFACES.empty((h, w), np.int32)
     texture = _SURFACES.empty((h, w), np.int32)
     cls = _SURFACES.empty((h, w), np.uint8)
-    # Rows handed out a few at a time: surfaces are uneven over a picture (the 1080p overview
-    # of the 1M city has 32 % of its surface pixels in the top half of the rows).
-    with dynamic_bricks():
-        _resolve_kernel(prim, np.asarray(gbuf.bary), np.asarray(scene.vertices),
-                        np.asarray(scene.triangles), np.asarray(scene.uv).reshape(-1, 2),
-                        np.asarray(scene.tri_object), np.asarray(scene.tri_material),
-                        np.asarray(scene.tri_texture), np.asarray(scene.tri_class), position,
-                        normal, uv, obj_id, material, texture, cls)
+    # Rows handed out a few at a time (run_chunks is dynamic): surfaces are uneven over a
+    # picture (the 1080p overview of the 1M city has 32 % of its surface pixels in the top half
+    # of the rows).
+    run_chunks(_resolve_kernel, h, ROW_CHUNK, prim, np.asarray(gbuf.bary),
+               np.asarray(scene.vertices), np.asarray(scene.triangles),
+               np.asarray(scene.uv).reshape(-1, 2), np.asarray(scene.tri_object),
+               np.asarray(scene.tri_material), np.asarray(scene.tri_texture),
+               np.asarray(scene.tri_class), position, normal, uv, obj_id, material, texture, cls)
     return Surfaces(position_m=position, normal=normal, obj_id=obj_id, material=material,
                     texture=texture, uv=uv, cls=cls, valid=prim >= 0, prim_id=prim,
                     depth=np.asarray(gbuf.depth))
 
 
-@njit(cache=True, parallel=True)
-def _seen_side_kernel(normal, position, eye, to_viewer, perspective, out):
+@njit(cache=True, nogil=True)
+def _seen_side_kernel(normal, position, eye, to_viewer, perspective, out, r0, r1):
     height, width = normal.shape[:2]
-    for r in prange(height):
+    for r in range(r0, r1):
         for c in range(width):
             n0 = np.float64(normal[r, c, 0])
             n1 = np.float64(normal[r, c, 1])
@@ -206,8 +206,8 @@ def seen_side_normals(surfaces: Surfaces, camera) -> np.ndarray:
         position = np.zeros((1, 1, 3))
     to_viewer = eye - np.asarray(camera.target_m, np.float64).reshape(3)
     out = _SURFACES.empty((h, w, 3), np.float64)
-    with dynamic_bricks():      # rows: uneven, as in resolve
-        _seen_side_kernel(normal, position, eye, to_viewer, perspective, out)
+    run_chunks(_seen_side_kernel, h, ROW_CHUNK, normal, position, eye, to_viewer, perspective,
+               out)  # rows: uneven, as in resolve
     return out
 
 

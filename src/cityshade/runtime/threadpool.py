@@ -19,6 +19,13 @@ from concurrent.futures import ThreadPoolExecutor
 
 import numba
 
+#: Image rows a thread takes at a time from the row kernels (G-buffer resolve, shading,
+#: encoding): 16 rows of a 1080p frame are some 0.1-0.3 ms of work, so the call per chunk
+#: (tens of µs) is lost in it, and a frame still makes some 70 chunks to share unevenly
+#: busy rows. Serial kernels over rows, not ``prange`` ones: Numba's parallel passes made
+#: each such kernel's first compile 2-3x longer (``_shade_kernel`` 1.06 CPU s against 0.41).
+ROW_CHUNK = 16
+
 _POOL: ThreadPoolExecutor | None = None
 _POOL_LOCK = threading.Lock()
 
