@@ -233,17 +233,20 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
                 set_visible_bits(bits, rows, blocked, int(col))
         if progress is not None:
             progress(stop, p_total)
-    crowns = None
-    if veg is not None:
-        crown_parts.sort(key=lambda part: part[1])    # direction-major, as the sky's order
-        crowns = SkyCrowns(
-            rows=np.concatenate([r for r, *_ in crown_parts] or [np.zeros(0)]).astype(np.int32),
-            cols=np.concatenate([np.full(len(r), c) for r, c, *_ in crown_parts]
-                                or [np.zeros(0)]).astype(np.int32),
-            leaf_on=np.concatenate([on for *_, on, _ in crown_parts] or [np.zeros(0)]),
-            leaf_off=np.concatenate([off for *_, off in crown_parts] or [np.zeros(0)]))
     return SkyVisibility(sky=sky, bits=bits, normals=nrm, t_days=float(t_days), engine=engine,
-                         crowns=crowns)
+                         crowns=None if veg is None else _sky_crowns(crown_parts))
+
+
+def _sky_crowns(crown_parts) -> SkyCrowns:
+    """The :class:`SkyCrowns` of (rows, direction, leaf-on, leaf-off) parts, direction-major
+    (the sky's order, whatever order the directions were traced in)."""
+    crown_parts = sorted(crown_parts, key=lambda part: part[1])
+    return SkyCrowns(
+        rows=np.concatenate([r for r, *_ in crown_parts] or [np.zeros(0)]).astype(np.int32),
+        cols=np.concatenate([np.full(len(r), c) for r, c, *_ in crown_parts]
+                            or [np.zeros(0)]).astype(np.int32),
+        leaf_on=np.concatenate([on for *_, on, _ in crown_parts] or [np.zeros(0)]),
+        leaf_off=np.concatenate([off for *_, off in crown_parts] or [np.zeros(0)]))
 
 
 def direction_order(directions) -> np.ndarray:

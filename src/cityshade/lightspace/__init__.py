@@ -410,7 +410,7 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     K.occupancy_table(xs, ys, box[0], box[2], occ_inv, onx, ony, occupied)
     # The casters a chunk at a time: the box work array stays small.
     n_recs = recs.shape[0]
-    chunk_boxes = ws.get("packed", (max(1, min(n_recs, CULL_ROWS)), 4))
+    chunk_boxes = ws.get("ranges", (max(1, min(n_recs, CULL_ROWS)), 4))
     parts = []
     for c0 in range(0, n_recs, CULL_ROWS):
         c1 = min(n_recs, c0 + CULL_ROWS)
@@ -448,11 +448,10 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     ny = max(1, math.ceil(ext_y / size))
     inv = 1.0 / size
     rec_start, rec_order, rec_origins, ref_start, refs, dest, n_cells = bin_grid(
-        ws, xs, ys, origins, kept_boxes, box[0], box[2], inv, nx, ny, n_chunks, True,
-        ranges_name="packed")
+        ws, xs, ys, origins, kept_boxes, box[0], box[2], inv, nx, ny, n_chunks, True)
     del xs, ys, rkeys, xy, chunk_boxes   # their memory holds other arrays now
     n_refs = refs.size
-    packed = ws.get("packed", (kept_size, K.PACK_WORDS), np.float32)
+    packed = ws.get("ranges", (kept_size, K.PACK_WORDS), np.float32)   # ranges are done
     q = 0
     for c0, c1, local, _ in parts:
         K.pack_casters(recs[c0:c1], keys[c0:c1], kept_boxes[q:q + local.size], local,
@@ -480,8 +479,7 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     return out
 
 
-def bin_grid(ws, xs, ys, origins, boxes, x0, y0, inv, nx, ny, n_chunks, tile_ordered, *,
-             ranges_name="ranges"):
+def bin_grid(ws, xs, ys, origins, boxes, x0, y0, inv, nx, ny, n_chunks, tile_ordered):
     """Receivers and casters binned into one grid (``nx`` by ``ny`` cells of ``1 / inv`` from
     ``(x0, y0)``, numbered tile by tile: :func:`~cityshade.lightspace.kernels.tile_cell`), work
     arrays from the :class:`~cityshade.runtime.memory.Scratch` ``ws``. Returns ``rec_start``
@@ -492,8 +490,8 @@ def bin_grid(ws, xs, ys, origins, boxes, x0, y0, inv, nx, ny, n_chunks, tile_ord
     with ``tile_ordered`` the order of their first tile
     (:func:`~cityshade.lightspace.kernels.tile_order`, the opaque query's), else their own
     rows; and the number of cells. The same lists whatever the thread count. The casters' cell
-    ranges are a work array of ``ws`` named ``ranges_name`` (a caller may give it the memory of
-    one it is done with); the receivers' cells share theirs with ``refs``."""
+    ranges are ``ws``'s array ``ranges`` (a caller may have used its memory for an array it is
+    done with, or use it after); the receivers' cells share theirs with ``refs``."""
     n = xs.shape[0]
     ntx, n_cells = K.tiled_cells(nx, ny)
     cells = ws.get("cells", n, np.int64)
@@ -506,7 +504,7 @@ def bin_grid(ws, xs, ys, origins, boxes, x0, y0, inv, nx, ny, n_chunks, tile_ord
     rec_origins = ws.get("rec_origins", (n, 3))
     K.fill_receivers(cells, counts, origins, rec_order, rec_origins)
     m = boxes.shape[0]
-    ranges = ws.get(ranges_name, (m, 4), np.int64)
+    ranges = ws.get("ranges", (m, 4), np.int64)
     K.caster_ranges(boxes, x0, y0, inv, inv, nx, ny, ranges)
     dest = ws.get("dest", m, np.int32)
     if tile_ordered:

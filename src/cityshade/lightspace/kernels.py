@@ -347,7 +347,10 @@ def estimate_refs(boxes, cell_sizes_m):
             part[c, 0] += w * h
             part[c, 1] += w + h
             part[c, 2] += 1.0
-    sums = part.sum(axis=0)
+    sums = np.zeros(3)       # by loops: numpy's sum(axis=0) costs 3-5 s of compiling here
+    for c in range(n_chunks):
+        for k in range(3):
+            sums[k] += part[c, k]
     out = np.empty(cell_sizes_m.shape[0])
     for k in range(cell_sizes_m.shape[0]):
         inv = 1.0 / cell_sizes_m[k]
