@@ -78,8 +78,16 @@ def build_figures(work: Path, runs: int) -> dict:
     scene = work / "berlin.cityshade"
     rows = [_run_child("build", str(TREES), str(BUILDINGS), "-o", str(scene))
             for _ in range(runs)]
-    _run_child("build", str(BUILDINGS), "-o", str(work / "buildings.cityshade"))
     return {**_median(rows), "file_mb": round(scene.stat().st_size / 2**20, 2)}
+
+
+def ensure_scenes(work: Path) -> None:
+    """Build each scene file the workdir lacks, on its own: any partial state of the workdir
+    (one file left by an earlier run, the other deleted) works."""
+    for name, sources in (("berlin.cityshade", (TREES, BUILDINGS)),
+                          ("buildings.cityshade", (BUILDINGS,))):
+        if not (work / name).exists():
+            _run_child("build", *map(str, sources), "-o", str(work / name))
 
 
 def _states(work: Path) -> dict[str, list[str]]:
@@ -196,8 +204,9 @@ def main(argv=None) -> dict:
     only = set(args.only.split(","))
     report: dict = {"commit": commit(), "children_src": str(SRC), "machine": platform.node(), "cpus": os.cpu_count(),
                     "runs": args.runs, "load_before": [round(x, 2) for x in os.getloadavg()]}
-    if "build" in only or not (args.workdir / "berlin.cityshade").exists():
-        report["build"] = build_figures(args.workdir, args.runs if "build" in only else 1)
+    if "build" in only:
+        report["build"] = build_figures(args.workdir, args.runs)
+    ensure_scenes(args.workdir)
     if "render" in only:
         report["render"] = render_figures(args.workdir, args.runs, args.warm)
     if "day" in only:

@@ -18,6 +18,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Mapping
 
+from cityshade.citygml.namespaces import VEGETATION_CODE_NAMES
 from cityshade.errors import ConfigError, UsageError
 
 TIME_SOURCES = ("auto", "valid", "construction", "attribute", "creation")
@@ -559,8 +560,9 @@ class VegetationClassSettings:
 @dataclass(frozen=True)
 class VegetationSettings:
     """``[vegetation]``: vegetation objects as casters that let part of the sun through
-    (docs/DESIGN.md §21). Only the exact engines (``raytrace``, ``izb``) transmit; the map
-    techniques draw vegetation as opaque."""
+    (docs/DESIGN.md §21), in every technique: the exact engines trace the crowns, the map
+    techniques and the hybrid map the opaque casters and take the crowns from the exact
+    crowns' pass."""
 
     #: False: vegetation neither casts nor receives (``--no-vegetation``): its triangles are
     #: left out of the scene.
@@ -582,13 +584,22 @@ class VegetationSettings:
     #: Values of a vegetation object's ``class``, ``function``, ``usage`` or ``species`` in
     #: the data (CityGML ``veg:`` elements, CityJSON attributes of those names) that make its
     #: crown evergreen (its in-leaf transmissivity all year), compared whole, without case.
-    #: The defaults are the plain words of English and German data; no numeric code, since
-    #: the code lists differ (SIG3D's for CityGML 2.0, PLATEAU's SolitaryVegetationObject_
-    #: function, which codes evergreen/deciduous and needle/broadleaf) and were not at hand
-    #: to cite: add a file's evergreen codes here.
+    #: The defaults are the plain words of English and German data; numeric codes go in
+    #: :attr:`evergreen_codes` (a number means something else in another code list).
     evergreen_values: tuple[str, ...] = ("evergreen", "conifer", "coniferous", "needleleaf",
                                          "needle-leaved", "immergrün", "nadelbaum",
                                          "nadelgehölz", "konifere")
+    #: Codes of a code list that make a crown evergreen, as ``NAME=CODE`` (NAME: ``class``,
+    #: ``function``, ``usage`` or ``species``): the code counts under that name only, since
+    #: code lists reuse numbers. Defaults: PLATEAU's (Japan's MLIT 3D city models) code list
+    #: ``SolitaryVegetationObject_function.xml``, shipped in every dataset's ``codelists/``
+    #: (e.g. Kawasaki's), whose product specification defines veg:function as evergreen or
+    #: deciduous and needle or broad leaf: 11 常緑/針葉 (evergreen, needleleaf), 12 常緑/広葉
+    #: (evergreen, broadleaf); 21 and 22 are the deciduous ones, 0 unknown. Its
+    #: SolitaryVegetationObject_class (1-3: tree height classes) and PlantCover_class codes
+    #: say nothing of the leaves. The SIG3D code lists of CityGML 2.0 are not among the
+    #: defaults: their values were not at hand to cite; add a file's codes here.
+    evergreen_codes: tuple[str, ...] = ("function=11", "function=12")
     solitary: VegetationClassSettings = _table(VegetationClassSettings)
     plant_cover: VegetationClassSettings = _table(VegetationClassSettings)
 
@@ -599,13 +610,22 @@ class VegetationSettings:
                 raise ConfigError(f"{name} must be a day of the year in 1..366, not {value}")
         _one_of("season", self.season, SEASONS)
         _one_of("window_trees", self.window_trees, WINDOW_TREES)
+        for entry in self.evergreen_codes:
+            name, eq, code = str(entry).partition("=")
+            if not eq or name.strip() not in VEGETATION_CODE_NAMES or not code.strip():
+                raise ConfigError(f"evergreen_codes entries are NAME=CODE with NAME one of "
+                                  f"{', '.join(VEGETATION_CODE_NAMES)}, not {entry!r}")
 
     def is_evergreen(self, codes: dict) -> bool:
         """Whether an object's codes (name → list of values, as the reader keeps them) hold
-        one of :attr:`evergreen_values`."""
+        one of :attr:`evergreen_values` (under any name) or of :attr:`evergreen_codes` (under
+        its name)."""
         wanted = {v.strip().casefold() for v in self.evergreen_values}
+        pairs = {(n.strip(), c.strip().casefold())
+                 for n, _, c in (str(e).partition("=") for e in self.evergreen_codes)}
         return any(str(v).strip().casefold() in wanted
-                   for values in codes.values() for v in values)
+                   or (name, str(v).strip().casefold()) in pairs
+                   for name, values in codes.items() for v in values)
 
     def in_leaf(self, day_of_year: int | None) -> bool:
         """Whether deciduous vegetation is in leaf on ``day_of_year`` (None: no date)."""

@@ -95,3 +95,40 @@ def test_info_says_how_many_crowns_are_evergreen(tmp_path):
             in result.output.splitlines())
     d = json.loads(CliRunner().invoke(cli, ["info", str(src), "--json"]).output)
     assert d["vegetation"] == {"crowns": 4, "evergreen": 2, "with_codes": 3}
+
+
+def test_numeric_codes_count_under_their_own_name(tmp_path):
+    """PLATEAU's SolitaryVegetationObject_function codes 11 (evergreen, needleleaf) and 12
+    (evergreen, broadleaf) are evergreen by default, 21/22 (deciduous) are not; the same
+    number as a class (PLATEAU's class 1-3 are tree heights; another list's 11 means
+    something else) is not; a settings entry NAME=CODE adds a file's own code."""
+    path = tmp_path / "plateau.gml"
+    path.write_text(city(*(
+        tree(tid, box_polygons(10 * k, 0, 5, 4, 4, 6, tid.lower()), codes=codes)
+        for k, (tid, codes) in enumerate([
+            ("N", [("class", "1"), ("function", "11")]),
+            ("B", [("function", " 12 ")]),
+            ("DN", [("function", "21")]),
+            ("DB", [("class", "1"), ("function", "22")]),
+            ("C", [("class", "11")]),
+            ("S", [("class", "1070")])]))))
+    out, _, _ = build_file(path, tmp_path / "plateau.cityshade")
+    veg = scene_vegetation(load_scene(out))
+    assert veg.evergreen(VegetationSettings()).tolist() == [True, True, False, False, False,
+                                                            False]
+    own = VegetationSettings(evergreen_codes=("class=1070",))
+    assert veg.evergreen(own).tolist() == [False, False, False, False, False, True]
+    assert veg.transmissivity(VegetationSettings(), 20).tolist() == [0.03, 0.03, 0.5, 0.5,
+                                                                     0.5, 0.5]
+
+
+def test_a_bad_evergreen_code_entry_is_one_clear_line():
+    import pytest
+
+    from cityshade.config import ConfigError
+
+    for entry in ("11", "colour=11", "function="):
+        with pytest.raises(ConfigError) as err:
+            VegetationSettings(evergreen_codes=(entry,))
+        assert str(err.value) == ("evergreen_codes entries are NAME=CODE with NAME one of "
+                                  f"class, function, usage, species, not {entry!r}")

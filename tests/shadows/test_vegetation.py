@@ -148,6 +148,83 @@ def test_sun_hours_with_trees_lose_exactly_the_crowns_share(crowns):
     assert (with_h[under_c] == 1.0 * TAU + 2.0).all()
 
 
+#: Every technique family: the exact engines, each planner with each lookup, the hybrid on
+#: two bases and with its other classifier's base, a smoothed map.
+EVERY_TECHNIQUE = ["raytrace", "izb", "exact", "shadowmap", "pcf", "vsm", "psm", "lispsm",
+                   "xpsm", "csm", "csm:lispsm", "lispsm/pcf", "csm/vsm", "hybrid",
+                   "hybrid:shadowmap", "hybrid:csm/pcf"]
+
+
+@pytest.mark.parametrize("technique", EVERY_TECHNIQUE)
+def test_every_technique_gives_the_crowns_shade_tau_not_zero(crowns, technique):
+    """Sun from the south at 60°: a point on the ground at z = 0 is shadowed by a box at
+    heights z0..z1 over y0..y1 when its y lies in [y0 + z0/tan 60°, y1 + z1/tan 60°] (and its
+    x in the box's). The ground north of each box, away from the shadows' edges: under crown
+    C alone τ, under A and B τ², under B alone τ, under the building 0, under crown D alone
+    (a PlantCover) τ, open ground 1."""
+    from cityshade.frame.render import render_frame, shadow_mask
+    from cityshade.raster.camera import map_view
+
+    frame = render_frame(crowns, map_view(crowns, 1.0), 0.0, sun_from_angles(180.0, 60.0),
+                         technique)
+    world = frame.surfaces.position_m + crowns.origin_m
+    on_ground = frame.surfaces.valid & (np.abs(world[..., 2]) < 1e-3)
+    x, y = world[..., 0], world[..., 1]
+    # (x0, x1, y0, y1): the regions, each 1 m inside its closed-form bounds.
+    regions = {TAU: [(11, 15, 6, 10.3),           # C: y 5 (its north face) .. 11.35
+                     (-4, 4, 12.4, 16.1),         # B alone: 11.35 .. 17.1 (A ends at 11.35)
+                     (21, 29, 11.8, 14.4)],       # D alone: the building ends at 10.77
+               TAU * TAU: [(-4, 4, 6, 10.3)],     # A and B
+               0.0: [(21, 29, 6, 9.7)],           # the building (y 5 .. 10.77)
+               1.0: [(35, 45, -40, 40)]}
+    for want, boxes in regions.items():
+        for x0, x1, y0, y1 in boxes:
+            px = on_ground & (x > x0) & (x < x1) & (y > y0) & (y < y1)
+            assert px.sum() >= 10, (technique, want, (x0, x1, y0, y1))
+            np.testing.assert_array_equal(frame.lit[px], np.float32(want),
+                                          err_msg=f"{technique} {(x0, x1, y0, y1)}")
+    # The 8-bit mask is a grey level too: round(254 τ) (below 128: no shift).
+    mask = shadow_mask(frame, crowns)
+    assert set(np.unique(mask[frame.lit == np.float32(TAU)]).tolist()) == {round(254 * TAU)}
+
+
+@pytest.mark.parametrize("technique", ["vsm", "csm/pcf", "hybrid"])
+def test_map_techniques_take_the_leaf_state_and_the_settings(crowns, technique):
+    """Leafless (a sun in January) the crowns let 0.5 through, and a crown set to 0.2 in
+    leaf gives 0.2: the map techniques take the crowns' settings as the exact engines do."""
+    import dataclasses
+
+    from cityshade.frame.render import render_frame
+    from cityshade.raster.camera import map_view
+
+    cam = map_view(crowns, 1.0)
+    january, june = (dataclasses.replace(sun_from_angles(200.0, 50.0), instant_utc=day)
+                     for day in ("2024-01-15T12:00:00+00:00", "2024-06-21T12:00:00+00:00"))
+    for sun, settings in ((january, VegetationSettings()), (june, VegetationSettings(
+            solitary=VegetationSettings().solitary.__class__(leaf_on_transmissivity=0.2)))):
+        scene = with_vegetation(crowns, settings)
+        try:
+            a = render_frame(scene, cam, 0.0, sun, "raytrace").lit
+            b = render_frame(scene, cam, 0.0, sun, technique).lit
+        finally:
+            scene.__dict__.pop("vegetation_settings")
+        inside = a == _interior(a)
+        tau = 0.5 if sun is january else 0.2
+        assert (b[inside & (a == np.float32(tau))] == np.float32(tau)).sum() >= 10
+        np.testing.assert_array_equal(b[inside], a[inside])
+
+
+def _interior(lit):
+    """``lit`` where a pixel equals its four neighbours (away from the shadows' edges, where
+    a map technique may differ from the rays), else NaN."""
+    out = np.full(lit.shape, np.nan, np.float32)
+    c = lit[1:-1, 1:-1]
+    same = ((c == lit[:-2, 1:-1]) & (c == lit[2:, 1:-1]) & (c == lit[1:-1, :-2])
+            & (c == lit[1:-1, 2:]))
+    out[1:-1, 1:-1] = np.where(same, c, np.nan)
+    return out
+
+
 @pytest.fixture(scope="module")
 def berlin(tmp_path_factory):
     folder = "berlin-lichtenberg-trees/"

@@ -378,14 +378,12 @@ def _render_strips(scene, camera, t_days, sun, technique, tech, settings, sky, g
 
 def shadow_mask(frame: Frame, scene=None) -> np.ndarray:
     """(H, W) uint8: 255 sunlit, 0 shadow, 128 no surface (:func:`imageio.mask_from_lit`);
-    for an exact technique on a scene with vegetation, the fraction of sun as a grey level
+    on a scene with vegetation, the fraction of sun as a grey level, whatever the technique
     (:func:`imageio.grey_mask_from_lit`: trees let part of it through, docs/DESIGN.md §21)."""
     from cityshade.geometry.vegetation import scene_vegetation
     from cityshade.imageio import grey_mask_from_lit, mask_from_lit
-    from cityshade.shadows import describe
 
-    if scene is not None and describe(frame.technique).exact and \
-            scene_vegetation(scene) is not None:
+    if scene is not None and scene_vegetation(scene) is not None:
         return grey_mask_from_lit(frame.lit, frame.surfaces.valid)
     return mask_from_lit(frame.lit, frame.surfaces.valid)
 

@@ -27,7 +27,6 @@ import numba
 import numpy as np
 from numba import njit, prange
 
-from cityshade.accel.kdtree_layout import triangle_records
 from cityshade.lightspace import (DEPTH_MARGIN_M, DEPTH_MARGIN_REL, MARGIN_REL,
                                   MAX_CELLS_PER_RECEIVER, OCCUPANCY_CELLS, bin_grid)
 from cityshade.lightspace import kernels as K
@@ -43,18 +42,24 @@ QUERY_BLOCK_CELLS = 64
 
 
 class CrownRecords:
-    """The crowns' triangles as the light-plane pass takes them, made once per scene: tree
-    records (:func:`cityshade.accel.kdtree_layout.triangle_records`) in ascending crown order
-    (stable), the crown of each, the largest coordinate magnitude, and work arrays."""
+    """The crowns' triangles as the light-plane pass takes them, made once per scene: the
+    crowns' kd-tree's records (:attr:`~cityshade.accel.kdtree_layout.KdTree.tri_records`),
+    one per triangle, in ascending crown order (then triangle id), the crown of each, the
+    largest coordinate magnitude, and work arrays.
 
-    def __init__(self, vertices, triangles, t_begin_days, t_end_days, tri_crown):
+    Taken from the tree (a scene file stores it) rather than filled again: the fill is a
+    parallel kernel, and loading it from numba's cache cost 0.4-1.0 s of CPU per process on
+    the Berlin trees (more than its work). A triangle the tree's build left out (degenerate)
+    is one ``raytrace``'s crowns' walk never tests either."""
+
+    def __init__(self, tree, tri_crown):
         tri_crown = np.asarray(tri_crown)
-        order = np.argsort(tri_crown, kind="stable").astype(np.int64)
-        self.records = triangle_records(vertices, np.ascontiguousarray(triangles, np.int64),
-                                        np.ascontiguousarray(t_begin_days, np.float64),
-                                        np.ascontiguousarray(t_end_days, np.float64),
-                                        np.zeros(len(tri_crown), np.int32), order)
-        self.crown = np.ascontiguousarray(tri_crown[order], np.int32)
+        ids = np.asarray(tree.prim_indices)
+        # Each triangle's first record (a triangle straddling leaves has several, all equal).
+        tri, first = np.unique(ids, return_index=True)
+        order = np.argsort(tri_crown[tri], kind="stable")
+        self.records = np.ascontiguousarray(np.asarray(tree.tri_records)[first[order]])
+        self.crown = np.ascontiguousarray(tri_crown[tri[order]], np.int32)
         self.magnitude_m = float(np.abs(self.records[:, :9]).max()) if len(order) else 0.0
         self.scratch = Scratch()
 
@@ -64,19 +69,36 @@ def crown_records(veg) -> CrownRecords:
     made once and kept with it (a batch's suns share them)."""
     made = veg.__dict__.get("_light_plane_crowns")
     if made is None:
-        made = veg.__dict__["_light_plane_crowns"] = CrownRecords(
-            veg.vertices, veg.triangles, veg.t_begin_days, veg.t_end_days, veg.tri_crown)
+        made = veg.__dict__["_light_plane_crowns"] = CrownRecords(veg.tree, veg.tri_crown)
     return made
 
 
-@njit(cache=True, parallel=True)
-def _gather(origins, rays, out):
-    """``out[j] = origins[rays[j]]``: the rays this pass decides, contiguous."""
-    for j in prange(rays.shape[0]):
+@njit(cache=True)
+def _ray_box(origins, rays, kx, ky, kz, sx, sy, sgn, stats):
+    """``stats`` (5,): min x, max x, min y, max y of the light-plane points of the rays
+    ``rays`` (indices into ``origins``) and their least depth key, read in place (no gathered
+    copy, no stored points: :func:`_select` computes them again). The arithmetic of
+    :func:`~cityshade.lightspace.kernels.project_receivers`."""
+    x0 = np.inf
+    x1 = -np.inf
+    y0 = np.inf
+    y1 = -np.inf
+    k0 = np.inf
+    for j in range(rays.shape[0]):
         i = rays[j]
-        out[j, 0] = origins[i, 0]
-        out[j, 1] = origins[i, 1]
-        out[j, 2] = origins[i, 2]
+        okz = origins[i, kz]
+        x = origins[i, kx] - sx * okz
+        y = origins[i, ky] - sy * okz
+        x0 = min(x0, x)
+        x1 = max(x1, x)
+        y0 = min(y0, y)
+        y1 = max(y1, y)
+        k0 = min(k0, sgn * okz)
+    stats[0] = x0
+    stats[1] = x1
+    stats[2] = y0
+    stats[3] = y1
+    stats[4] = k0
 
 
 @njit(cache=True, parallel=True)
@@ -163,19 +185,30 @@ def _query(packed, kept_crown, ref_start, refs, rec_start, rec_origins, rec_orde
 
 
 @njit(cache=True)
-def _select(coarse, covered, origins, xs, ys, rays, out_origins, out_x, out_y, out_rays):
-    """The receivers whose coarse cell is ``covered``, compacted in order; returns their
-    count."""
+def _select(origins, rays, kx, ky, kz, sx, sy, x0, y0, inv, nx, ny, covered, outs, out_origins,
+            out_x, out_y, out_rays):
+    """One pass over the rays ``rays``: each one's light-plane point and coarse cell
+    (:func:`~cityshade.lightspace.kernels.receiver_cells`' numbering); a ray whose cell is
+    ``covered`` is compacted (origin, point, ray index, in order), the others get 1 in every
+    row of ``outs`` (no crown box reaches their cell). Returns the count compacted."""
+    ntx = (nx + K.TILE - 1) // K.TILE
     m = 0
-    for i in range(coarse.shape[0]):
-        if covered[coarse[i]]:
+    for j in range(rays.shape[0]):
+        i = rays[j]
+        okz = origins[i, kz]
+        x = origins[i, kx] - sx * okz
+        y = origins[i, ky] - sy * okz
+        if covered[K.tile_cell(K._cell(x, x0, inv, nx), K._cell(y, y0, inv, ny), ntx)]:
             out_origins[m, 0] = origins[i, 0]
             out_origins[m, 1] = origins[i, 1]
             out_origins[m, 2] = origins[i, 2]
-            out_x[m] = xs[i]
-            out_y[m] = ys[i]
-            out_rays[m] = rays[i]
+            out_x[m] = x
+            out_y[m] = y
+            out_rays[m] = i
             m += 1
+        else:
+            for s in range(outs.shape[0]):
+                outs[s, i] = 1.0
     return m
 
 
@@ -218,17 +251,13 @@ def _transmission(crowns, ws, origins, direction, t_days, rays, taus, outs):
     n = len(rays)
     kx, ky, kz, sx, sy, sz = ray_shear(*(float(c) for c in direction))
     sgn = 1.0 if sz > 0.0 else -1.0
-    o = ws.get("origins", (n, 3))
-    _gather(origins, rays, o)
-    n_chunks = max(1, numba.get_num_threads())
-    xs, ys, rkeys = ws.get("xs", n), ws.get("ys", n), ws.get("rkeys", n)
-    part = np.empty((n_chunks, K.N_STATS))
-    K.project_receivers(o, kx, ky, kz, sx, sy, sgn, n_chunks, xs, ys, rkeys, part)
-    box = np.array([part[:, 0].min(), part[:, 1].max(), part[:, 2].min(), part[:, 3].max()])
-    min_key = float(part[:, 4].min())
+    stats = np.empty(5)
+    _ray_box(origins, rays, kx, ky, kz, sx, sy, sgn, stats)
+    box = stats[:4].copy()
+    min_key = float(stats[4])
     scale = max(crowns.magnitude_m, float(np.abs(box).max()), 1.0)
 
-    # The crowns that can reach a receiver, in crown order, packed with their filters.
+    # The crowns that can reach a receiver, in crown order.
     recs = crowns.records
     m = recs.shape[0]
     neg_keys = ws.get("neg_keys", m)
@@ -245,35 +274,38 @@ def _transmission(crowns, ws, origins, direction, t_days, rays, taus, outs):
     onx = max(1, min(OCCUPANCY_CELLS, math.ceil(ext_x / occ)))
     ony = max(1, min(OCCUPANCY_CELLS // onx, math.ceil(ext_y / occ)))
     occ_inv = 1.0 / max(ext_x / onx, ext_y / ony)
+    n_tiled = K.tiled_cells(onx, ony)[1]
+
+    # Most receivers lie under no crown: those whose coarse cell no standing crown's box
+    # covers get 1 (they lie outside every box: cells are monotone in x, y) and are never
+    # binned. The others are exactly those whose cell an occupancy-kept crown covers (a crown
+    # over a receiver's cell covers an occupied cell), so the occupancy table of the selected
+    # receivers alone keeps the crowns that of all the receivers kept: the same crowns, cells
+    # and receivers as one pass of each kind over all the rays, from two passes over them.
+    ranges = ws.get("crown_ranges", (m, 4), np.int64)
+    K.caster_ranges(boxes, box[0], box[2], occ_inv, occ_inv, onx, ony, ranges)
+    covered = np.zeros(n_tiled, np.uint8)
+    _mark_covered(ranges, onx, covered)
+    o_sel, x_sel, y_sel = ws.get("o_sel", (n, 3)), ws.get("x_sel", n), ws.get("y_sel", n)
+    rays_sel = ws.get("rays_sel", n, np.int64)
+    n = _select(origins, rays, kx, ky, kz, sx, sy, box[0], box[2], occ_inv, onx, ony, covered,
+                outs, o_sel, x_sel, y_sel, rays_sel)
+    if n == 0:
+        return
+    o, xs, ys, rays = o_sel[:n], x_sel[:n], y_sel[:n], rays_sel[:n]
     occupied = ws.get("occupied", (ony + 1, onx + 1), np.int32)
     K.occupancy_table(xs, ys, box[0], box[2], occ_inv, onx, ony, occupied)
     K.cull_unoccupied(boxes, box[0], box[2], occ_inv, onx, ony, occupied)
     kept = np.flatnonzero(~np.isnan(boxes[:, 0]))
-    if kept.size == 0:
-        outs[:, rays] = 1.0
-        return
     packed = ws.get("packed", (kept.size, K.PACK_WORDS), np.float32)
     kept_boxes = boxes[kept]
     # Packed in kept (= crown) order: the query below multiplies in ascending crown order.
     K.pack_casters(recs, keys, kept_boxes, kept, np.arange(kept.size, dtype=np.int32), kx, ky,
                    kz, sx, sy, sgn, scale, packed)
     kept_crown = crowns.crown[kept]
-
-    # Most receivers lie under no crown: those whose coarse cell no kept box covers get 1
-    # (they lie outside every box: cells are monotone in x, y) and are never binned.
-    coarse = ws.get("cells", n, np.int64)
-    K.receiver_cells(xs, ys, box[0], box[2], occ_inv, occ_inv, onx, ony, coarse)
-    ranges = ws.get("ranges", (kept.size, 4), np.int64)
-    K.caster_ranges(kept_boxes, box[0], box[2], occ_inv, occ_inv, onx, ony, ranges)
-    covered = np.zeros(K.tiled_cells(onx, ony)[1], np.uint8)
-    _mark_covered(ranges, onx, covered)
-    outs[:, rays] = 1.0
-    o_sel, x_sel, y_sel = ws.get("o_sel", (n, 3)), ws.get("x_sel", n), ws.get("y_sel", n)
-    rays_sel = ws.get("rays_sel", n, np.int64)
-    n = _select(coarse, covered, o, xs, ys, rays, o_sel, x_sel, y_sel, rays_sel)
-    if n == 0:
-        return
-    o, xs, ys, rays = o_sel[:n], x_sel[:n], y_sel[:n], rays_sel[:n]
+    # The cells the kept crowns cover (the grid's size below counts them).
+    covered[:] = 0
+    _mark_covered(ranges[kept], onx, covered)
     covered_m2 = int(covered.sum()) / (occ_inv * occ_inv)
 
     # One grid over the receivers' box, cells of about RECEIVERS_PER_CELL of the covered
@@ -285,7 +317,9 @@ def _transmission(crowns, ws, origins, direction, t_days, rays, taus, outs):
     ny = max(1, math.ceil(ext_y / size))
     inv = 1.0 / size
     rec_start, rec_order, rec_origins, ref_start, refs, _, _ = bin_grid(
-        ws, xs, ys, o, kept_boxes, box[0], box[2], inv, nx, ny, n_chunks, False)
+        ws, xs, ys, o, kept_boxes, box[0], box[2], inv, nx, ny,
+        max(1, numba.get_num_threads()), False)
     max_cell = int(np.diff(rec_start).max())
     _query(packed, kept_crown, ref_start, refs, rec_start, rec_origins, rec_order, rays, kx, ky,
            kz, sx, sy, sz, sgn, DEPTH_MARGIN_M + DEPTH_MARGIN_REL * scale, taus, max_cell, outs)
+

@@ -779,6 +779,13 @@ class Hybrid:
         self.name = f"hybrid:{base}"
 
     def run(self, ctx: ShadowContext) -> ShadowResult:
+        """The base's maps and the rays decide the opaque casters; crowns as partial shade on
+        top (:func:`~cityshade.shadows.visibility.with_crowns`)."""
+        from cityshade.shadows.visibility import with_crowns
+
+        return with_crowns(self._run, ctx)
+
+    def _run(self, ctx: ShadowContext) -> ShadowResult:
         settings = ctx.settings.hybrid
         t0 = time.perf_counter()
         # The bracket classifier needs the base's map(s) only, not its filtered answer.

@@ -311,6 +311,13 @@ class MapTechnique:
         return lit
 
     def run(self, ctx: ShadowContext) -> ShadowResult:
+        """The maps of the opaque casters, read; crowns as partial shade on top
+        (:func:`~cityshade.shadows.visibility.with_crowns`)."""
+        from cityshade.shadows.visibility import with_crowns
+
+        return with_crowns(self._run, ctx)
+
+    def _run(self, ctx: ShadowContext) -> ShadowResult:
         t0 = time.perf_counter()
         prepared = self.prepare(ctx)
         diagnostics = TechniqueDiagnostics(technique=self.name, map_px=[], texel_m=0.0,

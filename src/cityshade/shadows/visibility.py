@@ -128,10 +128,19 @@ def crown_transmission(scene, origins, direction, t_days: float, taus, *,
     origins = np.ascontiguousarray(origins, dtype=np.float64)
     direction = np.ascontiguousarray(direction, dtype=np.float64).reshape(3)
     blocked = occluded(veg.opaque, origins, direction, t_days, engine=engine, **options)
-    rays = np.flatnonzero(~blocked)
-    # The crowns' pass: the light-plane grid (izb, and exact: a crowns' pass has no early
-    # exit, so the tree's walk visits every leaf along each ray, 4-5x the grid's cost on a
-    # map's pixels), or the crowns' kd-tree (raytrace); the same bits either way.
+    return blocked, crowns_pass(veg, origins, direction, t_days, np.flatnonzero(~blocked),
+                                taus, engine=engine)
+
+
+def crowns_pass(veg, origins, direction, t_days: float, rays, taus, *,
+                engine: str = "izb") -> list[np.ndarray]:
+    """The crowns alone: one (N,) float64 per entry of ``taus`` holding, for the rays ``rays``
+    (indices into ``origins``), the product of the transmissivities of the distinct crowns of
+    ``veg`` (a :class:`~cityshade.geometry.vegetation.SceneVegetation`) each crosses, and 0 for
+    the other rays. ``origins`` (N, 3) float64, ``direction`` (3,) the one sun."""
+    # The light-plane grid (izb, and exact: a crowns' pass has no early exit, so the tree's
+    # walk visits every leaf along each ray, 4-5x the grid's cost on a map's pixels), or the
+    # crowns' kd-tree (raytrace); the same bits either way.
     if engine in ("izb", "exact"):
         from cityshade.lightspace.vegetation import crown_records
         from cityshade.lightspace.vegetation import transmission as grid_crowns
@@ -139,7 +148,7 @@ def crown_transmission(scene, origins, direction, t_days: float, taus, *,
         outs = np.zeros((len(taus), len(origins)), np.float64)
         grid_crowns(crown_records(veg), origins, direction, float(t_days), rays,
                     np.stack([np.asarray(tau, np.float64) for tau in taus]), outs)
-        return blocked, list(outs)
+        return list(outs)
     _engine(engine)  # an unknown name fails here
     from cityshade.trace.vegetation import transmission as tree_crowns
 
@@ -148,7 +157,53 @@ def crown_transmission(scene, origins, direction, t_days: float, taus, *,
         out = np.zeros(len(origins), np.float64)
         tree_crowns(veg.tree, origins, direction, float(t_days), rays, veg.tri_crown, tau, out)
         outs.append(out)
-    return blocked, outs
+    return outs
+
+
+def with_crowns(run, ctx):
+    """``run(ctx)`` (a map technique's or the hybrid's: a
+    :class:`~cityshade.shadows.ShadowResult`) with the crowns as partial shade
+    (docs/DESIGN.md §21, "Map techniques"): the technique decides the opaque casters alone
+    (its maps and rays see the scene without the crowns), then each facing pixel it leaves
+    lit, fully or in part, is multiplied by its shadow ray's transmission through the crowns
+    (:func:`crowns_pass`, exact). A scene without vegetation is ``run(ctx)`` as it is."""
+    import dataclasses
+    import time
+
+    from cityshade.geometry.vegetation import (day_of_year, scene_vegetation,
+                                               vegetation_settings)
+
+    veg = scene_vegetation(ctx.scene)
+    if veg is None:
+        return run(ctx)
+    # The receivers are the same pixels whatever casts: shared, not gathered again.
+    opaque = dataclasses.replace(ctx, scene=veg.opaque, oriented_normal=ctx.normal)
+    if not ctx.sun.above_horizon:
+        return run(opaque)
+    for name in ("faces", "facing_points", "facing_normals"):
+        opaque.__dict__[name] = getattr(ctx, name)
+    result = run(opaque)
+    t0 = time.perf_counter()
+    from cityshade.shadows import scatter_pixels
+    from cityshade.trace import shadow_rays_from_surface
+
+    faces = ctx.faces
+    lit = result.lit[faces]
+    rays = np.flatnonzero(lit > 0)
+    if rays.size:
+        direction = np.asarray(ctx.sun.direction, np.float64)
+        origins = shadow_rays_from_surface(ctx.facing_points[rays], ctx.facing_normals[rays],
+                                           direction)
+        tau = veg.transmissivity(vegetation_settings(ctx.scene), day_of_year(ctx.sun))
+        crowns = crowns_pass(veg, origins, direction, ctx.t_days,
+                             np.arange(rays.size), (tau,))[0]
+        lit[rays] *= crowns
+        scatter_pixels(lit, faces, result.lit)
+    d = result.diagnostics
+    crowns_s = time.perf_counter() - t0
+    d.timings_s = {**(d.timings_s or {}), "crowns_s": crowns_s}
+    d.shadow_s = (d.shadow_s or 0.0) + crowns_s
+    return result
 
 
 def sunlit(scene, points, normals, sun_direction, t_days: float = 0.0, *,
