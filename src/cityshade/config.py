@@ -18,8 +18,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Mapping
 
-from cityshade.citygml.namespaces import VEGETATION_CODE_NAMES
 from cityshade.errors import ConfigError, UsageError
+
+#: The vegetation code attributes a reader keeps and ``[vegetation]`` may name (CityGML 1.0-3.0
+#: ``veg:`` elements, CityJSON attributes; cityshade.citygml.namespaces).
+VEGETATION_CODE_NAMES = ("class", "function", "usage", "species")
 
 TIME_SOURCES = ("auto", "valid", "construction", "attribute", "creation")
 AXIS_ORDERS = ("lonlat", "latlon")

@@ -7,6 +7,9 @@ GML content (read) from ADE content (skipped).
 """
 from __future__ import annotations
 
+# The code attribute names, defined with the settings that name them (the reader's ns.*).
+from cityshade.config import VEGETATION_CODE_NAMES  # noqa: F401
+
 GML_NAMESPACES = ("http://www.opengis.net/gml", "http://www.opengis.net/gml/3.2")
 XLINK_HREF = "{http://www.w3.org/1999/xlink}href"
 GML_ID_ATTRS = tuple("{%s}id" % ns for ns in GML_NAMESPACES)
@@ -128,7 +131,6 @@ IMPLICIT_PROPERTIES = frozenset(f"lod{n}ImplicitRepresentation" for n in range(5
 #: docs/DESIGN.md §21), and those attribute names (CityGML 1.0-3.0 ``veg:`` elements,
 #: CityJSON attributes).
 VEGETATION_CODE_TYPES = frozenset({"SolitaryVegetationObject", "PlantCover"})
-VEGETATION_CODE_NAMES = ("class", "function", "usage", "species")
 
 TIME_ATTRIBUTES = frozenset({
     "validFrom", "validTo", "yearOfConstruction", "yearOfDemolition", "dateOfConstruction",
