@@ -112,6 +112,9 @@ def main(argv=None) -> dict:
         year, year_s = _run(scene, args.pixel_size, args.sky, weather, args.hours,
                             args.day_step)
         irr = year.irradiation
+        # The hours' seconds ("irradiance_s" before the sky's tiles, "hours_s" since).
+        hours_s = year.timings_s.get("hours_s", year.timings_s.get("irradiance_s", 0.0))
+        year.timings_s["irradiance_s"] = hours_s
         # A sample of days stands for all of --hours in proportion to the lit hours summed.
         scale = _sun_hours(weather, _hours_mask(weather, args.hours, 1)) / max(irr.hours, 1)
         figures["year"] = {"wall_s": year_s, "receivers": len(year.svf), "hours": irr.hours,
