@@ -423,7 +423,6 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
             # One chunk (up to 10^6 casters) keeps its boxes in the work array; more chunks
             # keep their kept boxes, since the next chunk reuses it.
             parts.append((c0, c1, local, None if n_recs <= CULL_ROWS else b[local]))
-    b = None
     kept_size = sum(p[2].size for p in parts)
     kept_boxes = ws.get("kept_boxes", (kept_size, 4))
     q = 0
@@ -433,6 +432,7 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
         else:
             kept_boxes[q:q + local.size] = local_boxes
         q += local.size
+    b = chunk_boxes = None        # their memory takes the cell ranges, then the packed casters
     boxes = kept_boxes
     timing["project_s"] = time.perf_counter() - t0
 
@@ -449,7 +449,7 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     inv = 1.0 / size
     rec_start, rec_order, rec_origins, ref_start, refs, dest, n_cells = bin_grid(
         ws, xs, ys, origins, kept_boxes, box[0], box[2], inv, nx, ny, n_chunks, True)
-    del xs, ys, rkeys, xy, chunk_boxes   # their memory holds other arrays now
+    del xs, ys, rkeys, xy         # their memory holds the ordered origins now
     n_refs = refs.size
     packed = ws.get("ranges", (kept_size, K.PACK_WORDS), np.float32)   # ranges are done
     q = 0
