@@ -116,6 +116,38 @@ def test_maps_surfaces_and_irradiance_files(small_file, tmp_path):
         parts = [float(r[k]) for k in ("direct_kwh_m2", "diffuse_kwh_m2", "reflected_kwh_m2")]
         assert min(parts) >= 0.0
         assert sum(parts) == pytest.approx(float(r["irradiance_kwh_m2"]), abs=2e-4)
+    _check_report(out, rows, tmp_path)
+
+
+def _check_report(out, rows, tmp_path):
+    """report.html: a valid self-contained page with both maps; its anchor (an open
+    horizontal plane's kWh/m²) is the TMY3 file's GHI summed over the two days as pvlib reads
+    it; its class table holds the area-weighted means of surfaces.csv."""
+    import re
+
+    import pvlib
+    from htmlcheck import check_page
+
+    assert len(check_page(out / "report.html", tmp_path)) == 2  # svf.png, irradiance png
+    text = (out / "report.html").read_text(encoding="utf-8")
+    data, _ = pvlib.iotools.read_tmy3(_tmy3(), map_variables=True)
+    # TMY3 labels each record by its hour's end: the record of 00:00 belongs to the day before.
+    middle = data.index - np.timedelta64(30, "m")
+    days = (middle.month == 6) & np.isin(middle.day, (20, 21))
+    ghi_kwh_m2 = float(data["ghi"].to_numpy()[days].sum()) / 1000.0
+    anchor = re.search(r"receives <strong>([\d,]+) kWh/m²</strong>", text)
+    assert anchor and int(anchor.group(1).replace(",", "")) == round(ghi_kwh_m2)
+    for cls in ("roof", "wall"):
+        mine = [r for r in rows if r["surface_class"] == cls]
+        area = np.array([float(r["area_m2"]) for r in mine])
+        kwh = np.array([float(r["irradiance_kwh_m2"]) for r in mine])
+        cells = re.search(rf"<tr>\s*<td>{cls}</td>((?:\s*<td[^>]*>[^<]*</td>)+)", text)
+        values = re.findall(r"<td[^>]*>([^<]*)</td>", cells.group(1))
+        # surfaces, area m², mean SVF, mean kWh/m², MWh
+        assert int(values[0]) == len(mine)
+        assert float(values[1].replace(",", "")) == pytest.approx(area.sum(), abs=0.5)
+        assert float(values[3].replace(",", "")) == pytest.approx(
+            (area * kwh).sum() / area.sum(), abs=0.5)
 
 
 @pytest.mark.parametrize("extra,line", [

@@ -253,7 +253,7 @@ def hour_days(sun_times) -> np.ndarray:
     """(H,) int: the UTC day of the year (1-366) of every hour's sun (``Weather.sun_times``:
     the middle of the hour), the date the vegetation's leaf state is read from
     (docs/DESIGN.md §21)."""
-    return np.asarray(sun_times.tz_convert("UTC").dayofyear, np.int64)
+    return np.asarray(sun_times.tz_convert("UTC").day_of_year, np.int64)
 
 
 def irradiation(scene, points, normals, weather, directions, shares, *,

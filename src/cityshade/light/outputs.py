@@ -230,18 +230,23 @@ def write_sky_outputs(outdir: Path, scene, request, result) -> list[Path]:
     """Every file of the run, in one output group; returns the paths written."""
     from cityshade.util import output_group
 
+    from cityshade.light.report import sky_report_markdown
+    from cityshade.present.html import write_report_html
+
     meta = sky_metadata(scene, request, result)
     written: list[Path] = []
+    values = buildings = None
     with output_group():
         if result.cp is not None:
             written += _maps(outdir, scene, request, result, meta)
         if result.samples is not None:
             values = polygon_values(result, request)
+            buildings = building_totals(scene, result.samples, values)
             written.append(write_surfaces_csv(outdir / "surfaces.csv", scene, result.samples,
                                               values))
-            written.append(write_buildings_csv(outdir / "buildings.csv",
-                                               building_totals(scene, result.samples, values),
-                                               values))
+            written.append(write_buildings_csv(outdir / "buildings.csv", buildings, values))
             if request.gis and not scene.is_tiled:
                 written += _gis(outdir, scene, result.samples, values)
+        text = sky_report_markdown(scene, request, result, written, values, buildings)
+        written.append(write_report_html(outdir / "report.html", text, title="Sky and light"))
     return written
