@@ -81,3 +81,14 @@ def test_help_groups_every_option_under_a_heading():
         assert positions == sorted(positions) and len(headings) >= 3, (name, headings)
         assert "Help" in headings and "Examples" in headings, name
         assert all(line in out for line in EXAMPLES[name]), name
+
+
+def test_the_readme_stays_short_and_every_picture_and_link_it_names_exists():
+    """Issue 40's goal (≤ 150 lines), and no picture or local link pointing at nothing."""
+    text = (REPO / "README.md").read_text(encoding="utf-8")
+    assert len(text.splitlines()) <= 150
+    targets = re.findall(r"\]\(([^)#\s]+)(?:#[^)]*)?\)", text)
+    assert any(t.endswith(".png") for t in targets)
+    for target in targets:
+        if not re.match(r"[a-z]+:", target):
+            assert (REPO / target).is_file(), target
