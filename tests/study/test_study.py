@@ -238,3 +238,96 @@ def test_an_interrupted_study_leaves_nothing(tmp_path, monkeypatch):
     assert result.exit_code == 130, result.output
     assert result.output.strip().splitlines()[-1] == "cityshade: interrupted"
     assert len(made) == 3 and not out.exists()
+
+
+@pytest.fixture(scope="module")
+def tree_states(tmp_path_factory):
+    """Ground 100 × 100 m with a 10 m building H at (20..30, -5..5); after, crown C over
+    (10..16, -5..5) at z 5..11 is planted (the objects before keep their ids)."""
+    from citygml_snippets import box_polygons, building, city, ground, tree
+
+    from cityshade.build import build_file
+    from cityshade.store.scenefile import load_scene
+
+    tmp = tmp_path_factory.mktemp("study_trees")
+    common = [ground(-50, -50, 50, 50), building("H", box_polygons(20, -5, 0, 10, 10, 10, "h"))]
+    scenes = []
+    for name, extra in (("before", []), ("after", [tree("C", box_polygons(10, -5, 5, 6, 10, 6,
+                                                                          "c"))])):
+        src = tmp / f"{name}.gml"
+        src.write_text(city(*common, *extra))
+        out, _, _ = build_file(src, tmp / f"{name}.cityshade")
+        scenes.append(load_scene(out))
+    return scenes
+
+
+def test_tree_crowns_their_shade_and_new_tree_shade_are_drawn_apart(tree_states):
+    """Sun from the south at 60° (the closed form of tests/shadows/test_vegetation.py: the
+    ground north of a box at heights z0..z1 over y0..y1 is in its shade for y in
+    [y0 + z0/tan 60°, y1 + z1/tan 60°]): north of crown C the ground had the whole sun and
+    gets τ = 0.03 (new tree shade; tree shade when the crown stood before too), north of the
+    building existing shadow, the crown's top is a crown, open ground sun; the masks are
+    ``render --mask``'s grey levels."""
+    from cityshade.frame.render import render_frame, shadow_mask
+    from cityshade.geo.sun import sun_from_angles
+    from cityshade.raster.camera import map_view
+    from cityshade.study.panels import (NEW_TREE_SHADE, SHADOW, SUN, TREE_CROWN, TREE_SHADE,
+                                        make_panel, study_view)
+
+    before, after = tree_states
+    sun = sun_from_angles(180.0, 60.0)
+    cam = map_view(after, 1.0)
+    when = datetime(2025, 6, 21, 12, tzinfo=ZoneInfo("UTC"))
+    world = None
+    for scene_before, under_crown in ((before, NEW_TREE_SHADE), (after, TREE_SHADE)):
+        view = study_view(scene_before, 0.0, after, 0.0, cam, "auto")
+        assert view.trees
+        panel = make_panel(view, when.date(), when, sun, "exact")
+        frame = render_frame(after, cam, 0.0, sun, "exact", ground="auto")
+        np.testing.assert_array_equal(panel.after, shadow_mask(frame, after))
+        world = frame.surfaces.position_m + after.origin_m
+        on_ground = frame.surfaces.valid & (np.abs(world[..., 2]) < 1e-3)
+        x, y = world[..., 0], world[..., 1]
+        for want, (x0, x1, y0, y1) in ((under_crown, (11, 15, 6, 10.3)),
+                                       (SHADOW, (21, 29, 6, 9.7)), (SUN, (35, 45, -40, 40))):
+            px = on_ground & (x > x0) & (x < x1) & (y > y0) & (y < y1)
+            assert px.sum() >= 10 and (panel.cats[px] == want).all(), (want, x0, y0)
+        top = frame.surfaces.valid & (np.abs(world[..., 2] - 11.0) < 1e-3) & (x > 10) & (x < 16)
+        assert top.sum() >= 10 and (panel.cats[top] == TREE_CROWN).all()
+        assert panel.area_m2["tree_shade"] > 0.0
+        if under_crown == NEW_TREE_SHADE:
+            assert panel.area_m2["new_tree_shade"] == panel.area_m2["tree_shade"]
+            assert panel.area_m2["new"] == 0.0  # the new shade is the trees'
+
+
+def test_a_proposal_below_the_ground_does_not_move_the_ground_plane(sample_city_scene):
+    """A block sunk 3 m below the model's typical ground and far outside the map: the ground
+    plane stays where the model puts it, so nothing on the map changes (no new shadow, none
+    gone: a moved plane would move every shadow edge on it)."""
+    from citygml_snippets import box_polygons, building, city
+
+    from cityshade.build import build_file
+    from cityshade.config import Settings
+    from cityshade.geo.sun import sun_from_angles
+    from cityshade.planning.compare import merge_scenes
+    from cityshade.planning.run import load_proposal
+    from cityshade.study.panels import NEW_SHADOW, SHADOW_GONE, make_panel, study_camera, \
+        study_view
+
+    scene = sample_city_scene
+    import tempfile
+
+    with tempfile.TemporaryDirectory() as tmp:
+        z = float(scene.origin_m[2]) - 25.0
+        src = Path(tmp) / "sunk.gml"
+        src.write_text(city(building("SUNK", box_polygons(691000.0, 5337000.0, z, 5, 5, 1, "s"),
+                                     srs="EPSG:25832")))
+        out, _, _ = build_file(src, Path(tmp) / "sunk.cityshade")
+        settings = Settings()
+        after = merge_scenes(scene, load_proposal(out, settings, scene, None), settings)
+        cam = study_camera(scene, 2.0, 1024)
+        view = study_view(scene, 20000.0, after, 20000.0, cam, "auto")
+        assert view.before.ground.z_crs_m == view.after.ground.z_crs_m
+        when = datetime(2025, 3, 21, 9, tzinfo=ZoneInfo("UTC"))
+        panel = make_panel(view, when.date(), when, sun_from_angles(135.0, 20.0), "exact")
+    assert not np.isin(panel.cats, (NEW_SHADOW, SHADOW_GONE)).any()

@@ -6,27 +6,15 @@ from pathlib import Path
 import click
 
 from cityshade.cli.helpfmt import GroupedCommand
-
-from cityshade.cli.options import (camera_options, ground_option, presentation_options,
-                                   shadow_options, states_options, time_plan_options)
-from cityshade.config import LENGTH_UNITS_M
-
-MESH_UNITS = tuple(LENGTH_UNITS_M)
+from cityshade.cli.options import (camera_options, ground_option, mesh_options,
+                                   mesh_placement, presentation_options, shadow_options,
+                                   states_options, time_plan_options)
 
 
 @click.command("compare", cls=GroupedCommand)
 @click.argument("file", type=click.Path(path_type=Path))
 @states_options("--date", meshes=True)
-@click.option("--mesh-units", type=click.Choice(MESH_UNITS),
-              help="Unit of a mesh proposal's numbers [default: m].")
-@click.option("--up-axis", type=click.Choice(("z", "y")),
-              help="Up axis of a mesh proposal [default: y for glTF/GLB (Y-up by the glTF "
-                   "specification), z for OBJ, PLY, STL].")
-@click.option("--place", "place_text", metavar="X,Y[,Z][,ROTATION_DEG]",
-              help="Put a mesh proposal's origin at X,Y (model CRS) and height Z (default: "
-                   "the terrain, else the ground plane, under X,Y), turned ROTATION_DEG "
-                   "counter-clockwise seen from above; without it the mesh's coordinates are "
-                   "model CRS coordinates.")
+@mesh_options
 @time_plan_options
 @camera_options("map")
 @shadow_options("exact")
@@ -89,7 +77,7 @@ def compare(file, before_text, after_text, proposal, mesh_units, up_axis, place_
         settings = dataclasses.replace(settings, sun=dataclasses.replace(settings.sun,
                                                                         refraction=False))
     states = CompareStates(before_text, after_text, proposal,
-                           _mesh_placement(mesh_units, up_axis, place_text))
+                           mesh_placement(mesh_units, up_axis, place_text))
     min_stretch_h = parse_duration_s(min_stretch_text) / 3600.0 \
         if min_stretch_text.strip() not in ("0", "0min", "0s", "0h") else 0.0
     rules = [r for f in rule_files for r in load_rules(f)]
@@ -133,15 +121,6 @@ def compare(file, before_text, after_text, proposal, mesh_units, up_axis, place_
                    + "command "
                    f"{time.perf_counter() - t_start:.2f} s", err=True)
     click.echo(" ".join(str(p) for p in result.written))
-
-
-def _mesh_placement(units, up_axis, place_text):
-    """The mesh options as a MeshPlacement (None when none is given)."""
-    if units is None and up_axis is None and place_text is None:
-        return None
-    from cityshade.meshes.proposal import MeshPlacement
-
-    return MeshPlacement(units or "m", up_axis, MeshPlacement.parse_place(place_text))
 
 
 class _progress:

@@ -685,6 +685,38 @@ def states_options(before_default: str, meshes: bool = False):
     return decorate
 
 
+def mesh_options(command):
+    """``--mesh-units --up-axis --place``: how a mesh proposal given by ``--with`` is read and
+    placed (compare, study); the command receives ``mesh_units``, ``up_axis`` and
+    ``place_text`` (:func:`mesh_placement` makes them one object)."""
+    from cityshade.config import LENGTH_UNITS_M
+
+    for option in reversed([
+        click.option("--mesh-units", type=click.Choice(tuple(LENGTH_UNITS_M)),
+                     help="Unit of a mesh proposal's numbers [default: m]."),
+        click.option("--up-axis", type=click.Choice(("z", "y")),
+                     help="Up axis of a mesh proposal [default: y for glTF/GLB (Y-up by the "
+                          "glTF specification), z for OBJ, PLY, STL]."),
+        click.option("--place", "place_text", metavar="X,Y[,Z][,ROTATION_DEG]",
+                     help="Put a mesh proposal's origin at X,Y (model CRS) and height Z "
+                          "(default: the terrain, else the ground plane, under X,Y), turned "
+                          "ROTATION_DEG counter-clockwise seen from above; without it the "
+                          "mesh's coordinates are model CRS coordinates."),
+    ]):
+        command = option(command)
+    return command
+
+
+def mesh_placement(units, up_axis, place_text):
+    """The mesh options as a :class:`~cityshade.meshes.proposal.MeshPlacement` (None when
+    none is given)."""
+    if units is None and up_axis is None and place_text is None:
+        return None
+    from cityshade.meshes.proposal import MeshPlacement
+
+    return MeshPlacement(units or "m", up_axis, MeshPlacement.parse_place(place_text))
+
+
 def check_every_day(days, to_date_text) -> None:
     """--every-day spaces the days of --days or --to-date: alone it would change nothing."""
     from cityshade.errors import UsageError

@@ -6,8 +6,7 @@ from pathlib import Path
 import click
 
 from cityshade.cli.helpfmt import GroupedCommand
-
-from cityshade.cli.options import (crs_option, ground_option, shadow_options,
+from cityshade.cli.options import (crs_option, ground_option, mesh_options, shadow_options,
                                    states_options)
 
 
@@ -24,7 +23,8 @@ from cityshade.cli.options import (crs_option, ground_option, shadow_options,
 @click.option("--tz", required=True, help="IANA time zone of the times, e.g. Europe/London; "
               "local-apparent: solar time at the model's longitude (the sun due south at "
               "12:00), local-mean: mean solar time.")
-@states_options("the first day")
+@states_options("the first day", meshes=True)
+@mesh_options
 @click.option("--pixel-size", type=click.FloatRange(min=1e-3),
               help="Metres per pixel of the map (default: its longer side in 1024 px).")
 @click.option("--area", "area_text", help="Site boundary x0,y0,x1,y1 (model CRS), drawn on "
@@ -39,12 +39,14 @@ from cityshade.cli.options import (crs_option, ground_option, shadow_options,
               required=True, help="Output folder (created).")
 @click.option("-v", "--verbose", is_flag=True, help="Timings.")
 def study(file, year, days_text, from_text, to_text, every_text, times_text, tz, before_text,
-          after_text, proposal, pixel_size, area_text, extent_text, settings, ground, crs,
+          after_text, proposal, mesh_units, up_axis, place_text, pixel_size, area_text,
+          extent_text, settings, ground, crs,
           no_refraction, outdir, verbose):
     """Shadow study of FILE (a .cityshade scene, a tiled cache folder, or a CityGML/CityJSON
     file): the shadows of the city before and after a change (--before/--after dates of one
-    model, or --with a proposal) seen from above at each time of each day, existing shadow in
-    grey and new shadow in orange. Writes OUTDIR/study.pdf (one A3 sheet per day),
+    model, or --with a proposal: a model, or a mesh placed by --place) seen from above at each
+    time of each day, existing shadow in grey and new shadow in orange; tree crowns in green,
+    their partial shade apart. Writes OUTDIR/study.pdf (one A3 sheet per day),
     sheet_DAY.png, panels/*.tif (each panel's shadow masks, GeoTIFF) and study.json/.csv
     (sun position and shadow areas of every panel).
     """
@@ -52,7 +54,7 @@ def study(file, year, days_text, from_text, to_text, every_text, times_text, tz,
     import time
 
     from cityshade.cli.batch import Progress
-    from cityshade.cli.options import parse_area, settings_for_source
+    from cityshade.cli.options import mesh_placement, parse_area, settings_for_source
     from cityshade.planning.run import CompareStates
     from cityshade.study import StudyRequest, run_study
 
@@ -63,12 +65,14 @@ def study(file, year, days_text, from_text, to_text, every_text, times_text, tz,
     settings = settings_for_source(file, crs, settings)
     request = StudyRequest(
         file, _times(year, days_text, from_text, to_text, every_text, times_text, tz),
-        CompareStates(before_text, after_text, proposal), technique=settings.shadows.technique,
+        CompareStates(before_text, after_text, proposal,
+                      mesh_placement(mesh_units, up_axis, place_text)),
+        technique=settings.shadows.technique,
         settings=settings, pixel_size_m=pixel_size, area=parse_area(area_text),
         extent=parse_area(extent_text, "--extent"), ground=ground,
         outdir=outdir, provenance={"file": str(file), "with": str(proposal) if proposal else
                                    None, "before_option": before_text,
-                                   "after_option": after_text})
+                                   "after_option": after_text, "place": place_text})
     with Progress("panels") as bar:
         bar.plan(len(request.times.days) * len(request.times.clocks_s))
         result = run_study(request, on_panel=lambda done, total: bar.step(done, total, None))

@@ -11,6 +11,14 @@ states (the same object seen; the ground plane counts as one surface): there the
 say existing shadow (shadow in both), new shadow (shadow after, sun before), shadow no longer
 cast (shadow before, sun after) or sun; elsewhere a new building stands (drawn in its own
 colour) or an old one is gone (the state after is drawn).
+
+Trees (docs/DESIGN.md §21) are drawn apart: a crown seen from above in green, the ground or
+roof under the shade of crowns only (part of the sun through the leaves: a lit fraction
+strictly between 0 and 1, which the exact techniques of a study give nowhere else) as tree
+shade, and as new tree shade where that surface had the whole sun before. The masks of a
+scene with trees are grey levels, as ``render --mask`` writes them
+(:func:`cityshade.imageio.grey_mask_from_lit`); sun and shadow are still told apart at half
+the sun, as sun-hours count them.
 """
 from __future__ import annotations
 
@@ -30,6 +38,9 @@ __all__ = [
     "ROOF_SHADOW",
     "ROOF_SUN",
     "SHADOW",
+    "TREE_CROWN",
+    "TREE_SHADE",
+    "NEW_TREE_SHADE",
     "SHADOW_GONE",
     "SUN",
     "Panel",
@@ -43,15 +54,22 @@ __all__ = [
 
 # What a pixel of a panel shows (indices into PALETTE and LABELS).
 NO_SURFACE, SUN, ROOF_SUN, SHADOW, ROOF_SHADOW, NEW_SHADOW, SHADOW_GONE, NEW_BUILDING, \
-    NEW_BUILDING_SHADOW = range(9)
+    NEW_BUILDING_SHADOW, TREE_CROWN, TREE_SHADE, NEW_TREE_SHADE = range(12)
 #: sRGB colours of the categories: paper-white ground, warm grey roofs, neutral grey shadow
 #: (darker on roofs, so buildings read in shadow), orange new shadow (the usual colour of
-#: planning shadow studies), green where a shadow is no longer cast, blue new buildings.
+#: planning shadow studies), green where a shadow is no longer cast, blue new buildings;
+#: dark green crowns, a greyish sage for the partial shade of trees, a light orange for new
+#: tree shade.
 PALETTE = np.array([
     (255, 255, 255), (250, 249, 244), (222, 215, 202), (160, 160, 160), (122, 122, 122),
-    (238, 112, 24), (126, 196, 128), (120, 150, 212), (72, 96, 152)], np.uint8)
+    (238, 112, 24), (126, 196, 128), (120, 150, 212), (72, 96, 152), (62, 118, 66),
+    (184, 196, 170), (248, 190, 128)], np.uint8)
 LABELS = ("no surface", "sun", "roof in sun", "existing shadow", "existing shadow on a roof",
-          "new shadow", "shadow no longer cast", "new building", "new building in shadow")
+          "new shadow", "shadow no longer cast", "new building", "new building in shadow",
+          "tree crown", "tree shade (sun partly through leaves)",
+          "new tree shade (full sun before)")
+#: The lit fraction from which a pixel counts as in sun (:func:`cityshade.imageio.mask_from_lit`).
+LIT_THRESHOLD = 0.5
 #: Surface classes that are open ground, not a building or structure: drawn as paper, not
 #: outlined.
 _GROUND_CLASSES = ("terrain", "traffic", "auxiliary_traffic", "water", "vegetation",
@@ -91,6 +109,10 @@ class StudyView:
         A building (or other structure) is seen there after.
     new_building : (H, W) bool
         A building seen after that was not seen there before.
+    crown_after : (H, W) bool
+        A tree crown is seen there after.
+    trees : bool
+        Either state has tree crowns: the masks are grey levels and tree shade is drawn.
     """
 
     before: Any
@@ -98,6 +120,8 @@ class StudyView:
     same: np.ndarray
     building_after: np.ndarray
     new_building: np.ndarray
+    crown_after: np.ndarray | None = None
+    trees: bool = False
 
     @property
     def camera(self):
@@ -115,28 +139,49 @@ def _buildings(cp) -> np.ndarray:
 
 def study_view(scene_before, t_before_days: float, scene_after, t_after_days: float, camera,
                ground: str | None = "auto") -> StudyView:
-    """Both states' camera passes (as ``render`` makes them) and the per-pixel comparison.
+    """Both states' camera passes (as ``render`` makes them; the ground plane at the height
+    ``ground`` gives for ``scene_before``) and the per-pixel comparison.
     Object ids are the same in both scenes (a proposal's objects come after the model's:
     :func:`cityshade.planning.compare.merge_scenes`)."""
+    from cityshade.citygml.namespaces import SURFACE_CODE
     from cityshade.frame.pipeline import camera_pass
+    from cityshade.geometry.vegetation import scene_vegetation
 
+    if ground is not None:
+        from cityshade.geometry.ground import ground_height_m
+
+        # One plane for both states, as compare's: a proposal standing lower than the model's
+        # typical ground must not move it (6 cm moved every shadow edge on the ground).
+        ground = repr(ground_height_m(scene_before, ground) + float(scene_before.origin_m[2]))
     before = camera_pass(scene_before, camera, t_before_days, ground=ground)
     after = camera_pass(scene_after, camera, t_after_days, ground=ground)
     vb, va = before.valid, after.valid
     same = vb & va & (np.asarray(before.surfaces.obj_id) == np.asarray(after.surfaces.obj_id))
     b_after = _buildings(after)
-    return StudyView(before, after, same, b_after, b_after & ~same)
+    trees = any(scene_vegetation(s) is not None for s in (scene_before, scene_after))
+    crown = (np.asarray(after.surfaces.valid, bool) & (np.asarray(after.gbuffer.prim_id) >= 0)
+             & (np.asarray(after.surfaces.cls) == SURFACE_CODE["vegetation"]))
+    return StudyView(before, after, same, b_after, b_after & ~same, crown & trees, trees)
 
 
-def categories(before_mask: np.ndarray, after_mask: np.ndarray, view: StudyView) -> np.ndarray:
+def categories(before_mask: np.ndarray, after_mask: np.ndarray, view: StudyView,
+               before_lit: np.ndarray | None = None, after_lit: np.ndarray | None = None
+               ) -> np.ndarray:
     """(H, W) uint8 category of every pixel (:data:`LABELS`) from the two shadow masks
-    (255 sun, 0 shadow, 128 no surface)."""
-    from cityshade.imageio import MASK_LIT, MASK_SHADOW
+    (255 sun, 0 shadow, 128 no surface; grey levels between: sun through crowns) and, on a
+    scene with trees, the lit fractions they were made of (``before_lit``, ``after_lit``)."""
+    from cityshade.imageio import MASK_NODATA
 
-    b_shadow = np.asarray(before_mask) == MASK_SHADOW
-    a_shadow = np.asarray(after_mask) == MASK_SHADOW
-    a_lit = np.asarray(after_mask) == MASK_LIT
-    b_lit = np.asarray(before_mask) == MASK_LIT
+    b_valid = np.asarray(before_mask) != MASK_NODATA
+    a_valid = np.asarray(after_mask) != MASK_NODATA
+    # Half the sun or more is sun, as sun-hours and mask_from_lit count it (a grey mask's
+    # levels are rounded: the fractions decide when given).
+    b_lit = b_valid & (np.asarray(before_mask) > MASK_NODATA if before_lit is None
+                       else np.asarray(before_lit) >= LIT_THRESHOLD)
+    a_lit = a_valid & (np.asarray(after_mask) > MASK_NODATA if after_lit is None
+                       else np.asarray(after_lit) >= LIT_THRESHOLD)
+    b_shadow = b_valid & ~b_lit
+    a_shadow = a_valid & ~a_lit
     roof = view.building_after
     out = np.full(a_shadow.shape, NO_SURFACE, np.uint8)
     out[a_lit] = SUN
@@ -146,6 +191,14 @@ def categories(before_mask: np.ndarray, after_mask: np.ndarray, view: StudyView)
     same = view.same
     out[same & a_shadow & b_lit] = NEW_SHADOW
     out[same & a_lit & b_shadow] = SHADOW_GONE
+    if after_lit is not None:
+        la = np.asarray(after_lit)
+        partial = a_valid & (la > 0.0) & (la < 1.0)
+        out[partial] = TREE_SHADE
+        if before_lit is not None:
+            out[same & partial & (np.asarray(before_lit) == 1.0)] = NEW_TREE_SHADE
+        if view.crown_after is not None:
+            out[view.crown_after] = TREE_CROWN
     out[view.new_building & a_lit] = NEW_BUILDING
     out[view.new_building & a_shadow] = NEW_BUILDING_SHADOW
     return out
@@ -171,8 +224,9 @@ class Panel:
     cats : (H, W) uint8
         :func:`categories`.
     area_m2 : dict
-        Plan area (seen from above) in shadow ``before``, ``after``, and of ``new`` shadow
-        and shadow ``gone``.
+        Plan area (seen from above) in shadow ``before``, ``after`` (less than half the sun),
+        of ``new`` shadow and shadow ``gone``, in ``tree_shade`` after (part of the sun
+        through crowns) and of it ``new_tree_shade``.
     """
 
     day: date
@@ -193,14 +247,21 @@ def make_panel(view: StudyView, day: date, local: datetime, sun, technique, sett
     """Both states' shadow passes for ``sun`` (``technique``: a registry name or its
     :func:`cityshade.shadows.get_technique` instance) and the panel they make."""
     from cityshade.frame.pipeline import shadow_pass
-    from cityshade.imageio import MASK_SHADOW, mask_from_lit
+    from cityshade.imageio import MASK_SHADOW, grey_mask_from_lit, mask_from_lit
 
-    masks = [mask_from_lit(shadow_pass(cp, sun, technique, settings).lit, cp.surfaces.valid)
-             for cp in (view.before, view.after)]
-    cats = categories(masks[0], masks[1], view)
+    lits = [shadow_pass(cp, sun, technique, settings).lit for cp in (view.before, view.after)]
+    # The pixels of ``render --mask`` (cityshade.frame.render.shadow_mask): grey with trees.
+    to_mask = grey_mask_from_lit if view.trees else mask_from_lit
+    masks = [to_mask(lit, cp.surfaces.valid) for lit, cp in zip(lits, (view.before, view.after))]
+    cats = categories(masks[0], masks[1], view, *(lits if view.trees else (None, None)))
     px_m2 = float(view.camera.pixel_size_m) ** 2
-    area = {"before": int(np.count_nonzero(masks[0] == MASK_SHADOW)) * px_m2,
-            "after": int(np.count_nonzero(masks[1] == MASK_SHADOW)) * px_m2,
+    shadow = [np.count_nonzero(c == MASK_SHADOW) if not view.trees else
+              np.count_nonzero(cp.surfaces.valid & (lit < LIT_THRESHOLD))
+              for c, lit, cp in zip(masks, lits, (view.before, view.after))]
+    area = {"before": int(shadow[0]) * px_m2, "after": int(shadow[1]) * px_m2,
             "new": int(np.count_nonzero(cats == NEW_SHADOW)) * px_m2,
-            "gone": int(np.count_nonzero(cats == SHADOW_GONE)) * px_m2}
+            "gone": int(np.count_nonzero(cats == SHADOW_GONE)) * px_m2,
+            "tree_shade": int(np.count_nonzero((cats == TREE_SHADE)
+                                               | (cats == NEW_TREE_SHADE))) * px_m2,
+            "new_tree_shade": int(np.count_nonzero(cats == NEW_TREE_SHADE)) * px_m2}
     return Panel(day, local, sun, masks[0], masks[1], cats, area)

@@ -30,7 +30,8 @@ __all__ = ["INDEX_COLUMNS", "StudyResult", "run_study"]
 #: Columns of ``study.csv`` (and keys of ``study.json``'s panels).
 INDEX_COLUMNS = ("day", "time", "utc", "sun_azimuth_deg", "sun_elevation_deg",
                  "shadow_before_m2", "shadow_after_m2", "new_shadow_m2",
-                 "shadow_gone_m2", "before_tif", "after_tif")
+                 "shadow_gone_m2", "tree_shade_m2", "new_tree_shade_m2", "before_tif",
+                 "after_tif")
 
 
 @dataclass
@@ -217,6 +218,8 @@ def _row(panel, request, scene, camera, sheets: _Sheets) -> dict:
             "sun_elevation_deg": round(sun.elevation_deg, 3),
             "shadow_before_m2": round(a["before"], 2), "shadow_after_m2": round(a["after"], 2),
             "new_shadow_m2": round(a["new"], 2), "shadow_gone_m2": round(a["gone"], 2),
+            "tree_shade_m2": round(a["tree_shade"], 2),
+            "new_tree_shade_m2": round(a["new_tree_shade"], 2),
             "before_tif": before_tif, "after_tif": after_tif}
 
 
@@ -253,8 +256,11 @@ def zone_label(panel, tz: str) -> str:
 
 def _text(request, scene, camera, panels, number: int, count: int):
     """The words of a sheet."""
+    import numpy as np
+
     from cityshade.errors import CRSError
     from cityshade.geo.sun import model_place
+    from cityshade.study import panels as P
     from cityshade.study.sheet import SheetText
 
     try:
@@ -278,6 +284,10 @@ def _text(request, scene, camera, panels, number: int, count: int):
     notes = ("Shadows on the ground and on roofs at the times shown, both states of the "
              "city drawn on the same map. New shadow: shadow after the change where the "
              "same surface had sun before. Sun positions: NREL SPA at the model's place.")
+    if any(np.isin(p.cats, (P.TREE_CROWN, P.TREE_SHADE, P.NEW_TREE_SHADE)).any()
+           for p in panels):
+        notes += (" Tree shade: shaded by tree crowns only, part of the sun passing through "
+                  "the leaves (below half of it, it counts as shadow in study.csv's areas).")
     return SheetText(rows, notes, __version__, number, count,
                      zone_label(panels[0], tz) if panels else "")
 

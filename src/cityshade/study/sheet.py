@@ -197,7 +197,9 @@ def _legend_items(panels, has_area: bool) -> list[tuple[Any, str, str]]:
              (hexes[P.NEW_BUILDING], "#1d3f8f", "new building (in sun)",
               P.NEW_BUILDING in present),
              (hexes[P.NEW_BUILDING_SHADOW], "#1d3f8f", "new building (in shadow)",
-              P.NEW_BUILDING_SHADOW in present)]
+              P.NEW_BUILDING_SHADOW in present),
+             *((hexes[k], "0.5", P.LABELS[k], k in present)
+               for k in (P.TREE_CROWN, P.TREE_SHADE, P.NEW_TREE_SHADE))]
     items = [item[:3] for item in items if item[3]]
     if has_area:
         items.append(("none", "#c8102e", "site boundary"))
