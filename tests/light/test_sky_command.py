@@ -117,6 +117,30 @@ def test_maps_surfaces_and_irradiance_files(small_file, tmp_path):
         assert min(parts) >= 0.0
         assert sum(parts) == pytest.approx(float(r["irradiance_kwh_m2"]), abs=2e-4)
     _check_report(out, rows, tmp_path)
+    _check_layers(out, rows)
+
+
+def _check_layers(out, rows):
+    """results.gpkg: the surfaces with surfaces.csv's ids and values in the model's CRS, and
+    a default QGIS style colouring the kWh/m²."""
+    import sqlite3
+    import xml.etree.ElementTree as ET
+
+    pyogrio = pytest.importorskip("pyogrio")
+    gpkg = out / "results.gpkg"
+    meta, _, _, fields = pyogrio.raw.read(gpkg, layer="surfaces", read_geometry=False)
+    assert meta["crs"] == "EPSG:32617"
+    table = dict(zip(meta["fields"], fields))
+    assert list(table["polygon_id"]) == [r["polygon_id"] for r in rows]
+    for name in ("surface_class", "object_id"):
+        assert list(table[name]) == [r[name] for r in rows]
+    for name in ("svf", "irradiance_kwh_m2", "area_m2"):
+        np.testing.assert_allclose(np.asarray(table[name], float),
+                                   [float(r[name]) for r in rows], atol=5e-4)
+    with sqlite3.connect(gpkg) as db:
+        styles = dict(db.execute("SELECT f_table_name, styleQML FROM layer_styles").fetchall())
+    assert ET.fromstring(styles["surfaces"]).find("renderer-v2").get("attr") == \
+        "irradiance_kwh_m2"
 
 
 def _check_report(out, rows, tmp_path):

@@ -8,6 +8,7 @@ import sqlite3
 import xml.etree.ElementTree as ET
 from importlib.resources import files
 
+import numpy as np
 import pytest
 
 
@@ -65,3 +66,25 @@ def test_write_gis_stores_the_styles_in_layer_styles_as_the_default(tmp_path):
     assert [r[:4] for r in rows] == [("surfaces", geometry_column, "cityshade loss", 1),
                                      ("buildings", geometry_column, "cityshade building_loss", 1)]
     assert ET.fromstring(rows[0][4]).find("renderer-v2").get("attr") == "loss_h"
+
+
+@pytest.mark.parametrize("field,values,unit", [
+    ("svf", [0.1, 0.95], ""), ("irradiance_kwh_m2", [12.0, 1033.5, float("nan")], " kWh/m²")])
+def test_the_sky_layers_get_a_graduated_style_made_for_their_values(field, values, unit):
+    """The sky's fields: seven contiguous classes of the template's ramp on the field, the
+    first from 0, the last open above and starting at or below the largest value."""
+    from cityshade.present.gis import Layer, layer_style
+
+    name, qml = layer_style(Layer("surfaces", [None] * len(values), {"polygon_id": ["a"] *
+                                                                    len(values), field: values}))
+    assert name == f"{field}.qml"
+    renderer = ET.fromstring(qml).find("renderer-v2")
+    assert renderer.get("type") == "graduatedSymbol" and renderer.get("attr") == field
+    ranges = renderer.findall("ranges/range")
+    bounds = [(float(r.get("lower")), float(r.get("upper"))) for r in ranges]
+    assert len(bounds) == 7 and bounds[0][0] == 0.0 and bounds[-1][1] >= 1e9
+    assert all(a[1] == b[0] and a[0] < a[1] for a, b in itertools.pairwise(bounds))
+    assert bounds[-1][0] <= np.nanmax(values) or field == "svf"
+    assert ranges[-1].get("label").endswith(f"{unit} or more")
+    assert sorted(s.get("name") for s in renderer.findall("symbols/symbol")) == sorted(
+        r.get("symbol") for r in ranges)

@@ -218,11 +218,16 @@ def _gis(outdir: Path, scene, samples, values: dict[str, np.ndarray]) -> list[Pa
     area-weighted means of theirs (:mod:`cityshade.present.gis`)."""
     from cityshade.present.gis import building_layer, surface_layer, write_gis
 
-    polys = np.flatnonzero(samples.sampled)
-    columns = {name: v[polys] for name, v in values.items()}
-    layers = [surface_layer(scene, polys, columns)]
+    from cityshade.sunhours.surfaces import CSV_COLUMNS, polygon_rows
+
+    rows = list(polygon_rows(scene, samples))
+    polys = np.array([r[2] for r in rows], np.int64)
+    # surfaces.csv's columns: its first six (ids, class, area, samples), then the values.
+    ids = {name: [r[i] for r in rows] for i, name in enumerate(CSV_COLUMNS[:6])}
+    values = {name: v[polys] for name, v in values.items()}
+    layers = [surface_layer(scene, polys, {**ids, **values})]
     if len(polys):
-        layers.append(building_layer(scene, polys, columns))
+        layers.append(building_layer(scene, polys, values))
     return write_gis(outdir, layers, scene.crs)
 
 

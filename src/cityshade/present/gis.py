@@ -291,14 +291,63 @@ STYLE_BY_FIELD = (("max_loss_h", "building_loss.qml"), ("loss_h", "loss.qml"),
                   ("mean_sun_hours", "sun_hours.qml"))
 
 
-def layer_style(layer: Layer) -> tuple[str, str] | None:
-    """(style file name, its QML text) of the shipped style for ``layer``, or None."""
+#: Fields of the sky's layers (``cityshade sky``) coloured by classes made on the fly from
+#: the template's colour ramp (``sun_hours.qml``: seven classes, blue to red): the sky view
+#: factor in fixed fifths-ish steps, the kWh/m² in equal steps up to the layer's round maximum
+#: (a month and a year differ tenfold, so no fixed classes suit both).
+GRADUATED_FIELDS = ("irradiance_kwh_m2", "svf")
+SVF_EDGES = (0.0, 0.2, 0.4, 0.5, 0.6, 0.7, 0.8, 1.0)
+
+
+def _shipped(style: str) -> str:
     from importlib.resources import files
 
+    return files("cityshade.present").joinpath("styles", style).read_text(encoding="utf-8")
+
+
+def graduated_qml(field: str, edges: Sequence[float], unit: str = "") -> str:
+    """A QGIS style colouring ``field`` in the seven classes ``edges`` (8 increasing bounds,
+    the last class open above) with the colour ramp of ``sun_hours.qml``."""
+    import re
+
+    if len(edges) != 8 or any(b <= a for a, b in zip(edges[:-1], edges[1:])):
+        raise ValueError(f"a graduated style needs 8 increasing bounds, not {list(edges)}")
+    text = _shipped("sun_hours.qml")
+    fmt = "g" if max(edges) <= 10 else ",.0f"
+    ranges = []
+    for k in range(7):
+        lo, hi = edges[k], edges[k + 1]
+        label = (f"{lo:{fmt}}–{hi:{fmt}}{unit}" if k < 6 else f"{lo:{fmt}}{unit} or more")
+        upper = hi if k < 6 else 1e9
+        ranges.append(f'      <range lower="{lo!r}" upper="{upper!r}" symbol="{k}" '
+                      f'label="{label}" render="true"/>')
+    text = re.sub(r"<ranges>.*?</ranges>", "<ranges>\n" + "\n".join(ranges) + "\n    </ranges>",
+                  text, count=1, flags=re.S)
+    return text.replace('attr="mean_sun_hours"', f'attr="{field}"').replace(
+        "mean sun-hours (batch: surfaces, buildings); field mean_sun_hours",
+        f"{field} (sky: surfaces, buildings), made for this file")
+
+
+def _graduated_edges(field: str, values) -> tuple[float, ...]:
+    if field == "svf":
+        return SVF_EDGES
+    finite = np.asarray(values, np.float64)
+    finite = finite[np.isfinite(finite)]
+    top = float(np.ceil(finite.max() / 70.0) * 70.0) if finite.size and finite.max() > 0 else 70.0
+    return tuple(top * k / 7.0 for k in range(8))
+
+
+def layer_style(layer: Layer) -> tuple[str, str] | None:
+    """(style file name, its QML text) of the shipped style for ``layer`` (or, for the sky's
+    fields, one made for its values: :func:`graduated_qml`), or None."""
     for name, style in STYLE_BY_FIELD:
         if name in layer.columns:
-            return style, files("cityshade.present").joinpath("styles", style).read_text(
-                encoding="utf-8")
+            return style, _shipped(style)
+    for name in GRADUATED_FIELDS:
+        if name in layer.columns:
+            unit = " kWh/m²" if name.endswith("kwh_m2") else ""
+            return f"{name}.qml", graduated_qml(name, _graduated_edges(name, layer.columns[name]),
+                                                unit)
     return None
 
 
