@@ -156,6 +156,8 @@ def sky_report_markdown(scene, request, result, written: list[Path],
     plane's kWh/m²), the maps of ``written``, the surfaces per class (``values``:
     :func:`cityshade.light.outputs.polygon_values`) and the buildings (``buildings``:
     :func:`cityshade.light.outputs.building_totals`), and the run's warnings."""
+    from cityshade.geometry.vegetation import scene_vegetation
+
     params = dict(request.provenance or {})
     state = (dt.date(1970, 1, 1) + dt.timedelta(days=float(request.t_days))).isoformat()
     lines = [f"# {_what(request, result)}", "",
@@ -163,7 +165,9 @@ def sky_report_markdown(scene, request, result, written: list[Path],
              f"{_receivers(request, result).capitalize()}; {result.sky.n:,} sky directions "
              f"(`{result.sky.name}`), traced by the exact engine of `{request.technique}` "
              f"(`{request.engine}`)" + (f"; deciduous crowns {request.season.replace('_', '-')}"
-                                       if request.svf or request.vsc else "") + ".", ""]
+                                       if (request.svf or request.vsc)
+                                       and scene_vegetation(scene) is not None else "")
+             + ".", ""]
     if request.weather is not None:
         lines += _weather_lines(scene, request, result)
     lines += _maps(written)
