@@ -121,7 +121,9 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
                          decorate=not no_decorate, gis=not no_gis,
                          camera=None if no_map else "map", tile_px=tile_px,
                          scheduler=scheduler, scene_path=file)
-    request.check()  # the sky, model, technique and tiles, before the files are read
+    # The sky, model, technique and tiles, before the files are read (what is asked for was
+    # checked above; the weather is not read yet).
+    request.check(outputs=False)
     if tz is not None:
         from cityshade.geo.temporal import SOLAR_TIME_ZONES, zone_info
 

@@ -102,14 +102,16 @@ class SkyRequest:
 
         return exact_engine(self.technique, "sky view factors and irradiance")
 
-    def check(self, scene=None) -> None:
-        """Refuse a request with nothing to compute or an unknown sky, model or technique."""
+    def check(self, scene=None, outputs: bool = True) -> None:
+        """Refuse a request with nothing to compute or an unknown sky, model or technique
+        (``outputs`` False: not what it computes, which the CLI checks before it reads the
+        weather file and the scene)."""
         from cityshade.light.irradiance import SKY_MODELS
         from cityshade.light.sky import named_sky
 
-        if self.camera is None and self.samples_per_m2 is None:
+        if outputs and self.camera is None and self.samples_per_m2 is None:
             raise UsageError("nothing to compute: give a camera, samples_per_m2, or both")
-        if not (self.svf or self.vsc) and self.weather is None:
+        if outputs and not (self.svf or self.vsc) and self.weather is None:
             raise UsageError("nothing to compute: ask for the sky view factor, the vertical "
                              "sky component or irradiance (with a weather file)")
         if len(self.instants) != len(self.instant_labels):
