@@ -310,7 +310,7 @@ def test_verbose_says_the_memory_estimate_before_the_work(small_file, tmp_path):
     """``-v`` prints the estimate before the first tile: the camera pass (290 B a pixel,
     every pixel of the map), what is kept of every receiver (48 point and normal + 16 slot
     and place + 8 view factor = 72 B) and one tile's 139 B per receiver (the refusal's
-    figures)."""
+    figures), and the size of the scene file whose pages are mapped beside it."""
     import json
     import re
 
@@ -320,8 +320,10 @@ def test_verbose_says_the_memory_estimate_before_the_work(small_file, tmp_path):
     assert result.exit_code == 0, result.stderr
     lines = result.stderr.splitlines()
     m = re.fullmatch(r"memory   about ([\d,]+) MB estimated \(camera pass, receivers kept, one "
-                     r"tile traced; the scene file is mapped apart\)", lines[0])
+                     r"tile traced\), besides the pages it maps of the scene file of ([\d,]+) MB",
+                     lines[0])
     assert m, result.stderr
+    assert m.group(2) == f"{small_file.stat().st_size / 1e6:,.0f}"
     assert lines[1].startswith("cityshade: tiles 1/")
     camera = json.loads((tmp_path / "out" / "manifest.json").read_text())["params"]["camera"]
     w, h = camera["width_px"], camera["height_px"]

@@ -145,7 +145,8 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
         "weather": Path(weather).name if wx is not None else None, "from_date": from_date,
         "to_date": to_date, "technique": request.technique, "date": instant_date,
         "times": times_text, "tz": tz})
-    run = _run(outdir, scene, request, overwrite, verbose)
+    run = _run(outdir, scene, request, overwrite, verbose,
+               Path(file).stat().st_size if Path(file).is_file() else None)
     if run.already_complete:
         click.echo(f"{outdir}: already complete (same request); nothing to do "
                    f"(--overwrite computes it again)")
@@ -157,18 +158,23 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
     click.echo(" ".join(str(p) for p in run.written))
 
 
-def _run(outdir, scene, request, overwrite: bool, verbose: bool = False):
+def _run(outdir, scene, request, overwrite: bool, verbose: bool = False,
+         file_bytes: int | None = None):
     """:func:`cityshade.light.run.run_sky` with batch's progress: a bar (or lines) of tiles,
     within a run of one tile lines of sky directions and weather hours; resume notes; with
-    ``verbose`` the memory estimate before the work."""
+    ``verbose`` the memory estimate before the work, and the size of the scene file
+    (``file_bytes``) whose pages the resident set holds beside it: the camera pass reads
+    every triangle of the map (749 MB of the 10^7-triangle city's 2,127 MB file)."""
     from cityshade.cli.batch import Progress, note
     from cityshade.cli.options import ProgressLines
     from cityshade.light.run import run_sky
 
     def memory(need: int) -> None:
         if verbose:
+            mapped = "" if file_bytes is None else f" of {file_bytes / 1e6:,.0f} MB"
             click.echo(f"memory   about {need / 1e6:,.0f} MB estimated (camera pass, receivers "
-                       f"kept, one tile traced; the scene file is mapped apart)", err=True)
+                       f"kept, one tile traced), besides the pages it maps of the scene "
+                       f"file{mapped}", err=True)
 
     lines = {"sky": ProgressLines("sky directions"), "hours": ProgressLines("weather hours")}
     with Progress("tiles") as bar:
