@@ -360,3 +360,28 @@ def test_a_sky_that_does_not_fit_in_memory_is_refused_before_any_work(small_file
     assert n > 10**6                            # a real size: the GB figures are not 0.0
     assert m.group(2) == f"{n * (290 + 139) / 1e9:.1f}" and m.group(3) == f"{n * 290 / 1e9:.1f}"
     assert not (tmp_path / "out").exists()
+
+
+def test_verbose_says_the_memory_estimate_before_the_work(small_file, tmp_path):
+    """``-v`` prints the estimate before the first tile: the camera pass (290 B a pixel,
+    every pixel of the map), what is kept of every receiver (48 point and normal + 16 slot
+    and place + 8 view factor = 72 B) and one tile's 139 B per receiver (the refusal's
+    figures), and the size of the scene file whose pages are mapped beside it."""
+    import json
+    import re
+
+    result = CliRunner().invoke(cli, [
+        "sky", str(small_file), "-o", str(tmp_path / "out"), "--sky", "tregenza",
+        "--pixel-size", "0.5", "--tile-px", "64", "--no-gis", "--no-decorate", "-v"])
+    assert result.exit_code == 0, result.stderr
+    lines = result.stderr.splitlines()
+    m = re.fullmatch(r"memory   about ([\d,]+) MB estimated \(camera pass, receivers kept, one "
+                     r"tile traced\), besides the pages it maps of the scene file of ([\d,]+) MB",
+                     lines[0])
+    assert m, result.stderr
+    assert m.group(2) == f"{small_file.stat().st_size / 1e6:,.0f}"
+    assert lines[1].startswith("cityshade: tiles 1/")
+    camera = json.loads((tmp_path / "out" / "manifest.json").read_text())["params"]["camera"]
+    w, h = camera["width_px"], camera["height_px"]
+    assert w > 64 and h > 64
+    assert m.group(1) == f"{(w * h * (290 + 72) + 64 * 64 * 139) / 1e6:,.0f}"

@@ -147,7 +147,8 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
         "weather": Path(weather).name if wx is not None else None, "from_date": from_date,
         "to_date": to_date, "technique": request.technique, "date": instant_date,
         "times": times_text, "tz": tz})
-    run = _run(outdir, scene, request, overwrite)
+    run = _run(outdir, scene, request, overwrite, verbose,
+               Path(file).stat().st_size if Path(file).is_file() else None)
     if run.already_complete:
         click.echo(f"{outdir}: already complete (same request); nothing to do "
                    f"(--overwrite computes it again)")
@@ -159,19 +160,31 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
     click.echo(" ".join(str(p) for p in run.written))
 
 
-def _run(outdir, scene, request, overwrite: bool):
+def _run(outdir, scene, request, overwrite: bool, verbose: bool = False,
+         file_bytes: int | None = None):
     """:func:`cityshade.light.run.run_sky` with batch's progress: a bar (or lines) of tiles,
-    within a run of one tile lines of sky directions and weather hours; resume notes."""
+    within a run of one tile lines of sky directions and weather hours; resume notes; with
+    ``verbose`` the memory estimate before the work, and the size of the scene file
+    (``file_bytes``) whose pages the resident set holds beside it: the camera pass reads
+    every triangle of the map (749 MB of the 10^7-triangle city's 2,127 MB file)."""
     from cityshade.cli.batch import Progress, note
     from cityshade.cli.options import ProgressLines
     from cityshade.light.run import run_sky
+
+    def memory(need: int) -> None:
+        if verbose:
+            mapped = "" if file_bytes is None else f" of {file_bytes / 1e6:,.0f} MB"
+            click.echo(f"memory   about {need / 1e6:,.0f} MB estimated (camera pass, receivers "
+                       f"kept, one tile traced), besides the pages it maps of the scene "
+                       f"file{mapped}", err=True)
 
     lines = {"sky": ProgressLines("sky directions"), "hours": ProgressLines("weather hours")}
     with Progress("tiles") as bar:
         return run_sky(outdir, scene, request, overwrite=overwrite,
                        progress=lambda phase, d, t: lines[phase](d, t),
                        on_plan=lambda todo, total: bar.plan(todo if total > 1 else 0),
-                       on_tile=lambda done, total: bar.step(done, total, None), on_note=note)
+                       on_tile=lambda done, total: bar.step(done, total, None), on_note=note,
+                       on_memory=memory)
 
 
 def _echo_verbose(result, scheduler, command_s: float) -> None:
