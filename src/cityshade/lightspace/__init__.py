@@ -442,7 +442,6 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m, last):
             kept_boxes[q:q + local.size] = local_boxes
         q += local.size
     b = chunk_boxes = None        # their memory takes the cell ranges, then the packed casters
-    boxes = kept_boxes
     timing["project_s"] = time.perf_counter() - t0
 
     # Grid over the receivers' box, cell size from the counts.
@@ -452,7 +451,7 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m, last):
     ext_y = max(box[3] - box[2], floor_m)
     max_cells = max(MAX_CELLS_PER_RECEIVER * n, 1024)
     size = (float(cell_m) if cell_m else
-            _choose_cell_m(boxes, xs, ys, box, ext_x, ext_y, max_cells))
+            _choose_cell_m(kept_boxes, xs, ys, box, ext_x, ext_y, max_cells))
     nx = max(1, math.ceil(ext_x / size))
     ny = max(1, math.ceil(ext_y / size))
     inv = 1.0 / size
@@ -468,11 +467,9 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m, last):
         K.pack_casters(recs[c0:c1], keys[c0:c1], kept_boxes[q:q + local.size], local,
                        dest[q:q + local.size], kx, ky, kz, sx, sy, sgn, scale, packed)
         q += local.size
-    del parts, recs, keys, kept_boxes, boxes, dest
-    if last:
-        # The query reads only the packed casters: the sorted copy and the boxes go before the
-        # ordered origins come (the 1M city's map: 87 MB less at the peak); another call on
-        # this tree sorts again.
+    del parts, recs, keys, kept_boxes, dest
+    if last:   # the query reads only the packed casters: the sorted copy and the boxes go
+        # before the ordered origins come (the 1M city's map: 87 MB less at the peak)
         ws.drop("kept_boxes", "dest")
         casters.forget_sorted()
     rec_origins = ordered_origins(ws, origins, rec_order)
