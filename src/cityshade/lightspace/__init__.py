@@ -499,10 +499,10 @@ def bin_grid(ws, xs, ys, boxes, x0, y0, inv, nx, ny, n_chunks, tile_ordered):
     ``(x0, y0)``, numbered tile by tile: :func:`~cityshade.lightspace.kernels.tile_cell`), work
     arrays from the :class:`~cityshade.runtime.memory.Scratch` ``ws``. Returns ``rec_start``
     (cells + 1,) and ``rec_order`` the receivers grouped by cell (receiver order inside a
-    cell; their origins in that order: :func:`ordered_origins`); ``ref_start`` (cells + 1,) and ``refs`` each
-    cell's casters in row order, only in cells holding a receiver, as the rows ``dest`` the
-    casters (rows of ``boxes``, NaN in column 0 for a culled one) get in the packed array:
-    with ``tile_ordered`` the order of their first tile
+    cell; their origins in that order: :func:`ordered_origins`); ``ref_start`` (cells + 1,)
+    and ``refs`` each cell's casters in row order, only in cells holding a receiver, as the
+    rows ``dest`` the casters (rows of ``boxes``, NaN in column 0 for a culled one) get in the
+    packed array: with ``tile_ordered`` the order of their first tile
     (:func:`~cityshade.lightspace.kernels.tile_order`, the opaque query's), else their own
     rows; and the number of cells. The same lists whatever the thread count. The casters' cell
     ranges are ``ws``'s array ``ranges`` (a caller may have used its memory for an array it is
