@@ -513,8 +513,9 @@ def test_estimated_references_are_the_box_by_box_sum():
 
 def test_last_calls_let_the_work_arrays_go_and_answer_the_same(sample_scene):
     """Inside ``lightspace.last_calls`` a call drops its work arrays as it returns (a one-frame
-    render's memory), keeps the sorted casters, and answers as a call outside it; outside,
-    the arrays stay for the next sun. A render with ``last_frame`` equals one without."""
+    render's memory) and its sorted casters once packed, and answers as a call outside it
+    (twice: the second sorts again); outside, the arrays stay for the next sun. A render with
+    ``last_frame`` equals one without."""
     from cityshade.frame.render import render_frame
     from cityshade.raster.camera import map_view
 
@@ -528,7 +529,9 @@ def test_last_calls_let_the_work_arrays_go_and_answer_the_same(sample_scene):
     assert scratch._arrays                                   # kept for the next sun
     with lightspace.last_calls(sample_scene):
         assert np.array_equal(lightspace.occluded(kd, origins, sun), kept)
-    assert not scratch._arrays and lightspace.casters_ready(kd, *lightspace.caster_order(sun))
+        assert not lightspace.casters_ready(kd, *lightspace.caster_order(sun))
+        assert np.array_equal(lightspace.occluded(kd, origins, sun), kept)
+    assert not scratch._arrays and not lightspace.casters_of(kd)._memory._buffers
     assert np.array_equal(lightspace.occluded(kd, origins, sun), kept)
     assert scratch._arrays
     view = map_view(sample_scene, 2.0)

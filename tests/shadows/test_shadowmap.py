@@ -533,6 +533,11 @@ def test_scratch_hands_out_kept_arrays_one_holder_at_a_time():
     as_int = again.get("x", (6, 2), np.int64)
     assert as_int.dtype == np.int64 and np.shares_memory(as_int, bigger)
     assert again.get("x", 30, np.float32).ctypes.data == bigger.ctypes.data
+    # A dropped name's memory goes; the next get of it is a fresh buffer, others stay.
+    kept_i = again.get("i", 7, np.int32)
+    again.drop("x", "never-taken")
+    assert "x" not in again._arrays and np.shares_memory(again.get("i", 7, np.int32), kept_i)
+    assert not np.shares_memory(again.get("x", 12), bigger)
     again.give_back()
 
 

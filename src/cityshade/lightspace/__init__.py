@@ -160,6 +160,12 @@ class Casters:
             self._axis = (kz, sgn)
         return self._sorted
 
+    def forget_sorted(self) -> None:
+        """Let the sorted copy and its memory go (a last call, :func:`last_calls`, once its
+        casters are packed); the next :meth:`sorted_for` sorts again."""
+        self._sorted = self._axis = self._rows = None
+        self._memory.clear()
+
     def rows_of_triangles(self) -> np.ndarray:
         """(max id + 1,) int32: each triangle's row in the last sorted copy (once per sort)."""
         if self._rows is None:
@@ -323,7 +329,8 @@ def occluded(tree, origins, sun_direction, t_days: float = 0.0, *, stats: dict |
     ws = casters.scratch.take()
     try:
         with one_thread_when_small(n + kd.tri_records.shape[0], SINGLE_THREAD_WORK):
-            return _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m)
+            return _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m,
+                             kd in _LAST_CALLS)
     finally:
         if kd in _LAST_CALLS:
             ws.clear()
@@ -345,8 +352,9 @@ _LAST_CALLS: "weakref.WeakSet[KdTree]" = weakref.WeakSet()
 def last_calls(tree):
     """Within the block, each :func:`occluded` call on ``tree``'s kd-tree (a scene's) lets its
     work arrays go when it returns instead of keeping them for the next sun (a one-frame
-    render: the 1M city's map holds 0.25 GB less while its shadow pass finishes and shades);
-    the sorted casters stay for another call of the frame."""
+    render: the 1M city's map holds 0.25 GB less while its shadow pass finishes and shades),
+    and each array and the sorted casters as soon as it has read them for the last time (the
+    call's peak: 75 MB less); another call on the tree sorts the casters again."""
     kd = getattr(tree, "kdtree", tree)
     if not isinstance(kd, KdTree):
         yield
@@ -366,9 +374,10 @@ def forget_casters(tree) -> None:
         _CASTERS.pop(kd, None)
 
 
-def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
+def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m, last):
     """The engine behind :func:`occluded` on validated inputs, work arrays from ``ws``; fills and
-    returns ``out``."""
+    returns ``out``. A ``last`` call (:func:`last_calls`) lets each array go after its last
+    read instead of keeping it for the next sun."""
     n = origins.shape[0]
     timing = {}
     t0 = time.perf_counter()
@@ -382,8 +391,8 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     n_chunks = max(1, numba.get_num_threads())
     # Work arrays share memory with later ones once they are read for the last time (the 1M
     # city's map: 116 MB less at the peak): the light-plane points with the receivers' origins
-    # in cell order (bin_grid reads xs, ys before it fills those), the culled boxes with the
-    # cell ranges and then the packed casters.
+    # in cell order (gathered once the casters are packed), the culled boxes with the cell
+    # ranges and then the packed casters.
     xy = ws.get("rec_origins", 3 * n)
     xs, ys, rkeys = xy[:n], xy[n:2 * n], xy[2 * n:]
     part = np.empty((n_chunks, K.N_STATS))
@@ -433,7 +442,6 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
             kept_boxes[q:q + local.size] = local_boxes
         q += local.size
     b = chunk_boxes = None        # their memory takes the cell ranges, then the packed casters
-    boxes = kept_boxes
     timing["project_s"] = time.perf_counter() - t0
 
     # Grid over the receivers' box, cell size from the counts.
@@ -443,13 +451,15 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     ext_y = max(box[3] - box[2], floor_m)
     max_cells = max(MAX_CELLS_PER_RECEIVER * n, 1024)
     size = (float(cell_m) if cell_m else
-            _choose_cell_m(boxes, xs, ys, box, ext_x, ext_y, max_cells))
+            _choose_cell_m(kept_boxes, xs, ys, box, ext_x, ext_y, max_cells))
     nx = max(1, math.ceil(ext_x / size))
     ny = max(1, math.ceil(ext_y / size))
     inv = 1.0 / size
-    rec_start, rec_order, rec_origins, ref_start, refs, dest, n_cells = bin_grid(
-        ws, xs, ys, origins, kept_boxes, box[0], box[2], inv, nx, ny, n_chunks, True)
-    del xs, ys, rkeys, xy         # their memory holds the ordered origins now
+    rec_start, rec_order, ref_start, refs, dest, n_cells = bin_grid(
+        ws, xs, ys, kept_boxes, box[0], box[2], inv, nx, ny, n_chunks, True)
+    del xs, ys, rkeys, xy         # their memory takes the ordered origins below
+    if last:
+        ws.drop("rec_origins")    # the 1M city's map: 63 MB less while the casters are packed
     n_refs = refs.size
     packed = ws.get("ranges", (kept_size, K.PACK_WORDS), np.float32)   # ranges are done
     q = 0
@@ -457,7 +467,12 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
         K.pack_casters(recs[c0:c1], keys[c0:c1], kept_boxes[q:q + local.size], local,
                        dest[q:q + local.size], kx, ky, kz, sx, sy, sgn, scale, packed)
         q += local.size
-    del parts
+    del parts, recs, keys, kept_boxes, dest
+    if last:   # the query reads only the packed casters: the sorted copy and the boxes go
+        # before the ordered origins come (the 1M city's map: 87 MB less at the peak)
+        ws.drop("kept_boxes", "dest")
+        casters.forget_sorted()
+    rec_origins = ordered_origins(ws, origins, rec_order)
     timing["bin_s"] = time.perf_counter() - t0
 
     # Test each receiver against its cell's casters, nearest-to-the-sun first.
@@ -479,30 +494,30 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m):
     return out
 
 
-def bin_grid(ws, xs, ys, origins, boxes, x0, y0, inv, nx, ny, n_chunks, tile_ordered):
+def bin_grid(ws, xs, ys, boxes, x0, y0, inv, nx, ny, n_chunks, tile_ordered):
     """Receivers and casters binned into one grid (``nx`` by ``ny`` cells of ``1 / inv`` from
     ``(x0, y0)``, numbered tile by tile: :func:`~cityshade.lightspace.kernels.tile_cell`), work
     arrays from the :class:`~cityshade.runtime.memory.Scratch` ``ws``. Returns ``rec_start``
-    (cells + 1,) and ``rec_order``/``rec_origins`` the receivers grouped by cell (receiver
-    order inside a cell) and their origins; ``ref_start`` (cells + 1,) and ``refs`` each
-    cell's casters in row order, only in cells holding a receiver, as the rows ``dest`` the
-    casters (rows of ``boxes``, NaN in column 0 for a culled one) get in the packed array:
-    with ``tile_ordered`` the order of their first tile
+    (cells + 1,) and ``rec_order`` the receivers grouped by cell (receiver order inside a
+    cell; their origins in that order: :func:`ordered_origins`); ``ref_start`` (cells + 1,)
+    and ``refs`` each cell's casters in row order, only in cells holding a receiver, as the
+    rows ``dest`` the casters (rows of ``boxes``, NaN in column 0 for a culled one) get in the
+    packed array: with ``tile_ordered`` the order of their first tile
     (:func:`~cityshade.lightspace.kernels.tile_order`, the opaque query's), else their own
     rows; and the number of cells. The same lists whatever the thread count. The casters' cell
     ranges are ``ws``'s array ``ranges`` (a caller may have used its memory for an array it is
     done with, or use it after); the receivers' cells share theirs with ``refs``."""
     n = xs.shape[0]
     ntx, n_cells = K.tiled_cells(nx, ny)
-    cells = ws.get("cells", n, np.int64)
+    # int32 cells while they fit: the buffer then takes the int32 references (10 MB less).
+    cells = ws.get("cells", n, np.int32 if n_cells < 2 ** 31 else np.int64)
     K.receiver_cells(xs, ys, x0, y0, inv, inv, nx, ny, cells)
     counts = ws.get("counts", (n_chunks, n_cells), np.int32)
     K.count_receivers(cells, counts)
     rec_start = ws.get("rec_start", n_cells + 1, np.int64)
     K.prefix_sum(counts, rec_start)
     rec_order = ws.get("rec_order", n, np.int32)
-    rec_origins = ws.get("rec_origins", (n, 3))
-    K.fill_receivers(cells, counts, origins, rec_order, rec_origins)
+    K.order_receivers(cells, counts, rec_order)
     m = boxes.shape[0]
     ranges = ws.get("ranges", (m, 4), np.int64)
     K.caster_ranges(boxes, x0, y0, inv, inv, nx, ny, ranges)
@@ -521,7 +536,15 @@ def bin_grid(ws, xs, ys, origins, boxes, x0, y0, inv, nx, ny, n_chunks, tile_ord
     del cells        # filled in: the references take its memory
     refs = ws.get("cells", n_refs, np.int32)
     K.scatter_casters(ranges, rec_start, nx, counts, dest, refs, True)
-    return rec_start, rec_order, rec_origins, ref_start, refs, dest, n_cells
+    return rec_start, rec_order, ref_start, refs, dest, n_cells
+
+
+def ordered_origins(ws, origins, rec_order):
+    """``origins[rec_order]`` (the receivers' origins in cell order, read sequentially by the
+    query) in ``ws``'s array ``rec_origins``."""
+    out = ws.get("rec_origins", (rec_order.size, 3))
+    K.gather_rows(origins, rec_order, out)
+    return out
 
 
 def _near_rows(kd, casters, box, min_key, shear, t_days: float):

@@ -547,20 +547,17 @@ def prefix_sum(counts, out_start):
 
 
 @njit(cache=True, parallel=True)
-def fill_receivers(cells, cursor, origins, out_order, out_origins):
-    """Receiver indices grouped by cell (receiver order inside a cell) and their origins in
-    that order, so the query reads receivers sequentially."""
+def order_receivers(cells, cursor, out_order):
+    """Receiver indices grouped by cell (receiver order inside a cell); their origins are
+    gathered in that order later (:func:`gather_rows`), so the query reads receivers
+    sequentially."""
     n = cells.shape[0]
     n_chunks = cursor.shape[0]
     per = (n + n_chunks - 1) // n_chunks
     for c in prange(n_chunks):
         for i in range(c * per, min(n, (c + 1) * per)):
             cell = cells[i]
-            q = cursor[c, cell]
-            out_order[q] = i
-            out_origins[q, 0] = origins[i, 0]
-            out_origins[q, 1] = origins[i, 1]
-            out_origins[q, 2] = origins[i, 2]
+            out_order[cursor[c, cell]] = i
             cursor[c, cell] += 1
 
 

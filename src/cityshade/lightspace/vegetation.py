@@ -28,7 +28,8 @@ import numpy as np
 from numba import njit, prange
 
 from cityshade.lightspace import (DEPTH_MARGIN_M, DEPTH_MARGIN_REL, MARGIN_REL,
-                                  MAX_CELLS_PER_RECEIVER, OCCUPANCY_CELLS, bin_grid)
+                                  MAX_CELLS_PER_RECEIVER, OCCUPANCY_CELLS, bin_grid,
+                                  ordered_origins)
 from cityshade.lightspace import kernels as K
 from cityshade.runtime.memory import Scratch
 from cityshade.trace.kernels import hit_record, ray_shear
@@ -316,9 +317,10 @@ def _transmission(crowns, ws, origins, direction, t_days, rays, taus, outs):
     nx = max(1, math.ceil(ext_x / size))
     ny = max(1, math.ceil(ext_y / size))
     inv = 1.0 / size
-    rec_start, rec_order, rec_origins, ref_start, refs, _, _ = bin_grid(
-        ws, xs, ys, o, kept_boxes, box[0], box[2], inv, nx, ny,
+    rec_start, rec_order, ref_start, refs, _, _ = bin_grid(
+        ws, xs, ys, kept_boxes, box[0], box[2], inv, nx, ny,
         max(1, numba.get_num_threads()), False)
+    rec_origins = ordered_origins(ws, o, rec_order)
     max_cell = int(np.diff(rec_start).max())
     _query(packed, kept_crown, ref_start, refs, rec_start, rec_origins, rec_order, rays, kx, ky,
            kz, sx, sy, sz, sgn, DEPTH_MARGIN_M + DEPTH_MARGIN_REL * scale, taus, max_cell, outs)

@@ -122,6 +122,12 @@ class Scratch:
             buf = self._arrays[name] = np.empty(max(nbytes, 1), np.uint8)
         return buf[:nbytes].view(dtype).reshape(shape)
 
+    def drop(self, *names: str) -> None:
+        """Drop the kept buffers of these names (their memory, once arrays made from them are
+        gone too), for a caller that will not need them again before it returns."""
+        for name in names:
+            self._arrays.pop(name, None)
+
     def clear(self) -> None:
         """Drop the kept arrays (their memory)."""
         self._arrays.clear()
