@@ -43,6 +43,10 @@ def _sources_key(root: str | None = None) -> str:
 #: most this many are kept beside the current one (each holds ~50-100 MB of machine code).
 NUMBA_CACHE_KEEP_DAYS = 14
 NUMBA_CACHE_KEEP_OTHERS = 3
+#: A folder whose mark is younger than this is in use (its mark is refreshed once a day) and
+#: never removed: several checkouts of different sources side by side (worktrees, a clone
+#: beside an install) each keep their compiled kernels.
+NUMBA_CACHE_IN_USE_S = 2 * 86400
 _USED_MARK = ".last-used"
 
 
@@ -56,7 +60,8 @@ def _default_numba_cache_dir() -> str:
 def _mark_used_and_prune(folder: str, now: float | None = None) -> None:
     """Mark ``folder`` used (at most once a day: one ``stat`` otherwise) and, when it is new,
     remove the folders of other source versions unused for ``NUMBA_CACHE_KEEP_DAYS`` or beyond
-    the ``NUMBA_CACHE_KEEP_OTHERS`` most recently used. Never fails the import."""
+    the ``NUMBA_CACHE_KEEP_OTHERS`` most recently used, but none used within
+    ``NUMBA_CACHE_IN_USE_S``. Never fails the import."""
     import shutil
     import time
 
@@ -80,6 +85,8 @@ def _mark_used_and_prune(folder: str, now: float | None = None) -> None:
                 others.append((_os.stat(used if _os.path.exists(used) else path).st_mtime, path))
         others.sort(reverse=True)
         for i, (used_s, path) in enumerate(others):
+            if now - used_s < NUMBA_CACHE_IN_USE_S:
+                continue
             if i >= NUMBA_CACHE_KEEP_OTHERS or now - used_s > NUMBA_CACHE_KEEP_DAYS * 86400:
                 shutil.rmtree(path, ignore_errors=True)
     except OSError:

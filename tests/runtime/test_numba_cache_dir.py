@@ -49,6 +49,23 @@ def test_a_new_folder_prunes_old_and_surplus_ones(tmp_path):
     assert (tmp_path / "recent9").exists()
 
 
+def test_folders_in_use_are_never_pruned_however_many(tmp_path):
+    """Four checkouts of other sources used within the day (their marks refreshed daily) and
+    a new one: none of the four goes, though they are beyond the three others kept; a folder
+    unused for five days beyond them does."""
+    day = 86400.0
+    now = 1_800_000_000.0
+    ages = {"busy1": 0.1, "busy2": 0.2, "busy3": 0.3, "busy4": 1.5, "idle": 5}
+    for name, age_days in ages.items():
+        (tmp_path / name).mkdir()
+        mark = tmp_path / name / cityshade._USED_MARK
+        mark.touch()
+        os.utime(mark, (now - age_days * day,) * 2)
+    cityshade._mark_used_and_prune(str(tmp_path / "current"), now=now)
+    kept = sorted(p.name for p in tmp_path.iterdir() if p.name != "current")
+    assert kept == ["busy1", "busy2", "busy3", "busy4"]
+
+
 _COMPILE_ONE_KERNEL = """
 import cityshade  # first: it points Numba's cache at the sources' folder
 import numba.core.event as ev
