@@ -232,3 +232,13 @@ def test_evaluate_honours_ground_like_render(box_file):
     assert frame.diagnostics.ground is not None
     np.testing.assert_array_equal(out["surfaces"].valid, frame.surfaces.valid)
     np.testing.assert_array_equal(out["results"][("raytrace", None)].lit, frame.lit)
+
+
+def test_a_time_axis_within_a_decade_labels_its_2_and_5_ticks():
+    """120–900 ms holds no power of ten: 200 and 500 are labelled; over three decades the
+    powers of ten are, and the minor ticks stay bare."""
+    from cityshade.evaluate.plot import minor_time_label
+
+    assert [minor_time_label(v, True) for v in (200.0, 300.0, 500.0, 800.0)] == \
+        ["200", "", "500", ""]
+    assert minor_time_label(200.0, False) == ""

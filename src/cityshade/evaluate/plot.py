@@ -58,6 +58,19 @@ def _marker(technique: str) -> str:
     return "s" if spec.smooth else "o"
 
 
+def minor_time_label(value: float, few_decades: bool) -> str:
+    """The label of a minor tick of the log time axis: 2 and 5 times a power of ten when the
+    times span under two decades (there may be no labelled power of ten then), else none.
+
+    >>> [minor_time_label(v, True) for v in (200.0, 300.0, 500.0, 0.05)]
+    ['200', '', '500', '0.05']
+    """
+    if not few_decades or value <= 0.0:
+        return ""
+    mantissa = round(value / 10.0 ** math.floor(math.log10(value)), 6)
+    return f"{value:g}" if mantissa in (2.0, 5.0) else ""
+
+
 def error_time_plot(entries: Sequence[dict], title: str = "") -> np.ndarray | None:
     """Error against run time on log axes, one marker per technique and size.
 
@@ -98,7 +111,10 @@ def error_time_plot(entries: Sequence[dict], title: str = "") -> np.ndarray | No
     ax.set_yscale("log")
     plain = FuncFormatter(lambda v, _: f"{v:g}")
     ax.xaxis.set_major_formatter(plain)
-    ax.xaxis.set_minor_formatter(FuncFormatter(lambda v, _: ""))
+    # Under two decades of times there may be no power of ten on the axis to label: the minor
+    # ticks at 2 and 5 times one are labelled then.
+    few = math.log10(max(float(t_ms.max()), 1e-3) / float(t_ms.min())) < 2.0
+    ax.xaxis.set_minor_formatter(FuncFormatter(lambda v, _: minor_time_label(v, few)))
     ax.grid(True, which="major", color="#e1e1e1")
     ax.axhline(zero_y, color="#e1e1e1", lw=1)
     front = sorted((i for i, e in enumerate(pts) if e.get("pareto")), key=lambda i: t_ms[i])
