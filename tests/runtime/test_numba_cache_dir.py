@@ -29,15 +29,22 @@ def test_key_ignores_modification_times_and_follows_content(tmp_path):
     assert cityshade._sources_key(str(root)) != key
 
 
-def test_a_new_folder_prunes_old_and_surplus_ones(tmp_path):
-    day = 86400.0
-    now = 1_800_000_000.0
-    ages = {"recent1": 1, "recent2": 2, "recent3": 3, "recent4": 4, "stale": 30}
-    for name, age_days in ages.items():
-        (tmp_path / name).mkdir()
-        mark = tmp_path / name / cityshade._USED_MARK
+NOW_S = 1_800_000_000.0
+
+
+def _folders_used(parent, ages_days: dict) -> None:
+    """A cache folder per name whose used-mark is that many days older than ``NOW_S``."""
+    for name, age_days in ages_days.items():
+        (parent / name).mkdir()
+        mark = parent / name / cityshade._USED_MARK
         mark.touch()
-        os.utime(mark, (now - age_days * day,) * 2)
+        os.utime(mark, (NOW_S - age_days * 86400.0,) * 2)
+
+
+def test_a_new_folder_prunes_old_and_surplus_ones(tmp_path):
+    now = NOW_S
+    _folders_used(tmp_path, {"recent1": 1, "recent2": 2, "recent3": 3, "recent4": 4,
+                             "stale": 30})
     current = tmp_path / "current"
     cityshade._mark_used_and_prune(str(current), now=now)
     assert (current / cityshade._USED_MARK).exists()
@@ -53,15 +60,8 @@ def test_folders_in_use_are_never_pruned_however_many(tmp_path):
     """Four checkouts of other sources used within the day (their marks refreshed daily) and
     a new one: none of the four goes, though they are beyond the three others kept; a folder
     unused for five days beyond them does."""
-    day = 86400.0
-    now = 1_800_000_000.0
-    ages = {"busy1": 0.1, "busy2": 0.2, "busy3": 0.3, "busy4": 1.5, "idle": 5}
-    for name, age_days in ages.items():
-        (tmp_path / name).mkdir()
-        mark = tmp_path / name / cityshade._USED_MARK
-        mark.touch()
-        os.utime(mark, (now - age_days * day,) * 2)
-    cityshade._mark_used_and_prune(str(tmp_path / "current"), now=now)
+    _folders_used(tmp_path, {"busy1": 0.1, "busy2": 0.2, "busy3": 0.3, "busy4": 1.5, "idle": 5})
+    cityshade._mark_used_and_prune(str(tmp_path / "current"), now=NOW_S)
     kept = sorted(p.name for p in tmp_path.iterdir() if p.name != "current")
     assert kept == ["busy1", "busy2", "busy3", "busy4"]
 

@@ -83,8 +83,8 @@ def sky(file, city_date, camera, eye, target, fov, size, pixel_size, cameras_fil
     --weather FILE --irradiance, the kWh/m² received over the file's hours (direct, diffuse
     from pvlib's sky model and ground-reflected, each weighted by what the receiver sees of
     it), and with --date and --times the W/m² at those instants; report.html sums it up.
-    Tree crowns let their transmissivity through. With --tile-px the receivers run in tiles (here or on Dask with
-    --scheduler); running the same command again continues an interrupted run where it
+    Tree crowns let their transmissivity through. With --tile-px the receivers run in tiles
+    (here or on Dask with --scheduler); running the same command again continues an interrupted run where it
     stopped, and does nothing for a finished one.
     """
     import dataclasses

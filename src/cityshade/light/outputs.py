@@ -217,11 +217,10 @@ def _gis(outdir: Path, scene, samples, values: dict[str, np.ndarray]) -> list[Pa
     """``results.gpkg`` (+ GeoJSON): the surfaces with their columns, the buildings with the
     area-weighted means of theirs (:mod:`cityshade.present.gis`)."""
     from cityshade.present.gis import building_layer, surface_layer, write_gis
-
     from cityshade.sunhours.surfaces import CSV_COLUMNS, polygon_rows
 
+    polys = np.flatnonzero(samples.sampled)     # polygon_rows' order
     rows = list(polygon_rows(scene, samples))
-    polys = np.array([r[2] for r in rows], np.int64)
     # surfaces.csv's columns: its first six (ids, class, area, samples), then the values.
     ids = {name: [r[i] for r in rows] for i, name in enumerate(CSV_COLUMNS[:6])}
     values = {name: v[polys] for name, v in values.items()}
@@ -233,10 +232,9 @@ def _gis(outdir: Path, scene, samples, values: dict[str, np.ndarray]) -> list[Pa
 
 def write_sky_outputs(outdir: Path, scene, request, result) -> list[Path]:
     """Every file of the run, in one output group; returns the paths written."""
-    from cityshade.util import output_group
-
     from cityshade.light.report import sky_report_markdown
     from cityshade.present.html import write_report_html
+    from cityshade.util import output_group
 
     meta = sky_metadata(scene, request, result)
     written: list[Path] = []

@@ -396,8 +396,8 @@ def compute_sky(scene, request: SkyRequest, *, progress=None, checkpoint=None, w
     """
     from cityshade.geometry.vegetation import scene_vegetation
     from cityshade.light.sky import sky_for_scene
-    from cityshade.sunhours.accumulate import receivers_pass
     from cityshade.store.scenefile import release_scene_pages
+    from cityshade.sunhours.accumulate import receivers_pass
     from cityshade.sunhours.checkpoint import SaveThrottle
 
     request.check(scene)
