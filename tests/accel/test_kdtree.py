@@ -374,3 +374,18 @@ def test_pack_nodes_matches_its_twin():
     split = rng.normal(0, 1e4, 1000).astype(np.float32).astype(np.float64)
     np.testing.assert_array_equal(pack_nodes(axis, child, first, split),
                                   reference_pack_nodes(axis, child, first, split))
+
+
+@pytest.mark.parametrize("n", [0, 1, 2, 33, 1000])
+def test_heapsort_matches_numpy_sort(n):
+    """The hand-written heapsort (leaves and clipped straddlers beyond 32 references) sorts
+    like numpy, with duplicates, negatives and the int64 extremes."""
+    from cityshade.accel.kdtree_build import _heapsort
+
+    rng = np.random.default_rng(n)
+    keys = rng.integers(-50, 50, n).astype(np.int64)
+    keys[:min(n, 2)] = [np.iinfo(np.int64).max, np.iinfo(np.int64).min][:min(n, 2)]
+    tail = np.arange(7, dtype=np.int64)  # past n: must stay as they are
+    work = np.concatenate([keys, tail])
+    _heapsort(work, n)
+    np.testing.assert_array_equal(work, np.concatenate([np.sort(keys), tail]))

@@ -31,13 +31,13 @@ import time
 from dataclasses import dataclass
 
 import numpy as np
-from numba import njit, prange
-from numba.typed import List
+from numba import njit
 
 from cityshade.accel.kdtree_layout import (LEAF_CODE, TIME_AXIS, KdTree, pack_nodes,
                                            triangle_records)
 from cityshade.errors import ConfigError, KdTreeInputError
 from cityshade.runtime.memory import release_freed_memory
+from cityshade.runtime.threadpool import run_chunks
 
 #: Axis code of a placeholder node whose subtree is built separately (never stored).
 DEFERRED = -1
@@ -403,6 +403,46 @@ RADIX_BITS = 11
 
 
 @njit(cache=True)
+def _f32_key(u):
+    """Order-preserving unsigned image of the float32 bits ``u`` (uint32): sign flipped for
+    positives, all bits for negatives; -0.0 keyed as +0.0, so ties are a comparison's."""
+    sign = np.uint32(0x80000000)
+    if u == sign:  # -0.0
+        u = np.uint32(0)
+    return ~u if u & sign else u | sign
+
+
+@njit(cache=True)
+def _heapsort(keys, n):
+    """Sort ``keys[:n]`` (int64) in place, ascending: a heapsort, O(n log n), no allocation.
+    Written by hand: ``np.sort``/``np.argsort`` in a kernel instantiate Numba's quicksort or
+    mergesort, 1.5-2 s of first-use compiling each (issue 40)."""
+    top = n // 2
+    m = n
+    while True:
+        if top > 0:  # heap construction: sift down every inner node
+            top -= 1
+            x = keys[top]
+        else:  # the largest goes behind the heap, the last one is sifted down from the root
+            m -= 1
+            if m <= 0:
+                break
+            x = keys[m]
+            keys[m] = keys[0]
+        j = top
+        c = 2 * j + 1
+        while c < m:
+            if c + 1 < m and keys[c + 1] > keys[c]:
+                c += 1
+            if keys[c] <= x:
+                break
+            keys[j] = keys[c]
+            j = c
+            c = 2 * j + 1
+        keys[j] = x
+
+
+@njit(cache=True)
 def _radix_order(values, out, keys, keys_tmp, idx_tmp, counts):
     """Stable order of the float32 ``values`` into ``out`` (int32): an LSD radix sort on the
     order-preserving unsigned image of the bits (sign flipped for positives, all bits for
@@ -413,14 +453,12 @@ def _radix_order(values, out, keys, keys_tmp, idx_tmp, counts):
     ``counts`` is a (3, 2^RADIX_BITS) int64 work buffer, the others (>= n,) like ``out``."""
     n = values.shape[0]
     bits = values.view(np.uint32)
-    sign = np.uint32(0x80000000)
     mask = np.uint32((1 << RADIX_BITS) - 1)
-    counts[:] = 0
+    for d in range(3):  # loops, not ``counts[:] = 0``: see _grow
+        for b in range(counts.shape[1]):
+            counts[d, b] = 0
     for i in range(n):
-        u = bits[i]
-        if u == sign:  # -0.0
-            u = np.uint32(0)
-        k = ~u if u & sign else u | sign
+        k = _f32_key(bits[i])
         keys[i] = k
         out[i] = i
         for d in range(3):
@@ -472,15 +510,21 @@ def _event_orders(lo, hi, n_axes):
 @njit(cache=True)
 def _sort_by_value(refs, lo, hi, axis, use_hi, out):
     """``refs`` sorted by ``hi[:, axis]`` (``use_hi``) or ``lo[:, axis]``, into ``out``:
-    insertion sort for the usual few, argsort beyond 32."""
+    insertion sort for the usual few, a heapsort of (value key, position) beyond 32 (ties in
+    any order: only the sorted values reach the sweep)."""
     k = refs.shape[0]
     if k > 32:
-        key = np.empty(k, np.float32)
+        value = np.empty(k, np.float32)
         for i in range(k):
-            key[i] = hi[refs[i], axis] if use_hi else lo[refs[i], axis]
-        order = np.argsort(key)
+            value[i] = hi[refs[i], axis] if use_hi else lo[refs[i], axis]
+        bits = value.view(np.uint32)
+        key = np.empty(k, np.int64)
         for i in range(k):
-            out[i] = refs[order[i]]
+            # The unsigned key shifted to a signed range first: its top bit would be the sign.
+            key[i] = ((np.int64(_f32_key(bits[i])) - 0x80000000) << 32) | i
+        _heapsort(key, k)
+        for i in range(k):
+            out[i] = refs[key[i] & 0xFFFFFFFF]
         return
     for i in range(k):
         r = refs[i]
@@ -631,20 +675,21 @@ def _grow_2d(a, n, columns):
     return b
 
 
-@njit(cache=True, inline="always")
-def _add_task(task_ids, task_lo, task_hi, task_blo, task_bhi, task_depth, k, ids, lo, hi, blo,
-              bhi, depth):
-    """Make task ``k`` of a subtree (its references, boxes, node box copied, depth) in the
-    five lists; returns ``task_depth``, grown if needed. (The lists go one by one: Numba does
-    not infer a typed list's item type through a tuple.)"""
-    task_ids.append(ids)
-    task_lo.append(lo)
-    task_hi.append(hi)
-    task_blo.append(blo.copy())
-    task_bhi.append(bhi.copy())
-    task_depth = _grow(task_depth, k + 1)
-    task_depth[k] = depth
-    return task_depth
+@njit(cache=True)
+def _add_task(t_meta, t_box, k, start, n, depth, blo, bhi):
+    """Record task ``k``: its references are rows ``start .. start + n`` of the task pool, its
+    node box ``blo``-``bhi`` and depth go into ``t_meta`` (3 per task) and ``t_box`` (8 per
+    task); returns the two arrays, grown if needed. Arrays, not typed lists: a typed list's
+    methods took seconds of first-use compiling (issue 40)."""
+    t_meta = _grow(t_meta, 3 * k + 3)
+    t_box = _grow(t_box, 8 * k + 8)
+    t_meta[3 * k] = start
+    t_meta[3 * k + 1] = n
+    t_meta[3 * k + 2] = depth
+    for c in range(4):
+        t_box[8 * k + c] = blo[c]
+        t_box[8 * k + 4 + c] = bhi[c]
+    return t_meta, t_box
 
 
 @njit(cache=True, nogil=True)
@@ -678,7 +723,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
     node_axis = np.empty(cap, np.int64)
     node_child = np.empty(cap, np.int64)
     node_first = np.empty(cap, np.int64)
-    node_split = np.empty(cap, np.float64)
+    node_split = np.empty(cap)  # each form of np.empty's dtype compiles an overload of its own
     prims = np.empty(max(16, 2 * n_tri), np.int64)
     n_nodes = 0
     n_prims = 0
@@ -715,7 +760,8 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
     st_start = np.empty(n_stack, np.int64)   # first pool row
     st_n = np.empty(n_stack, np.int64)       # reference count
     st_ord = np.empty(n_stack, np.int64)     # first order-pool column
-    st_sorted = np.empty(n_stack, np.bool_)  # event orders present (exact sweep)
+    st_sorted = np.empty(n_stack, np.int8)   # event orders present (exact sweep); int8 as
+    #                                          ``side``: one np.empty overload fewer
     st_task = np.empty(n_stack, np.int64)    # deferred: its task index, else -1
     st_blo = np.empty((n_stack, 4))
     st_bhi = np.empty((n_stack, 4))
@@ -724,7 +770,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
     st_start[0] = 0
     st_n[0] = n_tri
     st_ord[0] = 0
-    st_sorted[0] = False
+    st_sorted[0] = 0
     for c in range(4):  # loops, not row copies: see _grow
         st_blo[0, c] = root_lo[c]
         st_bhi[0, c] = root_hi[c]
@@ -733,13 +779,16 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
     st_task[0] = -1
     sp = 1
 
-    task_ids = List()
-    task_lo = List()
-    task_hi = List()
-    task_blo = List()
-    task_bhi = List()
-    task_depth = np.empty(16, np.int64)
-    n_tasks = 0
+    # Deferred subtrees: their references one after the other in a task pool (rows: id, box
+    # low, box high), each task a range of it (see _add_task).
+    t_cap = n_tri + 16 if defer_n > 0 else 16
+    t_ids = np.empty(t_cap, ids0.dtype)
+    t_lo = np.empty((t_cap, 4), lo0.dtype)
+    t_hi = np.empty((t_cap, 4), hi0.dtype)
+    t_meta = np.empty(48, np.int64)
+    t_box = np.empty(128)
+    t_n = np.int64(0)  # not literals: one compile of _add_task (_clipped_box says why)
+    n_tasks = np.int64(0)
     sah = 0.0
     n_leaves = 0
     n_empty = 0
@@ -753,7 +802,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         s0 = st_start[sp]
         n = st_n[sp]
         o = st_ord[sp]
-        has_orders = st_sorted[sp]
+        has_orders = st_sorted[sp] != 0
         for c in range(4):
             blo[c] = st_blo[sp, c]
             bhi[c] = st_bhi[sp, c]
@@ -786,8 +835,17 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
             node_child[node] = 0
             node_first[node] = n_tasks
             node_split[node] = 0.0
-            task_depth = _add_task(task_ids, task_lo, task_hi, task_blo, task_bhi, task_depth,
-                                   n_tasks, ids.copy(), lo.copy(), hi.copy(), blo, bhi, depth)
+            if t_n + n > t_ids.shape[0]:
+                t_ids = _grow(t_ids, t_n + n)
+                t_lo = _grow_2d(t_lo, t_n + n, False)
+                t_hi = _grow_2d(t_hi, t_n + n, False)
+            for i in range(n):  # loops, not slice copies: see _grow
+                t_ids[t_n + i] = ids[i]
+                for c in range(4):
+                    t_lo[t_n + i, c] = lo[i, c]
+                    t_hi[t_n + i, c] = hi[i, c]
+            t_meta, t_box = _add_task(t_meta, t_box, n_tasks, t_n, n, depth, blo, bhi)
+            t_n += n
             n_tasks += 1
             continue
         surf = _surface(blo, bhi, has_time, t0, t1) / root_surface
@@ -833,9 +891,9 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
                 key = np.empty(n, np.int64)
                 for r in range(n):
                     key[r] = (np.int64(material[ids[r]]) + 1) * n_key + ids[r]
-                order = np.argsort(key, kind="mergesort")
+                _heapsort(key, n)  # unique keys: any sort gives this order
                 for r in range(n):
-                    prims[n_prims + r] = ids[order[r]]
+                    prims[n_prims + r] = key[r] % n_key
             node_axis[node] = LEAF_CODE
             node_child[node] = n
             node_first[node] = n_prims
@@ -857,8 +915,8 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
             time_splits += 1
 
         # Classify: 1 = left only, 2 = right only, 3 = both (straddling, clipped below).
-        n_l = 0
-        n_r = 0
+        n_l = np.int64(0)  # not literals: one compile of _add_task (_clipped_box says why)
+        n_r = np.int64(0)
         for r in range(n):
             a = lo[r, axis]
             b = hi[r, axis]
@@ -897,16 +955,15 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
             p_hi = _grow_2d(p_hi, l0 + n_l, False)
         d_ids_l, d_lo_l, d_hi_l, bl = p_ids, p_lo, p_hi, l0
         d_ids_r, d_lo_r, d_hi_r, br = p_ids, p_lo, p_hi, s0
+        t_need = t_n + (n_l if defer_l else 0) + (n_r if defer_r else 0)
+        if t_need > t_ids.shape[0]:
+            t_ids = _grow(t_ids, t_need)
+            t_lo = _grow_2d(t_lo, t_need, False)
+            t_hi = _grow_2d(t_hi, t_need, False)
         if defer_l:
-            d_ids_l = np.empty(n_l, p_ids.dtype)
-            d_lo_l = np.empty((n_l, 4), p_lo.dtype)
-            d_hi_l = np.empty((n_l, 4), p_hi.dtype)
-            bl = 0
+            d_ids_l, d_lo_l, d_hi_l, bl = t_ids, t_lo, t_hi, t_n
         if defer_r:
-            d_ids_r = np.empty(n_r, p_ids.dtype)
-            d_lo_r = np.empty((n_r, 4), p_lo.dtype)
-            d_hi_r = np.empty((n_r, 4), p_hi.dtype)
-            br = 0
+            d_ids_r, d_lo_r, d_hi_r, br = t_ids, t_lo, t_hi, t_n + (n_l if defer_l else 0)
         il = 0
         ir = 0
         for r in range(n):
@@ -956,14 +1013,13 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         # node_first, so the numbering never shows in the tree.
         if defer_l:
             task_l = n_tasks
-            task_depth = _add_task(task_ids, task_lo, task_hi, task_blo, task_bhi, task_depth,
-                                   n_tasks, d_ids_l, d_lo_l, d_hi_l, blo_l, bhi_l, depth + 1)
+            t_meta, t_box = _add_task(t_meta, t_box, n_tasks, bl, n_l, depth + 1, blo_l, bhi_l)
             n_tasks += 1
         if defer_r:
             task_r = n_tasks
-            task_depth = _add_task(task_ids, task_lo, task_hi, task_blo, task_bhi, task_depth,
-                                   n_tasks, d_ids_r, d_lo_r, d_hi_r, blo_r, bhi_r, depth + 1)
+            t_meta, t_box = _add_task(t_meta, t_box, n_tasks, br, n_r, depth + 1, blo_r, bhi_r)
             n_tasks += 1
+        t_n = t_need
 
         node_axis[node] = axis
         node_split[node] = p
@@ -979,7 +1035,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         st_start[sp] = s0
         st_n[sp] = n_r
         st_ord[sp] = o
-        st_sorted[sp] = child_orders
+        st_sorted[sp] = 1 if child_orders else 0
         for c in range(4):
             st_blo[sp, c] = blo_r[c]
             st_bhi[sp, c] = bhi_r[c]
@@ -990,7 +1046,7 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
         st_start[sp] = s0 + n_r_pool
         st_n[sp] = n_l
         st_ord[sp] = o + n_r if child_orders else o
-        st_sorted[sp] = child_orders
+        st_sorted[sp] = 1 if child_orders else 0
         for c in range(4):
             st_blo[sp, c] = blo_l[c]
             st_bhi[sp, c] = bhi_l[c]
@@ -1006,32 +1062,47 @@ def _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, has_time, t
     return (node_axis[:n_nodes].copy(), node_child[:n_nodes].copy(),
             node_first[:n_nodes].copy(), node_split[:n_nodes].copy(), prims[:n_prims].copy(),
             stats,
-            (task_ids, task_lo, task_hi, task_blo, task_bhi, task_depth[:n_tasks]))
+            (t_ids[:t_n], t_lo[:t_n], t_hi[:t_n], t_meta[:3 * n_tasks], t_box[:8 * n_tasks]))
 
 
-@njit(cache=True, parallel=True)
-def _corners_and_boxes(vertices, triangles, ids, t_begin, t_end):
-    """The (T, 3, 3) float32 corners of every triangle and the (K, 4) float32 low and high
-    box corners of the triangles ``ids``: corner extents, and the validity rounded outward to
-    float32 (so every time split is a float32 value, see the module doc). One pass, no
-    gathered temporaries."""
-    n_tri = triangles.shape[0]
-    tri_v = np.empty((n_tri, 3, 3), np.float32)
-    for t in prange(n_tri):
+#: Triangles (or references) per call of the corner and box kernels: some 0.5-1 ms of work, so
+#: the call per chunk is lost in it.
+CORNER_CHUNK = 1 << 16
+
+
+@njit(cache=True, nogil=True)
+def _corners_range(vertices, triangles, tri_v, i0, i1):
+    """The (3, 3) float32 corners of triangles ``i0 .. i1`` into ``tri_v``."""
+    for t in range(i0, i1):
         for i in range(3):
             v = triangles[t, i]
             for c in range(3):
                 tri_v[t, i, c] = vertices[v, c]
-    k = ids.shape[0]
-    lo = np.empty((k, 4), np.float32)
-    hi = np.empty((k, 4), np.float32)
-    for r in prange(k):
+
+
+@njit(cache=True, nogil=True)
+def _boxes_range(tri_v, ids, t_begin, t_end, lo, hi, i0, i1):
+    """The float32 low and high box corners of references ``i0 .. i1`` (triangles ``ids``):
+    corner extents, and the validity rounded outward to float32 (so every time split is a
+    float32 value, see the module doc)."""
+    for r in range(i0, i1):
         t = ids[r]
         for c in range(3):
             lo[r, c] = min(tri_v[t, 0, c], min(tri_v[t, 1, c], tri_v[t, 2, c]))
             hi[r, c] = max(tri_v[t, 0, c], max(tri_v[t, 1, c], tri_v[t, 2, c]))
         lo[r, 3] = np.float32(_f32_down(t_begin[t]))
         hi[r, 3] = np.float32(_f32_up(t_end[t]))
+
+
+def _corners_and_boxes(vertices, triangles, ids, t_begin, t_end):
+    """The (T, 3, 3) float32 corners of every triangle and the (K, 4) float32 low and high
+    box corners of the triangles ``ids``. Serial kernels over chunks on the thread pool, not
+    ``prange`` ones: those took 2-3x longer to compile on first use (issue 40)."""
+    tri_v = np.empty((triangles.shape[0], 3, 3), np.float32)
+    run_chunks(_corners_range, triangles.shape[0], CORNER_CHUNK, vertices, triangles, tri_v)
+    lo = np.empty((ids.shape[0], 4), np.float32)
+    hi = np.empty((ids.shape[0], 4), np.float32)
+    run_chunks(_boxes_range, ids.shape[0], CORNER_CHUNK, tri_v, ids, t_begin, t_end, lo, hi)
     return tri_v, lo, hi
 
 
@@ -1039,23 +1110,26 @@ def _corners_and_boxes(vertices, triangles, ids, t_begin, t_end):
 # Public API
 # --------------------------------------------------------------------------------------------
 
-@njit(cache=True)
-def _task_arrays(task_ids, task_lo, task_hi, task_blo, task_bhi, k):
-    """Task k's arrays out of the kernel's typed lists. Indexing a typed list from Python
-    compiles its accessors anew in every process (about a second, uncached); this cached
-    kernel does not."""
-    return task_ids[k], task_lo[k], task_hi[k], task_blo[k], task_bhi[k]
+def _task_inputs(tasks) -> list[tuple]:
+    """Each deferred subtree's inputs (references, boxes, node box, depth) copied out of the
+    kernel's task pool, so each is freed once its subtree is built (the pool goes now)."""
+    t_ids, t_lo, t_hi, t_meta, t_box = tasks
+    inputs = []
+    for k in range(t_meta.size // 3):
+        start, n, depth = (int(x) for x in t_meta[3 * k:3 * k + 3])
+        inputs.append((t_ids[start:start + n].copy(), t_lo[start:start + n].copy(),
+                       t_hi[start:start + n].copy(), t_box[8 * k:8 * k + 4].copy(),
+                       t_box[8 * k + 4:8 * k + 8].copy(), depth))
+    return inputs
 
 
-def _build_subtrees(tri_v, material, tasks, constants, root_surface) -> list[tuple]:
-    """Build every deferred subtree (largest first, one per Numba thread at a time); the
-    results are kept by task index, so their order never depends on the threads."""
+def _build_subtrees(tri_v, material, inputs, constants, root_surface) -> list[tuple]:
+    """Build every deferred subtree of :func:`_task_inputs` (largest first, one per Numba
+    thread at a time); the results are kept by task index, so their order never depends on
+    the threads."""
     import numba
 
-    task_ids, task_lo, task_hi, task_blo, task_bhi, task_depth = tasks
-    n_tasks = len(task_depth)
-    inputs = [(*_task_arrays(task_ids, task_lo, task_hi, task_blo, task_bhi, k),
-               int(task_depth[k])) for k in range(n_tasks)]
+    n_tasks = len(inputs)
     results: list[tuple | None] = [None] * n_tasks
 
     def build(k: int) -> None:
@@ -1276,8 +1350,10 @@ def build_kdtree(vertices, triangles, t_begin_days, t_end_days, material,
     *top, tasks = _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, *constants,
                                 0, root_surface, settings.subtree_cap(ids0.size))
     del lo0, hi0
-    subtrees = _build_subtrees(tri_v, material, tasks, constants, root_surface)
-    del tasks, tri_v
+    inputs = _task_inputs(tasks)
+    del tasks
+    subtrees = _build_subtrees(tri_v, material, inputs, constants, root_surface)
+    del inputs, tri_v
     release_freed_memory()  # the kernel's per-node arrays, freed, fragment the heap
     node_axis, node_child, node_first, node_split, prims, raw = _stitch(top, subtrees)
     del top, subtrees
