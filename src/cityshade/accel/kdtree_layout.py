@@ -157,7 +157,7 @@ def _fill_records(vertices, triangles, t_begin_days, t_end_days, material, prim_
     """Every word of the records ``k0 .. k1`` of ``prim_indices`` (three views of one array,
     disjoint words); one pass, no gathered temporaries. A serial kernel over chunks on the
     thread pool, not a ``prange`` one: that took 2-3x longer to compile on first use."""
-    for k in range(k0, k1):
+    for k in range(np.uint64(k0), np.uint64(k1)):  # unsigned: no negative-index wraparound
         t = prim_indices[k]
         for i in range(3):
             v = triangles[t, i]
