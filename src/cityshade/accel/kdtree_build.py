@@ -362,8 +362,12 @@ def _binned_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, nbins, best):
     scale = nbins / (b - a)
     is_time = axis == TIME_AXIS
     start, end, cap, side, norm = _plane_terms(blo, bhi, axis, t0, t1)
-    start_count = np.zeros(nbins, np.int64)
-    end_count = np.zeros(nbins, np.int64)
+    # np.empty and a loop, not np.zeros: its overload and fill compile apart (issue 40).
+    start_count = np.empty(nbins, np.int64)
+    end_count = np.empty(nbins, np.int64)
+    for i in range(nbins):
+        start_count[i] = 0
+        end_count[i] = 0
     for r in range(n):
         x = lo[r, axis]
         if x <= a:
