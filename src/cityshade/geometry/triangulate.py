@@ -40,7 +40,7 @@ from dataclasses import dataclass
 
 import numpy as np
 import numba
-from numba import njit, prange
+from numba import njit
 
 from cityshade.errors import TriangulationInputError
 
@@ -807,7 +807,7 @@ def _earclip_with_holes(x2, y2, loc, idx, ring_start, n_holes, nslot, nxt, prv, 
 # ---------------------------------------------------------------------------------------------
 # The batch kernel.
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _triangulate_range(coords, ring_offsets, polygon_ring_offsets, p_begin, p_end, out_begin,
                        merge_distance_m, collinear_rel_tol, area_rel_tol, min_rel_area,
                        nonplanar_rel_tol, tri_out, tri_poly, status, repairs, normal, area_m2):
@@ -1031,20 +1031,6 @@ def _triangulate_range(coords, ring_offsets, polygon_ring_offsets, p_begin, p_en
 
 
 @njit(cache=True)
-def _triangulate_kernel(coords, ring_offsets, polygon_ring_offsets, merge_distance_m,
-                        collinear_rel_tol, area_rel_tol, min_rel_area, nonplanar_rel_tol,
-                        tri_out, tri_poly, status, repairs, normal, area_m2):
-    """Triangulate every polygon in order on one thread (the twin of
-    :func:`_triangulate_parallel`); return the triangle count."""
-    # np.int64, not literal zeros: the parallel kernel's compile of _triangulate_range (and
-    # of everything it calls) serves this one too.
-    return _triangulate_range(coords, ring_offsets, polygon_ring_offsets, np.int64(0),
-                              polygon_ring_offsets.shape[0] - 1, np.int64(0), merge_distance_m,
-                              collinear_rel_tol, area_rel_tol, min_rel_area, nonplanar_rel_tol,
-                              tri_out, tri_poly, status, repairs, normal, area_m2)
-
-
-@njit(cache=True)
 def _chunk_bounds(ring_offsets, polygon_ring_offsets, n_chunks):
     """Chunks of consecutive polygons with about equal point counts, and the row each chunk's
     triangles may start at: the sum of the earlier polygons' bounds, n - 2 + 2h triangles for
@@ -1074,32 +1060,37 @@ def _chunk_bounds(ring_offsets, polygon_ring_offsets, n_chunks):
     return poly_start, out_start
 
 
-@njit(cache=True, parallel=True)
 def _triangulate_parallel(coords, ring_offsets, polygon_ring_offsets, poly_start, out_start,
                           merge_distance_m, collinear_rel_tol, area_rel_tol, min_rel_area,
                           nonplanar_rel_tol, tri_out, tri_poly, status, repairs, normal,
                           area_m2):
-    """:func:`_triangulate_kernel` over chunks of polygons on all threads, each chunk's
+    """:func:`_triangulate_range` over chunks of polygons on the thread pool
+    (:func:`cityshade.runtime.threadpool.run_chunks`: a serial ``nogil`` kernel compiles in a
+    fraction of a ``prange`` one's time and serves the one-thread call too), each chunk's
     triangles written in its own rows, then moved down behind the previous chunk's: the same
-    rows in the same order. Returns the triangle count."""
+    rows in the same order. Returns the triangle count, or -1 when a chunk's bound did not
+    hold (never seen: the caller then redoes it serially)."""
+    from cityshade.runtime.threadpool import run_chunks
+
     n_chunks = poly_start.shape[0] - 1
     out_end = np.empty(n_chunks, np.int64)
-    for c in prange(n_chunks):
-        out_end[c] = _triangulate_range(
-            coords, ring_offsets, polygon_ring_offsets, poly_start[c], poly_start[c + 1],
-            out_start[c], merge_distance_m, collinear_rel_tol, area_rel_tol, min_rel_area,
-            nonplanar_rel_tol, tri_out, tri_poly, status, repairs, normal, area_m2)
-    for c in range(n_chunks):
-        if out_end[c] > out_start[c + 1]:
-            return -1  # a bound that did not hold (never seen): the caller redoes it serially
-    n_out = out_end[0]
-    for c in range(1, n_chunks):  # forward moves: a row never lands on one still to move
-        for i in range(out_start[c], out_end[c]):
-            tri_out[n_out, 0] = tri_out[i, 0]
-            tri_out[n_out, 1] = tri_out[i, 1]
-            tri_out[n_out, 2] = tri_out[i, 2]
-            tri_poly[n_out] = tri_poly[i]
-            n_out += 1
+    tol = (merge_distance_m, collinear_rel_tol, area_rel_tol, min_rel_area, nonplanar_rel_tol)
+
+    def chunks(c0, c1):
+        for c in range(c0, c1):
+            out_end[c] = _triangulate_range(
+                coords, ring_offsets, polygon_ring_offsets, poly_start[c], poly_start[c + 1],
+                out_start[c], *tol, tri_out, tri_poly, status, repairs, normal, area_m2)
+
+    run_chunks(chunks, n_chunks, 1)
+    if np.any(out_end > out_start[1:]):
+        return -1
+    n_out = int(out_end[0])
+    for c in range(1, n_chunks):  # forward moves: numpy copies overlapping rows correctly
+        rows = int(out_end[c] - out_start[c])
+        tri_out[n_out:n_out + rows] = tri_out[out_start[c]:out_end[c]]
+        tri_poly[n_out:n_out + rows] = tri_poly[out_start[c]:out_end[c]]
+        n_out += rows
     return n_out
 
 
@@ -1200,16 +1191,12 @@ def triangulate_polygons(coords: np.ndarray, ring_offsets: np.ndarray,
         # Eight chunks a thread: the polygons' costs vary, and a thread that is done early
         # takes the next chunk.
         poly_start, out_start = _chunk_bounds(ring_offsets, polygon_ring_offsets, 8 * threads)
-        old_chunk = numba.set_parallel_chunksize(1)  # dynamic: one chunk at a time
-        try:
-            n_tri = _triangulate_parallel(coords, ring_offsets, polygon_ring_offsets,
-                                          poly_start, out_start, *tol, tri_out, tri_poly,
-                                          status, repairs, normal, area)
-        finally:
-            numba.set_parallel_chunksize(old_chunk)
+        n_tri = _triangulate_parallel(coords, ring_offsets, polygon_ring_offsets, poly_start,
+                                      out_start, *tol, tri_out, tri_poly, status, repairs,
+                                      normal, area)
     if n_tri < 0:
-        n_tri = _triangulate_kernel(coords, ring_offsets, polygon_ring_offsets, *tol, tri_out,
-                                    tri_poly, status, repairs, normal, area)
+        n_tri = _triangulate_range(coords, ring_offsets, polygon_ring_offsets, 0, n_poly, 0,
+                                   *tol, tri_out, tri_poly, status, repairs, normal, area)
     # Views, not copies: the rows past n_tri were never written, so they hold no memory, and a
     # copy would double the largest arrays of the build at its peak.
     return TriangulationResult(triangles=tri_out[:n_tri], tri_polygon=tri_poly[:n_tri],
