@@ -71,3 +71,5 @@ def test_a_kernel_in_numba_s_cache_is_not_interpreted(tmp_path, monkeypatch):
     assert not fresh.signatures and compiled_or_cached(fresh)
     uncached = numba.njit(cache=False)(mod.kernel.py_func)
     assert not compiled_or_cached(uncached)
+    assert compiled_or_cached(mod.kernel.py_func)  # NUMBA_DISABLE_JIT=1: runs as it is
+    assert not InterpretBudget(10, mod.kernel.py_func).take(1)

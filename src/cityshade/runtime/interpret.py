@@ -43,8 +43,9 @@ def python_twin(kernel):
 
 def compiled_or_cached(kernel) -> bool:
     """Whether ``kernel`` has compiled code in this process or, for its current source, in
-    Numba's cache (any signature: loading it costs a fraction of a second)."""
-    if kernel.signatures:
+    Numba's cache (any signature: loading it costs a fraction of a second). A plain function
+    (``NUMBA_DISABLE_JIT=1``) counts as compiled: it runs as it is."""
+    if not isinstance(kernel, Dispatcher) or kernel.signatures:
         return True
     if isinstance(kernel._cache, NullCache):  # ``cache=False``: nothing on disk
         return False
