@@ -500,16 +500,9 @@ def test_qie_wrong_orientation_keeps_the_given_winding():
     assert signed_volume(coords, res.triangles) == pytest.approx(-1.0, rel=1e-9)
 
 
-@pytest.mark.parametrize("threads", [1, 2])
-def test_parallel_chunks_equal_the_one_thread_kernel(monkeypatch, threads):
-    """Chunks of polygons triangulated on the threads, each into its own rows, then moved
-    together: every output equals the one-thread kernel's, row for row, on a batch that mixes
-    the degenerate table's skips and repairs, holes, random stars and polygons without rings
-    (chunk edges then fall on every kind), and the bound each chunk is given holds."""
-    import numba
-
-    import cityshade.geometry.triangulate as T
-
+def mixed_polygons():
+    """900 polygons mixing the degenerate table's skips and repairs, holes, random stars and
+    polygons without rings."""
     rng = np.random.default_rng(11)
     polygons = []
     for i in range(900):
@@ -523,6 +516,20 @@ def test_parallel_chunks_equal_the_one_thread_kernel(monkeypatch, threads):
             polygons.append([closed(star_polygon(rng, int(rng.integers(3, 40)), convex=i % 8 == 2))])
         else:
             polygons.append([] if i % 12 == 3 else [closed(regular(int(rng.integers(3, 9)), 2.0))])
+    return polygons
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_parallel_chunks_equal_the_one_thread_kernel(monkeypatch, threads):
+    """Chunks of polygons triangulated on the threads, each into its own rows, then moved
+    together: every output equals the one-thread kernel's, row for row, on a batch that mixes
+    the degenerate table's skips and repairs, holes, random stars and polygons without rings
+    (chunk edges then fall on every kind), and the bound each chunk is given holds."""
+    import numba
+
+    import cityshade.geometry.triangulate as T
+
+    polygons = mixed_polygons()
     coords, ring_offsets, poly_rings = make_batch(polygons)
     monkeypatch.setattr(T, "PARALLEL_MIN_POLYGONS", 10**9)
     one = triangulate_polygons(coords, ring_offsets, poly_rings)
@@ -548,3 +555,26 @@ def test_parallel_chunks_equal_the_one_thread_kernel(monkeypatch, threads):
         used = counts[poly_start[c]:poly_start[c + 1]].sum()
         assert out_start[c] + used <= out_start[c + 1]
     assert poly_start[0] == 0 and poly_start[-1] == len(polygons)
+
+
+@pytest.mark.parametrize("offset_m", [0.0, 3.3e6 + 0.123])
+def test_interpreted_twin_equals_the_compiled_kernel(monkeypatch, offset_m):
+    """Small first-use batches run the kernel's own Python source (runtime.interpret): every
+    output equals the compiled kernel's, bit for bit, on the mixed batch (and far from the
+    origin, where every step rounds)."""
+    import cityshade.geometry.triangulate as T
+    from cityshade.runtime.interpret import InterpretBudget
+
+    coords, ring_offsets, poly_rings = make_batch(mixed_polygons())
+    coords = coords + offset_m
+    coords.setflags(write=False)
+    monkeypatch.setattr(T, "_INTERPRET", InterpretBudget(0))
+    compiled = triangulate_polygons(coords, ring_offsets, poly_rings)
+    budget = InterpretBudget(10**9)
+    monkeypatch.setattr(T, "_INTERPRET", budget)
+    twin = triangulate_polygons(coords, ring_offsets, poly_rings)
+    assert budget.left == 10**9 - len(coords)  # it ran interpreted
+    assert len(compiled.triangles) > 1000 and len(set(compiled.status.tolist())) > 5
+    for name in ("triangles", "tri_polygon", "status", "repairs", "normal", "area_m2"):
+        a, b = getattr(compiled, name), getattr(twin, name)
+        assert a.dtype == b.dtype and np.array_equal(a, b, equal_nan=True), name

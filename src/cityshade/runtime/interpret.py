@@ -1,0 +1,78 @@
+"""Small work on first use: a kernel's own Python source run by the interpreter, not compiled.
+
+Compiling a kernel costs seconds the first time (the triangulation about 8 CPU s, the
+coordinate parser about 2), while the interpreter runs a small city's work through the same
+source in a fraction of that (the sample city: triangulation 0.09 s, parse 0.2 s). So a kernel
+whose compiled code is neither in this process nor in Numba's cache runs interpreted while its
+work is small, and compiles once the work is large or the process has done enough of it.
+
+:func:`python_twin` is the kernel's Python function with every ``@njit`` callee of its module
+replaced by the callee's Python function: the same operations in the same order on IEEE
+doubles (Numba compiles without fast-math), so the answers are the kernel's bit for bit
+(tested for each kernel that uses it). A kernel that relies on Numba-only semantics (integer
+overflow, ``float ** int`` by repeated squaring, ``prange``) must not use it.
+"""
+from __future__ import annotations
+
+import sys
+import threading
+import types
+
+from numba.core.caching import NullCache
+from numba.core.dispatcher import Dispatcher
+
+_TWINS: dict[str, dict] = {}
+_LOCK = threading.Lock()
+
+
+def python_twin(kernel):
+    """The interpreted twin of an ``@njit`` kernel (see the module's docstring)."""
+    name = kernel.py_func.__module__
+    with _LOCK:
+        space = _TWINS.get(name)
+        if space is None:
+            space = dict(vars(sys.modules[name]))  # the module's globals as compiled: frozen
+            for key, value in list(space.items()):
+                if isinstance(value, Dispatcher):
+                    f = value.py_func
+                    space[key] = types.FunctionType(f.__code__, space, f.__name__,
+                                                    f.__defaults__, f.__closure__)
+            _TWINS[name] = space
+    return space[kernel.py_func.__name__]
+
+
+def compiled_or_cached(kernel) -> bool:
+    """Whether ``kernel`` has compiled code in this process or, for its current source, in
+    Numba's cache (any signature: loading it costs a fraction of a second). A plain function
+    (``NUMBA_DISABLE_JIT=1``) counts as compiled: it runs as it is."""
+    if not isinstance(kernel, Dispatcher) or kernel.signatures:
+        return True
+    if isinstance(kernel._cache, NullCache):  # ``cache=False``: nothing on disk
+        return False
+    try:
+        # Numba's cache index of the function, empty when missing or stale.
+        return bool(kernel._cache._cache_file._load_index())
+    except Exception:  # another Numba's internals, or no cache: compile as before
+        return True
+
+
+class InterpretBudget:
+    """Work a process may still run interpreted, in the kernel's own unit (points, bytes).
+
+    ``take(n)`` says whether a call of ``n`` units runs interpreted: the kernels are neither
+    compiled nor cached and ``n`` fits in what is left (then it is spent). Once the budget is
+    spent, the kernels compile as before: a process that reads many small files pays the
+    compile once instead of interpreting all of them.
+    """
+
+    def __init__(self, units: int, *kernels):
+        self.left = units
+        self.kernels = kernels
+        self._lock = threading.Lock()
+
+    def take(self, n: int) -> bool:
+        with self._lock:
+            if n > self.left or any(compiled_or_cached(k) for k in self.kernels):
+                return False
+            self.left -= n
+            return True
