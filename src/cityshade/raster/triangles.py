@@ -227,10 +227,12 @@ def tile_span(start, tile, tiles_x, tile_px, shape):
 
 
 # --- setup ------------------------------------------------------------------------------------
-# The setup's small helpers are plain functions, not ``inline="always"`` (the same run time):
+# The setup's small scalar helpers are plain functions, not ``inline="always"`` (the same run
+# time; not ``_depth_words``, which takes arrays: as a call it made the depth pass's setup
+# some 20 % slower):
 # Numba's parallel passes go over the whole ``prange`` body, and with the helpers' code in it
 # the first compile of ``setup_triangles`` took 11.8 CPU s (render of the sample city, empty
-# cache), 5.0-6.8 without. Numpy's error model, as in the ``prange`` body they were inlined into
+# cache), 5.0-5.4 without. Numpy's error model, as in the ``prange`` body they were inlined into
 # (a division by zero gives inf, no check per division). The body itself stays a ``prange``
 # body: called per item or chunk from a plain kernel, the same code ran the setup 3-5x slower.
 
@@ -389,17 +391,15 @@ def setup_triangles(vertices, triangles, tree, from_records, items, view, depth_
         vals[j, Z_WORD + 1] = z1
         vals[j, Z_WORD + 2] = z2
         if depth_pass:
-            # The index as int64: the parfor's loop index has another integer type than the
-            # one the body was first typed with (two compiles of _depth_words).
-            _depth_words(coef, vals, np.int64(j), x0, y0, z0, w0, x1, y1, z1, w1, x2, y2, z2,
-                         w2, to_px, c1 - c0 >= NARROW_COLS)
+            _depth_words(coef, vals, j, x0, y0, z0, w0, x1, y1, z1, w1, x2, y2, z2, w2, to_px,
+                         c1 - c0 >= NARROW_COLS)
         bbox[j, 0] = int(c0)
         bbox[j, 1] = int(c1)
         bbox[j, 2] = int(r0)
         bbox[j, 3] = int(r1)
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, inline="always")
 def _depth_words(coef, vals, j, x0, y0, z0, w0, x1, y1, z1, w1, x2, y2, z2, w2, to_px, wide):
     """The depth pass's extra words: W, depth plane, column bounds (see ``W_WORD`` ff.; the
     bounds only for a ``wide`` box or a triangle crossing W = 0, the others never read them)."""
