@@ -402,7 +402,7 @@ def oriented_normals(surfaces: "Surfaces", camera: "Camera") -> np.ndarray:
 
 
 # Serial kernels over rows ``[r0, r1)`` run on ``run_chunks`` (see runtime.threadpool): as
-# ``prange`` kernels the three made 2.0 CPU s of a first render's compiling, serial 0.6-0.7.
+# ``prange`` kernels the three made 1.7-2.0 CPU s of a first render's compiling, serial 0.4-0.9.
 
 @njit(cache=True, nogil=True)
 def _row_counts(mask, counts, r0, r1):
