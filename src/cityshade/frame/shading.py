@@ -28,10 +28,9 @@ import math
 from dataclasses import dataclass, field
 
 import numpy as np
-from numba import njit, prange
+from numba import njit
 
 from cityshade.errors import ShadingError
-from cityshade.trace.bricks import dynamic_bricks
 from cityshade.frame.textures import (TextureSet, composite_textures, load_texture_set,
                                 lod_from_uv_neighbours, srgb_to_linear)
 from cityshade.runtime.memory import Recycler
@@ -208,14 +207,17 @@ def _base_albedo_kernel(valid, material, klass, mat_colours, mat_usable, palette
                     out[r, c, k] = palette[code, k]
 
 
-@njit(cache=True, parallel=True)
-def _texture_inputs_kernel(valid, texture, prim, polygon, mode, n_tex, tex_ids, group, used):
-    """Per pixel: ``tex_ids`` the texture (-1: no surface or none of the ``n_tex``), ``group``
-    its uv patch (mode 0: 0 everywhere; 1: the triangle ``prim``; 2: its ``polygon``; -1
-    without a triangle); ``used[k]`` set for every texture seen. Returns the textured count."""
-    height, width = valid.shape
-    count = 0
-    for r in prange(height):
+@njit(cache=True, nogil=True)
+def _texture_inputs_kernel(valid, texture, prim, polygon, mode, n_tex, tex_ids, group, used,
+                           counts, r0, r1):
+    """Per pixel of rows ``[r0, r1)``: ``tex_ids`` the texture (-1: no surface or none of the
+    ``n_tex``), ``group`` its uv patch (mode 0: 0 everywhere; 1: the triangle ``prim``; 2: its
+    ``polygon``; -1 without a triangle); ``used[k]`` set for every texture seen; ``counts[r]``
+    the textured pixels of row r. Serial, for ``run_chunks`` (as a ``prange`` kernel: 1.3 CPU
+    s of a first render's compiling)."""
+    width = valid.shape[1]
+    for r in range(r0, r1):
+        count = 0
         for c in range(width):
             k = texture[r, c]
             if valid[r, c] and 0 <= k < n_tex:
@@ -232,7 +234,7 @@ def _texture_inputs_kernel(valid, texture, prim, polygon, mode, n_tex, tex_ids, 
                 group[r, c] = -1
             else:
                 group[r, c] = polygon[prim[r, c]]
-    return count
+        counts[r] = count
 
 
 def albedo_of_surfaces(scene, surfaces, *, settings: ShadingSettings | None = None,
@@ -285,11 +287,11 @@ def albedo_of_surfaces(scene, surfaces, *, settings: ShadingSettings | None = No
     tex_ids = _IMAGES.empty((height, width), np.int64)
     group = _IMAGES.empty((height, width), np.int64)
     used = np.zeros(n_tex, bool)
-    n_textured = _texture_inputs_kernel(
-        valid, np.ascontiguousarray(texture), prim,
-        np.zeros(1, np.int32) if polygon is None else np.asarray(polygon), mode, n_tex,
-        tex_ids, group, used)
-    if n_textured == 0:
+    counts = np.zeros(height, np.int64)
+    run_chunks(_texture_inputs_kernel, height, ROW_CHUNK, valid, np.ascontiguousarray(texture),
+               prim, np.zeros(1, np.int32) if polygon is None else np.asarray(polygon), mode,
+               n_tex, tex_ids, group, used, counts)
+    if not counts.any():
         return albedo  # no texture work when no visible pixel needs it (docs/DESIGN.md §10)
     tex_set = _texture_set(textures, used)
     if report is not None:
@@ -439,27 +441,25 @@ def shade(scene, surfaces, camera, lit_fraction: np.ndarray, sun_dir_render, *,
         raise ShadingError(f"surfaces.position_m has shape {position.shape}, expected "
                            f"{(height, width, 3)}")
 
-    # Every row-parallel kernel below takes rows a few at a time (dynamic scheduling: the row
-    # kernels through run_chunks, the texture-inputs kernel's prange under dynamic_bricks): the
-    # surfaces and the sky of a view are uneven over its rows (the sky kernel alone, rows
-    # split in two halves, scaled 1.67x at two threads).
-    with dynamic_bricks():
-        albedo = albedo_of_surfaces(scene, surfaces, settings=settings, prim_id=prim_id,
-                                    report=report)
-        out = _IMAGES.empty((height, width, 3), np.float32)     # every pixel written
-        run_chunks(_shade_kernel, height, ROW_CHUNK, valid, normal, position,
-                   np.ascontiguousarray(albedo, np.float32), lit, sun, eye, view_dir, perspective,
-                   np.array(settings.sun_rgb), np.array(settings.sky_ambient_rgb),
-                   np.array(settings.ground_ambient_rgb), out)
-        if perspective and sky and not valid.all():
-            xs, ys = camera.screen_coordinates()
-            if xs.shape != (width,) or ys.shape != (height,):
-                raise ShadingError(f"camera gives {len(xs)}×{len(ys)} pixels for "
-                                   f"{height}×{width}")
-            right, up, fwd = camera.frame()
-            run_chunks(_sky_kernel, height, ROW_CHUNK, valid, xs, ys, right, up, fwd,
-                       np.array(settings.sky_zenith_rgb), np.array(settings.sky_horizon_rgb),
-                       np.array(settings.sky_below_rgb), out)
+    # Every row-parallel kernel below takes rows a few at a time (dynamic scheduling through
+    # run_chunks): the surfaces and the sky of a view are uneven over its rows (the sky kernel
+    # alone, rows split in two halves, scaled 1.67x at two threads).
+    albedo = albedo_of_surfaces(scene, surfaces, settings=settings, prim_id=prim_id,
+                                report=report)
+    out = _IMAGES.empty((height, width, 3), np.float32)     # every pixel written
+    run_chunks(_shade_kernel, height, ROW_CHUNK, valid, normal, position,
+               np.ascontiguousarray(albedo, np.float32), lit, sun, eye, view_dir, perspective,
+               np.array(settings.sun_rgb), np.array(settings.sky_ambient_rgb),
+               np.array(settings.ground_ambient_rgb), out)
+    if perspective and sky and not valid.all():
+        xs, ys = camera.screen_coordinates()
+        if xs.shape != (width,) or ys.shape != (height,):
+            raise ShadingError(f"camera gives {len(xs)}×{len(ys)} pixels for "
+                               f"{height}×{width}")
+        right, up, fwd = camera.frame()
+        run_chunks(_sky_kernel, height, ROW_CHUNK, valid, xs, ys, right, up, fwd,
+                   np.array(settings.sky_zenith_rgb), np.array(settings.sky_horizon_rgb),
+                   np.array(settings.sky_below_rgb), out)
     return out
 
 
