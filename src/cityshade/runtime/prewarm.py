@@ -216,6 +216,10 @@ RECORD_RUNS = (
 )
 
 
+#: Triangles of the generated city whose build is recorded besides the sample's.
+LARGE_CITY_TRIANGLES = 60_000
+
+
 def _record_one(out: str, argv: list[str]) -> None:
     """Run one command in this process and write the kernels it compiled at the top level
     (the ones it called; their callees compile with them) as manifest entries to ``out``."""
@@ -258,6 +262,8 @@ def record(manifest: Path = MANIFEST) -> dict:
 
     import numba
 
+    from cityshade.samplegen import generate_city
+
     samples = Path(__file__).resolve().parents[3] / "sample_data"
     commands: dict[str, list[dict]] = {}
     with tempfile.TemporaryDirectory(prefix="cityshade-record-") as tmp:
@@ -271,10 +277,14 @@ def record(manifest: Path = MANIFEST) -> dict:
             return name, json.loads(Path(found).read_text())
 
         found = [one(0, "build", [str(samples / "sample_city.gml"), "-o", scene])]
+        # A city past the interpreter's budgets (runtime.interpret): the kernels a large
+        # model's build compiles (the sample's parse and triangulation run interpreted).
+        generate_city(f"{tmp}/large.gml", target_triangles=LARGE_CITY_TRIANGLES)
+        runs = [("build", [f"{tmp}/large.gml", "-o", f"{tmp}/large.cityshade"])] + [
+            (name, [scene] + [a.format(out=f"{tmp}/out{k}", sample=samples) for a in args])
+            for k, (name, args) in enumerate(RECORD_RUNS, 2)]
         with ThreadPoolExecutor(usable_cores()) as pool:
-            found += pool.map(lambda run: one(*run), [
-                (k, name, [scene] + [a.format(out=f"{tmp}/out{k}", sample=samples) for a in args])
-                for k, (name, args) in enumerate(RECORD_RUNS, 1)])
+            found += pool.map(lambda k: one(k + 1, *runs[k]), range(len(runs)))
     for name, entries in found:
         have = commands.setdefault(name, [])
         known = {(e["kernel"], e["signature"]) for e in have}
