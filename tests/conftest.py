@@ -1,12 +1,17 @@
 """Shared test fixtures: where the real CityGML data lives, and a skip when it is absent."""
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 import pytest
 
 REPO = Path(__file__).resolve().parents[1]
 SHARED_DATA = REPO.parent / "shared" / "data" / "citygml"
+
+# The commands' parallel first compile (cityshade.runtime.prewarm) is off in the tests (the
+# test workers use the cores already); tests/runtime/test_prewarm.py turns it on where it tests it.
+os.environ["CITYSHADE_PREWARM"] = "0"
 
 
 def shared_file(relative: str) -> Path:

@@ -7,6 +7,7 @@ non-zero exit status here, and only here.
 from __future__ import annotations
 
 import importlib
+import sys
 
 import click
 
@@ -24,6 +25,15 @@ COMMANDS = {
     "evaluate": ("cityshade.cli.evaluate:evaluate", "Shadow error against run time; the stress set."),
     "export": ("cityshade.cli.export:export", "A scene coloured by a surfaces.csv column as .glb/.ply."),
 }
+
+
+def first_compile_line(command: str, processes: int, stream=None) -> None:
+    """On a terminal, say why the first use of a command takes a while before it starts."""
+    stream = stream or sys.stderr
+    if processes and stream.isatty():
+        stream.write(f"cityshade: first use of {command}: compiling its kernels once "
+                     f"({processes} processes)\n")
+        stream.flush()
 
 
 class LazyGroup(click.Group):
@@ -49,6 +59,9 @@ class LazyGroup(click.Group):
         except BaseException:
             remove_folders_made(mark)
             raise
+        finally:
+            if "cityshade.prewarm" in ctx.meta:
+                ctx.meta["cityshade.prewarm"].stop()
 
     def resolve_command(self, ctx, args):
         # A misspelled command: "did you mean" the nearest name (click says only "No such
@@ -61,6 +74,14 @@ class LazyGroup(click.Group):
             hint = (f"did you mean '{close[0]}'?" if close
                     else f"the commands are {', '.join(COMMANDS)}")
             raise click.UsageError(f"no command '{name}'; {hint}", ctx)
+        if name in COMMANDS and not {"-h", "--help"} & set(args):
+            # On a command's first use its kernels compile in parallel while it reads its
+            # input (the first compile waits for them): see cityshade.runtime.prewarm.
+            from cityshade.cli.options import interrupt_seen
+            from cityshade.runtime import prewarm
+
+            ctx.meta["cityshade.prewarm"] = prewarm
+            first_compile_line(name, prewarm.start(name, should_stop=interrupt_seen))
         return super().resolve_command(ctx, args)
 
     def list_commands(self, ctx):

@@ -1,0 +1,317 @@
+"""A command's Numba kernels compiled in parallel processes on its first use.
+
+Numba compiles one kernel at a time in a process (its compiler lock), so the first use of a
+command on an empty cache spends 20-40 s compiling on one core while the others idle. The
+kernels each command compiles, with the argument types it compiles them for, are recorded in
+``kernels.json`` beside this module (:func:`record`, run on the bundled sample city). When a
+command starts and its kernels are not known to be in the cache yet, :func:`start` hands them
+to one child process per usable core (``python -m cityshade.runtime.prewarm --compile``),
+largest first, balanced by their recorded compile times; each child compiles its share into
+the command's Numba cache folder (``NUMBA_CACHE_DIR``, inherited). The command meanwhile reads
+its input; its first use of Numba's compiler waits for the children (a listener on Numba's
+``numba:compiler_lock`` event, which fires before the cache is looked at), and from there on
+the kernels load from the cache. Answers cannot change: what a child writes is what the command
+would have compiled itself, and a kernel whose types changed since the recording is compiled by
+the command as before. A mark in the cache folder (one per command and manifest) says the work
+is done; a child that fails or is stopped leaves no mark, and the command compiles what is
+missing itself.
+
+``CITYSHADE_PREWARM=0`` turns it off (the test suite does; its own tests turn it on).
+"""
+from __future__ import annotations
+
+import base64
+import hashlib
+import json
+import os
+import pickle
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+MANIFEST = Path(__file__).with_name("kernels.json")
+#: Environment variable: "0" turns the parallel first compile off.
+ENV_SWITCH = "CITYSHADE_PREWARM"
+#: Seconds between two looks at the children while the command waits for them.
+POLL_S = 0.02
+
+_state: dict = {"children": [], "mark": None, "listener": None, "should_stop": None}
+
+
+def usable_cores() -> int:
+    """Cores this process may use (its CPU affinity), capped by ``NUMBA_NUM_THREADS`` when the
+    caller's environment sets it."""
+    try:
+        cores = len(os.sched_getaffinity(0))
+    except AttributeError:      # not on Linux
+        cores = os.cpu_count() or 1
+    limit = os.environ.get("NUMBA_NUM_THREADS", "")
+    return max(1, min(cores, int(limit))) if limit.isdigit() and int(limit) > 0 else cores
+
+
+def load_manifest(path: Path = MANIFEST) -> dict:
+    """The recorded manifest: ``{"numba": version, "commands": {name: [entry, ...]}}``, each
+    entry ``{"kernel": "module:qualname", "signature": base64 pickle, "compile_s": s}``;
+    an empty one when the file is missing or unreadable."""
+    try:
+        return json.loads(path.read_text())
+    except (OSError, ValueError):
+        return {"commands": {}}
+
+
+def _mark_path(command: str, manifest_text: bytes) -> Path | None:
+    folder = os.environ.get("NUMBA_CACHE_DIR")
+    if not folder:
+        return None
+    digest = hashlib.sha1(manifest_text).hexdigest()[:12]
+    return Path(folder) / f"prewarmed-{command}-{digest}"
+
+
+def shares(entries: list[dict], n: int) -> list[list[int]]:
+    """Entry indices split into ``n`` shares of about equal recorded compile time: largest
+    first, each to the share with the least so far (each share in that order)."""
+    loads = [0.0] * n
+    out: list[list[int]] = [[] for _ in range(n)]
+    order = sorted(range(len(entries)), key=lambda i: -float(entries[i].get("compile_s", 0.0)))
+    for i in order:
+        k = loads.index(min(loads))
+        out[k].append(i)
+        loads[k] += float(entries[i].get("compile_s", 0.0))
+    return [s for s in out if s]
+
+
+def start(command: str, should_stop=None, manifest: Path = MANIFEST) -> int:
+    """Start the children that compile ``command``'s recorded kernels, unless it is off, one
+    core is all there is, the command has none recorded, or the mark says they are cached.
+    Returns the number of children started. ``should_stop()`` (a Ctrl-C seen) stops waiting
+    for them and stops them."""
+    if os.environ.get(ENV_SWITCH, "1") == "0" or _state["children"]:
+        return 0
+    try:
+        text = manifest.read_bytes()
+        entries = json.loads(text)["commands"].get(command, [])
+    except (OSError, ValueError, KeyError, AttributeError):
+        return 0
+    mark = _mark_path(command, text)
+    cores = usable_cores()
+    if not entries or mark is None or cores < 2 or mark.exists():
+        return 0
+    if not os.access(mark.parent, os.W_OK):
+        return 0        # the children could not save: the command would compile it all again
+    env = dict(os.environ, OPENBLAS_NUM_THREADS="1", MKL_NUM_THREADS="1")
+    children = []
+    for share in shares(entries, cores):
+        cmd = [sys.executable, "-m", "cityshade.runtime.prewarm", "--compile", str(manifest),
+               command, ",".join(map(str, share))]
+        try:
+            children.append(subprocess.Popen(cmd, env=env, stdin=subprocess.DEVNULL,
+                                             stdout=subprocess.DEVNULL,
+                                             stderr=subprocess.DEVNULL))
+        except OSError:
+            break
+    _state.update(children=children, mark=mark, should_stop=should_stop)
+    if children:
+        _listen()
+    return len(children)
+
+
+def _listen() -> None:
+    """Wait for the children at this process's first use of Numba's compiler."""
+    from numba.core import event
+
+    class FirstCompile(event.Listener):
+        def on_start(self, ev):
+            wait()
+
+        def on_end(self, ev):
+            pass
+
+    listener = FirstCompile()
+    event.register("numba:compiler_lock", listener)
+    _state["listener"] = listener
+
+
+def wait() -> None:
+    """Block until every child has ended (or a Ctrl-C is seen: then stop them); write the
+    mark when all of them compiled their share. Does nothing without children."""
+    children = _state["children"]
+    if not children:
+        return
+    should_stop = _state["should_stop"]
+    try:
+        while any(c.poll() is None for c in children):
+            if should_stop is not None and should_stop():
+                break
+            time.sleep(POLL_S)
+    finally:
+        ok = all(c.poll() == 0 for c in children)
+        stop()
+    if ok and _state["mark"] is not None:
+        try:
+            _state["mark"].touch()
+        except OSError:
+            pass        # a read-only or full cache: the next run compiles in parallel again
+
+
+def stop() -> None:
+    """End the children that still run (the command ended before it compiled anything, or was
+    interrupted) and stop listening."""
+    children, _state["children"] = _state["children"], []
+    for c in children:
+        if c.poll() is None:
+            c.kill()
+        c.wait()
+    listener, _state["listener"] = _state["listener"], None
+    if listener is not None:
+        from numba.core import event
+
+        event.unregister("numba:compiler_lock", listener)
+
+
+def _dispatcher(name: str):
+    import importlib
+
+    module, _, qualname = name.partition(":")
+    obj = importlib.import_module(module)
+    for part in qualname.split("."):
+        obj = getattr(obj, part)
+    return obj
+
+
+def compile_share(entries: list[dict]) -> None:
+    """Compile (or load, when already cached) each entry's kernel for its recorded types.
+    An entry that cannot be read any more (types of another Numba, a kernel renamed) is left
+    to the command."""
+    for entry in entries:
+        try:
+            types = pickle.loads(base64.b64decode(entry["signature"]))
+            dispatcher = _dispatcher(entry["kernel"])
+        except Exception:   # noqa: BLE001 - a stale entry: the command compiles it itself
+            continue
+        dispatcher.compile(tuple(types))
+
+
+# -- recording (a maintainer's step, after kernels or their argument types change) ----------
+
+#: The commands recorded on the bundled sample city after ``build`` (the scene first; ``{out}``
+#: a temporary folder, ``{sample}`` sample_data); one command may have several runs, whose
+#: kernels are merged.
+RECORD_RUNS = (
+    ("render", ["--city-date", "1990", "--sun-azimuth", "135", "--sun-elevation", "30",
+                "-o", "{out}/city.exr", "--png", "{out}/city.png"]),
+    ("render", ["--city-date", "1990", "--sun-azimuth", "135", "--sun-elevation", "30",
+                "--camera", "map", "--pixel-size", "0.5", "-o", "{out}/map.exr", "--mask",
+                "{out}/mask.png", "--geotiff", "{out}/mask.tif", "--decorate"]),
+    ("batch", ["--date", "2025-03-21", "--from", "06:00", "--to", "19:00", "--every", "15min",
+               "--tz", "Europe/Berlin", "--camera", "map", "--pixel-size", "1", "--surfaces",
+               "-o", "{out}/march"]),
+    ("compare", ["--with", "{sample}/proposal_block.gml", "--date", "2025-03-21", "--tz",
+                 "Europe/Berlin", "--pixel-size", "0.5", "--rules", "bre209", "--rules",
+                 "en17037", "--area", "690110,5336122,690140,5336131", "-o", "{out}/planning"]),
+    ("study", ["--with", "{sample}/proposal_block.gml", "--area",
+               "690110,5336122,690140,5336131", "--year", "2025", "--tz", "Europe/Berlin",
+               "-o", "{out}/study"]),
+    ("sky", ["--pixel-size", "1", "--surfaces", "-o", "{out}/svf"]),
+)
+
+
+#: Triangles of the generated city whose build is recorded besides the sample's.
+LARGE_CITY_TRIANGLES = 60_000
+
+
+def _record_one(out: str, argv: list[str]) -> None:
+    """Run one command in this process and write the kernels it compiled at the top level
+    (the ones it called; their callees compile with them) as manifest entries to ``out``."""
+    from numba.core import event
+
+    depth = [0]
+    roots: list[list] = []
+
+    class Roots(event.Listener):
+        def on_start(self, ev):
+            if depth[0] == 0:
+                roots.append([ev.data["dispatcher"], ev.data["args"], time.thread_time()])
+            depth[0] += 1
+
+        def on_end(self, ev):
+            depth[0] -= 1
+            if depth[0] == 0:
+                roots[-1][2] = time.thread_time() - roots[-1][2]
+
+    event.register("numba:compile", Roots())
+    from cityshade.cli.main import _command
+
+    if _command(argv) != 0:
+        raise SystemExit(f"recording failed: cityshade {' '.join(argv)}")
+    entries = []
+    for dispatcher, args, seconds in roots:
+        f = dispatcher.py_func
+        entries.append({"kernel": f"{f.__module__}:{f.__qualname__}",
+                        "signature": base64.b64encode(pickle.dumps(tuple(args))).decode(),
+                        "compile_s": round(seconds, 2)})
+    Path(out).write_text(json.dumps(entries))
+
+
+def record(manifest: Path = MANIFEST) -> dict:
+    """Record ``build`` and every command of :data:`RECORD_RUNS` on the bundled sample city,
+    each in an empty Numba cache (the runs after ``build`` one per core at a time), and write
+    the manifest."""
+    import tempfile
+    from concurrent.futures import ThreadPoolExecutor
+
+    import numba
+
+    from cityshade.samplegen import generate_city
+
+    samples = Path(__file__).resolve().parents[3] / "sample_data"
+    commands: dict[str, list[dict]] = {}
+    with tempfile.TemporaryDirectory(prefix="cityshade-record-") as tmp:
+        scene = f"{tmp}/city.cityshade"
+
+        def one(k: int, name: str, args: list[str]) -> tuple[str, list[dict]]:
+            found = f"{tmp}/found{k}.json"
+            env = dict(os.environ, NUMBA_CACHE_DIR=f"{tmp}/numba{k}", **{ENV_SWITCH: "0"})
+            subprocess.run([sys.executable, "-m", "cityshade.runtime.prewarm", "--record-one",
+                            found, name, *args], env=env, check=True, stdout=subprocess.DEVNULL)
+            return name, json.loads(Path(found).read_text())
+
+        found = [one(0, "build", [str(samples / "sample_city.gml"), "-o", scene])]
+        # A city past the interpreter's budgets (runtime.interpret): the kernels a large
+        # model's build compiles (the sample's parse and triangulation run interpreted).
+        generate_city(f"{tmp}/large.gml", target_triangles=LARGE_CITY_TRIANGLES)
+        runs = [("build", [f"{tmp}/large.gml", "-o", f"{tmp}/large.cityshade"])] + [
+            (name, [scene] + [a.format(out=f"{tmp}/out{k}", sample=samples) for a in args])
+            for k, (name, args) in enumerate(RECORD_RUNS, 2)]
+        with ThreadPoolExecutor(usable_cores()) as pool:
+            found += pool.map(lambda k: one(k + 1, *runs[k]), range(len(runs)))
+    for name, entries in found:
+        have = commands.setdefault(name, [])
+        known = {(e["kernel"], e["signature"]) for e in have}
+        have += [e for e in entries if (e["kernel"], e["signature"]) not in known]
+    data = {"numba": numba.__version__, "commands": commands}
+    manifest.write_text(json.dumps(data, indent=1) + "\n")
+    return data
+
+
+def _main(argv: list[str]) -> None:
+    if argv[:1] == ["--compile"]:
+        import signal
+
+        signal.signal(signal.SIGINT, signal.SIG_DFL)     # a Ctrl-C ends a child at once
+        manifest, command, share = argv[1], argv[2], argv[3]
+        entries = load_manifest(Path(manifest))["commands"].get(command, [])
+        compile_share([entries[int(i)] for i in share.split(",") if i])
+    elif argv[:1] == ["--record-one"]:
+        _record_one(argv[1], argv[2:])
+    elif argv[:1] == ["--record"]:
+        data = record()
+        for name, entries in data["commands"].items():
+            print(f"{name}: {len(entries)} kernels, "
+                  f"{sum(e['compile_s'] for e in entries):.1f} s recorded")
+    else:
+        raise SystemExit("usage: python -m cityshade.runtime.prewarm --record")
+
+
+if __name__ == "__main__":
+    _main(sys.argv[1:])

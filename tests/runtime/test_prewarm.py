@@ -1,0 +1,156 @@
+"""The commands' parallel first compile (cityshade.runtime.prewarm): the recorded manifest
+matches the kernels, children compile into the command's cache and the command then compiles
+nothing, the mark stops a second start, and a Ctrl-C while waiting leaves no child behind."""
+from __future__ import annotations
+
+import base64
+import inspect
+import json
+import os
+import pickle
+import signal
+import subprocess
+import sys
+import time
+from pathlib import Path
+
+import numba
+import pytest
+
+from cityshade.runtime import prewarm
+
+REPO = Path(__file__).resolve().parents[2]
+
+
+def test_shares_are_balanced_largest_first():
+    entries = [{"compile_s": s} for s in (5.0, 4.0, 3.0, 3.0, 3.0)]
+    # 5 -> A, 4 -> B, 3 -> B (7), 3 -> A (8), 3 -> B (10): the greedy longest-first split.
+    assert prewarm.shares(entries, 2) == [[0, 3], [1, 2, 4]]
+    assert prewarm.shares(entries, 1) == [[0, 1, 2, 3, 4]]
+    assert prewarm.shares(entries[:1], 3) == [[0]]
+
+
+def test_the_manifest_names_kernels_with_their_argument_count():
+    data = prewarm.load_manifest()
+    assert data["numba"] == numba.__version__, "re-record: python -m cityshade.runtime.prewarm --record"
+    assert {"build", "render", "batch"} <= set(data["commands"])
+    for command, entries in data["commands"].items():
+        assert entries, command
+        for entry in entries:
+            dispatcher = prewarm._dispatcher(entry["kernel"])
+            assert isinstance(dispatcher, numba.core.registry.CPUDispatcher), entry["kernel"]
+            types = pickle.loads(base64.b64decode(entry["signature"]))
+            params = inspect.signature(dispatcher.py_func).parameters
+            assert len(types) == len(params), (command, entry["kernel"])
+
+
+_PROBE = """
+import sys, numpy as np
+from numba.core import event
+from cityshade.runtime import prewarm
+compiled = []
+class L(event.Listener):
+    def on_start(self, ev): compiled.append(ev.data["dispatcher"].py_func.__name__)
+    def on_end(self, ev): pass
+event.register("numba:compile", L())
+started = prewarm.start("probe", manifest=__import__("pathlib").Path(sys.argv[1]))
+from cityshade.lightspace.kernels import shear_of
+from cityshade.geometry.bounds import used_vertex_box
+shear_of(np.array([0.3, 0.2, 0.9]))
+used_vertex_box(np.zeros((1, 3), np.int64), np.zeros((1, 3)), np.zeros((2, 3)))
+prewarm.stop()
+print(started, ",".join(compiled))
+"""
+
+
+def _entry(kernel, types):
+    return {"kernel": kernel, "signature": base64.b64encode(pickle.dumps(types)).decode(),
+            "compile_s": 0.1}
+
+
+@pytest.mark.skipif(prewarm.usable_cores() < 2, reason="one core: nothing runs in parallel")
+def test_children_compile_into_the_cache_and_the_command_compiles_nothing(tmp_path):
+    from numba import types as t
+
+    arr = lambda dtype, ndim: t.Array(dtype, ndim, "C")  # noqa: E731
+    manifest = tmp_path / "kernels.json"
+    manifest.write_text(json.dumps({"numba": numba.__version__, "commands": {"probe": [
+        _entry("cityshade.lightspace.kernels:shear_of", (arr(t.float64, 1),)),
+        _entry("cityshade.geometry.bounds:used_vertex_box",
+               (arr(t.int64, 2), arr(t.float64, 2), arr(t.float64, 2)))]}}))
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "numba"), CITYSHADE_PREWARM="1",
+               PYTHONPATH=str(REPO / "src"))
+    env.pop("NUMBA_NUM_THREADS", None)
+    run = lambda: subprocess.run([sys.executable, "-c", _PROBE, str(manifest)], env=env,  # noqa: E731
+                                 capture_output=True, text=True, check=True).stdout.split()
+    first = run()
+    assert first == ["2"], first            # two children, and nothing compiled here
+    assert len(list((tmp_path / "numba").glob("prewarmed-probe-*"))) == 1
+    assert run() == ["0"]                   # marked: no children, everything from the cache
+    # Without the children the same calls compile here: the probe can see a compile.
+    env["CITYSHADE_PREWARM"] = "0"
+    env["NUMBA_CACHE_DIR"] = str(tmp_path / "numba2")
+    assert run() == ["0", "shear_of,used_vertex_box"]
+
+
+def _children_of_cache(folder: str) -> list[int]:
+    pids = []
+    for proc in Path("/proc").iterdir():
+        if not proc.name.isdigit():
+            continue
+        try:
+            if f"NUMBA_CACHE_DIR={folder}".encode() in (proc / "environ").read_bytes() \
+                    and b"prewarm" in (proc / "cmdline").read_bytes():
+                pids.append(int(proc.name))
+        except OSError:
+            continue
+    return pids
+
+
+@pytest.mark.skipif(not Path("/proc/self/environ").exists(), reason="needs /proc (Linux)")
+@pytest.mark.skipif(prewarm.usable_cores() < 2, reason="one core: nothing runs in parallel")
+def test_ctrl_c_while_the_children_compile_ends_them_and_the_command(tmp_path):
+    cache = str(tmp_path / "numba")
+    env = dict(os.environ, NUMBA_CACHE_DIR=cache, CITYSHADE_PREWARM="1",
+               PYTHONPATH=str(REPO / "src"))
+    proc = subprocess.Popen([sys.executable, "-m", "cityshade", "build",
+                             str(REPO / "sample_data" / "sample_city.gml"), "-o",
+                             str(tmp_path / "city.cityshade")], env=env,
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    deadline = time.monotonic() + 30
+    while not _children_of_cache(cache) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert _children_of_cache(cache), "no child started"
+    time.sleep(1.0)
+    proc.send_signal(signal.SIGINT)         # to the command only: it must end its children
+    out, err = proc.communicate(timeout=60)
+    assert proc.returncode == 130
+    assert err == "cityshade: interrupted\n"
+    assert _children_of_cache(cache) == []
+    assert not (tmp_path / "city.cityshade").exists()
+    assert not list(Path(cache).glob("prewarmed-*"))
+
+
+class _Stream:
+    def __init__(self, tty):
+        self.tty, self.text = tty, ""
+
+    def isatty(self):
+        return self.tty
+
+    def write(self, text):
+        self.text += text
+
+    def flush(self):
+        pass
+
+
+def test_a_terminal_is_told_why_the_first_use_waits():
+    from cityshade.cli.main import first_compile_line
+
+    tty, log = _Stream(True), _Stream(False)
+    first_compile_line("render", 2, tty)
+    first_compile_line("render", 2, log)
+    first_compile_line("render", 0, _Stream(True))
+    assert tty.text == "cityshade: first use of render: compiling its kernels once (2 processes)\n"
+    assert log.text == ""
