@@ -36,6 +36,8 @@ def test_the_manifest_names_kernels_with_their_argument_count():
     assert {"build", "render", "batch"} <= set(data["commands"])
     for command, entries in data["commands"].items():
         assert entries, command
+        kernels = [(e["kernel"], prewarm._types(e)) for e in entries]
+        assert len(set(kernels)) == len(kernels), f"{command}: a kernel recorded twice"
         for entry in entries:
             dispatcher = prewarm._dispatcher(entry["kernel"])
             assert isinstance(dispatcher, numba.core.registry.CPUDispatcher), entry["kernel"]

@@ -97,6 +97,10 @@ def start(command: str, should_stop=None, manifest: Path = MANIFEST) -> int:
     cores = usable_cores()
     if not entries or mark is None or cores < 2 or mark.exists():
         return 0
+    try:
+        mark.parent.mkdir(parents=True, exist_ok=True)
+    except OSError:
+        return 0
     if not os.access(mark.parent, os.W_OK):
         return 0        # the children could not save: the command would compile it all again
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1", MKL_NUM_THREADS="1")
@@ -169,6 +173,10 @@ def stop() -> None:
         event.unregister("numba:compiler_lock", listener)
 
 
+def _types(entry: dict) -> tuple:
+    return pickle.loads(base64.b64decode(entry["signature"]))
+
+
 def _dispatcher(name: str):
     import importlib
 
@@ -185,7 +193,7 @@ def compile_share(entries: list[dict]) -> None:
     to the command."""
     for entry in entries:
         try:
-            types = pickle.loads(base64.b64decode(entry["signature"]))
+            types = _types(entry)
             dispatcher = _dispatcher(entry["kernel"])
         except Exception:   # noqa: BLE001 - a stale entry: the command compiles it itself
             continue
@@ -286,9 +294,10 @@ def record(manifest: Path = MANIFEST) -> dict:
         with ThreadPoolExecutor(usable_cores()) as pool:
             found += pool.map(lambda k: one(k + 1, *runs[k]), range(len(runs)))
     for name, entries in found:
+        # The same types may pickle to other bytes in another process: compare the types.
         have = commands.setdefault(name, [])
-        known = {(e["kernel"], e["signature"]) for e in have}
-        have += [e for e in entries if (e["kernel"], e["signature"]) not in known]
+        known = {(e["kernel"], _types(e)) for e in have}
+        have += [e for e in entries if (e["kernel"], _types(e)) not in known]
     data = {"numba": numba.__version__, "commands": commands}
     manifest.write_text(json.dumps(data, indent=1) + "\n")
     return data
