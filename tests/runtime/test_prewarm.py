@@ -32,11 +32,11 @@ def test_shares_are_balanced_largest_first():
 
 def test_the_manifest_names_kernels_with_their_argument_count():
     data = prewarm.load_manifest()
-    assert data["numba"] == numba.__version__, "re-record: python -m cityshade.runtime.prewarm --record"
+    assert data["numba"] == numba.__version__, "re-record: python -m cityshade.cli.record_kernels"
     assert {"build", "render", "batch"} <= set(data["commands"])
     for command, entries in data["commands"].items():
         assert entries, command
-        kernels = [(e["kernel"], prewarm._types(e)) for e in entries]
+        kernels = [(e["kernel"], prewarm.entry_types(e)) for e in entries]
         assert len(set(kernels)) == len(kernels), f"{command}: a kernel recorded twice"
         for entry in entries:
             dispatcher = prewarm._dispatcher(entry["kernel"])
