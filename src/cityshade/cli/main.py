@@ -44,6 +44,7 @@ class LazyGroup(click.Group):
 
     def invoke(self, ctx):
         from cityshade.cli.options import translate_errors
+        from cityshade.runtime import prewarm
         from cityshade.util import folders_made, remove_folders_made
 
         # A command that fails (or is interrupted) leaves none of the folders it created for
@@ -60,8 +61,7 @@ class LazyGroup(click.Group):
             remove_folders_made(mark)
             raise
         finally:
-            if "cityshade.prewarm" in ctx.meta:
-                ctx.meta["cityshade.prewarm"].stop()
+            prewarm.stop()  # children still compiling when the command ended early
 
     def resolve_command(self, ctx, args):
         # A misspelled command: "did you mean" the nearest name (click says only "No such
@@ -80,7 +80,6 @@ class LazyGroup(click.Group):
             from cityshade.cli.options import interrupt_seen
             from cityshade.runtime import prewarm
 
-            ctx.meta["cityshade.prewarm"] = prewarm
             first_compile_line(name, prewarm.start(name, should_stop=interrupt_seen))
         return super().resolve_command(ctx, args)
 

@@ -227,14 +227,14 @@ def tile_span(start, tile, tiles_x, tile_px, shape):
 
 
 # --- setup ------------------------------------------------------------------------------------
-# The setup's small helpers are plain functions, not ``inline="always"`` (the same run time;
-# not ``_depth_words``, which writes the batch arrays: as a call it made the depth pass's
-# setup some 20 % slower):
-# Numba's parallel passes go over the whole ``prange`` body, and with the helpers' code in it
-# the first compile of ``setup_triangles`` took 7.8 CPU s (render of the sample city, empty
-# cache, both run side by side at load 2; 11.8-12 at load 4-10), 5.0 without. Numpy's error
-# model, as in the ``prange`` body they were inlined into (a division by zero gives inf). The body itself stays a ``prange``
-# body: called per item or chunk from a plain kernel, the same code ran the setup 3-5x slower.
+# The setup's small helpers are plain functions, not ``inline="always"``, with the same run
+# time: Numba's parallel passes go over the whole ``prange`` body, and with the helpers' code
+# in it the first compile of ``setup_triangles`` took 7.8 CPU s (render of the sample city,
+# empty cache, side by side at load 2; 11.8-12 at load 4-10), 5.0 without. They keep numpy's
+# error model, as in the ``prange`` body they were inlined into (a division by zero gives
+# inf). Not ``_depth_words``, which writes the batch arrays: as a call it made the depth
+# pass's setup some 20 % slower. The body itself stays a ``prange`` body: called per item or
+# chunk from a plain kernel, the same code ran the setup 3-5x slower.
 
 @njit(cache=True, error_model="numpy")
 def _transform(m, origin, w_is_z, px, py, pz):

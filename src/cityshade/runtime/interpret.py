@@ -14,6 +14,7 @@ overflow, ``float ** int`` by repeated squaring, ``prange``) must not use it.
 """
 from __future__ import annotations
 
+import pickle
 import sys
 import threading
 import types
@@ -52,8 +53,8 @@ def compiled_or_cached(kernel) -> bool:
     try:
         # Numba's cache index of the function, empty when missing or stale.
         return bool(kernel._cache._cache_file._load_index())
-    except Exception:  # another Numba's internals, or no cache: compile as before
-        return True
+    except (AttributeError, OSError, EOFError, ValueError, pickle.UnpicklingError):
+        return True     # another Numba's internals, or an unreadable index: compile as before
 
 
 class InterpretBudget:

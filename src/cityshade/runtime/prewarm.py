@@ -86,16 +86,21 @@ def start(command: str, should_stop=None, manifest: Path = MANIFEST) -> int:
     core is all there is, the command has none recorded, or the mark says they are cached.
     Returns the number of children started. ``should_stop()`` (a Ctrl-C seen) stops waiting
     for them and stops them."""
-    if os.environ.get(ENV_SWITCH, "1") == "0" or _state["children"]:
+    cores = usable_cores()
+    if os.environ.get(ENV_SWITCH, "1") == "0" or _state["children"] or cores < 2:
         return 0
     try:
         text = manifest.read_bytes()
-        entries = json.loads(text)["commands"].get(command, [])
-    except (OSError, ValueError, KeyError, AttributeError):
+    except OSError:
         return 0
     mark = _mark_path(command, text)
-    cores = usable_cores()
-    if not entries or mark is None or cores < 2 or mark.exists():
+    if mark is None or mark.exists():
+        return 0        # every later run of the command: no manifest parsed
+    try:
+        entries = json.loads(text)["commands"].get(command, [])
+    except (ValueError, KeyError, AttributeError):
+        return 0
+    if not entries:
         return 0
     try:
         mark.parent.mkdir(parents=True, exist_ok=True)
@@ -190,15 +195,18 @@ def _dispatcher(name: str):
 
 def compile_share(entries: list[dict]) -> None:
     """Compile (or load, when already cached) each entry's kernel for its recorded types.
-    An entry that cannot be read any more (types of another Numba, a kernel renamed) is left
-    to the command."""
+    An entry that cannot be read or compiled any more (types of another Numba, a kernel
+    renamed or given other parameters) is left to the command."""
+    from numba.core.errors import NumbaError
+
     for entry in entries:
         try:
             types = entry_types(entry)
             dispatcher = _dispatcher(entry["kernel"])
-        except Exception:   # noqa: BLE001 - a stale entry: the command compiles it itself
-            continue
-        dispatcher.compile(tuple(types))
+            dispatcher.compile(tuple(types))
+        except (ImportError, AttributeError, KeyError, ValueError, EOFError,
+                pickle.UnpicklingError, NumbaError):
+            continue    # a stale entry (renamed, other types): the command compiles it itself
 
 
 def _main(argv: list[str]) -> None:
