@@ -5,6 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from cityshade.shadows import exact as E
 from cityshade.shadows.exact import (IZB_FIRST_USE_NS_PER_CASTER, choose_engine,
                                      choose_for_tree, engine_for_run)
 
@@ -26,8 +27,9 @@ def test_warm_casters_go_to_izb():
     assert choose_engine(1_490_000, CITY_1M, warm=True, calls=10).engine == "izb"
 
 
-def test_a_day_of_sun_positions_shares_the_sort_and_goes_to_izb():
+def test_a_day_of_sun_positions_shares_the_sort_and_goes_to_izb(monkeypatch):
     # benchmarks/batch.py: 96 positions over the 2.14 Mpx map, izb 1.55x the kd-tree.
+    monkeypatch.setattr(E, "izb_compiled", lambda: True)
     assert choose_engine(2_000_000, CITY_1M, calls=96).engine == "izb"
     assert engine_for_run("exact", type("S", (), {"n_triangles": CITY_1M})(), 2_000_000,
                           96) == "izb"
@@ -44,6 +46,43 @@ def test_a_saving_nobody_notices_stays_with_raytrace():
     # The sample city's 1080p overview: izb would save ~45 ms once; a day of 96 suns, seconds.
     assert choose_engine(685_000, 1_386).engine == "raytrace"
     assert choose_engine(685_000, 1_386, calls=96).engine == "izb"
+
+
+def test_izb_not_compiled_yet_is_charged_its_compile_once(monkeypatch):
+    # The sample city's first batch (a day at 1 m: 685,000 rays, 49 suns) saves seconds with
+    # izb, less than izb's kernels take to compile: raytrace, whose kernels a render compiled.
+    cold = choose_engine(685_000, 1_386, calls=49, compiled=False)
+    assert cold.engine == "raytrace" and "izb not compiled yet" in cold.reason
+    assert choose_engine(685_000, 1_386, calls=49).engine == "izb"
+    # A year of the 1M city's map (96 suns a day) saves far more than the compile.
+    assert choose_engine(2_000_000, CITY_1M, calls=96 * 365, compiled=False).engine == "izb"
+    assert choose_engine(2_000_000, CITY_1M, calls=96, compiled=False).engine == "raytrace"
+    # The saving against the compile, at the threshold: one more call tips it.
+    per_call = choose_engine(1_000_000, 1_386, warm=True)
+    saving = per_call.raytrace_ms - per_call.izb_ms
+    calls = int((E.IZB_COMPILE_MS + E.IZB_MIN_SAVING_MS) // saving) + 1
+    assert choose_engine(1_000_000, 1_386, warm=True, calls=calls, compiled=False).engine == "izb"
+    assert choose_engine(1_000_000, 1_386, warm=True, calls=calls - 2,
+                         compiled=False).engine == "raytrace"
+    # The run-wide choice reads the state of the machine.
+    scene = type("S", (), {"n_triangles": 1_386})()
+    monkeypatch.setattr(E, "izb_compiled", lambda: False)
+    assert engine_for_run("exact", scene, 685_000, 49) == "raytrace"
+    monkeypatch.setattr(E, "izb_compiled", lambda: True)
+    assert engine_for_run("exact", scene, 685_000, 49) == "izb"
+
+
+def test_izb_compiled_reads_numba_s_cache(tmp_path):
+    import os
+    import subprocess
+    import sys
+
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path))
+    probe = ("from cityshade.shadows.exact import izb_compiled as c; import numpy as np; "
+             "from cityshade.lightspace.kernels import query; print(c())")
+    out = subprocess.run([sys.executable, "-c", probe], env=env, capture_output=True, text=True,
+                         check=True).stdout.split()
+    assert out == ["False"]        # an empty cache, nothing run: not compiled
 
 
 def test_the_first_use_cost_is_shared_by_the_calls():
@@ -64,6 +103,7 @@ def test_warmth_is_read_from_the_engine(sample_city_scene):
     assert not casters_ready(scene.kdtree, *caster_order(sun))
     assert "caster sort in this call" in choose_for_tree(scene.kdtree, 10, sun).reason
     izb_occluded(scene.kdtree, np.zeros((1, 3)), sun)
+    assert E.izb_compiled()        # izb ran in this process
     assert casters_ready(scene.kdtree, *caster_order(sun))
     assert "casters ready" in choose_for_tree(scene.kdtree, 10, sun).reason
     other_axis = np.array([0.0, -0.99, np.sqrt(1 - 0.99 ** 2)])

@@ -8,6 +8,10 @@ ray, so the choice is only about time, made per call and per kd-tree from a cost
   once per process and tree it gathers the casters and sorts them for the sun's dominant axis
   (:class:`cityshade.lightspace.Casters`), which a batch of many suns shares.
 
+- ``izb``'s kernels are compiled once per machine (Numba's cache keeps them): until they are,
+  a call that would take ``izb`` pays that compile too, so small runs on a fresh install (the
+  sample city's first batch) stay with ``raytrace``, whose kernels every render compiles.
+
 So ``izb`` wins on many receivers with a warm caster copy (a batch, the later frames of an
 ``evaluate``), ``raytrace`` on few receivers or a single frame of a large city in a fresh
 process (the 1M-triangle city's 1 m map: 2.12 s by ``raytrace`` against 2.82 s by ``izb`` as
@@ -38,6 +42,10 @@ IZB_FIRST_USE_NS_PER_CASTER = 1000.0
 #: notices, while izb holds its sorted copy and work arrays (issue 41: +236 MB on the 1M map)
 #: and, on a fresh install, compiles its own kernels on top of the kd-tree's.
 IZB_MIN_SAVING_MS = 200.0
+#: izb's kernels compiling in one process (``lightspace.kernels``: 19.2 CPU s, exclusive, in the
+#: sample city's first ``batch`` with an empty cache, session 27); charged once to a run that
+#: would take izb while they are neither compiled nor in Numba's cache.
+IZB_COMPILE_MS = 19_000.0
 
 
 @dataclass(frozen=True)
@@ -50,13 +58,23 @@ class EngineChoice:
     raytrace_ms: float
 
 
+def izb_compiled() -> bool:
+    """Whether izb's kernels are compiled in this process or in Numba's cache (its query stands
+    for them: they compile together)."""
+    from cityshade.lightspace.kernels import query
+    from cityshade.runtime.interpret import compiled_or_cached
+
+    return compiled_or_cached(query)
+
+
 def choose_engine(n_rays: int, n_casters: int, *, shared_direction: bool = True,
-                  warm: bool = False, calls: int = 1) -> EngineChoice:
+                  warm: bool = False, calls: int = 1, compiled: bool = True) -> EngineChoice:
     """The cheaper exact engine for ``n_rays`` rays against a tree of ``n_casters`` triangles.
 
     ``shared_direction``: all rays go toward one sun (``izb`` needs it); ``warm``: the tree's
     casters are already sorted for this sun's axis in this process; ``calls``: how many calls
-    of this size will share the first-use cost (a batch's sun positions).
+    of this size will share the first-use cost (a batch's sun positions); ``compiled``: izb's
+    kernels are compiled or cached (:func:`izb_compiled`), else their compile is charged once.
     """
     n, m = max(int(n_rays), 0), max(int(n_casters), 0)
     rt_ms = n * RAYTRACE_NS_PER_RAY * 1e-6
@@ -65,10 +83,12 @@ def choose_engine(n_rays: int, n_casters: int, *, shared_direction: bool = True,
                             rt_ms)
     first = 0.0 if warm else m * IZB_FIRST_USE_NS_PER_CASTER / max(int(calls), 1)
     izb_ms = (m * IZB_NS_PER_CASTER + n * IZB_NS_PER_RECEIVER + first) * 1e-6
-    saving_ms = (rt_ms - izb_ms) * max(int(calls), 1)
+    saving_ms = (rt_ms - izb_ms) * max(int(calls), 1) - (0.0 if compiled else IZB_COMPILE_MS)
     engine = "izb" if saving_ms >= IZB_MIN_SAVING_MS else "raytrace"
     setup = "casters ready" if warm else (
         f"caster sort shared by {calls} calls" if calls > 1 else "caster sort in this call")
+    if not compiled:
+        setup += f", izb not compiled yet (about {IZB_COMPILE_MS / 1000:.0f} s once)"
     reason = (f"{n:,} rays, {m:,} casters, {setup}: estimated izb {izb_ms:.3g} ms, "
               f"raytrace {rt_ms:.3g} ms")
     return EngineChoice(engine, reason, izb_ms, rt_ms)
@@ -89,7 +109,8 @@ def choose_for_tree(tree, n_rays: int, directions, calls: int = 1) -> EngineChoi
 
     kd = tree_of(tree)
     n_casters = int(kd.stats.get("triangles_valid", kd.tri_records.shape[0]))
-    return choose_engine(n_rays, n_casters, shared_direction=shared, warm=warm, calls=calls)
+    return choose_engine(n_rays, n_casters, shared_direction=shared, warm=warm, calls=calls,
+                         compiled=not shared or izb_compiled())
 
 
 class Exact(RayTraced):
@@ -118,4 +139,4 @@ def engine_for_run(engine: str, scene, n_rays: int, calls: int) -> str:
     worker, which a per-call choice in a fresh worker would never see as warm)."""
     if engine != "exact":
         return engine
-    return choose_engine(n_rays, scene.n_triangles, calls=calls).engine
+    return choose_engine(n_rays, scene.n_triangles, calls=calls, compiled=izb_compiled()).engine
