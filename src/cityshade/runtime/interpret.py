@@ -7,10 +7,12 @@ whose compiled code is neither in this process nor in Numba's cache runs interpr
 work is small, and compiles once the work is large or the process has done enough of it.
 
 :func:`python_twin` is the kernel's Python function with every ``@njit`` callee of its module
-replaced by the callee's Python function: the same operations in the same order on IEEE
-doubles (Numba compiles without fast-math), so the answers are the kernel's bit for bit
+(and every one it imports, with that module's globals) replaced by the callee's Python
+function: the same operations in the same order on IEEE doubles (Numba compiles without fast-math), so the answers are the kernel's bit for bit
 (tested for each kernel that uses it). A kernel that relies on Numba-only semantics (integer
-overflow, ``float ** int`` by repeated squaring, ``prange``) must not use it.
+overflow, ``float ** int`` by repeated squaring, a ``prange`` reduction, whose order Numba
+chooses) must not use it; a ``prange`` loop whose iterations are independent runs in order,
+the same.
 """
 from __future__ import annotations
 
@@ -23,7 +25,7 @@ from numba.core.caching import NullCache
 from numba.core.dispatcher import Dispatcher
 
 _TWINS: dict[str, dict] = {}
-_LOCK = threading.Lock()
+_LOCK = threading.RLock()     # a twin's imported kernels are twins too
 
 
 def python_twin(kernel):
@@ -33,12 +35,15 @@ def python_twin(kernel):
         space = _TWINS.get(name)
         if space is None:
             space = dict(vars(sys.modules[name]))  # the module's globals as compiled: frozen
+            _TWINS[name] = space
             for key, value in list(space.items()):
                 if isinstance(value, Dispatcher):
                     f = value.py_func
-                    space[key] = types.FunctionType(f.__code__, space, f.__name__,
-                                                    f.__defaults__, f.__closure__)
-            _TWINS[name] = space
+                    if f.__module__ == name:
+                        space[key] = types.FunctionType(f.__code__, space, f.__name__,
+                                                        f.__defaults__, f.__closure__)
+                    else:   # imported from another module: the twin reads that one's globals
+                        space[key] = python_twin(value)
     return space[kernel.py_func.__name__]
 
 
