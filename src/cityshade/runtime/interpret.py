@@ -7,12 +7,12 @@ whose compiled code is neither in this process nor in Numba's cache runs interpr
 work is small, and compiles once the work is large or the process has done enough of it.
 
 :func:`python_twin` is the kernel's Python function with every ``@njit`` callee of its module
-(and every one it imports, with that module's globals) replaced by the callee's Python
-function: the same operations in the same order on IEEE doubles (Numba compiles without fast-math), so the answers are the kernel's bit for bit
-(tested for each kernel that uses it). A kernel that relies on Numba-only semantics (integer
-overflow, ``float ** int`` by repeated squaring, a ``prange`` reduction, whose order Numba
-chooses) must not use it; a ``prange`` loop whose iterations are independent runs in order,
-the same.
+(and every one it imports, with that module's globals) replaced by the callee's Python function:
+the same operations in the same order on IEEE doubles (Numba compiles without fast-math), so the
+answers are the kernel's bit for bit (tested for each kernel that uses it). A kernel that relies
+on Numba-only semantics (integer overflow, ``float ** int`` by repeated squaring, a ``prange``
+reduction, whose order Numba chooses) must not use it; a ``prange`` loop whose iterations are
+independent runs in order, the same.
 """
 from __future__ import annotations
 
