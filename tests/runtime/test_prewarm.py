@@ -112,11 +112,18 @@ def _children_of_cache(folder: str) -> list[int]:
 @pytest.mark.skipif(not Path("/proc/self/environ").exists(), reason="needs /proc (Linux)")
 @pytest.mark.skipif(prewarm.usable_cores() < 2, reason="one core: nothing runs in parallel")
 def test_ctrl_c_while_the_children_compile_ends_them_and_the_command(tmp_path):
+    from cityshade.accel.kdtree_build import INTERPRET_TRIANGLES
+    from cityshade.samplegen import generate_city
+
+    # Larger than a build interprets on first use (the sample city would be done in a
+    # second or two): the command waits for its children, then compiles.
+    generate_city(tmp_path / "city.gml", target_triangles=INTERPRET_TRIANGLES + 2000,
+                  texture=False)
     cache = str(tmp_path / "numba")
     env = dict(os.environ, NUMBA_CACHE_DIR=cache, CITYSHADE_PREWARM="1",
                PYTHONPATH=str(REPO / "src"))
     proc = subprocess.Popen([sys.executable, "-m", "cityshade", "build",
-                             str(REPO / "sample_data" / "sample_city.gml"), "-o",
+                             str(tmp_path / "city.gml"), "-o",
                              str(tmp_path / "city.cityshade")], env=env,
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
     deadline = time.monotonic() + 30

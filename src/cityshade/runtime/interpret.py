@@ -22,6 +22,8 @@ import types
 from numba.core.caching import NullCache
 from numba.core.dispatcher import Dispatcher
 
+from cityshade.runtime.threadpool import run_chunks
+
 _TWINS: dict[str, dict] = {}
 _LOCK = threading.Lock()
 
@@ -40,6 +42,22 @@ def python_twin(kernel):
                                                     f.__defaults__, f.__closure__)
             _TWINS[name] = space
     return space[kernel.py_func.__name__]
+
+
+def twin_if(interpret: bool, kernel):
+    """``kernel``'s interpreted twin when ``interpret`` (an :class:`InterpretBudget`'s answer),
+    else the kernel itself."""
+    return python_twin(kernel) if interpret else kernel
+
+
+def run_range(kernel, interpret: bool, n_items: int, chunk_items: int, *args) -> None:
+    """``kernel(*args, i0, i1)`` over ``[0, n_items)``: compiled, in chunks on the thread pool
+    (:func:`cityshade.runtime.threadpool.run_chunks`); interpreted, its twin once over the
+    whole range in this thread (threads would only take turns holding the GIL)."""
+    if not interpret:
+        run_chunks(kernel, n_items, chunk_items, *args)
+    elif n_items > 0:
+        python_twin(kernel)(*args, 0, n_items)
 
 
 def compiled_or_cached(kernel) -> bool:

@@ -35,6 +35,8 @@ MANIFEST = Path(__file__).with_name("kernels.json")
 ENV_SWITCH = "CITYSHADE_PREWARM"
 #: Seconds between two looks at the children while the command waits for them.
 POLL_S = 0.02
+#: Niceness a child adds to its own (lower priority than the command's work).
+NICE = 10
 
 _state: dict = {"children": [], "mark": None, "listener": None, "should_stop": None}
 
@@ -214,6 +216,10 @@ def _main(argv: list[str]) -> None:
     import signal
 
     signal.signal(signal.SIGINT, signal.SIG_DFL)     # a Ctrl-C ends a child at once
+    # Below the command: one that runs small work interpreted (runtime/interpret.py) while
+    # its children compile for later runs keeps its cores; one that waits for them is idle.
+    if hasattr(os, "nice"):  # not on Windows
+        os.nice(NICE)
     manifest, command, share = argv[1], argv[2], argv[3]
     entries = load_manifest(Path(manifest))["commands"].get(command, [])
     compile_share([entries[int(i)] for i in share.split(",") if i])
