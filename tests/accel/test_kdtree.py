@@ -207,11 +207,17 @@ def test_bad_inputs_raise_typed_errors(city):
     assert KdTreeSettings().depth_cap(2 ** 20) == 34
 
 
-def test_parallel_subtrees_stitch_into_the_undivided_tree_for_1_and_2_threads(city):
+def test_parallel_subtrees_stitch_into_the_undivided_tree_for_1_and_2_threads(city,
+                                                                             monkeypatch):
     """Nodes of at most ``subtree_refs`` references are built apart (from threads, several at
     once) and stitched back: every array equals the build that never divides (the root is
     then the only subtree), for any subtree size and thread count, and the statistics agree."""
     import numba
+
+    from cityshade.accel import kdtree_build as kb
+    from cityshade.runtime.interpret import InterpretBudget
+
+    monkeypatch.setattr(kb, "_INTERPRET", InterpretBudget(0))  # compiled: the threads' build
 
     whole = build_kdtree(*city, settings=KdTreeSettings(subtree_refs=10 ** 9))
     threads = sorted({1, min(2, numba.config.NUMBA_NUM_THREADS)})
@@ -318,9 +324,11 @@ def test_an_interrupted_subtree_build_starts_no_queued_subtree(city, monkeypatch
     import numba
 
     from cityshade.accel import kdtree_build as kb
+    from cityshade.runtime.interpret import InterpretBudget
 
     if min(2, numba.config.NUMBA_NUM_THREADS) < 2:
         pytest.skip("needs 2 Numba threads")
+    monkeypatch.setattr(kb, "_INTERPRET", InterpretBudget(0))  # compiled: the threads' build
     real = kb._build_kernel
     calls = []
     lock = threading.Lock()

@@ -95,6 +95,44 @@ def test_children_compile_into_the_cache_and_the_command_compiles_nothing(tmp_pa
     assert run() == ["0", "shear_of,used_vertex_box"]
 
 
+_INTERPRETED_PROBE = """
+import os, sys, numpy as np
+from cityshade.runtime import prewarm
+started = prewarm.start("probe", manifest=__import__("pathlib").Path(sys.argv[1]))
+from cityshade.geometry.bounds import used_vertex_box   # an @njit: Numba sets its target up
+from cityshade.runtime.interpret import python_twin
+box = np.empty((2, 3))
+python_twin(used_vertex_box)(np.zeros((1, 3), np.int64), np.ones((1, 3)), box)
+running = sum(c.poll() is None for c in prewarm._state["children"])
+nice = [int(open(f"/proc/{c.pid}/stat").read().rsplit(")", 1)[1].split()[16])
+        for c in prewarm._state["children"]]
+prewarm.stop()
+print(started, running, os.nice(0), *nice)
+"""
+
+
+@pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="needs /proc (Linux)")
+@pytest.mark.skipif(prewarm.usable_cores() < 2, reason="one core: nothing runs in parallel")
+def test_a_command_that_only_interprets_never_waits_for_the_children(tmp_path):
+    """Numba's compiler lock taken to set up its CPU target (the first ``@njit`` imported) is
+    no compile: the command goes on while the children (niceness +10) compile the kd-tree's
+    build kernel, some seconds each, and stops them at its end."""
+    build = next(e for e in prewarm.load_manifest()["commands"]["build"]
+                 if e["kernel"].endswith(":_build_kernel"))
+    manifest = tmp_path / "kernels.json"
+    manifest.write_text(json.dumps({"numba": numba.__version__,
+                                    "commands": {"probe": [build, build]}}))
+    env = dict(os.environ, NUMBA_CACHE_DIR=str(tmp_path / "numba"), CITYSHADE_PREWARM="1",
+               PYTHONPATH=str(REPO / "src"))
+    env.pop("NUMBA_NUM_THREADS", None)
+    out = subprocess.run([sys.executable, "-c", _INTERPRETED_PROBE, str(manifest)], env=env,
+                         capture_output=True, text=True, check=True).stdout.split()
+    started, running, own, *nice = map(int, out)
+    assert started == 2 and running == 2, out   # still compiling: nobody waited for them
+    assert nice == [min(own + prewarm.NICE, 19)] * 2, out  # 19: the lowest priority
+    assert not list((tmp_path / "numba").glob("prewarmed-*"))
+
+
 def _children_of_cache(folder: str) -> list[int]:
     pids = []
     for proc in Path("/proc").iterdir():

@@ -9,7 +9,8 @@ to one child process per usable core (``python -m cityshade.runtime.prewarm --co
 largest first, balanced by their recorded compile times; each child compiles its share into
 the command's Numba cache folder (``NUMBA_CACHE_DIR``, inherited). The command meanwhile reads
 its input; its first use of Numba's compiler waits for the children (a listener on Numba's
-``numba:compiler_lock`` event, which fires before the cache is looked at), and from there on
+``numba:compiler_lock`` event, which fires before the cache is looked at; the CPU target is
+set up first, as that takes the lock too), and from there on
 the kernels load from the cache. Answers cannot change: what a child writes is what the command
 would have compiled itself, and a kernel whose types changed since the recording is compiled by
 the command as before. A mark in the cache folder (one per command and manifest) says the work
@@ -123,6 +124,12 @@ def start(command: str, should_stop=None, manifest: Path = MANIFEST) -> int:
             break
     _state.update(children=children, mark=mark, should_stop=should_stop)
     if children:
+        # Numba takes its compiler lock once to set up its CPU target (at the first ``@njit``
+        # the command imports), which is no compile: done before listening, so a command
+        # whose kernels all run interpreted (runtime/interpret.py) never waits for nothing.
+        from numba.core.registry import cpu_target
+
+        cpu_target.target_context  # the property sets the target up
         _listen()
     return len(children)
 
