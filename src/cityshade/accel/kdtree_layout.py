@@ -179,9 +179,9 @@ def triangle_records(vertices, triangles, t_begin_days, t_end_days, material, pr
     the kernel's Python source, see :func:`pack_nodes`)."""
     records = np.empty((prim_indices.size, RECORD_WORDS), np.float32)
     run_range(_fill_records, interpret, prim_indices.size, RECORD_CHUNK,
-               np.ascontiguousarray(vertices, dtype=np.float32), triangles, t_begin_days,
-               t_end_days, material, prim_indices, records, records.view(np.int32),
-               records.view(np.float64))
+              np.ascontiguousarray(vertices, dtype=np.float32), triangles, t_begin_days,
+              t_end_days, material, prim_indices, records, records.view(np.int32),
+              records.view(np.float64))
     return records
 
 

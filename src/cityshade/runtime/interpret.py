@@ -10,7 +10,10 @@ work is small, and compiles once the work is large or the process has done enoug
 replaced by the callee's Python function: the same operations in the same order on IEEE
 doubles (Numba compiles without fast-math), so the answers are the kernel's bit for bit
 (tested for each kernel that uses it). A kernel that relies on Numba-only semantics (integer
-overflow, ``float ** int`` by repeated squaring, ``prange``) must not use it.
+overflow, ``float ** int`` by repeated squaring, ``prange``) must not use it. Nor may a float32
+scalar meet a Python float in it: NumPy 2 computes and compares that in float32, Numba in
+float64 (widen with ``np.float64(...)``, which compiles to the same code). Kernels a command
+runs over chunks on threads run interpreted once over the whole range (:func:`run_range`).
 """
 from __future__ import annotations
 

@@ -126,7 +126,7 @@ def start(command: str, should_stop=None, manifest: Path = MANIFEST) -> int:
     if children:
         # Numba takes its compiler lock once to set up its CPU target (at the first ``@njit``
         # the command imports), which is no compile: done before listening, so a command
-        # whose kernels all run interpreted (runtime/interpret.py) never waits for nothing.
+        # whose kernels all run interpreted (runtime/interpret.py) never waits.
         from numba.core.registry import cpu_target
 
         cpu_target.target_context  # the property sets the target up
