@@ -39,7 +39,8 @@ POLL_S = 0.02
 #: Niceness a child adds to its own (lower priority than the command's work).
 NICE = 10
 
-_state: dict = {"children": [], "mark": None, "listener": None, "should_stop": None}
+_state: dict = {"children": [], "mark": None, "listener": None, "should_stop": None,
+                "on_wait": None}
 
 
 def usable_cores() -> int:
@@ -84,11 +85,12 @@ def shares(entries: list[dict], n: int) -> list[list[int]]:
     return [s for s in out if s]
 
 
-def start(command: str, should_stop=None, manifest: Path = MANIFEST) -> int:
+def start(command: str, should_stop=None, manifest: Path = MANIFEST, on_wait=None) -> int:
     """Start the children that compile ``command``'s recorded kernels, unless it is off, one
     core is all there is, the command has none recorded, or the mark says they are cached.
     Returns the number of children started. ``should_stop()`` (a Ctrl-C seen) stops waiting
-    for them and stops them."""
+    for them and stops them; ``on_wait(children)`` is called once when the command starts
+    waiting for them (never, when its small work all runs interpreted)."""
     cores = usable_cores()
     if os.environ.get(ENV_SWITCH, "1") == "0" or _state["children"] or cores < 2:
         return 0
@@ -122,7 +124,7 @@ def start(command: str, should_stop=None, manifest: Path = MANIFEST) -> int:
                                              stderr=subprocess.DEVNULL))
         except OSError:
             break
-    _state.update(children=children, mark=mark, should_stop=should_stop)
+    _state.update(children=children, mark=mark, should_stop=should_stop, on_wait=on_wait)
     if children:
         # Numba takes its compiler lock once to set up its CPU target (at the first ``@njit``
         # the command imports), which is no compile: done before listening, so a command
@@ -156,8 +158,10 @@ def wait() -> None:
     children = _state["children"]
     if not children:
         return
-    should_stop = _state["should_stop"]
+    should_stop, on_wait = _state["should_stop"], _state["on_wait"]
     try:
+        if on_wait is not None and any(c.poll() is None for c in children):
+            on_wait(len(children))
         while any(c.poll() is None for c in children):
             if should_stop is not None and should_stop():
                 break
