@@ -207,11 +207,17 @@ def test_bad_inputs_raise_typed_errors(city):
     assert KdTreeSettings().depth_cap(2 ** 20) == 34
 
 
-def test_parallel_subtrees_stitch_into_the_undivided_tree_for_1_and_2_threads(city):
+def test_parallel_subtrees_stitch_into_the_undivided_tree_for_1_and_2_threads(city,
+                                                                             monkeypatch):
     """Nodes of at most ``subtree_refs`` references are built apart (from threads, several at
     once) and stitched back: every array equals the build that never divides (the root is
     then the only subtree), for any subtree size and thread count, and the statistics agree."""
     import numba
+
+    from cityshade.accel import kdtree_build as kb
+    from cityshade.runtime.interpret import InterpretBudget
+
+    monkeypatch.setattr(kb, "_INTERPRET", InterpretBudget(0))  # compiled: the threads' build
 
     whole = build_kdtree(*city, settings=KdTreeSettings(subtree_refs=10 ** 9))
     threads = sorted({1, min(2, numba.config.NUMBA_NUM_THREADS)})
@@ -284,8 +290,10 @@ def test_presorted_sweep_builds_the_tree_of_the_per_node_sort(case, nodes, refer
 def test_radix_event_order_is_the_stable_comparison_order(n):
     """The event sort's radix order equals a stable comparison sort, with ties (many equal
     coordinates), -0.0 beside 0.0, infinite validity ends, negatives, and keys of one node
-    sharing their high bits (passes skipped)."""
+    sharing their high bits (passes skipped); so does its interpreted twin (NumPy's uint32
+    bit operations for Numba's) on the same values."""
     from cityshade.accel.kdtree_build import RADIX_BITS, _event_orders, _radix_order
+    from cityshade.runtime.interpret import python_twin
 
     rng = np.random.default_rng(n)
     cases = [
@@ -296,10 +304,11 @@ def test_radix_event_order_is_the_stable_comparison_order(n):
     ]
     for values in cases:
         values = values.astype(np.float32)
-        out = np.empty(n, np.int32)
-        _radix_order(values, out, np.empty(n, np.uint32), np.empty(n, np.uint32),
-                     np.empty(n, np.int32), np.empty((3, 1 << RADIX_BITS), np.int64))
-        np.testing.assert_array_equal(out, reference_event_order(values))
+        for kernel in (_radix_order, python_twin(_radix_order)):
+            out = np.empty(n, np.int32)
+            kernel(values, out, np.empty(n, np.uint32), np.empty(n, np.uint32),
+                   np.empty(n, np.int32), np.empty((3, 1 << RADIX_BITS), np.int64))
+            np.testing.assert_array_equal(out, reference_event_order(values))
     lo = rng.normal(0, 20, (n, 4)).astype(np.float32)
     hi = lo + rng.uniform(0, 3, (n, 4)).astype(np.float32)
     orders = _event_orders(lo, hi, 4)
@@ -318,9 +327,11 @@ def test_an_interrupted_subtree_build_starts_no_queued_subtree(city, monkeypatch
     import numba
 
     from cityshade.accel import kdtree_build as kb
+    from cityshade.runtime.interpret import InterpretBudget
 
     if min(2, numba.config.NUMBA_NUM_THREADS) < 2:
         pytest.skip("needs 2 Numba threads")
+    monkeypatch.setattr(kb, "_INTERPRET", InterpretBudget(0))  # compiled: the threads' build
     real = kb._build_kernel
     calls = []
     lock = threading.Lock()
@@ -389,3 +400,134 @@ def test_heapsort_matches_numpy_sort(n):
     work = np.concatenate([keys, tail])
     _heapsort(work, n)
     np.testing.assert_array_equal(work, np.concatenate([np.sort(keys), tail]))
+
+
+def _slivers(n, seed):
+    """``n`` long thin triangles across a 300 m box city along x, overlapping in y and z (so
+    no y or z plane parts them, and every x plane clips them all)."""
+    rng = np.random.default_rng(seed)
+    y = rng.uniform(150, 150.2, n)
+    z = rng.uniform(10, 10.2, n)
+    v = np.stack([np.column_stack([np.zeros(n), y, z]), np.column_stack([np.full(n, 300.0), y, z]),
+                  np.column_stack([np.full(n, 150.0), y + 0.5, z + 0.5])], 1).reshape(-1, 3)
+    return v, np.arange(3 * n).reshape(n, 3)
+
+
+def _twin_cases():
+    """(name, inputs, settings, paths) of the interpreted build's test: dates (time splits),
+    no dates, degenerate and duplicate triangles, huge and far coordinates, and settings that
+    reach the binned planes, deferred subtrees, large leaves and many clipped straddlers;
+    ``paths``: callee -> (least calls, least size of the first argument) the case must show."""
+    dated = box_city(40, seed=5)
+    v, t, begin, end, mat = box_city(20, seed=6, dated=False)
+    sv, st = _slivers(80, 7)
+    degenerate = np.array([[0, 0, 0], [1, 1, 1], [0, 1, 0], [2, 3, 2]], np.int32)
+    t_deg = np.vstack([t, t[:40], degenerate, t[::-1][:10]])        # duplicates: same ids too
+    n_deg = t_deg.shape[0]
+    mixed_v = np.vstack([v, sv]).astype(np.float32)
+    mixed_t = np.vstack([t, st + v.shape[0]]).astype(np.int32)
+    n_mix = mixed_t.shape[0]
+    swept = {"_sweep_axis": (1, 1), "_clipped_box": (1, 1)}
+    return [
+        ("dated", dated, KdTreeSettings(), swept),
+        ("dated binned, subtrees", dated, KdTreeSettings(sweep_threshold=24, bins=7,
+                                                         subtree_refs=40),
+         {**swept, "_binned_axis": (1, 25), "_build_kernel": (3, 1)}),
+        ("dated large leaves", dated, KdTreeSettings(max_depth=3), {"_heapsort": (1, 33)}),
+        ("degenerate and duplicate", (v, t_deg, np.full(n_deg, -np.inf), np.full(n_deg, np.inf),
+                                      np.zeros(n_deg, np.int32)), KdTreeSettings(), swept),
+        ("slivers", (mixed_v, mixed_t, np.full(n_mix, -np.inf), np.full(n_mix, np.inf),
+                     np.arange(n_mix, dtype=np.int32) % 3), KdTreeSettings(sweep_threshold=512),
+         {**swept, "_sort_by_value": (1, 33)}),
+        ("far", (dated[0] + np.float32(3.3e6),) + dated[1:], KdTreeSettings(), swept),
+        ("huge", (dated[0] * np.float32(1e30),) + dated[1:],
+         KdTreeSettings(sweep_threshold=100, bins=5), {**swept, "_binned_axis": (1, 101)}),
+    ]
+
+
+def _counting(space, name, seen):
+    """Wrap the twin's callee ``name`` so the test sees the paths that ran: (calls, largest
+    size of the first argument)."""
+    inner = space[name]
+
+    def wrapper(*args):
+        calls, size = seen.get(name, (0, 0))
+        seen[name] = (calls + 1, max(size, int(getattr(args[0], "shape", (1,))[0])))
+        return inner(*args)
+    return wrapper
+
+
+@pytest.mark.parametrize("case", range(7))
+def test_interpreted_twin_builds_the_compiled_tree(monkeypatch, case):
+    """Small builds on first use run the kernels' Python source (runtime.interpret): every
+    array of the tree and every statistic but the time equal the compiled build's, bit for
+    bit, on inputs that reach the binned and swept planes, time splits, deferred subtrees,
+    clipping, the heapsorts and the far and huge coordinates where every step rounds."""
+    _assert_twin_builds_the_compiled_tree(monkeypatch, *_twin_cases()[case])
+
+
+def test_interpreted_twin_builds_the_sample_city_s_compiled_tree(monkeypatch, sample_city_scene):
+    """The same on the bundled sample city, from its read-only memory-mapped arrays."""
+    s = sample_city_scene
+    _assert_twin_builds_the_compiled_tree(
+        monkeypatch, "sample city", (s.vertices, s.triangles, s.tri_t_begin_days,
+                                     s.tri_t_end_days, s.tri_material), KdTreeSettings(),
+        {"_sweep_axis": (1, 1000), "_clipped_box": (1, 1)})
+
+
+def _assert_twin_builds_the_compiled_tree(monkeypatch, name, inputs, settings, paths):
+    import cityshade.accel.kdtree_build as K
+    from cityshade.runtime.interpret import InterpretBudget, python_twin
+
+    monkeypatch.setattr(K, "_INTERPRET", InterpretBudget(0))
+    compiled = build_kdtree(*inputs, settings=settings)
+    space = python_twin(K._build_kernel).__globals__
+    seen: dict = {}
+    for callee in paths:
+        monkeypatch.setitem(space, callee, _counting(space, callee, seen))
+    budget = InterpretBudget(10 ** 9)
+    monkeypatch.setattr(K, "_INTERPRET", budget)
+    twin = build_kdtree(*inputs, settings=settings)
+    assert budget.left == 10 ** 9 - inputs[1].shape[0], name  # it ran interpreted
+    for array in ("nodes", "prim_indices", "tri_records", "bounds"):
+        a, b = getattr(compiled, array), getattr(twin, array)
+        assert a.dtype == b.dtype and a.shape == b.shape and a.tobytes() == b.tobytes(), \
+            f"{name}: {array}"
+    assert {k: v for k, v in compiled.stats.items() if k != "build_s"} == \
+        {k: v for k, v in twin.stats.items() if k != "build_s"}, name
+    assert compiled.stats["nodes"] > 10, name
+    for callee, (calls, size) in paths.items():  # the case reached what it is there for
+        got = seen.get(callee, (0, 0))
+        assert got[0] >= calls and got[1] >= size, (name, callee, got)
+    if inputs[2].size and np.isfinite(inputs[2]).any():
+        assert compiled.stats["time_splits"] > 0, name
+
+
+def test_interpreted_binned_planes_widen_float32_like_numba():
+    """The time axis's bins of float32 bounds against a Python float ``t0``: NumPy 2 would
+    subtract and compare in float32, Numba in float64. References on every bin boundary and
+    its float32 neighbours give the twin the compiled kernel's best plane, bit for bit (the
+    unwidened source missed it in most of these trials)."""
+    import cityshade.accel.kdtree_build as K
+    from cityshade.runtime.interpret import python_twin
+
+    twin = python_twin(K._binned_axis)
+    rng = np.random.default_rng(1)
+    nbins = 64
+    blo, bhi = np.array([0.0, 0.0, 0.0, -np.inf]), np.array([1.0, 1.0, 1.0, np.inf])
+    for _ in range(50):
+        t0 = float(rng.uniform(-3e4, 0))
+        t1 = float(t0 + rng.uniform(1e3, 4e4))
+        edges = np.float32(t0 + np.arange(1, nbins) * (t1 - t0) / nbins)
+        x = np.concatenate([edges, np.nextafter(edges, np.float32(np.inf)),
+                            np.nextafter(edges, np.float32(-np.inf))])
+        lo = np.zeros((x.size, 4), np.float32)
+        hi = np.ones((x.size, 4), np.float32)
+        lo[:, 3] = x
+        hi[:, 3] = np.float32(t1 + 5.0)
+        found = []
+        for kernel in (K._binned_axis, twin):
+            best = np.array([np.inf, -1.0, 0.0, 0.0])
+            kernel(lo, hi, 3, blo, bhi, t0, t1, 1.0, 0.7, 0.2, nbins, best)
+            found.append(best)
+        assert found[0][1] == 3.0 and found[0].tobytes() == found[1].tobytes(), (t0, t1)

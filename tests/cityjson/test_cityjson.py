@@ -449,3 +449,26 @@ def test_time_attribute_and_creation_dates_follow_the_citygml_rules(tmp_path):
     result = _run("build", path, "-o", out)
     assert result.exit_code == 0 and "creationDate" in result.output  # the warning
     assert json.loads(_run("info", out, "--json").output)["time_range"] is None
+
+
+def test_index_globalizing_twin_equals_the_compiled_kernel():
+    """Small documents on first use globalize their vertex indices with the kernel's Python
+    source (runtime.interpret): the same indices, and the same first bad position."""
+    from cityshade.cityjson.reader import _globalize_indices
+    from cityshade.runtime.interpret import python_twin
+
+    rng = np.random.default_rng(4)
+    counts = rng.integers(1, 50, 40)
+    sizes = rng.integers(0, 30, 40)
+    starts = np.concatenate([[0], np.cumsum(sizes)[:-1]]).astype(np.int64)
+    bases = np.concatenate([[0], np.cumsum(counts)[:-1]]).astype(np.int64)
+    flat = np.concatenate([rng.integers(0, c, s) for c, s in zip(counts, sizes)]).astype(np.int64)
+    bad = flat.copy()
+    bad[int(starts[30]) + 1 if sizes[30] > 1 else -1] = 10**6
+    for indices in (flat, bad):
+        got = []
+        for kernel in (_globalize_indices, python_twin(_globalize_indices)):
+            out = indices.copy()
+            got.append((int(kernel(out, starts, bases, counts.astype(np.int64))), out))
+        assert got[0][0] == got[1][0] and got[0][1].tobytes() == got[1][1].tobytes()
+    assert got[0][0] > 0                      # the bad case stopped at its first bad index

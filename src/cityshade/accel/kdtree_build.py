@@ -36,8 +36,8 @@ from numba import njit
 from cityshade.accel.kdtree_layout import (LEAF_CODE, TIME_AXIS, KdTree, pack_nodes,
                                            triangle_records)
 from cityshade.errors import ConfigError, KdTreeInputError
+from cityshade.runtime.interpret import InterpretBudget, run_range, twin_if
 from cityshade.runtime.memory import release_freed_memory
-from cityshade.runtime.threadpool import run_chunks
 
 #: Axis code of a placeholder node whose subtree is built separately (never stored).
 DEFERRED = -1
@@ -129,7 +129,9 @@ def _f32_down(x):
     f = np.float32(x)
     if float(f) > x:
         f = np.nextafter(f, np.float32(-np.inf))
-    return float(f)
+    # np.float64, not float: interpreted (runtime/interpret.py) a Python float would make
+    # NumPy compare a float32 with it in float32; Numba widens to float64 either way.
+    return np.float64(f)
 
 
 @njit(cache=True)
@@ -138,7 +140,7 @@ def _f32_up(x):
     f = np.float32(x)
     if float(f) < x:
         f = np.nextafter(f, np.float32(np.inf))
-    return float(f)
+    return np.float64(f)  # not float: see _f32_down
 
 
 @njit(cache=True)
@@ -369,14 +371,16 @@ def _binned_axis(lo, hi, axis, blo, bhi, t0, t1, ct, ci, bonus, nbins, best):
         start_count[i] = 0
         end_count[i] = 0
     for r in range(n):
-        x = lo[r, axis]
+        # Widened as Numba does: interpreted, NumPy would subtract a Python float ``t0`` in
+        # float32 (runtime/interpret.py).
+        x = np.float64(lo[r, axis])
         if x <= a:
             sb = 0
         elif x >= b:
             sb = nbins - 1
         else:
             sb = min(int((x - a) * scale), nbins - 1)
-        x = hi[r, axis]
+        x = np.float64(hi[r, axis])
         if x <= a:
             eb = 0
         elif x >= b:
@@ -1098,15 +1102,17 @@ def _boxes_range(tri_v, ids, t_begin, t_end, lo, hi, i0, i1):
         hi[r, 3] = np.float32(_f32_up(t_end[t]))
 
 
-def _corners_and_boxes(vertices, triangles, ids, t_begin, t_end):
+def _corners_and_boxes(vertices, triangles, ids, t_begin, t_end, interpret=False):
     """The (T, 3, 3) float32 corners of every triangle and the (K, 4) float32 low and high
     box corners of the triangles ``ids``. Serial kernels over chunks on the thread pool, not
     ``prange`` ones: those took 2-3x longer to compile on first use (issue 40)."""
     tri_v = np.empty((triangles.shape[0], 3, 3), np.float32)
-    run_chunks(_corners_range, triangles.shape[0], CORNER_CHUNK, vertices, triangles, tri_v)
+    run_range(_corners_range, interpret, triangles.shape[0], CORNER_CHUNK, vertices, triangles,
+              tri_v)
     lo = np.empty((ids.shape[0], 4), np.float32)
     hi = np.empty((ids.shape[0], 4), np.float32)
-    run_chunks(_boxes_range, ids.shape[0], CORNER_CHUNK, tri_v, ids, t_begin, t_end, lo, hi)
+    run_range(_boxes_range, interpret, ids.shape[0], CORNER_CHUNK, tri_v, ids, t_begin, t_end,
+              lo, hi)
     return tri_v, lo, hi
 
 
@@ -1127,24 +1133,26 @@ def _task_inputs(tasks) -> list[tuple]:
     return inputs
 
 
-def _build_subtrees(tri_v, material, inputs, constants, root_surface) -> list[tuple]:
+def _build_subtrees(tri_v, material, inputs, constants, root_surface,
+                    interpret=False) -> list[tuple]:
     """Build every deferred subtree of :func:`_task_inputs` (largest first, one per Numba
-    thread at a time); the results are kept by task index, so their order never depends on
-    the threads."""
+    thread at a time; interpreted, all in this thread: threads would take turns holding the
+    GIL); the results are kept by task index, so their order never depends on the threads."""
     import numba
 
     n_tasks = len(inputs)
     results: list[tuple | None] = [None] * n_tasks
+    kernel = twin_if(interpret, _build_kernel)
 
     def build(k: int) -> None:
         ids, lo, hi, blo, bhi, depth = inputs[k]
         inputs[k] = None  # the task's arrays are freed as soon as its subtree is built
-        *tree, _ = _build_kernel(tri_v, material, ids, lo, hi, blo, bhi, *constants, depth,
-                                 root_surface, 0)
+        *tree, _ = kernel(tri_v, material, ids, lo, hi, blo, bhi, *constants, depth,
+                          root_surface, 0)
         results[k] = tuple(tree)
 
     order = sorted(range(n_tasks), key=lambda k: -inputs[k][0].shape[0])
-    workers = min(numba.get_num_threads(), n_tasks)
+    workers = 1 if interpret else min(numba.get_num_threads(), n_tasks)
     if workers > 1:
         from concurrent.futures import ThreadPoolExecutor
 
@@ -1216,18 +1224,21 @@ def _stitch(top: list, subtrees: list[tuple]) -> tuple:
 
 
 def model_time_range(t_begin_days: np.ndarray, t_end_days: np.ndarray,
-                     valid: np.ndarray | None = None) -> tuple[float, float] | None:
+                     valid: np.ndarray | None = None, *,
+                     interpret: bool = False) -> tuple[float, float] | None:
     """Finite time range ``(t0, t1)`` in days used by the heuristic, or None for a dateless model.
 
     The range spans every finite begin and end (of the triangles where ``valid`` is true, if
     given), padded by 1 % of its length (at least one day) so that the first and last dates are
-    strictly inside and a single date still has a duration.
+    strictly inside and a single date still has a duration. ``interpret``: run the kernel's
+    Python source (see :data:`INTERPRET_TRIANGLES`).
     """
     t_begin_days = np.ascontiguousarray(t_begin_days, np.float64)
     t_end_days = np.ascontiguousarray(t_end_days, np.float64)
     if valid is None:
         valid = np.ones(t_begin_days.shape[0], bool)
-    lo, hi, n_finite = _finite_range(t_begin_days, t_end_days, np.ascontiguousarray(valid, bool))
+    lo, hi, n_finite = twin_if(interpret, _finite_range)(t_begin_days, t_end_days,
+                                                         np.ascontiguousarray(valid, bool))
     if n_finite == 0:
         return None
     pad = max(1.0, 0.01 * (hi - lo))
@@ -1249,6 +1260,16 @@ def _finite_range(t_begin, t_end, valid):
                     hi = max(hi, v)
                     n += 1
     return lo, hi, n
+
+
+#: Triangles a process builds with the kernels' Python source while the build kernel is
+#: neither compiled nor cached (:mod:`cityshade.runtime.interpret`). Interpreted, a build
+#: takes 0.7-0.85 CPU ms a triangle on generated cities (the sample city's 1,386: 1.06 s;
+#: 6,000: 5.0 s; 10,000: 8.5 s; 20,000: 13.9 s) and up to 1.4 ms on dense random boxes
+#: (tests' box_city, 6,000: 8.3 s), against some 13-15 CPU s of compiling the kernels on
+#: first use (Dec 2026). At 6,000 even the dense case stays well under the compile.
+INTERPRET_TRIANGLES = 6_000
+_INTERPRET = InterpretBudget(INTERPRET_TRIANGLES, _build_kernel)
 
 
 def _checked_inputs(vertices, triangles, t_begin_days, t_end_days, material):
@@ -1325,9 +1346,11 @@ def build_kdtree(vertices, triangles, t_begin_days, t_end_days, material,
     vertices32, triangles, t_begin, t_end, material = _checked_inputs(
         vertices, triangles, t_begin_days, t_end_days, material)
     n_tri = triangles.shape[0]
+    # Small on first use: every kernel of the build runs its Python source (the same tree).
+    interpret = _INTERPRET.take(n_tri)
     valid = t_begin < t_end
     ids0 = np.flatnonzero(valid).astype(np.int32)
-    time_range = model_time_range(t_begin, t_end, valid)
+    time_range = model_time_range(t_begin, t_end, valid, interpret=interpret)
     has_time = time_range is not None
     t0, t1 = time_range if has_time else (0.0, 0.0)
 
@@ -1335,7 +1358,7 @@ def build_kdtree(vertices, triangles, t_begin_days, t_end_days, material,
     # Reference boxes in float32: every bound is a float32 value (corners, outward-rounded
     # times and clipped extents, float32 split planes), so the narrow type is exact and halves
     # the build's largest arrays.
-    tri_v, lo0, hi0 = _corners_and_boxes(vertices32, triangles, ids0, t_begin, t_end)
+    tri_v, lo0, hi0 = _corners_and_boxes(vertices32, triangles, ids0, t_begin, t_end, interpret)
     if ids0.size:
         root_lo = np.append(lo0[:, :3].min(axis=0), -np.inf)
         root_hi = np.append(hi0[:, :3].max(axis=0), np.inf)
@@ -1344,31 +1367,33 @@ def build_kdtree(vertices, triangles, t_begin_days, t_end_days, material,
         root_hi = np.array([0.0, 0.0, 0.0, np.inf])
 
     depth_cap = settings.depth_cap(ids0.size)
-    root_surface = float(_surface(root_lo, root_hi, has_time, t0, t1))
+    root_surface = float(twin_if(interpret, _surface)(root_lo, root_hi, has_time, t0, t1))
     if root_surface <= 0.0:
         root_surface = 1.0
     constants = (has_time, t0, t1, float(settings.traversal_cost),
                  float(settings.intersection_cost), float(settings.empty_bonus), depth_cap,
                  settings.min_leaf_triangles, settings.sweep_threshold, settings.bins)
     # The top of the tree in this thread; nodes small enough become subtree tasks.
-    *top, tasks = _build_kernel(tri_v, material, ids0, lo0, hi0, root_lo, root_hi, *constants,
-                                0, root_surface, settings.subtree_cap(ids0.size))
+    *top, tasks = twin_if(interpret, _build_kernel)(
+        tri_v, material, ids0, lo0, hi0, root_lo, root_hi, *constants, 0, root_surface,
+        settings.subtree_cap(ids0.size))
     del lo0, hi0
     inputs = _task_inputs(tasks)
     del tasks
-    subtrees = _build_subtrees(tri_v, material, inputs, constants, root_surface)
+    subtrees = _build_subtrees(tri_v, material, inputs, constants, root_surface, interpret)
     del inputs, tri_v
     release_freed_memory()  # the kernel's per-node arrays, freed, fragment the heap
     node_axis, node_child, node_first, node_split, prims, raw = _stitch(top, subtrees)
     del top, subtrees
     release_freed_memory()
-    nodes = pack_nodes(node_axis, node_child, node_first, node_split)
+    nodes = pack_nodes(node_axis, node_child, node_first, node_split, interpret)
     n_nodes = int(node_axis.size)
     # The wide working arrays go before the records (the tree's largest array) are made.
     del node_axis, node_child, node_first, node_split
     prim_indices = prims.astype(np.int32)
     del prims
-    records = triangle_records(vertices32, triangles, t_begin, t_end, material, prim_indices)
+    records = triangle_records(vertices32, triangles, t_begin, t_end, material, prim_indices,
+                               interpret)
 
     bounds = np.empty((2, 4))
     bounds[0, :3] = root_lo[:3]

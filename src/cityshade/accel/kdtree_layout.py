@@ -31,7 +31,7 @@ import numpy as np
 from numba import njit
 
 from cityshade.errors import KdTreeLayoutError
-from cityshade.runtime.threadpool import run_chunks
+from cityshade.runtime.interpret import run_range, twin_if
 
 #: Number of float32 words of one triangle record (64 bytes: one cache line).
 RECORD_WORDS = 16
@@ -115,7 +115,7 @@ def record_id(tree, k):
     return tree.recs_i32[k, REC_ID]
 
 
-def pack_nodes(axis, child, first, split):
+def pack_nodes(axis, child, first, split, interpret=False):
     """Pack raw build output into (M, 2) uint32 nodes (see the module docstring).
 
     Parameters
@@ -128,6 +128,8 @@ def pack_nodes(axis, child, first, split):
         First primitive index of leaves (ignored for inner nodes).
     split : (M,) float array
         Split position of inner nodes, exactly float32-representable.
+    interpret : bool
+        Run the kernel's Python source (a small build on first use, runtime/interpret.py).
     """
     axis = np.asarray(axis, dtype=np.int64)
     child = np.asarray(child, dtype=np.int64)
@@ -135,7 +137,8 @@ def pack_nodes(axis, child, first, split):
         raise KdTreeLayoutError("kd-tree too large for the 8-byte node layout")
     nodes = np.empty((axis.size, 2), np.uint32)
     split_bits = np.ascontiguousarray(split, dtype=np.float32).view(np.uint32)
-    _pack_kernel(axis, child, np.asarray(first, dtype=np.int64), split_bits, nodes)
+    twin_if(interpret, _pack_kernel)(axis, child, np.asarray(first, dtype=np.int64), split_bits,
+                                     nodes)
     return nodes
 
 
@@ -170,13 +173,15 @@ def _fill_records(vertices, triangles, t_begin_days, t_end_days, material, prim_
         recs_i32[k, RECORD_WORDS - 1] = 0
 
 
-def triangle_records(vertices, triangles, t_begin_days, t_end_days, material, prim_indices):
-    """Leaf-ordered (K, 16) float32 intersection records for ``prim_indices``."""
+def triangle_records(vertices, triangles, t_begin_days, t_end_days, material, prim_indices,
+                     interpret=False):
+    """Leaf-ordered (K, 16) float32 intersection records for ``prim_indices`` (``interpret``:
+    the kernel's Python source, see :func:`pack_nodes`)."""
     records = np.empty((prim_indices.size, RECORD_WORDS), np.float32)
-    run_chunks(_fill_records, prim_indices.size, RECORD_CHUNK,
-               np.ascontiguousarray(vertices, dtype=np.float32), triangles, t_begin_days,
-               t_end_days, material, prim_indices, records, records.view(np.int32),
-               records.view(np.float64))
+    run_range(_fill_records, interpret, prim_indices.size, RECORD_CHUNK,
+              np.ascontiguousarray(vertices, dtype=np.float32), triangles, t_begin_days,
+              t_end_days, material, prim_indices, records, records.view(np.int32),
+              records.view(np.float64))
     return records
 
 

@@ -28,10 +28,12 @@ COMMANDS = {
 
 
 def first_compile_line(command: str, processes: int, stream=None) -> None:
-    """On a terminal, say why the first use of a command takes a while before it starts."""
+    """On a terminal, say why the first use of a command waits (its kernels compiling)."""
     stream = stream or sys.stderr
     if processes and stream.isatty():
-        stream.write(f"cityshade: first use of {command}: compiling its kernels once "
+        # From the line's start, cleared: a progress line may be on it (the wait begins at
+        # the command's first compile, mid-work); the progress repaints below.
+        stream.write(f"\r\033[Kcityshade: first use of {command}: compiling its kernels once "
                      f"({processes} processes)\n")
         stream.flush()
 
@@ -76,11 +78,13 @@ class LazyGroup(click.Group):
             raise click.UsageError(f"no command '{name}'; {hint}", ctx)
         if name in COMMANDS and not {"-h", "--help"} & set(args):
             # On a command's first use its kernels compile in parallel while it reads its
-            # input (the first compile waits for them): see cityshade.runtime.prewarm.
+            # input (the first compile waits for them, and only then is the terminal told):
+            # see cityshade.runtime.prewarm.
             from cityshade.cli.options import interrupt_seen
             from cityshade.runtime import prewarm
 
-            first_compile_line(name, prewarm.start(name, should_stop=interrupt_seen))
+            prewarm.start(name, should_stop=interrupt_seen,
+                          on_wait=lambda processes: first_compile_line(name, processes))
         return super().resolve_command(ctx, args)
 
     def list_commands(self, ctx):

@@ -12,7 +12,10 @@ the same operations in the same order on IEEE doubles (Numba compiles without fa
 answers are the kernel's bit for bit (tested for each kernel that uses it). A kernel that relies
 on Numba-only semantics (integer overflow, ``float ** int`` by repeated squaring, a ``prange``
 reduction, whose order Numba chooses) must not use it; a ``prange`` loop whose iterations are
-independent runs in order, the same.
+independent runs in order, the same. Nor may a float32 scalar meet a Python float in it: NumPy 2
+computes and compares that in float32, Numba in float64 (widen with ``np.float64(...)``, which
+compiles to the same code). Kernels a command runs over chunks on threads run interpreted once
+over the whole range (:func:`run_range`).
 """
 from __future__ import annotations
 
@@ -23,6 +26,8 @@ import types
 
 from numba.core.caching import NullCache
 from numba.core.dispatcher import Dispatcher
+
+from cityshade.runtime.threadpool import run_chunks
 
 _TWINS: dict[str, dict] = {}
 _LOCK = threading.RLock()     # a twin's imported kernels are twins too
@@ -45,6 +50,22 @@ def python_twin(kernel):
                     else:   # imported from another module: the twin reads that one's globals
                         space[key] = python_twin(value)
     return space[kernel.py_func.__name__]
+
+
+def twin_if(interpret: bool, kernel):
+    """``kernel``'s interpreted twin when ``interpret`` (an :class:`InterpretBudget`'s answer),
+    else the kernel itself."""
+    return python_twin(kernel) if interpret else kernel
+
+
+def run_range(kernel, interpret: bool, n_items: int, chunk_items: int, *args) -> None:
+    """``kernel(*args, i0, i1)`` over ``[0, n_items)``: compiled, in chunks on the thread pool
+    (:func:`cityshade.runtime.threadpool.run_chunks`); interpreted, its twin once over the
+    whole range in this thread (threads would only take turns holding the GIL)."""
+    if not interpret:
+        run_chunks(kernel, n_items, chunk_items, *args)
+    elif n_items > 0:
+        python_twin(kernel)(*args, 0, n_items)
 
 
 def compiled_or_cached(kernel) -> bool:

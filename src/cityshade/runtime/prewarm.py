@@ -9,7 +9,8 @@ to one child process per usable core (``python -m cityshade.runtime.prewarm --co
 largest first, balanced by their recorded compile times; each child compiles its share into
 the command's Numba cache folder (``NUMBA_CACHE_DIR``, inherited). The command meanwhile reads
 its input; its first use of Numba's compiler waits for the children (a listener on Numba's
-``numba:compiler_lock`` event, which fires before the cache is looked at), and from there on
+``numba:compiler_lock`` event, which fires before the cache is looked at; the CPU target is
+set up first, as that takes the lock too), and from there on
 the kernels load from the cache. Answers cannot change: what a child writes is what the command
 would have compiled itself, and a kernel whose types changed since the recording is compiled by
 the command as before. A mark in the cache folder (one per command and manifest) says the work
@@ -35,8 +36,11 @@ MANIFEST = Path(__file__).with_name("kernels.json")
 ENV_SWITCH = "CITYSHADE_PREWARM"
 #: Seconds between two looks at the children while the command waits for them.
 POLL_S = 0.02
+#: Niceness a child adds to its own (lower priority than the command's work).
+NICE = 10
 
-_state: dict = {"children": [], "mark": None, "listener": None, "should_stop": None}
+_state: dict = {"children": [], "mark": None, "listener": None, "should_stop": None,
+                "on_wait": None}
 
 
 def usable_cores() -> int:
@@ -81,11 +85,12 @@ def shares(entries: list[dict], n: int) -> list[list[int]]:
     return [s for s in out if s]
 
 
-def start(command: str, should_stop=None, manifest: Path = MANIFEST) -> int:
+def start(command: str, should_stop=None, manifest: Path = MANIFEST, on_wait=None) -> int:
     """Start the children that compile ``command``'s recorded kernels, unless it is off, one
     core is all there is, the command has none recorded, or the mark says they are cached.
     Returns the number of children started. ``should_stop()`` (a Ctrl-C seen) stops waiting
-    for them and stops them."""
+    for them and stops them; ``on_wait(children)`` is called once when the command starts
+    waiting for them (never, when its small work all runs interpreted)."""
     cores = usable_cores()
     if os.environ.get(ENV_SWITCH, "1") == "0" or _state["children"] or cores < 2:
         return 0
@@ -119,8 +124,14 @@ def start(command: str, should_stop=None, manifest: Path = MANIFEST) -> int:
                                              stderr=subprocess.DEVNULL))
         except OSError:
             break
-    _state.update(children=children, mark=mark, should_stop=should_stop)
+    _state.update(children=children, mark=mark, should_stop=should_stop, on_wait=on_wait)
     if children:
+        # Numba takes its compiler lock once to set up its CPU target (at the first ``@njit``
+        # the command imports), which is no compile: done before listening, so a command
+        # whose kernels all run interpreted (runtime/interpret.py) never waits.
+        from numba.core.registry import cpu_target
+
+        cpu_target.target_context  # the property sets the target up
         _listen()
     return len(children)
 
@@ -147,8 +158,10 @@ def wait() -> None:
     children = _state["children"]
     if not children:
         return
-    should_stop = _state["should_stop"]
+    should_stop, on_wait = _state["should_stop"], _state["on_wait"]
     try:
+        if on_wait is not None and any(c.poll() is None for c in children):
+            on_wait(len(children))
         while any(c.poll() is None for c in children):
             if should_stop is not None and should_stop():
                 break
@@ -214,6 +227,10 @@ def _main(argv: list[str]) -> None:
     import signal
 
     signal.signal(signal.SIGINT, signal.SIG_DFL)     # a Ctrl-C ends a child at once
+    # Below the command: one that runs small work interpreted (runtime/interpret.py) while
+    # its children compile for later runs keeps its cores; one that waits for them is idle.
+    if hasattr(os, "nice"):  # not on Windows
+        os.nice(NICE)
     manifest, command, share = argv[1], argv[2], argv[3]
     entries = load_manifest(Path(manifest))["commands"].get(command, [])
     compile_share([entries[int(i)] for i in share.split(",") if i])
