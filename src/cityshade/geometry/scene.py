@@ -31,7 +31,7 @@ from cityshade.geo.temporal import (choose_interval, days_to_iso, has_creation_d
                                         parse_time_attribute)
 from cityshade.config import BuildSettings
 from cityshade.errors import ContractError, EmptyModelError, UsageError
-from cityshade.geometry.bounds import used_vertex_box
+from cityshade.geometry.bounds import vertex_box
 from cityshade.runtime.interpret import InterpretBudget, twin_if
 from cityshade.util import plural
 
@@ -396,10 +396,9 @@ def _render_vertices(points, index, origin):
 # Items a process runs through each kernel's Python source while it is neither compiled nor
 # cached (:mod:`cityshade.runtime.interpret`; the kd-tree's kernels have their own budget).
 # Interpreted CPU per item against first-use compiling (Dec 2026, 10^5 random items): the
-# ranges 0.17 µs an entry (0.12-0.45 s to compile), the box 6.6 µs a triangle (0.17-0.25 s),
-# the render vertices 2.7 µs a point (0.2-0.35 s). The sample city: 3,662 points.
+# ranges 0.17 µs an entry (0.12-0.45 s to compile), the render vertices 2.7 µs a point
+# (0.2-0.35 s; the box: geometry.bounds.vertex_box). The sample city: 3,662 points.
 _INTERPRET_RANGES = InterpretBudget(1_000_000, _expand_ranges_kernel)
-_INTERPRET_BOX = InterpretBudget(30_000, used_vertex_box)
 _INTERPRET_RENDER = InterpretBudget(80_000, _render_vertices)
 
 
@@ -555,8 +554,7 @@ def build_scene(raw: RawModel, settings: BuildSettings | None = None, *,
     remap_poly[drawn] = np.arange(len(drawn))
     tri_polygon = remap_poly[tri_poly_local]
     del tri_poly_local
-    box = np.empty((2, 3))  # of the points drawn (one pass; numpy's min/max took 1.6 s)
-    twin_if(_INTERPRET_BOX.take(len(triangles)), used_vertex_box)(triangles, coords, box)
+    box = vertex_box(triangles, coords)  # of the points drawn (numpy's min/max took 1.6 s)
     if not crs.is_geographic:
         # A wrong CRS (or a 10^7 m offset) puts the model somewhere else on Earth: say so.
         area_warning = area_of_use_warning(crs, box[0], box[1])

@@ -287,11 +287,9 @@ def scene_box(scene, t_days: float | None = None) -> np.ndarray:
     if tris.shape[0] == 0:
         when = "" if t_days is None else f" at t = {t_days} days"
         raise UsageError(f"the scene has no triangles{when} to frame")
-    from cityshade.geometry.bounds import used_vertex_box
+    from cityshade.geometry.bounds import vertex_box
 
-    box = np.empty((2, 3))
-    used_vertex_box(np.ascontiguousarray(tris), np.asarray(scene.vertices), box)
-    return box
+    return vertex_box(np.ascontiguousarray(tris), np.asarray(scene.vertices))
 
 
 def _near_far(eye, fwd, box) -> tuple[float, float]:

@@ -341,7 +341,7 @@ def render_depth(scene, clip_from_world, width_px: int, height_px: int, t_days: 
         planes = frustum_planes(clip_from_world, pad)
         if casters_box is not None:
             planes = np.vstack([planes, box_planes(casters_box, pad)])
-        outside, inside_mask = cull.box_outside(planes, lo, hi, (1 << planes.shape[0]) - 1)
+        outside, inside_mask = cull.outside_view(planes, lo, hi, (1 << planes.shape[0]) - 1)
         if outside:
             stats["culling"] = "the model lies outside the light view"
             stats["frustum_refs_removed"] = int(tree.prim_indices.shape[0])

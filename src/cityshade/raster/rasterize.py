@@ -302,7 +302,7 @@ def rasterize(scene, camera: Camera, t_days: float, *, occlusion_culling="auto",
     if use_tree:
         lo, hi, size = tree.box_scale_m()
         planes = cull.frustum_planes(camera, cull.FRUSTUM_PAD_REL * size)
-        _, inside_mask = cull.box_outside(planes, lo, hi, (1 << planes.shape[0]) - 1)
+        _, inside_mask = cull.outside_view(planes, lo, hi, (1 << planes.shape[0]) - 1)
         if inside_mask == 0 and (auto or not occlusion):
             # The whole model is in view: the frustum test cannot remove anything, and a
             # scene seen whole from outside has too little occlusion to pay for the queries

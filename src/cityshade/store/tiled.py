@@ -229,7 +229,7 @@ class TiledCache:
         size = float(np.max(box[1] - box[0]))
         planes = cull.frustum_planes(camera, cull.FRUSTUM_PAD_REL * max(size, 1.0))
         mask = (1 << planes.shape[0]) - 1
-        return self.tree.query(lambda lo, hi: not cull.box_outside(planes, lo, hi, mask)[0])
+        return self.tree.query(lambda lo, hi: not cull.outside_view(planes, lo, hi, mask)[0])
 
     def view(self, tile_ids: list[int] | None = None) -> Scene:
         """The tiles ``tile_ids`` (all when None) as one in-memory scene in the global order
