@@ -351,6 +351,11 @@ def test_cli_batch_writes_everything(files, tmp_path):
                   "0.05", "-o", out, "-v")
     assert result.exit_code == 0, result.output
     assert "16 sun positions computed" in result.output and "ΔT" in result.output
+    # -v says which engine the default technique (exact) took for the pixels, and why.
+    engine = [ln for ln in result.output.splitlines() if ln.startswith("engine   ")]
+    assert len(engine) == 1 and engine[0].startswith(
+        ("engine   exact engine izb over ", "engine   exact engine raytrace over ")), engine
+    assert " sun positions; the first: " in engine[0] and " casters, " in engine[0]
     channels, meta = read_exr(out / "sun_hours.exr")
     hours = channels["sun_hours"]
     assert meta["cityshade:steps"] == 16 and meta["cityshade:refraction"] == "on"
@@ -582,3 +587,21 @@ def test_izb_default_equals_raytrace_for_pixels_and_surfaces(scene):
     assert runs[0].hours.tobytes() == runs[1].hours.tobytes()
     assert runs[0].sample_hours.tobytes() == runs[1].sample_hours.tobytes()
     assert (runs[0].hours[runs[0].valid] > 0).any() and (runs[0].sample_hours == 0).any()
+
+
+@pytest.mark.parametrize("compiled", [False, True])
+def test_exact_batch_records_its_engine_choice(scene, monkeypatch, compiled):
+    """The run's diagnostics say which engine ``exact`` took over its sun positions and why,
+    the compile of izb counted while it is not compiled (shadows.exact.izb_compiled)."""
+    from cityshade.raster.camera import map_view
+    from cityshade.shadows import exact as E
+
+    monkeypatch.setattr(E, "izb_compiled", lambda: compiled)
+    run = A.sun_hours(scene, map_view(scene, PX), _instants(len(SUNS)), 0.0, weights_h=WEIGHTS,
+                      suns=_explicit_suns(), technique="exact")
+    note = run.diagnostics["engine"]
+    # The suns above the horizon, less the repeated one, are the calls.
+    assert note.startswith("exact engine ") and " over 4 sun positions; the first: " in note
+    assert ("izb not compiled yet" in note) is (not compiled)
+    if not compiled:       # a few small calls never win back izb's compile
+        assert note.startswith("exact engine raytrace over ")

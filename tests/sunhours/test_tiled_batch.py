@@ -131,6 +131,16 @@ def test_accumulate_equals_numpy_fancy_add_bit_for_bit():
     assert changed.tolist() == [True, False, True]  # the row without weight stays as it was
 
 
+def test_tiled_exact_run_says_its_one_engine_choice(files, tmp_path, monkeypatch):
+    from cityshade.shadows import exact as E
+
+    monkeypatch.setattr(E, "izb_compiled", lambda: False)
+    tiled = _run(files[0], tmp_path / "tiled", "exact", tile_px=7)
+    note = tiled.result.diagnostics["engine"]
+    # One choice for the whole run; its tasks are few and small: raytrace, izb uncompiled.
+    assert note.startswith("exact engine raytrace: ") and "izb not compiled yet" in note
+
+
 @pytest.mark.parametrize("technique", ["izb", "raytrace"])
 def test_tiled_run_equals_untiled_bit_for_bit(files, tmp_path, technique):
     boxes, _ = files

@@ -184,6 +184,8 @@ def echo_verbose(run, command_s: float) -> None:
                f"{result.steps_duplicate} sharing a sun position), {result.units} sun "
                f"positions computed, {result.units_resumed} taken from the saved state",
                err=True)
+    if result.diagnostics.get("engine"):
+        click.echo(f"engine   {result.diagnostics['engine']}", err=True)
     tiles = result.diagnostics.get("tiles")
     if tiles:
         click.echo(f"tiles    {tiles['tiles']} of {tiles['tile_px'] or 'all'} px, "

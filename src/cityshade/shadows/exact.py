@@ -126,11 +126,23 @@ class Exact(RayTraced):
         chosen: list[EngineChoice] = []
         lit = sun_fraction(scene, points, normals, sun, t_days, engine="exact", chosen=chosen)
         if chosen:
-            engines = sorted({c.engine for c in chosen})
-            diagnostics.note = (f"exact engine {chosen[0].engine}: {chosen[0].reason}"
-                                if len(chosen) == 1 else
-                                f"exact engines {', '.join(engines)} over {len(chosen)} tiles")
+            diagnostics.note = describe_choices(chosen, "tiles")
         return lit
+
+
+def describe_choices(chosen: list[EngineChoice], over: str) -> str:
+    """What ``exact`` took, for ``-v``: the engine and why, or over several trees or calls
+    (``over``: "tiles", "sun positions") the engines taken and the first choice's reason."""
+    names = ", ".join(sorted({c.engine for c in chosen}))
+    if len(chosen) == 1:
+        return f"exact engine {names}: {chosen[0].reason}"
+    return f"exact engine {names} over {len(chosen)} {over}; the first: {chosen[0].reason}"
+
+
+def run_choice(scene, n_rays: int, calls: int) -> EngineChoice:
+    """:func:`choose_engine` for a whole run of ``calls`` calls of about ``n_rays`` rays each
+    against ``scene``'s triangles (see :func:`engine_for_run`)."""
+    return choose_engine(n_rays, scene.n_triangles, calls=calls, compiled=izb_compiled())
 
 
 def engine_for_run(engine: str, scene, n_rays: int, calls: int) -> str:
@@ -139,4 +151,4 @@ def engine_for_run(engine: str, scene, n_rays: int, calls: int) -> str:
     worker, which a per-call choice in a fresh worker would never see as warm)."""
     if engine != "exact":
         return engine
-    return choose_engine(n_rays, scene.n_triangles, calls=calls, compiled=izb_compiled()).engine
+    return run_choice(scene, n_rays, calls).engine

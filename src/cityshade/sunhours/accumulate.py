@@ -97,6 +97,7 @@ class _PixelRays:
         self.valid = cp.valid
         self.engine = engine
         self.calls = calls      # sun positions sharing an izb set-up (``exact``'s choice)
+        self.chosen: list = []  # ``exact``'s choice of each call (``batch -v``)
         # The valid pixels' points, normals and offsets, checked once: per step one pass makes
         # the facing pixels' origins (the numpy gathers and temporaries cost more than izb's
         # binning on the 1M-triangle city).
@@ -115,7 +116,8 @@ class _PixelRays:
             direction = np.asarray(sun.direction, dtype=np.float64)
             origins = self.receivers.origins(direction, faces[self.valid])
             lit[faces] = transmission(scene, origins, direction, t_days, engine=self.engine,
-                                      day_of_year=day_of_year(sun), calls=self.calls)
+                                      day_of_year=day_of_year(sun), calls=self.calls,
+                                      chosen=self.chosen)
         return lit
 
 
@@ -382,6 +384,10 @@ def compute(scene, request: SunHoursRequest, *, checkpoint: Checkpoint | None = 
 
     if stretches is not None:
         stretches.finish()
+    if rays is not None and rays.chosen:
+        from cityshade.shadows.exact import describe_choices
+
+        prep.diagnostics["engine"] = describe_choices(rays.chosen, "sun positions")
     hours = None
     if cp is not None:
         hours = np.where(valid, pixel_sum, np.nan).astype(np.float32)

@@ -367,6 +367,18 @@ def _tiled_result(prep, run: TiledRun, state: TiledState, months: list[str], par
                        units_resumed, stretches)
 
 
+def _run_engine(engine: str, scene, rays_per_task: int, tasks: int, diagnostics: dict) -> str:
+    """The run's exact engine: ``exact`` chosen once for the whole run (fresh workers would
+    never see a warm caster sort), the choice and why in ``diagnostics`` (``batch -v``)."""
+    if engine != "exact":
+        return engine
+    from cityshade.shadows.exact import describe_choices, run_choice
+
+    choice = run_choice(scene, rays_per_task, tasks)
+    diagnostics["engine"] = describe_choices([choice], "tasks")
+    return choice.engine
+
+
 def tiled_sun_hours(scene, request: SunHoursRequest, *, checkpoint=None, executor=None,
                     workdir=None, on_plan: Callable[[int], None] | None = None,
                     on_task: Callable[[int, int, list, int], None] | None = None,
@@ -426,9 +438,8 @@ def tiled_sun_hours(scene, request: SunHoursRequest, *, checkpoint=None, executo
              for t in range(n_tiles) if hi > state.tile_done[t]]
     total = n_tiles * len(blocks)
     resumed_tasks = total - len(tasks)
-    from cityshade.shadows.exact import engine_for_run
-
-    engine = engine_for_run(engine, scene, plan.n_slots // max(n_tiles, 1), max(len(tasks), 1))
+    engine = _run_engine(engine, scene, plan.n_slots // max(n_tiles, 1), max(len(tasks), 1),
+                         prep.diagnostics)
     if on_plan is not None:
         on_plan(len(tasks))
     units_resumed = int(state.tile_done.min()) if n_tiles else n_units
