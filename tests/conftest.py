@@ -7,6 +7,16 @@ from pathlib import Path
 import pytest
 
 REPO = Path(__file__).resolve().parents[1]
+
+#: Source for a probe process: ``compiled`` gets the name of every kernel Numba compiles.
+COMPILE_EVENTS = """
+from numba.core import event
+compiled = []
+class L(event.Listener):
+    def on_start(self, ev): compiled.append(ev.data["dispatcher"].py_func.__name__)
+    def on_end(self, ev): pass
+event.register("numba:compile", L())
+"""
 SHARED_DATA = REPO.parent / "shared" / "data" / "citygml"
 
 # The commands' parallel first compile (cityshade.runtime.prewarm) is off in the tests (the

@@ -9,6 +9,7 @@ import numba
 import numpy as np
 
 from cityshade.runtime.interpret import InterpretBudget, compiled_or_cached, python_twin
+from conftest import COMPILE_EVENTS
 
 SOURCE = '''
 from numba import njit
@@ -75,14 +76,8 @@ def test_a_kernel_in_numba_s_cache_is_not_interpreted(tmp_path, monkeypatch):
     assert not InterpretBudget(10, mod.kernel.py_func).take(1)
 
 
-_BUILD_PROBE = """
+_BUILD_PROBE = COMPILE_EVENTS + """
 import sys
-from numba.core import event
-compiled = []
-class L(event.Listener):
-    def on_start(self, ev): compiled.append(ev.data["dispatcher"].py_func.__qualname__)
-    def on_end(self, ev): pass
-event.register("numba:compile", L())
 from cityshade.cli.main import _command
 status = _command(["build", sys.argv[1], "-o", sys.argv[2]])
 during = ",".join(compiled)

@@ -18,8 +18,7 @@ import numba
 import pytest
 
 from cityshade.runtime import prewarm
-
-REPO = Path(__file__).resolve().parents[2]
+from conftest import COMPILE_EVENTS, REPO
 
 
 def test_shares_are_balanced_largest_first():
@@ -46,15 +45,9 @@ def test_the_manifest_names_kernels_with_their_argument_count():
             assert len(types) == len(params), (command, entry["kernel"])
 
 
-_PROBE = """
+_PROBE = COMPILE_EVENTS + """
 import sys, numpy as np
-from numba.core import event
 from cityshade.runtime import prewarm
-compiled = []
-class L(event.Listener):
-    def on_start(self, ev): compiled.append(ev.data["dispatcher"].py_func.__name__)
-    def on_end(self, ev): pass
-event.register("numba:compile", L())
 waits = []
 started = prewarm.start("probe", manifest=__import__("pathlib").Path(sys.argv[1]),
                         on_wait=waits.append)

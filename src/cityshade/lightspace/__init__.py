@@ -29,7 +29,7 @@ from cityshade.runtime.memory import release_pages
 from cityshade.trace.bricks import one_thread_when_small
 from cityshade.lightspace import kernels as K
 from cityshade.runtime.threadpool import run_chunks
-from cityshade.runtime.interpret import compiled_or_cached, python_twin
+from cityshade.runtime.interpret import compiled_or_cached, twin_if
 from cityshade.runtime.memory import Recycler, Scratch
 from cityshade.trace import UNIT_LENGTH_TOL, tree_of, shadow_offset_m, shadow_rays_from_surface
 from cityshade.errors import TraceInputError
@@ -270,7 +270,7 @@ def caster_order(sun_direction) -> tuple[int, float]:
     """``(kz, sgn)`` of a sun direction: the casters' key order (:meth:`Casters.sorted_for`),
     which sorts them again whenever it changes from one call to the next."""
     # Asked per frame by ``exact``'s choice (shadows/exact.py): interpreted until izb compiled it.
-    shear = K.shear_of if compiled_or_cached(K.shear_of) else python_twin(K.shear_of)
+    shear = twin_if(not compiled_or_cached(K.shear_of), K.shear_of)
     _, _, kz, _, _, sz = shear(np.ascontiguousarray(sun_direction, np.float64))
     return int(kz), _key_sign(sz)
 

@@ -46,7 +46,7 @@ from numba import njit, prange
 from cityshade.accel.kdtree_layout import KdTree, KdViews, record_id
 from cityshade.errors import UsageError
 from cityshade.raster import culling as cull
-from cityshade.runtime.interpret import InterpretBudget, python_twin, twin_if
+from cityshade.runtime.interpret import InterpretBudget, twin_if
 from cityshade.runtime.memory import Scratch
 
 #: Tile side in pixels: 64² pixels × (4 + 4 + 8 bytes) = 64 KiB of G-buffer per tile fits the
@@ -574,9 +574,8 @@ _INTERPRET_PRESENT = InterpretBudget(500_000, present_triangles)
 def _setup_kernels(n: int):
     """``setup_triangles`` and ``bin_triangles``, or for ``n`` triangles within the budget of a
     first use their interpreted twins (the same operations: bit-identical, tested)."""
-    if _INTERPRET.take(n):
-        return python_twin(setup_triangles), python_twin(bin_triangles)
-    return setup_triangles, bin_triangles
+    interpret = _INTERPRET.take(n)
+    return twin_if(interpret, setup_triangles), twin_if(interpret, bin_triangles)
 
 
 class Batcher:

@@ -30,6 +30,9 @@ from numba.core.dispatcher import Dispatcher
 from cityshade.runtime.threadpool import run_chunks
 
 _TWINS: dict[str, dict] = {}
+#: Kernels found in Numba's cache: they stay there for this process's sources, so the index is
+#: read once (budgets and ``exact``'s choice ask per call).
+_CACHED: set = set()
 _LOCK = threading.RLock()     # a twin's imported kernels are twins too
 
 
@@ -74,13 +77,19 @@ def compiled_or_cached(kernel) -> bool:
     (``NUMBA_DISABLE_JIT=1``) counts as compiled: it runs as it is."""
     if not isinstance(kernel, Dispatcher) or kernel.signatures:
         return True
+    if kernel in _CACHED:
+        return True
     if isinstance(kernel._cache, NullCache):  # ``cache=False``: nothing on disk
         return False
     try:
-        # Numba's cache index of the function, empty when missing or stale.
-        return bool(kernel._cache._cache_file._load_index())
+        # Numba's cache index of the function, empty when missing or stale (and read again
+        # then: the first compile's children may be writing it).
+        found = bool(kernel._cache._cache_file._load_index())
     except (AttributeError, OSError, EOFError, ValueError, pickle.UnpicklingError):
         return True     # another Numba's internals, or an unreadable index: compile as before
+    if found:
+        _CACHED.add(kernel)
+    return found
 
 
 class InterpretBudget:
