@@ -33,7 +33,7 @@ import subprocess
 import sys
 from pathlib import Path
 
-from scale import MB, REPO, git_commit, run_measured
+from scale import MB, git_commit, run_measured
 
 #: One district map in a fresh process: open, view, render; the process's own peak RSS.
 _DISTRICT_CHILD = r"""

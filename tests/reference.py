@@ -651,6 +651,38 @@ def reference_resolve(scene, prim, bary):
             "cls": per_pixel(scene.tri_class, 0, np.uint8)}
 
 
+def reference_add_ground_plane(camera, surfaces, z_m, box_m):
+    """The ground plane in plain numpy over whole-frame arrays (twin of
+    ``cityshade.geometry.ground.add_ground_plane``): a dict of the changed Surfaces fields
+    and the number of pixels filled."""
+    from cityshade.geometry.ground import GROUND_MARGIN_REL, TERRAIN_CODE
+
+    valid = np.asarray(surfaces.valid)
+    h, w = valid.shape
+    origins, directions = camera.primary_rays()
+    origins = origins.reshape(h, w, 3)
+    directions = directions.reshape(h, w, 3)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = (z_m - origins[..., 2]) / directions[..., 2]
+    point = origins + t[..., None] * directions
+    lo, hi = box_m
+    margin = GROUND_MARGIN_REL * float(np.hypot(hi[0] - lo[0], hi[1] - lo[1]))
+    inside = ((point[..., 0] >= lo[0] - margin) & (point[..., 0] <= hi[0] + margin)
+              & (point[..., 1] >= lo[1] - margin) & (point[..., 1] <= hi[1] + margin))
+    fill = ~valid & np.isfinite(t) & (t > 0) & inside
+    position = np.array(surfaces.position_m, dtype=np.float64, copy=True)
+    position[fill] = point[fill]
+    position[fill, 2] = z_m
+    normal = np.array(surfaces.normal, copy=True)
+    normal[fill] = (0.0, 0.0, 1.0)
+    cls = np.array(surfaces.cls, copy=True)
+    cls[fill] = TERRAIN_CODE
+    depth = np.array(surfaces.depth, copy=True)
+    depth[fill] = ((origins[..., 2] - z_m) if camera.kind == "map" else t)[fill]
+    return ({"position_m": position, "normal": normal, "cls": cls, "valid": valid | fill,
+             "depth": depth}, int(fill.sum()))
+
+
 def reference_oriented_normals(surfaces, camera):
     """Normals turned to the seen side in plain numpy (twin of
     ``cityshade.shadows.oriented_normals``)."""

@@ -438,3 +438,37 @@ def test_resolve_and_seen_side_normals_equal_their_numpy_twins_bit_for_bit(sampl
     got = oriented_normals(inward, cam)
     np.testing.assert_array_equal(got, reference_oriented_normals(inward, cam))
     np.testing.assert_array_equal(got, oriented_normals(s, cam))
+
+
+@pytest.mark.parametrize("view", ["overview", "street", "map"])
+def test_ground_plane_equals_its_numpy_twin_bit_for_bit(sample_scene, view):
+    from cityshade.geometry.ground import add_ground_plane, ground_box_m, ground_height_m
+    from reference import reference_add_ground_plane
+
+    if view == "overview":
+        cam = cams.overview(sample_scene, 320, 180)
+    elif view == "street":  # eye at 2 m looking along the ground: rays above the horizon too
+        lo, hi = ground_box_m(sample_scene)
+        eye = (lo[0] - 20.0, lo[1] - 20.0, lo[2] + 2.0)
+        cam = cams.perspective(eye, (hi[0], hi[1], lo[2] + 2.0), vfov_deg=70.0, width_px=320,
+                               height_px=180, scene=sample_scene)
+    else:  # a map reaching past the model, where only the plane is
+        lo, hi = ground_box_m(sample_scene)
+        cam = cams.map_view(sample_scene, 1.0, bbox=(lo[0] - 80.0, lo[1] - 50.0, hi[0], hi[1]))
+    z = ground_height_m(sample_scene, "auto")
+    s = resolve(sample_scene, rasterize(sample_scene, cam, 20000.0))
+    lo, hi = ground_box_m(sample_scene)
+    filled = []
+    for box in ((lo, hi), (lo, lo + 0.2 * (hi - lo))):  # the plane cut by its box's margin
+        want, want_n = reference_add_ground_plane(cam, s, z, box)
+        filled.append(want_n)
+        before = {k: np.array(getattr(s, k), copy=True) for k in want}
+        got, got_n = add_ground_plane(sample_scene, cam, s, z, box)
+        assert got_n == want_n and want_n > 500, (view, want_n)
+        for name, value in want.items():
+            assert getattr(got, name).dtype == value.dtype, name
+            np.testing.assert_array_equal(getattr(got, name), value, err_msg=name)
+        np.testing.assert_array_equal(s.valid, before["valid"])  # the G-buffer's own
+        np.testing.assert_array_equal(s.depth, before["depth"])
+        s = resolve(sample_scene, rasterize(sample_scene, cam, 20000.0))
+    assert filled[1] < filled[0]

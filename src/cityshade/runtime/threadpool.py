@@ -41,6 +41,16 @@ def _pool() -> ThreadPoolExecutor:
         return _POOL
 
 
+def shutdown() -> None:
+    """Stop the pool's threads (idle between calls: this only joins them); the next
+    :func:`run_chunks` makes a new pool."""
+    global _POOL
+    with _POOL_LOCK:
+        pool, _POOL = _POOL, None
+    if pool is not None:
+        pool.shutdown(wait=True)
+
+
 def run_chunks(kernel, n_items: int, chunk_items: int, *args) -> None:
     """Call ``kernel(*args, i0, i1)`` over ``[0, n_items)`` in chunks of ``chunk_items``.
 
