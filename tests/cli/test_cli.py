@@ -147,6 +147,29 @@ def test_python_m_cityshade(gml, tmp_path):
     assert "Traceback" not in out.stderr
 
 
+def test_own_process_leaves_after_its_exit_handlers_without_the_teardown(tmp_path):
+    """``python -m cityshade`` ends without the interpreter's teardown (a module global's
+    finalizer never runs) once the exit handlers have run and what it printed is flushed into
+    the pipe, with the command's status; under a profiler the ordinary exit stays, so the
+    profiler's report is printed after the command."""
+    code = ("import atexit, sys\n"
+            f"atexit.register(lambda: open({str(tmp_path / 'exit-handler')!r}, 'w').close())\n"
+            "class Kept:\n"
+            f"    def __del__(self): open({str(tmp_path / 'teardown')!r}, 'w').close()\n"
+            "kept = Kept()\n"
+            "sys.argv = ['cityshade', '--help']\n"
+            "from cityshade.__main__ import run\nrun()\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert out.returncode == 0 and out.stdout.splitlines()[-1].strip().startswith("export")
+    assert (tmp_path / "exit-handler").exists() and not (tmp_path / "teardown").exists()
+    missing = subprocess.run([sys.executable, "-m", "cityshade", "info", str(tmp_path / "x")],
+                             capture_output=True, text=True)
+    assert missing.returncode == 1 and missing.stderr.startswith("cityshade: error:")
+    profiled = subprocess.run([sys.executable, "-m", "cProfile", "-m", "cityshade", "--help"],
+                              capture_output=True, text=True)
+    assert profiled.returncode == 0 and "function calls" in profiled.stdout
+
+
 # -- render ------------------------------------------------------------------------------------
 @pytest.fixture
 def built(gml, tmp_path):

@@ -176,7 +176,8 @@ def _leave_now(status: int) -> None:
     streams are flushed, without the interpreter's teardown: every output is written and
     closed by then, and tearing down ~860 modules and the LLVM code of every loaded kernel took
     0.15-0.2 s of each warm command (about a tenth of a map render of the 1M city). A live
-    non-daemon thread keeps the ordinary exit, which waits for it."""
+    non-daemon thread keeps the ordinary exit, which waits for it, and so does a profiler or
+    tracer (``python -m cProfile``, pyinstrument: they report after the command returns)."""
     import atexit
     import os
     import sys
@@ -185,8 +186,9 @@ def _leave_now(status: int) -> None:
     from cityshade.runtime.threadpool import shutdown
 
     shutdown()
-    if any(t is not threading.main_thread() and t.is_alive() and not t.daemon
-           for t in threading.enumerate()):
+    if sys.getprofile() is not None or sys.gettrace() is not None or any(
+            t is not threading.main_thread() and t.is_alive() and not t.daemon
+            for t in threading.enumerate()):
         sys.exit(status)
     atexit._run_exitfuncs()
     for stream in (sys.stdout, sys.stderr):
