@@ -155,7 +155,8 @@ def test_own_process_leaves_after_its_exit_handlers_without_the_teardown(tmp_pat
     code = ("import atexit, sys\n"
             f"atexit.register(lambda: open({str(tmp_path / 'exit-handler')!r}, 'w').close())\n"
             "class Kept:\n"
-            f"    def __del__(self): open({str(tmp_path / 'teardown')!r}, 'w').close()\n"
+            f"    def __del__(self, open=open):\n"  # the builtins are gone by then
+            f"        open({str(tmp_path / 'teardown')!r}, 'w').close()\n"
             "kept = Kept()\n"
             "sys.argv = ['cityshade', '--help']\n"
             "from cityshade.__main__ import run\nrun()\n")
