@@ -175,7 +175,7 @@ def _leave_now(status: int) -> None:
     """End the process with ``status`` once the exit handlers have run and the standard
     streams are flushed, without the interpreter's teardown: every output is written and
     closed by then, and tearing down ~860 modules and the LLVM code of every loaded kernel took
-    0.15-0.2 s of each warm command (about a tenth of a map render of the 1M city). A live
+    0.15-0.3 s of each warm render (about a tenth of a map render of the 1M city). A live
     non-daemon thread keeps the ordinary exit, which waits for it, and so does a profiler or
     tracer (``python -m cProfile``, pyinstrument: they report after the command returns)."""
     import atexit
