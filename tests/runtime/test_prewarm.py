@@ -202,3 +202,76 @@ def test_a_terminal_is_told_why_the_first_use_waits():
     assert tty.text == ("\r\033[Kcityshade: first use of render: compiling its kernels once "
                         "(2 processes)\n")    # the line cleared first: progress may be on it
     assert log.text == ""
+
+
+class _FakeChild:
+    """A child process as wait() and stop() see it: running until ``end()``."""
+
+    def __init__(self):
+        self.returncode, self.stdout = None, None
+
+    def poll(self):
+        return self.returncode
+
+    def end(self):
+        self.returncode = 0
+
+    def kill(self):
+        self.returncode = -9
+
+    def wait(self):
+        return self.returncode
+
+
+def test_the_command_waits_only_for_the_kernel_it_needs(monkeypatch):
+    """Each child reports an entry once it is in the cache; the command goes on as soon as
+    the kernel it is about to compile is reported (the other child still compiling), waits
+    while it is not, and does not wait at all for a kernel no child compiles."""
+    import threading
+
+    a, b = _FakeChild(), _FakeChild()
+    done: set[int] = {0}
+    monkeypatch.setattr(prewarm, "_state", dict(
+        prewarm._state, children=[a, b], shares=[[0, 2], [1]], done=done, mark=None,
+        names={"m:first": [0], "m:second": [1], "m:third": [2]}, should_stop=None,
+        on_wait=None, listener=None, told=False, used=False))
+    prewarm.wait("m:first")                 # reported: at once, both still running
+    prewarm.wait("m:unrecorded")            # nobody compiles it: at once
+    assert a.poll() is None and b.poll() is None
+    timer = threading.Timer(0.2, lambda: (done.add(1), b.end()))
+    timer.start()
+    prewarm.wait("m:second")                # blocks until child b reports entry 1
+    timer.join()
+    assert 1 in done and a.poll() is None and prewarm._state["children"] == [a, b]
+    a.end()
+    done.add(2)
+    prewarm.wait("m:third")                 # every child ended: stop() ran
+    assert prewarm._state["children"] == []
+
+
+def test_the_listener_names_the_kernel_numba_is_compiling():
+    from numba import njit
+    from numba.core import event
+    from numba.core.dispatcher import Dispatcher
+
+    seen = []
+
+    class Probe(event.Listener):
+        def on_start(self, ev):
+            seen.append(prewarm._compiling(Dispatcher.compile.__code__))
+
+        def on_end(self, ev):
+            pass
+
+    @njit
+    def tiny_kernel(x):
+        return x + 1
+
+    listener = Probe()
+    event.register("numba:compiler_lock", listener)
+    try:
+        assert tiny_kernel(1) == 2
+    finally:
+        event.unregister("numba:compiler_lock", listener)
+    name = f"{__name__}:test_the_listener_names_the_kernel_numba_is_compiling.<locals>.tiny_kernel"
+    assert seen and seen[0] == name, seen

@@ -6,16 +6,18 @@ kernels each command compiles, with the argument types it compiles them for, are
 ``kernels.json`` beside this module (``python -m cityshade.cli.record_kernels``, run on the bundled sample city). When a
 command starts and its kernels are not known to be in the cache yet, :func:`start` hands them
 to one child process per usable core (``python -m cityshade.runtime.prewarm --compile``),
-largest first, balanced by their recorded compile times; each child compiles its share into
-the command's Numba cache folder (``NUMBA_CACHE_DIR``, inherited). The command meanwhile reads
-its input; its first use of Numba's compiler waits for the children (a listener on Numba's
+balanced by their recorded compile times, each share in the order the command needs them;
+each child compiles its share into the command's Numba cache folder (``NUMBA_CACHE_DIR``,
+inherited) and prints each entry's index once it is saved. The command meanwhile reads its
+input; whenever it is about to compile a kernel (a listener on Numba's
 ``numba:compiler_lock`` event, which fires before the cache is looked at; the CPU target is
-set up first, as that takes the lock too), and from there on
-the kernels load from the cache. Answers cannot change: what a child writes is what the command
-would have compiled itself, and a kernel whose types changed since the recording is compiled by
+set up first, as that takes the lock too) it waits until the child that has that kernel has
+reported it, and loads it from the cache, while the children go on with the rest. Answers
+cannot change: what a child writes is what the command would have compiled itself, and a
+kernel whose types changed since the recording (or that no child compiles) is compiled by
 the command as before. A mark in the cache folder (one per command and manifest) says the work
-is done; a child that fails or is stopped leaves no mark, and the command compiles what is
-missing itself.
+is done: a command that waited lets the children finish at its end; a child that fails or is
+stopped leaves no mark, and the command compiles what is missing itself.
 
 ``CITYSHADE_PREWARM=0`` turns it off (the test suite does; its own tests turn it on).
 """
@@ -28,6 +30,7 @@ import os
 import pickle
 import subprocess
 import sys
+import threading
 import time
 from pathlib import Path
 
@@ -40,7 +43,8 @@ POLL_S = 0.02
 NICE = 10
 
 _state: dict = {"children": [], "mark": None, "listener": None, "should_stop": None,
-                "on_wait": None}
+                "on_wait": None, "shares": [], "names": {}, "done": set(), "told": False,
+                "used": False}
 
 
 def usable_cores() -> int:
@@ -74,7 +78,9 @@ def _mark_path(command: str, manifest_text: bytes) -> Path | None:
 
 def shares(entries: list[dict], n: int) -> list[list[int]]:
     """Entry indices split into ``n`` shares of about equal recorded compile time: largest
-    first, each to the share with the least so far (each share in that order)."""
+    first, each to the share with the least so far; each share then in the manifest's order,
+    the order the command first needs them in (it goes on as soon as the one it needs is
+    there)."""
     loads = [0.0] * n
     out: list[list[int]] = [[] for _ in range(n)]
     order = sorted(range(len(entries)), key=lambda i: -float(entries[i].get("compile_s", 0.0)))
@@ -82,7 +88,7 @@ def shares(entries: list[dict], n: int) -> list[list[int]]:
         k = loads.index(min(loads))
         out[k].append(i)
         loads[k] += float(entries[i].get("compile_s", 0.0))
-    return [s for s in out if s]
+    return [sorted(s) for s in out if s]
 
 
 def start(command: str, should_stop=None, manifest: Path = MANIFEST, on_wait=None) -> int:
@@ -114,17 +120,24 @@ def start(command: str, should_stop=None, manifest: Path = MANIFEST, on_wait=Non
     if not os.access(mark.parent, os.W_OK):
         return 0        # the children could not save: the command would compile it all again
     env = dict(os.environ, OPENBLAS_NUM_THREADS="1", MKL_NUM_THREADS="1")
-    children = []
+    children, started = [], []
+    done: set[int] = set()
     for share in shares(entries, cores):
         cmd = [sys.executable, "-m", "cityshade.runtime.prewarm", "--compile", str(manifest),
                command, ",".join(map(str, share))]
         try:
-            children.append(subprocess.Popen(cmd, env=env, stdin=subprocess.DEVNULL,
-                                             stdout=subprocess.DEVNULL,
-                                             stderr=subprocess.DEVNULL))
+            child = subprocess.Popen(cmd, env=env, stdin=subprocess.DEVNULL,
+                                     stdout=subprocess.PIPE, stderr=subprocess.DEVNULL)
         except OSError:
             break
-    _state.update(children=children, mark=mark, should_stop=should_stop, on_wait=on_wait)
+        children.append(child)
+        started.append(share)
+        threading.Thread(target=_read_reports, args=(child, done), daemon=True).start()
+    names: dict[str, list[int]] = {}
+    for i, entry in enumerate(entries):
+        names.setdefault(str(entry.get("kernel", "")), []).append(i)
+    _state.update(children=children, mark=mark, should_stop=should_stop, on_wait=on_wait,
+                  shares=started, names=names, done=done, told=False, used=False)
     if children:
         # Numba takes its compiler lock once to set up its CPU target (at the first ``@njit``
         # the command imports), which is no compile: done before listening, so a command
@@ -136,59 +149,126 @@ def start(command: str, should_stop=None, manifest: Path = MANIFEST, on_wait=Non
     return len(children)
 
 
-def _listen() -> None:
-    """Wait for the children at this process's first use of Numba's compiler."""
-    from numba.core import event
+def _read_reports(child, done: set) -> None:
+    """Collect the entry indices a child says it has compiled (one per line)."""
+    for line in child.stdout:
+        try:
+            done.add(int(line))
+        except ValueError:
+            continue
 
-    class FirstCompile(event.Listener):
+
+def _listen() -> None:
+    """Wait for the children whenever this process is about to compile a kernel one of them
+    has still to save; compile at once what none of them will."""
+    from numba.core import event
+    from numba.core.dispatcher import Dispatcher
+
+    compile_code = Dispatcher.compile.__code__
+
+    class KernelCompile(event.Listener):
         def on_start(self, ev):
-            wait()
+            wait(_compiling(compile_code))
 
         def on_end(self, ev):
             pass
 
-    listener = FirstCompile()
+    listener = KernelCompile()
     event.register("numba:compiler_lock", listener)
     _state["listener"] = listener
 
 
-def wait() -> None:
-    """Block until every child has ended (or a Ctrl-C is seen: then stop them); write the
-    mark when all of them compiled their share. Does nothing without children."""
+def _compiling(compile_code) -> str | None:
+    """``module:qualname`` of the kernel whose compile takes Numba's lock: the ``self`` of the
+    ``Dispatcher.compile`` frame below the lock's event (Numba's event carries no name);
+    None when there is none (then the command waits for every child, as it safely can)."""
+    frame = sys._getframe(2)
+    while frame is not None:
+        if frame.f_code is compile_code:
+            func = getattr(frame.f_locals.get("self"), "py_func", None)
+            return None if func is None else f"{func.__module__}:{func.__qualname__}"
+        frame = frame.f_back
+    return None
+
+
+def wait(kernel: str | None = None) -> None:
+    """Block until the children have saved ``kernel`` (every recorded signature of it), or
+    until every child has ended when ``kernel`` is None; at once when no child will save it.
+    A Ctrl-C seen stops the children. When every child has ended, the mark is written if all
+    of them compiled their share. Does nothing without children."""
     children = _state["children"]
     if not children:
         return
-    should_stop, on_wait = _state["should_stop"], _state["on_wait"]
+    should_stop = _state["should_stop"]
+    wanted = None if kernel is None else set(_state["names"].get(kernel, ()))
+    _state["used"] = True       # it compiles: the children's work is worth finishing
     try:
-        if on_wait is not None and any(c.poll() is None for c in children):
-            on_wait(len(children))
-        while any(c.poll() is None for c in children):
+        if _pending(wanted) and not _state["told"] and _state["on_wait"] is not None:
+            _state["told"] = True
+            _state["on_wait"](len(children))
+        while _pending(wanted):
             if should_stop is not None and should_stop():
-                break
+                stop()
+                return
             time.sleep(POLL_S)
-    finally:
-        ok = all(c.poll() == 0 for c in children)
+    except BaseException:
         stop()
-    if ok and _state["mark"] is not None:
-        try:
-            _state["mark"].touch()
-        except OSError:
-            pass        # a read-only or full cache: the next run compiles in parallel again
+        raise
+    if all(c.poll() is not None for c in children):
+        stop()
+
+
+def _pending(wanted: set | None) -> bool:
+    """Whether a running child has still to report one of the entries ``wanted`` (None: any
+    child still running)."""
+    done = _state["done"]
+    for child, share in zip(_state["children"], _state["shares"]):
+        if child.poll() is None and (wanted is None or (set(share) & wanted) - done):
+            return True
+    return False
 
 
 def stop() -> None:
-    """End the children that still run (the command ended before it compiled anything, or was
-    interrupted) and stop listening."""
+    """End the children and stop listening. A command that has waited for them (it compiles)
+    and was not interrupted lets them finish their shares, as the first compile once waited
+    for all of them; the mark is written when every child compiled its share. Otherwise (a
+    command whose small work ran interpreted, a Ctrl-C) they are killed and no mark is
+    written."""
     children, _state["children"] = _state["children"], []
-    for c in children:
-        if c.poll() is None:
-            c.kill()
-        c.wait()
-    listener, _state["listener"] = _state["listener"], None
-    if listener is not None:
-        from numba.core import event
+    should_stop = _state["should_stop"]
+    finish = _state["used"] and not (should_stop is not None and should_stop())
+    try:
+        for c in children:
+            while finish and c.poll() is None:
+                if should_stop is not None and should_stop():
+                    finish = False
+                    break
+                time.sleep(POLL_S)
+            if c.poll() is None:
+                c.kill()
+            c.wait()
+    except BaseException:       # a Ctrl-C while they finish: none is left behind
+        for c in children:
+            if c.poll() is None:
+                c.kill()
+                c.wait()
+        raise
+    finally:
+        listener, _state["listener"] = _state["listener"], None
+        if listener is not None:
+            from numba.core import event
 
-        event.unregister("numba:compiler_lock", listener)
+            event.unregister("numba:compiler_lock", listener)
+        for c in children:
+            if c.stdout is not None:
+                c.stdout.close()
+    done = _state["done"]
+    if children and all(c.returncode == 0 and set(share) <= done
+                        for c, share in zip(children, _state["shares"])):
+        try:
+            _state["mark"].touch()
+        except (OSError, AttributeError):
+            pass        # a read-only or full cache: the next run compiles in parallel again
 
 
 def entry_types(entry: dict) -> tuple:
@@ -206,20 +286,23 @@ def _dispatcher(name: str):
     return obj
 
 
-def compile_share(entries: list[dict]) -> None:
-    """Compile (or load, when already cached) each entry's kernel for its recorded types.
-    An entry that cannot be read or compiled any more (types of another Numba, a kernel
-    renamed or given other parameters) is left to the command."""
+def compile_share(entries: list[tuple[int, dict]]) -> None:
+    """Compile (or load, when already cached) each ``(index, entry)``'s kernel for its
+    recorded types and print the index when it is in the cache. An entry that cannot be read
+    or compiled any more (types of another Numba, a kernel renamed or given other parameters)
+    is left to the command."""
     from numba.core.errors import NumbaError
 
-    for entry in entries:
+    for index, entry in entries:
         try:
             types = entry_types(entry)
             dispatcher = _dispatcher(entry["kernel"])
             dispatcher.compile(tuple(types))
         except (ImportError, AttributeError, KeyError, ValueError, EOFError,
                 pickle.UnpicklingError, NumbaError):
-            continue    # a stale entry (renamed, other types): the command compiles it itself
+            pass        # a stale entry (renamed, other types): the command compiles it itself
+        # Saved (or never will be): the command, which may be waiting for it, goes on.
+        print(index, flush=True)
 
 
 def _main(argv: list[str]) -> None:
@@ -233,7 +316,10 @@ def _main(argv: list[str]) -> None:
         os.nice(NICE)
     manifest, command, share = argv[1], argv[2], argv[3]
     entries = load_manifest(Path(manifest))["commands"].get(command, [])
-    compile_share([entries[int(i)] for i in share.split(",") if i])
+    compile_share([(int(i), entries[int(i)]) for i in share.split(",") if i])
+    # Everything is saved and reported: the interpreter's teardown (the LLVM code of each
+    # kernel) would only keep the command waiting at its end.
+    os._exit(0)
 
 
 if __name__ == "__main__":
