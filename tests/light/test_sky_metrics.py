@@ -176,6 +176,48 @@ def test_weighted_sums_equal_the_plain_loop_and_do_not_depend_on_the_other_rows(
         np.testing.assert_array_equal(part, out[rows])
 
 
+@pytest.mark.parametrize("threads", [1, 2])
+def test_front_rays_and_bits_in_chunks_equal_one_pass_over_the_receivers(threads):
+    """More receivers than a thread's chunk (three chunks): the rays of the receivers in front
+    are those of one numpy pass in receiver order, with the same float64 origins, and the
+    answers land in the bits numpy's pack gives, whatever the threads (the bits are set in
+    chunks on the kernel threads)."""
+    import numba
+
+    from cityshade.light.kernels import RECEIVER_CHUNK, front_origins, set_visible_bits
+    from cityshade.light.sky import FRONT_MIN_COS
+    from cityshade.trace import SHADOW_OFFSET_MIN_SCALE_M, SHADOW_OFFSET_REL
+
+    rng = np.random.default_rng(11)
+    n = 2 * RECEIVER_CHUNK + 4321
+    pts = rng.uniform(-800.0, 800.0, (n, 3))
+    nrm = rng.normal(size=(n, 3))
+    nrm /= np.linalg.norm(nrm, axis=1, keepdims=True)
+    d = np.array([0.3, -0.5, 0.81])
+    d /= np.linalg.norm(d)
+    rows, origins = np.empty(n, np.int64), np.empty((n, 3))
+    before = numba.get_num_threads()
+    numba.set_num_threads(threads)
+    try:
+        k = front_origins(pts, nrm, d, FRONT_MIN_COS, SHADOW_OFFSET_REL,
+                          SHADOW_OFFSET_MIN_SCALE_M, rows, origins)
+        want = np.flatnonzero((nrm[:, 0] * d[0] + nrm[:, 1] * d[1]) + nrm[:, 2] * d[2]
+                              > FRONT_MIN_COS)
+        assert 0 < k == len(want) < n
+        np.testing.assert_array_equal(rows[:k], want)
+        scale = SHADOW_OFFSET_REL * np.maximum(np.abs(pts[want]).max(axis=1),
+                                               SHADOW_OFFSET_MIN_SCALE_M)
+        np.testing.assert_array_equal(origins[:k], pts[want] + (nrm[want] + d) * scale[:, None])
+        blocked = rng.random(k) < 0.4
+        bits = np.zeros((n, 19), np.uint8)
+        set_visible_bits(bits, rows[:k], blocked, 141)
+        column = np.zeros((n, 152), bool)
+        column[want[~blocked], 141] = True
+        np.testing.assert_array_equal(bits, np.packbits(column, axis=1))
+    finally:
+        numba.set_num_threads(before)
+
+
 @pytest.mark.parametrize("relative", ["berlin-lichtenberg-trees/lod2_buildings_berlin_test_area.gml",
                                       "munich-tum-campus-lod2/TUM Munich.gml"])
 def test_engines_give_the_same_bits_on_real_buildings(relative):
@@ -217,7 +259,8 @@ def test_distinct_normals_equal_numpy_s_unique_rows():
     n /= np.linalg.norm(n, axis=1, keepdims=True)
     axes = np.array([[0, 0, 1], [0, 0, -1], [1, 0, 0], [-1, 0, 0], [0, 1, 0], [0, -1, 0]], float)
     walls = n[:50] + rng.normal(scale=1e-7, size=(50, 3))   # float32-like scatter: merges
-    normals = np.concatenate([n, axes, axes + 3e-8, walls, n[:50]])
+    # Runs of equal rows too (a map's neighbouring pixels), which the sort skips over.
+    normals = np.concatenate([n, axes, axes + 3e-8, walls, n[:50], np.repeat(n[:300], 4, 0)])
     unique, inverse = distinct_normals(normals)
     want_u, want_inv = np.unique(np.round(normals / NORMAL_ROUND) * NORMAL_ROUND, axis=0,
                                  return_inverse=True)

@@ -109,7 +109,12 @@ def distinct_normals(normals) -> tuple[np.ndarray, np.ndarray]:
         raise UsageError("receiver normals must be unit vectors")
     cells = (steps + 2.0 ** 20).astype(np.int64)          # 0 .. 2^21 - 1 per component
     keys = (cells[:, 0] << 42) | (cells[:, 1] << 21) | cells[:, 2]
-    unique_keys, inverse = np.unique(keys, return_inverse=True)
+    # Neighbouring receivers (a map's pixels) mostly share their normal: the sort is over the
+    # runs of equal keys (a 1 m map's 2.14 M receivers: 0.29 s for every row).
+    runs = np.flatnonzero(np.concatenate(([True], keys[1:] != keys[:-1]))) if len(keys) else \
+        np.zeros(0, np.int64)
+    unique_keys, run_inverse = np.unique(keys[runs], return_inverse=True)
+    inverse = np.repeat(run_inverse.reshape(-1), np.diff(np.append(runs, len(keys))))
     unique = np.stack([((unique_keys >> s) & ((1 << 21) - 1)) - 2 ** 20 for s in (42, 21, 0)],
                       axis=1).astype(np.float64) * NORMAL_ROUND
     return unique, inverse.reshape(-1)
