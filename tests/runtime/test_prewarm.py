@@ -235,6 +235,8 @@ def test_the_command_waits_only_for_the_kernel_it_needs(monkeypatch):
         prewarm._state, children=[a, b], shares=[[0, 2], [1]], done=done, mark=None,
         names={"m:first": [0], "m:second": [1], "m:third": [2]}, should_stop=None,
         on_wait=None, listener=None, told=False, used=False))
+    assert prewarm.pending("m:second") and not prewarm.pending("m:first")
+    assert not prewarm.pending("m:unrecorded")
     prewarm.wait("m:first")                 # reported: at once, both still running
     prewarm.wait("m:unrecorded")            # nobody compiles it: at once
     assert a.poll() is None and b.poll() is None

@@ -126,3 +126,21 @@ def test_exact_render_equals_raytrace_and_says_which_engine(sample_city_scene, c
     np.testing.assert_array_equal(exact.lit, ref.lit)
     note = exact.diagnostics.shadow["note"]
     assert note.startswith(("exact engine izb: ", "exact engine raytrace: ")), note
+
+
+def test_the_choice_waits_for_izb_while_the_command_s_children_compile_it(monkeypatch):
+    """``cityshade sky``'s first use: its children compile izb's kernels while the command
+    starts; the engine for the whole run is chosen once they have, not on a cache that is
+    still being filled (the first sky of the 1M city would go to raytrace: 35 s against 21)."""
+    from cityshade.runtime import interpret, prewarm
+
+    cached = []
+    waited = []
+    monkeypatch.setattr(interpret, "compiled_or_cached", lambda kernel: bool(cached))
+    monkeypatch.setattr(prewarm, "pending", lambda name: not cached)
+    monkeypatch.setattr(prewarm, "wait", lambda name: (waited.append(name), cached.append(1)))
+    assert E.izb_compiled()
+    assert waited == ["cityshade.lightspace.kernels:query"]
+    cached.clear()
+    monkeypatch.setattr(prewarm, "pending", lambda name: False)   # no child has it: no wait
+    assert not E.izb_compiled() and len(waited) == 1

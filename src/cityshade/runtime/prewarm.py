@@ -218,6 +218,13 @@ def wait(kernel: str | None = None) -> None:
         stop()
 
 
+def pending(kernel: str) -> bool:
+    """Whether a child of this command is still to save ``kernel`` (``module:qualname``): a
+    caller choosing by what is compiled (``exact``'s engine) waits for it with
+    :func:`wait` instead of taking it for uncompiled."""
+    return bool(_state["children"]) and _pending(set(_state["names"].get(kernel, ())))
+
+
 def _pending(wanted: set | None) -> bool:
     """Whether a running child has still to report one of the entries ``wanted`` (None: any
     child still running)."""

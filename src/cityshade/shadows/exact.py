@@ -60,10 +60,17 @@ class EngineChoice:
 
 def izb_compiled() -> bool:
     """Whether izb's kernels are compiled in this process or in Numba's cache (its query stands
-    for them: they compile together)."""
+    for them: they compile together). While the command's first-use children are compiling
+    them (``cityshade sky``'s do), it waits for them: the answer decides a whole run."""
     from cityshade.lightspace.kernels import query
+    from cityshade.runtime import prewarm
     from cityshade.runtime.interpret import compiled_or_cached
 
+    if compiled_or_cached(query):
+        return True
+    name = f"{query.py_func.__module__}:{query.py_func.__qualname__}"
+    if prewarm.pending(name):
+        prewarm.wait(name)
     return compiled_or_cached(query)
 
 
