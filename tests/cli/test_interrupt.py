@@ -321,6 +321,22 @@ def test_numba_on_stack_sees_numba_code_called_from_a_kernel_wrapper():
     assert not numba_on_stack(sys._getframe())
 
 
+def test_import_on_stack_sees_a_module_being_imported(tmp_path, monkeypatch):
+    """A Ctrl-C is held while a module is imported: raised in an extension module's start-up
+    (OpenImageIO's nanobind enums, imported at the first texture read), it aborted the render
+    with a traceback."""
+    from cityshade.cli.options import import_on_stack
+
+    (tmp_path / "probe_module_for_import.py").write_text(
+        "import sys\nfrom cityshade.cli.options import import_on_stack\n"
+        "SEEN = import_on_stack(sys._getframe())\n")
+    monkeypatch.syspath_prepend(str(tmp_path))
+    import probe_module_for_import
+
+    assert probe_module_for_import.SEEN is True
+    assert not import_on_stack(sys._getframe())
+
+
 #: ``python -m cityshade`` (runpy imports the package with argv[0] "-m") and the console
 #: script, each sent a Ctrl-C (or a SIGTERM) right after ``import cityshade``; and a program
 #: that imports the library, whose handlers stay Python's.

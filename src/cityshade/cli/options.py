@@ -58,7 +58,8 @@ def on_sigint(signum, frame) -> None:
     result with an exception set``). With Numba on the stack the Ctrl-C is held: during a
     compile until the compiler's current pass ends (:func:`_raise_after_compile`; llvmlite's
     objects are whole then), otherwise it is delivered again every :data:`REDELIVER_S`
-    until it lands in code that is not Numba's (:func:`_deliver_again`)."""
+    until it lands in code that is not Numba's (:func:`_deliver_again`); so it is while a
+    module is being imported (:func:`import_on_stack`)."""
     if _interrupt["raised"] or _interrupt["done"]:
         return  # one KeyboardInterrupt; none once the command has ended (:func:`command_done`)
     _interrupt["seen"] = True
@@ -66,7 +67,7 @@ def on_sigint(signum, frame) -> None:
         signal.signal(signal.SIGINT, signal.SIG_IGN)
         _raise_after_compile()
         return
-    if numba_on_stack(frame):
+    if numba_on_stack(frame) or import_on_stack(frame):
         _deliver_again()
         return
     _interrupt["raised"] = True
@@ -104,6 +105,18 @@ def numba_on_stack(frame) -> bool:
                   and getattr(module, "__file__", None))
     while roots and frame is not None:
         if frame.f_code.co_filename.startswith(roots):
+            return True
+        frame = frame.f_back
+    return False
+
+
+def import_on_stack(frame) -> bool:
+    """Whether ``frame`` or a frame it was called from is importing a module: an exception
+    raised there leaves the module half made, and an extension module's own start-up may not
+    survive it (OpenImageIO's, imported when the first texture is read: "Critical nanobind
+    error", the process aborted with a traceback)."""
+    while frame is not None:
+        if frame.f_code.co_filename.startswith("<frozen importlib._bootstrap"):
             return True
         frame = frame.f_back
     return False
