@@ -232,7 +232,7 @@ def test_the_command_waits_only_for_the_kernel_it_needs(monkeypatch):
     a, b = _FakeChild(), _FakeChild()
     done: set[int] = {0}
     monkeypatch.setattr(prewarm, "_state", dict(
-        prewarm._state, children=[a, b], shares=[[0, 2], [1]], done=done, mark=None,
+        prewarm._state, children=[a, b], shares=[frozenset({0, 2}), frozenset({1})], done=done, mark=None,
         names={"m:first": [0], "m:second": [1], "m:third": [2]}, should_stop=None,
         on_wait=None, listener=None, told=False, used=False))
     assert prewarm.pending("m:second") and not prewarm.pending("m:first")

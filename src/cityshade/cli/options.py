@@ -103,8 +103,14 @@ def numba_on_stack(frame) -> bool:
     roots = tuple(os.path.dirname(module.__file__) + os.sep for name in ("numba", "llvmlite")
                   if (module := sys.modules.get(name)) is not None
                   and getattr(module, "__file__", None))
-    while roots and frame is not None:
-        if frame.f_code.co_filename.startswith(roots):
+    return _on_stack(frame, roots)
+
+
+def _on_stack(frame, prefixes: tuple[str, ...]) -> bool:
+    """Whether ``frame`` or a frame it was called from runs code of a file named with one of
+    ``prefixes``."""
+    while prefixes and frame is not None:
+        if frame.f_code.co_filename.startswith(prefixes):
             return True
         frame = frame.f_back
     return False
@@ -115,11 +121,7 @@ def import_on_stack(frame) -> bool:
     raised there leaves the module half made, and an extension module's own start-up may not
     survive it (OpenImageIO's, imported when the first texture is read: "Critical nanobind
     error", the process aborted with a traceback)."""
-    while frame is not None:
-        if frame.f_code.co_filename.startswith("<frozen importlib._bootstrap"):
-            return True
-        frame = frame.f_back
-    return False
+    return _on_stack(frame, ("<frozen importlib._bootstrap",))
 
 
 def _deliver_again() -> None:

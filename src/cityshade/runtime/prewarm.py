@@ -131,7 +131,7 @@ def start(command: str, should_stop=None, manifest: Path = MANIFEST, on_wait=Non
         except OSError:
             break
         children.append(child)
-        started.append(share)
+        started.append(frozenset(share))
         threading.Thread(target=_read_reports, args=(child, done), daemon=True).start()
     names: dict[str, list[int]] = {}
     for i, entry in enumerate(entries):
@@ -202,20 +202,21 @@ def wait(kernel: str | None = None) -> None:
     should_stop = _state["should_stop"]
     wanted = None if kernel is None else set(_state["names"].get(kernel, ()))
     _state["used"] = True       # it compiles: the children's work is worth finishing
+    finished = False
     try:
         if _pending(wanted) and not _state["told"] and _state["on_wait"] is not None:
             _state["told"] = True
             _state["on_wait"](len(children))
         while _pending(wanted):
             if should_stop is not None and should_stop():
-                stop()
-                return
+                break
             time.sleep(POLL_S)
-    except BaseException:
-        stop()
-        raise
-    if all(c.poll() is not None for c in children):
-        stop()
+        else:
+            finished = True
+    finally:
+        # Stopped (a Ctrl-C, an error raised while waiting) or every child has ended.
+        if not finished or all(c.poll() is not None for c in children):
+            stop()
 
 
 def pending(kernel: str) -> bool:
@@ -230,7 +231,7 @@ def _pending(wanted: set | None) -> bool:
     child still running)."""
     done = _state["done"]
     for child, share in zip(_state["children"], _state["shares"]):
-        if child.poll() is None and (wanted is None or (set(share) & wanted) - done):
+        if child.poll() is None and (wanted is None or (share & wanted) - done):
             return True
     return False
 
@@ -251,16 +252,11 @@ def stop() -> None:
                     finish = False
                     break
                 time.sleep(POLL_S)
+    finally:
+        for c in children:      # unfinished, or a Ctrl-C while they finish: none left behind
             if c.poll() is None:
                 c.kill()
             c.wait()
-    except BaseException:       # a Ctrl-C while they finish: none is left behind
-        for c in children:
-            if c.poll() is None:
-                c.kill()
-                c.wait()
-        raise
-    finally:
         listener, _state["listener"] = _state["listener"], None
         if listener is not None:
             from numba.core import event
@@ -270,7 +266,7 @@ def stop() -> None:
             if c.stdout is not None:
                 c.stdout.close()
     done = _state["done"]
-    if children and all(c.returncode == 0 and set(share) <= done
+    if children and all(c.returncode == 0 and share <= done
                         for c, share in zip(children, _state["shares"])):
         try:
             _state["mark"].touch()
@@ -293,11 +289,11 @@ def _dispatcher(name: str):
     return obj
 
 
-def compile_share(entries: list[tuple[int, dict]]) -> None:
+def compile_share(entries: list[tuple[int, dict]], saved=None) -> None:
     """Compile (or load, when already cached) each ``(index, entry)``'s kernel for its
-    recorded types and print the index when it is in the cache. An entry that cannot be read
-    or compiled any more (types of another Numba, a kernel renamed or given other parameters)
-    is left to the command."""
+    recorded types and call ``saved(index)`` when it is in the cache. An entry that cannot be
+    read or compiled any more (types of another Numba, a kernel renamed or given other
+    parameters) is left to the command."""
     from numba.core.errors import NumbaError
 
     for index, entry in entries:
@@ -308,8 +304,14 @@ def compile_share(entries: list[tuple[int, dict]]) -> None:
         except (ImportError, AttributeError, KeyError, ValueError, EOFError,
                 pickle.UnpicklingError, NumbaError):
             pass        # a stale entry (renamed, other types): the command compiles it itself
-        # Saved (or never will be): the command, which may be waiting for it, goes on.
-        print(index, flush=True)
+        if saved is not None:   # saved (or never will be): a command waiting for it goes on
+            saved(index)
+
+
+def _report(index: int) -> None:
+    """A child's line to its command (:func:`_read_reports`): an entry is saved."""
+    sys.stdout.write(f"{index}\n")
+    sys.stdout.flush()
 
 
 def _main(argv: list[str]) -> None:
@@ -323,7 +325,7 @@ def _main(argv: list[str]) -> None:
         os.nice(NICE)
     manifest, command, share = argv[1], argv[2], argv[3]
     entries = load_manifest(Path(manifest))["commands"].get(command, [])
-    compile_share([(int(i), entries[int(i)]) for i in share.split(",") if i])
+    compile_share([(int(i), entries[int(i)]) for i in share.split(",") if i], _report)
     # Everything is saved and reported: the interpreter's teardown (the LLVM code of each
     # kernel) would only keep the command waiting at its end.
     os._exit(0)
