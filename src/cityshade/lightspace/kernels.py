@@ -15,8 +15,9 @@ Two exact facts make the lists short and safe:
 * Depth: ``hit_record``'s distance is a convex combination of the vertices' ``(v[kz] - o[kz])
   * sz`` computed with sign-exact float operations, so a triangle whose vertices all have
   ``sgn * v[kz] < sgn * o[kz]`` (``sgn`` the sign of d[kz]) gives t < 0 and can never shade o.
-  Casters are sorted by ``key = max_v sgn * v[kz]`` (descending) and a receiver stops at the
-  first key below its own ``sgn * o[kz]``: lit receivers stop early too.
+  Casters are sorted by ``key = max_v sgn * v[kz]`` (descending) and a cell's receivers stop
+  at the first key below the lowest ``sgn * o[kz]`` of those still lit: lit receivers stop
+  early too.
 * Binning: a triangle goes into every cell its light-plane box widened by ``margin_m`` touches;
   the cell index is a monotone float function of the coordinate, so a receiver inside the
   widened box lands in a cell of the triangle's range. ``margin_m`` covers the difference
@@ -576,93 +577,24 @@ def scatter_back(order, sorted_values, out):
         out[order[q]] = sorted_values[q]
 
 
-@njit(cache=True, inline="always")
-def _may_hit(packed, j, rx, ry, rkey, depth_margin_m):
-    """False only when caster ``j`` cannot hit the receiver at light-plane ``(rx, ry)`` with key
-    ``rkey``: outside its widened box (the binning argument), behind its own key, behind
-    its depth plane by more than ``depth_margin_m`` (see :func:`pack_casters`): t < 0, or
-    outside one of its widened edge half-planes (outside the triangle)."""
-    if np.float64(packed[j, PACK_KEY]) < rkey:
-        return False
-    if (rx < packed[j, PACK_BOX] or rx > packed[j, PACK_BOX + 1]
-            or ry < packed[j, PACK_BOX + 2] or ry > packed[j, PACK_BOX + 3]):
-        return False
-    zp = (np.float64(packed[j, PACK_KEY]) + np.float64(packed[j, PACK_PLANE + 2])
-          + np.float64(packed[j, PACK_PLANE]) * (rx - packed[j, PACK_BOX])
-          + np.float64(packed[j, PACK_PLANE + 1]) * (ry - packed[j, PACK_BOX + 2]))
-    if zp < rkey - depth_margin_m:
-        return False
-    return _inside_edges(packed, j, rx, ry)
-
-
-@njit(cache=True, inline="always")
-def _inside_edges(packed, j, rx, ry):
-    """False only when the light-plane point lies outside one of caster ``j``'s widened edge
-    half-planes (:func:`pack_casters`): hit_record would find it outside the triangle."""
-    dx = rx - packed[j, PACK_BOX]
-    dy = ry - packed[j, PACK_BOX + 2]
-    for e in range(3):
-        if (np.float64(packed[j, PACK_EDGE + 3 * e]) * dx
-                + np.float64(packed[j, PACK_EDGE + 3 * e + 1]) * dy
-                + np.float64(packed[j, PACK_EDGE + 3 * e + 2])) < 0.0:
-            return False
-    return True
-
-
 #: Tiles per chunk of the query handed to a thread (:func:`query`): consecutive tiles of a
 #: row share casters, so a chunk keeps them in cache; small enough for the threads to balance.
 QUERY_CHUNK_TILES = 8
 
 
-#: A cell whose list holds at most this many casters is queried caster by caster over chunks of
-#: :data:`QUERY_CHUNK` receivers (a branch-free pass over the chunk per caster: box, depth
-#: plane and edge half-planes as one mask, then the exact test where it is set, which is almost
-#: only where it hits), a longer one receiver by receiver (the key order stops each scan early).
-#: Measured on the 1M-triangle city (query CPU time, one thread, lists of 40 / 60 / 80 / any
-#: length caster-major): camera 30 deg 25.0 / 27.1 / 23.0 / 22.7 ms, map 30 deg 340 / 327 / 310
-#: / 311 ms, map at a 3 deg sun 202 / 208 / 248 / 329 ms.
-QUERY_SHORT_LIST = 60
+#: Receivers of a cell are queried caster by caster over chunks of this many (a branch-free
+#: pass over the chunk per caster: box, depth plane and edge half-planes as one mask, then the
+#: exact test where it is set, which is almost only where it hits), down the cell's list until
+#: the casters lie behind every receiver still lit. Every cell, whatever its list's length:
+#: with the lowest key of the lanes still lit (recomputed after a hit) a long list stops as
+#: early as receiver by receiver did, and the mask is cheaper than one test per entry. Measured
+#: on the 1M-triangle city (query wall ms, two threads, against receiver by receiver for lists
+#: over 60): overview at suns of 30, 3 and 12 degrees 36.6 / 32.0 / 26.1 -> 25.4 / 24.9 / 21.6,
+#: 1 m map 58.0 / 54.5 / 46.7 -> 45.5 / 39.0 / 40.9, sky directions of the 1 m map at 6-66
+#: degrees 31.8-47.4 -> 26.5-38.8.
 QUERY_CHUNK = 64
 #: Lanes of the caster-major mask are padded to a multiple of this (see _query_caster_major).
 QUERY_LANES = 8
-
-
-@njit(cache=True, inline="always")
-def _query_receiver_major(packed, refs, p0, p1, origins, r0, r1, kx, ky, kz, sx, sy, sz, sgn,
-                          depth_margin_m, tmin, tmax, out, cache_k):
-    """Receivers r0..r1 of one cell, each against the last occluder, then its list in key
-    order until the first hit or the first caster behind it; returns (tests, last occluder)."""
-    tests = 0
-    for i in range(r0, r1):
-        okx = origins[i, kx]
-        oky = origins[i, ky]
-        okz = origins[i, kz]
-        rkey = sgn * okz
-        rx = okx - sx * okz
-        ry = oky - sy * okz
-        out[i] = False
-        # The last occluder first (coherent receivers share it), after the same exact skips as
-        # a list entry: most receivers have left its box.
-        if cache_k >= 0 and _may_hit(packed, cache_k, rx, ry, rkey, depth_margin_m):
-            tests += 1
-            hit, t, u, v = hit_record(packed, cache_k, okx, oky, okz, kx, ky, kz, sx, sy, sz)
-            if hit and tmin <= t <= tmax:
-                out[i] = True
-                continue
-        for p in range(p0, p1):
-            j = refs[p]
-            # Sorted by key: this caster and all after it lie behind the origin.
-            if np.float64(packed[j, PACK_KEY]) < rkey:
-                break
-            if j == cache_k or not _may_hit(packed, j, rx, ry, rkey, depth_margin_m):
-                continue
-            tests += 1
-            hit, t, u, v = hit_record(packed, j, okx, oky, okz, kx, ky, kz, sx, sy, sz)
-            if hit and tmin <= t <= tmax:
-                out[i] = True
-                cache_k = j
-                break
-    return tests, cache_k
 
 
 @njit(cache=True, inline="always")
@@ -670,10 +602,16 @@ def _query_caster_major(packed, refs, p0, p1, origins, c0, m, kx, ky, kz, sx, sy
                         depth_margin_m, tmin, tmax, out, cache_k, rx, ry, rk, cand):
     """Receivers c0..c0+m of one cell (m <= QUERY_CHUNK; ``rx .. cand`` scratch of that size)
     against the last occluder, then the cell's list in key order: per caster one branch-free
-    mask over the receivers still lit (the skips of :func:`_may_hit`, the same float
-    operations; ``rx - x0 >= 0`` is ``rx >= x0`` exactly), then :func:`hit_record` where it
-    is set; stops when every receiver is
-    shadowed or the casters lie behind the lowest one. Returns (tests, last occluder)."""
+    mask over the receivers still lit, then :func:`hit_record` where it is set; stops when
+    every receiver is shadowed or the casters lie behind the lowest one still lit (sorted by
+    key: that caster and all after it lie behind every such origin). Returns (tests, last
+    occluder).
+
+    The mask is False only where caster j cannot hit the receiver at light-plane ``(rx, ry)``
+    with key ``rk``: behind its own key (t < 0), outside its widened box (the binning
+    argument; ``rx - x0 >= 0`` is ``rx >= x0`` exactly), behind its depth plane by more than
+    ``depth_margin_m`` (t < 0, see :func:`pack_casters`), or outside one of its widened edge
+    half-planes (outside the triangle)."""
     tests = 0
     k_low = np.inf
     bx0 = np.inf
@@ -736,6 +674,7 @@ def _query_caster_major(packed, refs, p0, p1, origins, c0, m, kx, ky, kz, sx, sy
         eb2 = np.float64(packed[j, PACK_EDGE + 7])
         ec2 = np.float64(packed[j, PACK_EDGE + 8])
         n_cand = 0
+        shadowed = False
         for q in range(m_pad):
             dx = rx[q] - x0
             dy = ry[q] - y0
@@ -759,8 +698,13 @@ def _query_caster_major(packed, refs, p0, p1, origins, c0, m, kx, ky, kz, sx, sy
                     rk[q] = np.inf
                     cache_k = j
                     left -= 1
+                    shadowed = True
         if left == 0:
             break
+        if shadowed:     # the lowest receiver still lit may stand higher: stop sooner
+            k_low = np.inf
+            for q in range(m):
+                k_low = min(k_low, rk[q])
     return tests, cache_k
 
 
@@ -778,8 +722,8 @@ def query(packed, ref_start, refs, rec_start, origins, kx, ky, kz, sx, sy, sz, s
     plane: a caster whose plane lies more than ``depth_margin_m`` behind the receiver along
     the shear axis gives t < 0. The test is :func:`hit_record` with ``tmin <= t <= tmax``,
     exactly as in :func:`cityshade.trace.kernels.any_hit`; the decision is "some candidate
-    passes", so the order in which a cell's pairs are tested (receiver- or caster-major, see
-    :data:`QUERY_SHORT_LIST`) changes only the time. ``out_tests`` (n_tiles,) int64 counts the
+    passes", so the order in which a cell's pairs are tested (caster by caster, see
+    :data:`QUERY_CHUNK`) changes only the time. ``out_tests`` (n_tiles,) int64 counts the
     triangle tests per tile (a profile, not used for the answer). A serial ``nogil`` kernel
     over a range of tiles, for :func:`cityshade.runtime.threadpool.run_chunks` (a ``prange``
     body loaded from Numba's cache may run slower than its first compile).
@@ -800,16 +744,11 @@ def query(packed, ref_start, refs, rec_start, origins, kx, ky, kz, sx, sy, sz, s
             if p0 == p1:
                 for i in range(r0, r1):
                     out[i] = False
-            elif p1 - p0 > QUERY_SHORT_LIST:
-                n_t, cache_k = _query_receiver_major(
-                    packed, refs, p0, p1, origins, r0, r1, kx, ky, kz, sx, sy, sz, sgn,
-                    depth_margin_m, tmin, tmax, out, cache_k)
+                continue
+            for c0 in range(r0, r1, QUERY_CHUNK):
+                n_t, cache_k = _query_caster_major(
+                    packed, refs, p0, p1, origins, c0, min(r1, c0 + QUERY_CHUNK) - c0,
+                    kx, ky, kz, sx, sy, sz, sgn, depth_margin_m, tmin, tmax, out, cache_k,
+                    rx, ry, rk, cand)
                 tests += n_t
-            else:
-                for c0 in range(r0, r1, QUERY_CHUNK):
-                    n_t, cache_k = _query_caster_major(
-                        packed, refs, p0, p1, origins, c0, min(r1, c0 + QUERY_CHUNK) - c0,
-                        kx, ky, kz, sx, sy, sz, sgn, depth_margin_m, tmin, tmax, out, cache_k,
-                        rx, ry, rk, cand)
-                    tests += n_t
         out_tests[b] = tests
