@@ -105,46 +105,45 @@ def plan_tiles(valid: np.ndarray | None, points_px: np.ndarray | None,
     """
     if tile_px is not None and int(tile_px) < 1:
         raise UsageError(f"--tile-px must be >= 1, not {tile_px}")
-    parts, slots, starts = [], [], [0]
     shape = (0, 0) if valid is None else tuple(int(v) for v in valid.shape)
     n_pixels = shape[0] * shape[1]
-
-    def add(data, slot, keys):
-        # Tiles are runs of equal key in sorted order.
-        cuts = np.flatnonzero(np.diff(keys)) + 1
-        base = starts[-1]
-        for c in cuts:
-            starts.append(base + int(c))
-        if len(keys):
-            starts.append(base + len(keys))
-        parts.append(data)
-        slots.append(slot)
-
+    # (points, normals, their rows in tile order, the rows' slots, tile keys or None for one
+    # tile); the plan's rows are gathered once into one array (a 1 m map's 2.14 M pixels:
+    # 0.7 s of fresh pages for the copies a gather per part and a concatenation made).
+    sources = []
     if valid is not None:
-        rows, cols = np.nonzero(np.asarray(valid, bool))
-        if tile_px is None:
-            order = np.arange(rows.shape[0])
-            keys = np.zeros(rows.shape[0], np.int64)
-        else:
+        flat = np.flatnonzero(np.asarray(valid, bool))          # row-major, as np.nonzero
+        keys = None
+        if tile_px is not None:
+            rows, cols = np.divmod(flat, shape[1])
             order, keys = _grid_order(np.column_stack([rows // tile_px, cols // tile_px]))
-        r, c = rows[order], cols[order]
-        data = np.concatenate([np.asarray(points_px, np.float64)[r, c],
-                               np.asarray(normals_px, np.float64)[r, c]], axis=1)
-        add(data, (r.astype(np.int64) * shape[1] + c), keys)
+            flat = flat[order]
+        sources.append((points_px, normals_px, flat, flat, keys))
     n_samples = 0 if sample_points is None else int(sample_points.shape[0])
     if n_samples:
-        pts = np.asarray(sample_points, np.float64)
-        if tile_px is None:
-            order = np.arange(n_samples)
-            keys = np.zeros(n_samples, np.int64)
-        else:
-            ij = np.floor(pts[:, :2] / float(sample_tile_m)).astype(np.int64)
+        order, keys = np.arange(n_samples), None
+        if tile_px is not None:
+            ij = np.floor(np.asarray(sample_points, np.float64)[:, :2]
+                          / float(sample_tile_m)).astype(np.int64)
             order, keys = _grid_order(ij)
-        data = np.concatenate([pts[order], np.asarray(sample_normals, np.float64)[order]],
-                              axis=1)
-        add(data, n_pixels + order.astype(np.int64), keys)
-    data = np.ascontiguousarray(np.concatenate(parts) if parts else np.zeros((0, 6)))
-    slot = np.concatenate(slots) if slots else np.zeros(0, np.int64)
+        sources.append((sample_points, sample_normals, order, n_pixels + order.astype(np.int64),
+                        keys))
+    n = sum(src[2].shape[0] for src in sources)
+    data = np.empty((n, 6))
+    slot = np.empty(n, np.int64)
+    starts = [0]
+    for points, normals, rows, slots, keys in sources:
+        q, k = starts[-1], rows.shape[0]
+        np.take(np.asarray(points, np.float64).reshape(-1, 3), rows, axis=0,
+                out=data[q:q + k, :3], mode="clip")
+        np.take(np.asarray(normals, np.float64).reshape(-1, 3), rows, axis=0,
+                out=data[q:q + k, 3:], mode="clip")
+        slot[q:q + k] = slots
+        # Tiles are runs of equal key in sorted order.
+        if keys is not None:
+            starts.extend(q + int(c) for c in np.flatnonzero(np.diff(keys)) + 1)
+        if k:
+            starts.append(q + k)
     return TilePlan(data=data, slot=slot, start=np.asarray(starts, np.int64),
                     n_slots=n_pixels + n_samples, pixel_shape=shape, n_samples=n_samples,
                     tile_px=None if tile_px is None else int(tile_px))
