@@ -319,9 +319,11 @@ def pack_casters(recs, keys, boxes, kept, dest, kx, ky, kz, sx, sy, sgn, scale_m
                     ex0, ey0, ex1, ey1 = x2, y2, 0.0, 0.0
                 na = -(ey1 - ey0) * sign
                 nb = (ex1 - ex0) * sign
-                ln = np.sqrt(na * na + nb * nb)
-                a32 = np.float32(na / ln)
-                b32 = np.float32(nb / ln)
+                # One division, not two: the normal is unit to ~2^-52 before its float32
+                # rounding (2^-24); c below is made from the rounded normal either way.
+                inv_ln = 1.0 / np.sqrt(na * na + nb * nb)
+                a32 = np.float32(na * inv_ln)
+                b32 = np.float32(nb * inv_ln)
                 # c: minus the normal's value at the edge's start, in box-corner coordinates.
                 c = -(np.float64(a32) * (ex0 + x0 - bx0) + np.float64(b32) * (ey0 + y0 - by0))
                 c += widen + abs(c) * 2.0 ** -22
