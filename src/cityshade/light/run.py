@@ -482,13 +482,15 @@ def _plan(cp, samples, camera, tile_px):
     """(tile plan, place of each planned receiver in the untiled order, the map's pixels with
     a surface): batch's tiles, or one tile of every receiver without ``tile_px`` (the sky
     traced once for all, as before tiles)."""
-    from cityshade.light.visibility import map_receivers
+    from cityshade.light.visibility import map_pixels
     from cityshade.sunhours.tiled import plan_receivers
 
-    pixels = np.zeros(0, np.int64) if cp is None else map_receivers(cp)[2]
+    pixels = np.zeros(0, np.int64) if cp is None else map_pixels(cp)
     plan = plan_receivers(cp, samples, camera, tile_px)
     if tile_px is None:
         plan.start = np.array([0, len(plan.data)], np.int64)
+        # One tile: the plan is in the untiled order already.
+        return plan, np.arange(len(plan.data)), pixels
     # The untiled order: the map's pixels row-major, then the samples.
     n_px = plan.pixel_shape[0] * plan.pixel_shape[1]
     place = np.where(plan.slot < n_px, np.searchsorted(pixels, plan.slot),

@@ -261,6 +261,12 @@ def direction_order(directions) -> np.ndarray:
     return np.array([i for g in groups.values() for i in g], np.int64)
 
 
+def map_pixels(camera_pass) -> np.ndarray:
+    """(N,) int64 flat indices (``row * W + col``) of the pixels of a map or view that show a
+    surface, row-major: the receivers of :func:`map_receivers`."""
+    return np.flatnonzero(np.asarray(camera_pass.surfaces.valid).ravel())
+
+
 def map_receivers(camera_pass) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """The receivers of a map or view: its pixels that show a surface.
 
@@ -284,7 +290,7 @@ def map_receivers(camera_pass) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     >>> points, normals, pixels = map_receivers(cp)                # doctest: +SKIP
     """
     surf = camera_pass.surfaces
-    pixels = np.flatnonzero(np.asarray(surf.valid).ravel())
+    pixels = map_pixels(camera_pass)
     points = np.asarray(surf.position_m, np.float64).reshape(-1, 3)[pixels]
     normals = np.asarray(camera_pass.normal, np.float64).reshape(-1, 3)[pixels]
     return points, normals, pixels
