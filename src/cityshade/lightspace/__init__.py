@@ -65,7 +65,7 @@ CELL_FACTORS = (0.35, 0.5, 0.7, 1.0, 1.4, 2.0, 2.8, 4.0, 5.6, 8.0, 11.0, 16.0, 2
 COST_REF_NS = 40.0
 COST_SCAN_NS = 1.5
 COST_CELL_NS = 1.5
-#: Cells of the coarse density grid of the model, and receivers (and casters) sampled for it.
+#: Cells of the coarse density grid of the model, and receivers sampled for it.
 DENSITY_CELLS = 4096
 DENSITY_SAMPLE = 1 << 18
 #: Receivers + casters below which a call runs on one thread: a call is a dozen short parallel
@@ -224,17 +224,14 @@ def _choose_cell_m(boxes, xs, ys, box, ext_x, ext_y, n_max_cells):
     references (:func:`~cityshade.lightspace.kernels.estimate_refs`, summed: ``refs``); a
     coarse cell of area A then holds lists of refs * (M / M_all) * s^2 / A entries, scanned by
     each of its R receivers, and R spread at random over its A / s^2 cells occupy a fraction
-    1 - exp(-R s^2 / A) of them (only occupied cells get references). Receivers and casters
-    are sampled alike (every k-th of :data:`DENSITY_SAMPLE` or more): the model only sets the
-    speed (a 1 m map's sky direction: 4.6 ms for all 800 k casters).
+    1 - exp(-R s^2 / A) of them (only occupied cells get references).
     """
     n = xs.shape[0]
     base = math.sqrt(ext_x * ext_y / max(n, 1))
     if base <= 0.0:
         base = max(ext_x, ext_y) / max(n, 1)
     sizes = np.array([base * f for f in CELL_FACTORS])
-    sample = boxes[::max(1, boxes.shape[0] // DENSITY_SAMPLE)]
-    refs = K.estimate_refs(sample, sizes) * (boxes.shape[0] / max(sample.shape[0], 1))
+    refs = K.estimate_refs(boxes, sizes)
     coarse = math.sqrt(ext_x * ext_y / DENSITY_CELLS)
     cnx = max(1, min(DENSITY_CELLS, math.ceil(ext_x / coarse)))
     cny = max(1, min(DENSITY_CELLS, math.ceil(ext_y / coarse)))
@@ -242,13 +239,13 @@ def _choose_cell_m(boxes, xs, ys, box, ext_x, ext_y, n_max_cells):
     n_chunks = 4
     r_c = np.empty((n_chunks, cnx * cny))
     m_c = np.empty((n_chunks, cnx * cny))
-    K.density_grid(xs, ys, max(1, n // DENSITY_SAMPLE), sample, box[0], box[2], inv_c, cnx,
-                   cny, r_c, m_c)
+    K.density_grid(xs, ys, max(1, n // DENSITY_SAMPLE), boxes, box[0], box[2], inv_c, cnx, cny,
+                   r_c, m_c)
     r_c = r_c.sum(axis=0)
     m_c = m_c.sum(axis=0)
     keep = (r_c > 0) & (m_c > 0)
     r_c = r_c[keep]
-    m_frac = m_c[keep] / max(sample.shape[0], 1)
+    m_frac = m_c[keep] / max(boxes.shape[0], 1)
     area_c = 1.0 / (inv_c * inv_c)
     cells = np.ceil(ext_x / sizes) * np.ceil(ext_y / sizes)
     fits = cells <= n_max_cells
