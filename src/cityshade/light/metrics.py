@@ -187,9 +187,9 @@ def patch_weights(sky, normals, luminance=uniform_luminance, *, k: int | None = 
         # cos(angle to the centre ± radius): the nearest and farthest subsample bound
         whole = cos_c * cos_r - sin_c * sin_r > _WHOLE_MARGIN
         behind = cos_c * cos_r + sin_c * sin_r < -_WHOLE_MARGIN
-        block = np.where(front & whole,
-                         nx * moment[:, 0] + ny * moment[:, 1] + nz * moment[:, 2], 0.0)
-        bu, bp = np.nonzero(~behind & ~(front & whole))
+        linear = front & whole
+        block = np.where(linear, nx * moment[:, 0] + ny * moment[:, 1] + nz * moment[:, 2], 0.0)
+        bu, bp = np.nonzero(~behind & ~linear)
         f = np.maximum(dx[bp] * nx[bu] + dy[bp] * ny[bu] + dz[bp] * nz[bu], 0.0) * lw[bp]
         sure = front[bu, bp]
         block[bu[sure], bp[sure]] = f[sure].sum(axis=1)

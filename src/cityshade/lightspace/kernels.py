@@ -588,12 +588,13 @@ QUERY_CHUNK_TILES = 8
 #: pass over the chunk per caster: box, depth plane and edge half-planes as one mask, then the
 #: exact test where it is set, which is almost only where it hits), down the cell's list until
 #: the casters lie behind every receiver still lit. Every cell, whatever its list's length:
-#: with the lowest key of the lanes still lit (recomputed after a hit) a long list stops as
-#: early as receiver by receiver did, and the mask is cheaper than one test per entry. Measured
-#: on the 1M-triangle city (query wall ms, two threads, against receiver by receiver for lists
-#: over 60): overview at suns of 30, 3 and 12 degrees 36.6 / 32.0 / 26.1 -> 25.4 / 24.9 / 21.6,
-#: 1 m map 58.0 / 54.5 / 46.7 -> 45.5 / 39.0 / 40.9, sky directions of the 1 m map at 6-66
-#: degrees 31.8-47.4 -> 26.5-38.8.
+#: with the lowest key of the lanes still lit (recomputed after a hit) a long list stops once
+#: the casters lie behind the chunk's lit receivers, and the mask is cheaper than one test per
+#: entry. Measured on the 1M-triangle city (query wall ms, two threads, against receiver by
+#: receiver for lists over 60): overview at suns of 30, 3 and 12 degrees 36.6 / 32.0 / 26.1 ->
+#: 25.4 / 24.9 / 21.6, 1 m map 58.0 / 54.5 / 46.7 -> 45.5 / 39.0 / 40.9, sky directions of the
+#: 1 m map at 6-66 degrees 31.8-47.4 -> 26.5-38.8; benchmarks/raytrace.py's map at 30 degrees
+#: (12 m cells of ~150 receivers, where each receiver stopped at its own first hit) 128 -> 133.
 QUERY_CHUNK = 64
 #: Lanes of the caster-major mask are padded to a multiple of this (see _query_caster_major).
 QUERY_LANES = 8
