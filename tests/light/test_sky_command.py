@@ -341,8 +341,8 @@ def test_a_finished_run_again_does_nothing_and_other_parameters_are_refused(smal
 def test_a_sky_that_does_not_fit_in_memory_is_refused_before_any_work(small_file, tmp_path,
                                                                       monkeypatch):
     """The camera pass (290 B a pixel, batch's measured figure) and the sky's own bytes per
-    receiver (48 point and normal + 19 bits of 145 directions + 32 origins and rows + 24 view
-    factor and shares + 8 plane + 8 VSC = 139 B) are counted together."""
+    receiver (48 point and normal + 19 bits of 145 directions + 32 origins and rows + 1 held
+    answers + 24 view factor and shares + 8 plane + 8 VSC = 140 B) are counted together."""
     import re
 
     import cityshade.frame.pipeline as pipeline
@@ -351,21 +351,21 @@ def test_a_sky_that_does_not_fit_in_memory_is_refused_before_any_work(small_file
     result = run("sky", small_file, "-o", tmp_path / "out", "--sky", "tregenza",
                  "--pixel-size", "0.05")
     assert result.exit_code == 2, result.output
-    m = re.fullmatch(r"cityshade: error: ([\d,]+) receivers need about ([\d.]+) GB \(139 bytes "
+    m = re.fullmatch(r"cityshade: error: ([\d,]+) receivers need about ([\d.]+) GB \(140 bytes "
                      r"each besides the camera's ([\d.]+) GB\) but 0\.0 GB are available: use a "
                      r"larger --pixel-size, fewer --samples-per-m2 or a coarser --sky",
                      result.output.strip())
     assert m, result.output
     n = int(m.group(1).replace(",", ""))
     assert n > 10**6                            # a real size: the GB figures are not 0.0
-    assert m.group(2) == f"{n * (290 + 139) / 1e9:.1f}" and m.group(3) == f"{n * 290 / 1e9:.1f}"
+    assert m.group(2) == f"{n * (290 + 140) / 1e9:.1f}" and m.group(3) == f"{n * 290 / 1e9:.1f}"
     assert not (tmp_path / "out").exists()
 
 
 def test_verbose_says_the_memory_estimate_before_the_work(small_file, tmp_path):
     """``-v`` prints the estimate before the first tile: the camera pass (290 B a pixel,
     every pixel of the map), what is kept of every receiver (48 point and normal + 16 slot
-    and place + 8 view factor = 72 B) and one tile's 139 B per receiver (the refusal's
+    and place + 8 view factor = 72 B) and one tile's 140 B per receiver (the refusal's
     figures), and the size of the scene file whose pages are mapped beside it."""
     import json
     import re
@@ -384,4 +384,4 @@ def test_verbose_says_the_memory_estimate_before_the_work(small_file, tmp_path):
     camera = json.loads((tmp_path / "out" / "manifest.json").read_text())["params"]["camera"]
     w, h = camera["width_px"], camera["height_px"]
     assert w > 64 and h > 64
-    assert m.group(1) == f"{(w * h * (290 + 72) + 64 * 64 * 139) / 1e6:,.0f}"
+    assert m.group(1) == f"{(w * h * (290 + 72) + 64 * 64 * 140) / 1e6:,.0f}"

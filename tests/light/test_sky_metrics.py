@@ -180,11 +180,11 @@ def test_weighted_sums_equal_the_plain_loop_and_do_not_depend_on_the_other_rows(
 def test_front_rays_and_bits_in_chunks_equal_one_pass_over_the_receivers(threads):
     """More receivers than a thread's chunk (three chunks): the rays of the receivers in front
     are those of one numpy pass in receiver order, with the same float64 origins, and the
-    answers land in the bits numpy's pack gives, whatever the threads (the bits are set in
-    chunks on the kernel threads)."""
+    answers land in the bits numpy's pack gives, whatever the threads (the bits are held and
+    put in chunks on the kernel threads), other bits untouched."""
     import numba
 
-    from cityshade.light.kernels import RECEIVER_CHUNK, front_origins, set_visible_bits
+    from cityshade.light.kernels import RECEIVER_CHUNK, front_origins, hold_visible, put_held
     from cityshade.light.sky import FRONT_MIN_COS
     from cityshade.trace import SHADOW_OFFSET_MIN_SCALE_M, SHADOW_OFFSET_REL
 
@@ -208,12 +208,20 @@ def test_front_rays_and_bits_in_chunks_equal_one_pass_over_the_receivers(threads
         scale = SHADOW_OFFSET_REL * np.maximum(np.abs(pts[want]).max(axis=1),
                                                SHADOW_OFFSET_MIN_SCALE_M)
         np.testing.assert_array_equal(origins[:k], pts[want] + (nrm[want] + d) * scale[:, None])
-        blocked = rng.random(k) < 0.4
-        bits = np.zeros((n, 19), np.uint8)
-        set_visible_bits(bits, rows[:k], blocked, 141)
-        column = np.zeros((n, 152), bool)
-        column[want[~blocked], 141] = True
-        np.testing.assert_array_equal(bits, np.packbits(column, axis=1))
+        # Eight directions' answers held, then put in columns of three bytes, out of order.
+        columns = [141, 7, 8, 143, 9, 0, 140, 142]
+        other = rng.random((n, 152)) < 0.3       # bits of other directions, kept
+        other[:, columns] = False
+        bits = np.packbits(other, axis=1)
+        held = np.zeros(n, np.uint8)
+        want_bits = other.copy()
+        for slot, c in enumerate(columns):
+            blocked = rng.random(k) < 0.4
+            hold_visible(held, rows[:k], blocked, slot)
+            want_bits[want[~blocked], c] = True
+        put_held(bits, held, columns)
+        np.testing.assert_array_equal(bits, np.packbits(want_bits, axis=1))
+        assert not held.any()
     finally:
         numba.set_num_threads(before)
 

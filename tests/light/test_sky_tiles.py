@@ -174,9 +174,9 @@ def test_the_memory_estimate_counts_crown_rays_and_a_tile(sample, monkeypatch):
     from cityshade.light.run import CROWN_RAY_SHARE, sky_bytes_per_receiver
 
     plain = sky_bytes_per_receiver(145, False)
-    assert plain == 139
+    assert plain == 140
     assert sky_bytes_per_receiver(145, False, crowns=True) == \
-        139 + 17 + math.ceil(24 * CROWN_RAY_SHARE * 145)
+        140 + 17 + math.ceil(24 * CROWN_RAY_SHARE * 145)
     assert sky_bytes_per_receiver(2305, True, crowns=True) == \
         sky_bytes_per_receiver(2305, True) + 17 + math.ceil(24 * CROWN_RAY_SHARE * 2305)
     from cityshade.light.run import compute_sky
@@ -187,11 +187,11 @@ def test_the_memory_estimate_counts_crown_rays_and_a_tile(sample, monkeypatch):
     cam = request.camera
     n = cam.width_px * cam.height_px
     frame = pipeline.frame_bytes(cam, batch=True)[0]
-    need = frame + n * (48 + 16 + 8) + 256 * 256 * 139
+    need = frame + n * (48 + 16 + 8) + 256 * 256 * 140
     with pytest.raises(UsageError) as err:
         compute_sky(scene, request)
     assert str(err.value) == (
-        f"{n:,} receivers need about {need / 1e9:.1f} GB (72 bytes each kept and 139 each of "
+        f"{n:,} receivers need about {need / 1e9:.1f} GB (72 bytes each kept and 140 each of "
         f"a tile's 65,536 while it is traced besides the camera's {frame / 1e9:.1f} GB) but "
         f"0.0 GB are available: use a larger --pixel-size, fewer --samples-per-m2, a smaller "
         f"--tile-px or a coarser --sky")

@@ -194,21 +194,22 @@ def sky_bytes_per_receiver(n_directions: int, irradiance: bool, instants: int = 
                            crowns: bool = False) -> int:
     """Bytes per receiver of the tile being traced, beside the batch's camera pass
     (:data:`cityshade.frame.pipeline.BATCH_BYTES_PER_PX`): point and normal (48), the packed
-    bits (ceil(P / 8)), one direction's ray origins and rows while tracing (32), the view
+    bits (ceil(P / 8)), one direction's ray origins and rows while tracing (32) and eight
+    directions' answers held (1), the view
     factor and two shares (24), the plane index (8), the VSC (8); with irradiance the three
     float64 sums (24), the sun's bits and origins per hour (25); per instant its three float64
     W/m² (24). With vegetation (``crowns``) the rays through crowns, 24 B each
     (:class:`~cityshade.light.visibility.SkyCrowns`), for :data:`CROWN_RAY_SHARE` of the
     directions (their number is known only after tracing), and 17 B of a direction's results.
 
-    With the camera pass, 290 + 139 B per map pixel for 145 directions and 290 + 188 B with
+    With the camera pass, 290 + 140 B per map pixel for 145 directions and 290 + 189 B with
     irradiance; measured (``python benchmarks/memory.py --cases sky:tregenza,irradiance:tregenza
     --pixels 500000,2000000 --steps 2``, e5e5e42, the sample city): 327 and 426 B per pixel.
     """
     from cityshade.light.visibility import SkyCrowns
 
     crown = 17 + math.ceil(SkyCrowns.NBYTES * CROWN_RAY_SHARE * n_directions) if crowns else 0
-    return 48 + (n_directions + 7) // 8 + 32 + 24 + 8 + 8 \
+    return 48 + (n_directions + 7) // 8 + 32 + 1 + 24 + 8 + 8 \
         + (49 if irradiance or instants else 0) + 24 * int(instants) + crown
 
 

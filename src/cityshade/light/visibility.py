@@ -12,8 +12,8 @@ coefficients): :mod:`cityshade.light.metrics` is arithmetic on them.
 
 Memory: the result holds ``ceil(P / 8)`` bytes per receiver for P directions (19 B for
 Tregenza's 145, 73 B for 577, 289 B for 2,305) plus the receivers' float64 normals (24 B).
-While tracing, one direction's ray origins and rows (32 B per receiver) and the engine's own
-work arrays (docs/DESIGN.md §7, §6); the answers go straight into the packed bits
+While tracing, one direction's ray origins and rows (32 B per receiver), a byte holding eight
+directions' answers before they go into the bits, and the engine's own work arrays (docs/DESIGN.md §7, §6); the answers go straight into the packed bits
 (:mod:`cityshade.light.kernels`).
 
 Trees: on a scene with vegetation crowns (docs/DESIGN.md §21) a bit says "no opaque triangle
@@ -167,7 +167,8 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
     from cityshade.geometry.vegetation import scene_vegetation, vegetation_settings
     from cityshade.light.sky import FRONT_MIN_COS, in_front
     from cityshade.shadows.visibility import crown_transmission, occluded
-    from cityshade.light.kernels import front_origins, set_visible_bits
+    from cityshade.light.kernels import (HELD_DIRECTIONS, front_origins, hold_visible,
+                                         put_held)
     from cityshade.trace import (SHADOW_OFFSET_MIN_SCALE_M, SHADOW_OFFSET_REL,
                                  shadow_rays_from_surface)
 
@@ -187,6 +188,7 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
     n, p_total = len(pts), sky.n
     bits = np.zeros((n, (p_total + 7) // 8), np.uint8)
     rows_buf, origins_buf = np.empty(n, np.int64), np.empty((n, 3), np.float64)
+    held = np.zeros(n, np.uint8)
     if n:   # the checks, once, into the buffer the directions' origins reuse
         shadow_rays_from_surface(pts, nrm, sky.directions[0], out=origins_buf)
     veg = scene_vegetation(scene)
@@ -213,6 +215,7 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
                 work[rows, cols] = ~occluded(scene, origins, d, t_days, engine=engine)
             bits[:, start // 8:(stop + 7) // 8] = np.packbits(work, axis=1)
         else:
+            columns: list[int] = []      # the directions whose answers `held` holds
             for col in order[start:stop]:
                 d = sky.directions[col]
                 k = front_origins(pts, nrm, d, FRONT_MIN_COS, SHADOW_OFFSET_REL,
@@ -230,7 +233,13 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
                     part = ~blocked & ((on != 1.0) | (off != 1.0))
                     if part.any():
                         crown_parts.append((rows[part], int(col), on[part], off[part]))
-                set_visible_bits(bits, rows, blocked, int(col))
+                hold_visible(held, rows, blocked, len(columns))
+                columns.append(int(col))
+                if len(columns) == HELD_DIRECTIONS:
+                    put_held(bits, held, columns)
+                    columns = []
+            if columns:
+                put_held(bits, held, columns)
         if progress is not None:
             progress(stop, p_total)
     return SkyVisibility(sky=sky, bits=bits, normals=nrm, t_days=float(t_days), engine=engine,
