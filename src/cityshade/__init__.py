@@ -5,11 +5,13 @@ only by the stages that use them, so ``cityshade --help`` stays instant.
 """
 from __future__ import annotations
 
-from cityshade.runtime.startup import command_is_starting, hold_ctrl_c_while_starting, one_blas_thread
+from cityshade.runtime.startup import (command_is_starting, hold_ctrl_c_while_starting,
+                                       one_blas_thread, sleeping_omp_workers)
 
 hold_ctrl_c_while_starting()  # first: a Ctrl-C from here on is one line and status 130
 if command_is_starting():
     one_blas_thread()  # before numpy is imported
+    sleeping_omp_workers()  # before Numba's first parallel kernel
 
 import os as _os  # noqa: E402
 

@@ -418,17 +418,20 @@ def test_a_bad_option_is_one_line(capsys, tmp_path):
 
 def test_the_command_runs_numpy_on_one_blas_thread_unless_told(tmp_path):
     """The command's process (argv[0] ``cityshade``) sets one BLAS thread before numpy is
-    imported; a value the caller set stays; a program importing the library is not touched."""
+    imported and sleeping OpenMP workers; a value the caller set stays; a program importing
+    the library is not touched."""
     probe = ("import sys; sys.argv[0] = {argv0!r}; import cityshade, os, numpy; "
-             "print(os.environ.get('OPENBLAS_NUM_THREADS'), os.environ.get('MKL_NUM_THREADS'))")
+             "print(os.environ.get('OPENBLAS_NUM_THREADS'), os.environ.get('MKL_NUM_THREADS'), "
+             "os.environ.get('OMP_WAIT_POLICY'))")
+    names = ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS", "OMP_WAIT_POLICY")
 
     def run(argv0, **env):
-        base = {k: v for k, v in os.environ.items()
-                if k not in ("OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS")}
+        base = {k: v for k, v in os.environ.items() if k not in names}
         out = subprocess.run([sys.executable, "-c", probe.format(argv0=argv0)],
                              env={**base, **env}, capture_output=True, text=True, check=True)
         return out.stdout.split()
 
-    assert run("/usr/bin/cityshade") == ["1", "1"]
-    assert run("/usr/bin/cityshade", OPENBLAS_NUM_THREADS="3") == ["3", "1"]
-    assert run("my_script.py") == ["None", "None"]
+    assert run("/usr/bin/cityshade") == ["1", "1", "PASSIVE"]
+    assert run("/usr/bin/cityshade", OPENBLAS_NUM_THREADS="3", OMP_WAIT_POLICY="ACTIVE") == \
+        ["3", "1", "ACTIVE"]
+    assert run("my_script.py") == ["None", "None", "None"]
