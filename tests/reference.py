@@ -1128,6 +1128,35 @@ def reference_sky_bits(scene, points, normals, sky, t_days, engine):
     return np.packbits(seen, axis=1)
 
 
+def reference_patch_weights(sky, unit_normals, k, luminance):
+    """Twin of :func:`cityshade.light.kernels.patch_weight_rows` (via
+    :func:`cityshade.light.metrics.patch_weights`), by the definition: every subsample of every
+    patch, ``max(0, n · d) L(d) dΩ``, into its own patch when the patch's centre is in front,
+    else into the front centre nearest the subsample, the first of those within
+    ``NEAREST_TIE`` of the nearest (no shortcut for whole patches)."""
+    from cityshade.light.kernels import NEAREST_TIE
+    from cityshade.light.sky import in_front
+
+    d, w = sky.subsamples(k)
+    lw = w * luminance(d)
+    centres = np.asarray(sky.directions, np.float64)
+    unit = np.asarray(unit_normals, np.float64)
+    front = in_front(unit, centres)
+    out = np.zeros((len(unit), sky.n))
+    for u, n in enumerate(unit):
+        cand = np.flatnonzero(front[u])
+        for p in range(sky.n):
+            for s in range(d.shape[1]):
+                f = max(float(d[p, s] @ n), 0.0) * lw[p, s]
+                if front[u, p]:
+                    out[u, p] += f
+                elif f > 0.0 and len(cand):
+                    dots = [float(d[p, s] @ centres[c]) for c in cand]
+                    near = [c for c, dot in zip(cand, dots) if dot >= max(dots) - NEAREST_TIE]
+                    out[u, near[0]] += f
+    return out
+
+
 def reference_visible_weight_sums(bits, inverse, weights):
     """Twin of :func:`cityshade.light.kernels.visible_weight_sums`: the bits unpacked, then per
     receiver a plain loop adding the visible directions' weights in order."""

@@ -154,6 +154,35 @@ def test_packed_bits_equal_the_obvious_gather_and_pack(sample_city_scene):
         assert 0.05 < vis.visible().mean() < 0.95
 
 
+@pytest.mark.parametrize("luminance", ["uniform", "cie"])
+def test_patch_weights_equal_the_definition_subsample_by_subsample(luminance):
+    """The kernel's rows (whole patches as n · Σ lw d, wholly hidden ones skipped, cut patches
+    summed and moved to the nearest front centre) against every subsample of every patch, for
+    a horizontal roof, free walls, tilted roofs and random planes, and the same row whatever
+    other normals are computed with it."""
+    from reference import reference_patch_weights
+
+    from cityshade.light.metrics import (cie_overcast_luminance, distinct_normals,
+                                         patch_weights, uniform_luminance)
+    from cityshade.light.sky import named_sky
+
+    lum = uniform_luminance if luminance == "uniform" else cie_overcast_luminance
+    sky = named_sky("tregenza")
+    rng = np.random.default_rng(5)
+    special = [[0.0, 0.0, 1.0], [0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.6, 0.0, 0.8],
+               [0.0, -0.5, -np.sqrt(0.75)], [0.0, 0.0, -1.0]]
+    normals = np.vstack([special, rng.normal(size=(24, 3))])
+    normals /= np.linalg.norm(normals, axis=1, keepdims=True)
+    weights, inverse = patch_weights(sky, normals, lum, k=4)
+    unique, _ = distinct_normals(normals)
+    unit = unique / np.linalg.norm(unique, axis=1, keepdims=True)
+    want = reference_patch_weights(sky, unit, 4, lum)
+    np.testing.assert_allclose(weights, want, rtol=1e-12, atol=1e-15)
+    assert (weights[inverse[5]] == 0.0).all()           # a downward face sees no sky
+    alone, inv_alone = patch_weights(sky, normals[7:8], lum, k=4)
+    np.testing.assert_array_equal(alone[inv_alone[0]], weights[inverse[7]])
+
+
 def test_weighted_sums_equal_the_plain_loop_and_do_not_depend_on_the_other_rows():
     """The kernel adding each receiver's visible weights from the packed bits equals the twin's
     plain loop exactly, and a receiver's sum is the same computed alone, in any subset or

@@ -135,3 +135,84 @@ def _weight_sums(bits, inverse, weights, out, i0, i1):
                 if b & (0x80 >> k) and base + k < n_p:
                     s += weights[u, base + k]
         out[i] = s
+
+
+#: Front centres whose cosine to a cut subsample is within this of the nearest's count as
+#: equally near, and the first of them takes its weight: a plane symmetric to the patches (a
+#: roof facing a patch boundary's azimuth) has subsamples exactly halfway between two centres,
+#: and the rounding of the cosines must not choose.
+NEAREST_TIE = 1e-12
+
+
+def patch_weight_rows(unit, centres, front, dx, dy, dz, lw, moment, cos_r, sin_r, margin_cos,
+                      out):
+    """The rows of :func:`cityshade.light.metrics.patch_weights`, one distinct normal at a time
+    on the kernel threads (each row its own: any split of the normals gives the same rows).
+
+    ``unit`` (U, 3) unit normals; ``centres`` (P, 3) the patches' centres and ``front`` (U, P)
+    which of them lie in front (:func:`in_front_table`); ``dx, dy, dz, lw`` (P, S) the
+    patches' subsample directions and luminance × solid angle; ``moment`` (P, 3) ``Σ lw d``;
+    ``cos_r, sin_r`` (P,) the cosine and sine of the angle from a patch's centre to its
+    farthest subsample; ``out`` (U, P) float64, every entry written.
+
+    A patch whose subsamples all lie ``margin_cos`` in front of the plane weighs
+    ``n · moment``, one whose subsamples all lie behind it nothing; the others sum
+    ``max(0, n · d) lw`` subsample by subsample: into the patch when its centre is in front,
+    else, where positive, into the nearest centre in front (highest ``d · centre``, the first
+    within :data:`NEAREST_TIE` of it), patches and subsamples in increasing order. The numpy form this replaces took
+    0.5 s for a 1 m map's 4,733 normals, most of it in temporaries of the cut patches."""
+    run_chunks(_patch_weight_rows, unit.shape[0], 64, unit, centres, front, dx, dy, dz, lw,
+               moment, cos_r, sin_r, margin_cos, out)
+
+
+@njit(cache=True, nogil=True)
+def _patch_weight_rows(unit, centres, front, dx, dy, dz, lw, moment, cos_r, sin_r, margin_cos,
+                       out, u0, u1):
+    n_p, n_s = dx.shape
+    for u in range(u0, u1):
+        nx, ny, nz = unit[u, 0], unit[u, 1], unit[u, 2]
+        any_front = False
+        for p in range(n_p):
+            any_front |= front[u, p]
+        for p in range(n_p):
+            cos_c = min(max(nx * centres[p, 0] + ny * centres[p, 1] + nz * centres[p, 2],
+                            -1.0), 1.0)
+            sin_c = np.sqrt(1.0 - cos_c * cos_c)
+            out[u, p] = 0.0
+            if cos_c * cos_r[p] + sin_c * sin_r[p] < -margin_cos:
+                continue                                   # wholly behind
+            if front[u, p]:
+                if cos_c * cos_r[p] - sin_c * sin_r[p] > margin_cos:   # wholly in front
+                    out[u, p] = nx * moment[p, 0] + ny * moment[p, 1] + nz * moment[p, 2]
+                else:
+                    w = 0.0
+                    for k in range(n_s):
+                        w += max(dx[p, k] * nx + dy[p, k] * ny + dz[p, k] * nz, 0.0) * lw[p, k]
+                    out[u, p] = w
+        if not any_front:
+            continue
+        # Cut patches whose centre lies behind: their front part to the nearest front centre,
+        # after every patch's own weight (the order the sums are made in).
+        for p in range(n_p):
+            if front[u, p]:
+                continue
+            cos_c = min(max(nx * centres[p, 0] + ny * centres[p, 1] + nz * centres[p, 2],
+                            -1.0), 1.0)
+            sin_c = np.sqrt(1.0 - cos_c * cos_c)
+            if cos_c * cos_r[p] + sin_c * sin_r[p] < -margin_cos:
+                continue
+            for k in range(n_s):
+                f = max(dx[p, k] * nx + dy[p, k] * ny + dz[p, k] * nz, 0.0) * lw[p, k]
+                if not f > 0.0:
+                    continue
+                top = -np.inf
+                for c in range(n_p):
+                    if front[u, c]:
+                        top = max(top, dx[p, k] * centres[c, 0] + dy[p, k] * centres[c, 1]
+                                  + dz[p, k] * centres[c, 2])
+                for c in range(n_p):
+                    if front[u, c] and (dx[p, k] * centres[c, 0] + dy[p, k] * centres[c, 1]
+                                        + dz[p, k] * centres[c, 2]) >= top - NEAREST_TIE:
+                        out[u, c] += f
+                        break
+
