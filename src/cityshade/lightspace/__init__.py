@@ -458,9 +458,13 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m, last):
     nx = max(1, math.ceil(ext_x / size))
     ny = max(1, math.ceil(ext_y / size))
     inv = 1.0 / size
-    rec_start, rec_order, ref_start, refs, dest, n_cells = bin_grid(
-        ws, xs, ys, kept_boxes, box[0], box[2], inv, nx, ny, n_chunks, True)
-    del xs, ys, rkeys, xy         # their memory takes the ordered origins below
+    # Called again (a batch's suns, a sky's directions), the receivers' origins are ordered
+    # by cell as they are binned, into the memory of the light-plane points (dead by then);
+    # a last call orders them once the casters are packed, freeing that memory meanwhile.
+    rec_start, rec_order, ref_start, refs, dest, n_cells, rec_origins = bin_grid(
+        ws, xs, ys, kept_boxes, box[0], box[2], inv, nx, ny, n_chunks, True,
+        None if last else origins)
+    del xs, ys, rkeys, xy         # their memory takes the ordered origins
     if last:
         ws.drop("rec_origins")    # the 1M city's map: 63 MB less while the casters are packed
     n_refs = refs.size
@@ -475,7 +479,8 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m, last):
         # before the ordered origins come (the 1M city's map: 87 MB less at the peak)
         ws.drop("kept_boxes", "dest")
         casters.forget_sorted()
-    rec_origins = ordered_origins(ws, origins, rec_order)
+    if rec_origins is None:
+        rec_origins = ordered_origins(ws, origins, rec_order)
     timing["bin_s"] = time.perf_counter() - t0
 
     # Test each receiver against its cell's casters, nearest-to-the-sun first.
@@ -497,7 +502,7 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m, last):
     return out
 
 
-def bin_grid(ws, xs, ys, boxes, x0, y0, inv, nx, ny, n_chunks, tile_ordered):
+def bin_grid(ws, xs, ys, boxes, x0, y0, inv, nx, ny, n_chunks, tile_ordered, origins=None):
     """Receivers and casters binned into one grid (``nx`` by ``ny`` cells of ``1 / inv`` from
     ``(x0, y0)``, numbered tile by tile: :func:`~cityshade.lightspace.kernels.tile_cell`), work
     arrays from the :class:`~cityshade.runtime.memory.Scratch` ``ws``. Returns ``rec_start``
@@ -507,7 +512,10 @@ def bin_grid(ws, xs, ys, boxes, x0, y0, inv, nx, ny, n_chunks, tile_ordered):
     rows ``dest`` the casters (rows of ``boxes``, NaN in column 0 for a culled one) get in the
     packed array: with ``tile_ordered`` the order of their first tile
     (:func:`~cityshade.lightspace.kernels.tile_order`, the opaque query's), else their own
-    rows; and the number of cells. The same lists whatever the thread count. The casters' cell
+    rows; the number of cells; and with ``origins`` (N, 3) the receivers' origins in cell
+    order in ``ws``'s array ``rec_origins`` (whose memory ``xs`` and ``ys`` may share: they
+    are read before it is written), else None. The same lists whatever the thread count. The
+    casters' cell
     ranges are ``ws``'s array ``ranges`` (a caller may have used its memory for an array it is
     done with, or use it after); the receivers' cells share theirs with ``refs``."""
     n = xs.shape[0]
@@ -520,7 +528,9 @@ def bin_grid(ws, xs, ys, boxes, x0, y0, inv, nx, ny, n_chunks, tile_ordered):
     rec_start = ws.get("rec_start", n_cells + 1, np.int64)
     K.prefix_sum(counts, rec_start)
     rec_order = ws.get("rec_order", n, np.int32)
-    K.order_receivers(cells, counts, rec_order)
+    rec_origins = None if origins is None else ws.get("rec_origins", (n, 3))
+    K.order_receivers(cells, counts, np.empty((0, 3)) if origins is None else origins,
+                      rec_order, np.empty((0, 3)) if rec_origins is None else rec_origins)
     m = boxes.shape[0]
     ranges = ws.get("ranges", (m, 4), np.int64)
     K.caster_ranges(boxes, x0, y0, inv, inv, nx, ny, ranges)
@@ -539,7 +549,7 @@ def bin_grid(ws, xs, ys, boxes, x0, y0, inv, nx, ny, n_chunks, tile_ordered):
     del cells        # filled in: the references take its memory
     refs = ws.get("cells", n_refs, np.int32)
     K.scatter_casters(ranges, rec_start, nx, counts, dest, refs, True)
-    return rec_start, rec_order, ref_start, refs, dest, n_cells
+    return rec_start, rec_order, ref_start, refs, dest, n_cells, rec_origins
 
 
 def ordered_origins(ws, origins, rec_order):

@@ -550,18 +550,25 @@ def prefix_sum(counts, out_start):
 
 
 @njit(cache=True, parallel=True)
-def order_receivers(cells, cursor, out_order):
-    """Receiver indices grouped by cell (receiver order inside a cell); their origins are
-    gathered in that order later (:func:`gather_rows`), so the query reads receivers
-    sequentially."""
+def order_receivers(cells, cursor, origins, out_order, out_origins):
+    """Receiver indices grouped by cell (receiver order inside a cell), and with ``origins``
+    (N, 3) (not empty) their origins in that order into ``out_origins``, so the query reads
+    receivers sequentially (copied here, as each receiver's place is found, rather than
+    gathered in a second pass over the order: :func:`gather_rows`)."""
     n = cells.shape[0]
     n_chunks = cursor.shape[0]
     per = (n + n_chunks - 1) // n_chunks
+    copy = origins.shape[0] > 0
     for c in prange(n_chunks):
         for i in range(c * per, min(n, (c + 1) * per)):
             cell = cells[i]
-            out_order[cursor[c, cell]] = i
-            cursor[c, cell] += 1
+            q = cursor[c, cell]
+            out_order[q] = i
+            if copy:
+                out_origins[q, 0] = origins[i, 0]
+                out_origins[q, 1] = origins[i, 1]
+                out_origins[q, 2] = origins[i, 2]
+            cursor[c, cell] = q + 1
 
 
 @njit(cache=True, parallel=True)

@@ -317,7 +317,7 @@ def _transmission(crowns, ws, origins, direction, t_days, rays, taus, outs):
     nx = max(1, math.ceil(ext_x / size))
     ny = max(1, math.ceil(ext_y / size))
     inv = 1.0 / size
-    rec_start, rec_order, ref_start, refs, _, _ = bin_grid(
+    rec_start, rec_order, ref_start, refs, _, _, _ = bin_grid(
         ws, xs, ys, kept_boxes, box[0], box[2], inv, nx, ny,
         max(1, numba.get_num_threads()), False)
     rec_origins = ordered_origins(ws, o, rec_order)
