@@ -1183,8 +1183,9 @@ def reference_tile_order(ranges, tile, ntx):
 
 
 def reference_refs_per_size(boxes, sizes):
-    """Twin of :func:`cityshade.lightspace.kernels.estimate_refs`: the sum over the boxes (x0,
-    x1, y0, y1; NaN x0: culled) of (w / s + 1) (h / s + 1), box by box and size by size."""
+    """Twin of :func:`cityshade.lightspace.refs_per_size` of the density grid's box sums: the
+    sum over the boxes (x0, x1, y0, y1; NaN x0: culled) of (w / s + 1) (h / s + 1), box by box
+    and size by size."""
     out = []
     for s in sizes:
         total = 0.0

@@ -498,8 +498,11 @@ def test_tile_order_is_the_stable_order_by_first_tile_for_any_thread_count():
 
 
 def test_estimated_references_are_the_box_by_box_sum():
+    """The density grid's box sums give the references of every cell size as the box-by-box
+    sum does, the culled boxes left out of both, and its caster counts hold the kept boxes."""
     from reference import reference_refs_per_size
     from cityshade.lightspace import kernels as K
+    from cityshade.lightspace import refs_per_size
 
     rng = np.random.default_rng(5)
     x0, y0 = rng.uniform(-50, 50, (2, 400))
@@ -507,8 +510,12 @@ def test_estimated_references_are_the_box_by_box_sum():
     boxes = np.column_stack([x0, x0 + w, y0, y0 + h])
     boxes[::13, 0] = np.nan
     sizes = np.array([0.7, 2.0, 5.5, 30.0])
-    np.testing.assert_allclose(K.estimate_refs(boxes, sizes),
+    xs, ys = rng.uniform(-50, 50, (2, 1000))
+    r_c, m_c, box_sums = np.empty((4, 64)), np.empty((4, 64)), np.empty((4, 3))
+    K.density_grid(xs, ys, 1, boxes, -60.0, -60.0, 8.0 / 130.0, 8, 8, r_c, m_c, box_sums)
+    np.testing.assert_allclose(refs_per_size(box_sums, sizes),
                                reference_refs_per_size(boxes, sizes), rtol=1e-12)
+    assert m_c.sum() == np.count_nonzero(~np.isnan(boxes[:, 0])) and r_c.sum() == len(xs)
 
 
 def test_last_calls_let_the_work_arrays_go_and_answer_the_same(sample_scene):

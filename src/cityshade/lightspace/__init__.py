@@ -221,7 +221,7 @@ def _choose_cell_m(boxes, xs, ys, box, ext_x, ext_y, n_max_cells):
 
     Per cell of a coarse grid over the receivers' box (``box`` x0, x1, y0, y1): its receivers
     R and casters M (by box centre). A candidate size s gives each caster (w/s + 1)(h/s + 1)
-    references (:func:`~cityshade.lightspace.kernels.estimate_refs`, summed: ``refs``); a
+    references (:func:`refs_per_size`, summed: ``refs``); a
     coarse cell of area A then holds lists of refs * (M / M_all) * s^2 / A entries, scanned by
     each of its R receivers, and R spread at random over its A / s^2 cells occupy a fraction
     1 - exp(-R s^2 / A) of them (only occupied cells get references).
@@ -231,7 +231,6 @@ def _choose_cell_m(boxes, xs, ys, box, ext_x, ext_y, n_max_cells):
     if base <= 0.0:
         base = max(ext_x, ext_y) / max(n, 1)
     sizes = np.array([base * f for f in CELL_FACTORS])
-    refs = K.estimate_refs(boxes, sizes)
     coarse = math.sqrt(ext_x * ext_y / DENSITY_CELLS)
     cnx = max(1, min(DENSITY_CELLS, math.ceil(ext_x / coarse)))
     cny = max(1, min(DENSITY_CELLS, math.ceil(ext_y / coarse)))
@@ -239,8 +238,10 @@ def _choose_cell_m(boxes, xs, ys, box, ext_x, ext_y, n_max_cells):
     n_chunks = 4
     r_c = np.empty((n_chunks, cnx * cny))
     m_c = np.empty((n_chunks, cnx * cny))
+    box_sums = np.empty((n_chunks, 3))
     K.density_grid(xs, ys, max(1, n // DENSITY_SAMPLE), boxes, box[0], box[2], inv_c, cnx, cny,
-                   r_c, m_c)
+                   r_c, m_c, box_sums)
+    refs = refs_per_size(box_sums, sizes)
     r_c = r_c.sum(axis=0)
     m_c = m_c.sum(axis=0)
     keep = (r_c > 0) & (m_c > 0)
@@ -259,6 +260,17 @@ def _choose_cell_m(boxes, xs, ys, box, ext_x, ext_y, n_max_cells):
     scans = (per_cell * r_c[None, :]).sum(axis=1)
     cost = COST_REF_NS * refs_used + COST_SCAN_NS * scans + COST_CELL_NS * cells
     return float(sizes[int(np.argmin(cost))])
+
+
+def refs_per_size(box_sums, cell_sizes_m) -> np.ndarray:
+    """(K,) cell references the casters would make for each cell size: the sum over their
+    boxes of ``(w / s + 1) (h / s + 1)``, from the chunks' sums of ``w h``, ``w + h`` and 1
+    (:func:`~cityshade.lightspace.kernels.density_grid`), added chunk by chunk."""
+    area = sides = count = 0.0
+    for a, b, c in np.asarray(box_sums, np.float64):
+        area, sides, count = area + a, sides + b, count + c
+    inv = 1.0 / np.asarray(cell_sizes_m, np.float64)
+    return area * inv * inv + sides * inv + count
 
 
 def _key_sign(sz: float) -> float:
