@@ -167,8 +167,7 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
     from cityshade.geometry.vegetation import scene_vegetation, vegetation_settings
     from cityshade.light.sky import FRONT_MIN_COS, in_front
     from cityshade.shadows.visibility import crown_transmission, occluded
-    from cityshade.light.kernels import (HELD_DIRECTIONS, front_origins, hold_visible,
-                                         put_held)
+    from cityshade.light.kernels import front_origins
     from cityshade.trace import (SHADOW_OFFSET_MIN_SCALE_M, SHADOW_OFFSET_REL,
                                  shadow_rays_from_surface)
 
@@ -188,7 +187,7 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
     n, p_total = len(pts), sky.n
     bits = np.zeros((n, (p_total + 7) // 8), np.uint8)
     rows_buf, origins_buf = np.empty(n, np.int64), np.empty((n, 3), np.float64)
-    held = np.zeros(n, np.uint8)
+    answers = _HeldAnswers(bits)
     if n:   # the checks, once, into the buffer the directions' origins reuse
         shadow_rays_from_surface(pts, nrm, sky.directions[0], out=origins_buf)
     veg = scene_vegetation(scene)
@@ -215,7 +214,6 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
                 work[rows, cols] = ~occluded(scene, origins, d, t_days, engine=engine)
             bits[:, start // 8:(stop + 7) // 8] = np.packbits(work, axis=1)
         else:
-            columns: list[int] = []      # the directions whose answers `held` holds
             for col in order[start:stop]:
                 d = sky.directions[col]
                 k = front_origins(pts, nrm, d, FRONT_MIN_COS, SHADOW_OFFSET_REL,
@@ -233,17 +231,37 @@ def sky_visibility(scene, points, normals, sky, t_days: float = 0.0, *, engine: 
                     part = ~blocked & ((on != 1.0) | (off != 1.0))
                     if part.any():
                         crown_parts.append((rows[part], int(col), on[part], off[part]))
-                hold_visible(held, rows, blocked, len(columns))
-                columns.append(int(col))
-                if len(columns) == HELD_DIRECTIONS:
-                    put_held(bits, held, columns)
-                    columns = []
-            if columns:
-                put_held(bits, held, columns)
+                answers.add(rows, blocked, int(col))
+            answers.put()
         if progress is not None:
             progress(stop, p_total)
     return SkyVisibility(sky=sky, bits=bits, normals=nrm, t_days=float(t_days), engine=engine,
                          crowns=None if veg is None else _sky_crowns(crown_parts))
+
+
+class _HeldAnswers:
+    """The answers of up to :data:`~cityshade.light.kernels.HELD_DIRECTIONS` directions held
+    in a byte per receiver, then put into the packed bits together."""
+
+    def __init__(self, bits):
+        self.bits, self.held, self.columns = bits, np.zeros(bits.shape[0], np.uint8), []
+
+    def add(self, rows, blocked, column: int) -> None:
+        """Direction ``column``'s answers for receivers ``rows`` (rays ``blocked`` or not)."""
+        from cityshade.light.kernels import HELD_DIRECTIONS, hold_visible
+
+        hold_visible(self.held, rows, blocked, len(self.columns))
+        self.columns.append(column)
+        if len(self.columns) == HELD_DIRECTIONS:
+            self.put()
+
+    def put(self) -> None:
+        """The held answers into the bits (before a progress call: its directions are done)."""
+        from cityshade.light.kernels import put_held
+
+        if self.columns:
+            put_held(self.bits, self.held, self.columns)
+            self.columns = []
 
 
 def _sky_crowns(crown_parts) -> SkyCrowns:

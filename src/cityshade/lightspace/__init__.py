@@ -461,18 +461,14 @@ def _occluded(kd, casters, ws, origins, sun, t, out, stats, cell_m, last):
 
     # Grid over the receivers' box, cell size from the counts.
     t0 = time.perf_counter()
-    floor_m = 1e-9 * scale
-    ext_x = max(box[1] - box[0], floor_m)
-    ext_y = max(box[3] - box[2], floor_m)
+    ext_x, ext_y = max(box[1] - box[0], 1e-9 * scale), max(box[3] - box[2], 1e-9 * scale)
     max_cells = max(MAX_CELLS_PER_RECEIVER * n, 1024)
     size = (float(cell_m) if cell_m else
             _choose_cell_m(kept_boxes, xs, ys, box, ext_x, ext_y, max_cells))
-    nx = max(1, math.ceil(ext_x / size))
-    ny = max(1, math.ceil(ext_y / size))
+    nx, ny = max(1, math.ceil(ext_x / size)), max(1, math.ceil(ext_y / size))
     inv = 1.0 / size
-    # Called again (a batch's suns, a sky's directions), the receivers' origins are ordered
-    # by cell as they are binned, into the memory of the light-plane points (dead by then);
-    # a last call orders them once the casters are packed, freeing that memory meanwhile.
+    # Called again (a batch's suns, a sky's directions), the origins are ordered by cell as the
+    # receivers are binned; a last call orders them once the casters are packed (less memory).
     rec_start, rec_order, ref_start, refs, dest, n_cells, rec_origins = bin_grid(
         ws, xs, ys, kept_boxes, box[0], box[2], inv, nx, ny, n_chunks, True,
         None if last else origins)
