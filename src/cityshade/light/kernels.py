@@ -159,8 +159,9 @@ def patch_weight_rows(unit, centres, front, dx, dy, dz, lw, moment, cos_r, sin_r
     ``n · moment``, one whose subsamples all lie behind it nothing; the others sum
     ``max(0, n · d) lw`` subsample by subsample: into the patch when its centre is in front,
     else, where positive, into the nearest centre in front (highest ``d · centre``, the first
-    within :data:`NEAREST_TIE` of it), patches and subsamples in increasing order. The numpy form this replaces took
-    0.5 s for a 1 m map's 4,733 normals, most of it in temporaries of the cut patches."""
+    within :data:`NEAREST_TIE` of it), patches and subsamples in increasing order. The numpy
+    form this replaces took 0.65 s for a 1 m map's 4,733 normals (this 0.29 s), most of it in
+    temporaries of the cut patches."""
     run_chunks(_patch_weight_rows, unit.shape[0], 64, unit, centres, front, dx, dy, dz, lw,
                moment, cos_r, sin_r, margin_cos, out)
 
@@ -215,4 +216,3 @@ def _patch_weight_rows(unit, centres, front, dx, dy, dz, lw, moment, cos_r, sin_
                                         + dz[p, k] * centres[c, 2]) >= top - NEAREST_TIE:
                         out[u, c] += f
                         break
-

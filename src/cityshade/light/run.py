@@ -195,8 +195,8 @@ def sky_bytes_per_receiver(n_directions: int, irradiance: bool, instants: int = 
     """Bytes per receiver of the tile being traced, beside the batch's camera pass
     (:data:`cityshade.frame.pipeline.BATCH_BYTES_PER_PX`): point and normal (48), the packed
     bits (ceil(P / 8)), one direction's ray origins and rows while tracing (32) and eight
-    directions' answers held (1), the view
-    factor and two shares (24), the plane index (8), the VSC (8); with irradiance the three
+    directions' answers held (1), the view factor and two shares (24), the plane index (8),
+    the VSC (8); with irradiance the three
     float64 sums (24), the sun's bits and origins per hour (25); per instant its three float64
     W/m² (24). With vegetation (``crowns``) the rays through crowns, 24 B each
     (:class:`~cityshade.light.visibility.SkyCrowns`), for :data:`CROWN_RAY_SHARE` of the

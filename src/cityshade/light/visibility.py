@@ -13,8 +13,8 @@ coefficients): :mod:`cityshade.light.metrics` is arithmetic on them.
 Memory: the result holds ``ceil(P / 8)`` bytes per receiver for P directions (19 B for
 Tregenza's 145, 73 B for 577, 289 B for 2,305) plus the receivers' float64 normals (24 B).
 While tracing, one direction's ray origins and rows (32 B per receiver), a byte holding eight
-directions' answers before they go into the bits, and the engine's own work arrays (docs/DESIGN.md §7, §6); the answers go straight into the packed bits
-(:mod:`cityshade.light.kernels`).
+directions' answers until they go into the packed bits together (:mod:`cityshade.light.kernels`)
+and the engine's own work arrays (docs/DESIGN.md §7, §6).
 
 Trees: on a scene with vegetation crowns (docs/DESIGN.md §21) a bit says "no opaque triangle
 in the way", and the rays that cross crowns are listed apart (:class:`SkyCrowns`: 24 bytes per
