@@ -82,8 +82,9 @@ def release_kept_memory() -> None:
     release_freed_memory()
 
 
-#: A :class:`Scratch` buffer outgrown is replaced by one 1 / REGROW_SPARE (an eighth) larger than asked
-#: for; a first request gets exactly its size (a one-frame render's peak is unchanged).
+#: A :class:`Scratch` buffer outgrown is replaced by one 1 / REGROW_SPARE (an eighth) larger
+#: than asked for; a first request gets exactly its size (a one-frame render's peak is
+#: unchanged).
 REGROW_SPARE = 8
 
 
