@@ -170,6 +170,7 @@ def patch_weight_rows(unit, centres, front, dx, dy, dz, lw, moment, cos_r, sin_r
 def _patch_weight_rows(unit, centres, front, dx, dy, dz, lw, moment, cos_r, sin_r, margin_cos,
                        out, u0, u1):
     n_p, n_s = dx.shape
+    cut = np.empty(n_p, np.bool_)
     for u in range(u0, u1):
         nx, ny, nz = unit[u, 0], unit[u, 1], unit[u, 2]
         any_front = False
@@ -180,8 +181,10 @@ def _patch_weight_rows(unit, centres, front, dx, dy, dz, lw, moment, cos_r, sin_
                             -1.0), 1.0)
             sin_c = np.sqrt(1.0 - cos_c * cos_c)
             out[u, p] = 0.0
-            if cos_c * cos_r[p] + sin_c * sin_r[p] < -margin_cos:
-                continue                                   # wholly behind
+            behind = cos_c * cos_r[p] + sin_c * sin_r[p] < -margin_cos   # wholly
+            cut[p] = not front[u, p] and not behind
+            if behind:
+                continue
             if front[u, p]:
                 if cos_c * cos_r[p] - sin_c * sin_r[p] > margin_cos:   # wholly in front
                     out[u, p] = nx * moment[p, 0] + ny * moment[p, 1] + nz * moment[p, 2]
@@ -195,12 +198,7 @@ def _patch_weight_rows(unit, centres, front, dx, dy, dz, lw, moment, cos_r, sin_
         # Cut patches whose centre lies behind: their front part to the nearest front centre,
         # after every patch's own weight (the order the sums are made in).
         for p in range(n_p):
-            if front[u, p]:
-                continue
-            cos_c = min(max(nx * centres[p, 0] + ny * centres[p, 1] + nz * centres[p, 2],
-                            -1.0), 1.0)
-            sin_c = np.sqrt(1.0 - cos_c * cos_c)
-            if cos_c * cos_r[p] + sin_c * sin_r[p] < -margin_cos:
+            if not cut[p]:
                 continue
             for k in range(n_s):
                 f = max(dx[p, k] * nx + dy[p, k] * ny + dz[p, k] * nz, 0.0) * lw[p, k]
