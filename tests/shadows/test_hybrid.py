@@ -222,6 +222,37 @@ def test_thin_caster_map_agrees_with_its_numpy_twin(scene, references):
     assert np.array_equal(got[3][second], want[3][second])
 
 
+def test_thin_caster_map_with_a_depth_limit_keeps_what_the_lit_test_reads(scene, references):
+    """Given a depth limit per needed texel (the lit receivers' depths), the casters left out
+    change nothing the second pass reads: for any receiver polygon, whether a caster of
+    another polygon lies in front of the limit, and the nearest such, are the full map's."""
+    from cityshade.frame.pipeline import camera_pass
+    from cityshade.shadows.hybrid import thin_caster_map
+
+    t, refs = references
+    cam, sun, _ = refs["overview", 5.0]
+    ctx = camera_pass(scene, cam, t).context(sun, ShadowSettings().override(map_px=256))
+    view = get_technique("shadowmap").prepare(ctx).views[0]
+    full = thin_caster_map(scene, view, t)
+    rng = np.random.default_rng(2)
+    needed = rng.random(full[0].shape) < 0.5
+    finite = np.isfinite(full[0])
+    lo, hi = float(full[0][finite].min()), float(full[0][finite].max())
+    limit = rng.uniform(lo, lo + 0.3 * (hi - lo), full[0].shape).astype(np.float32)
+    limit[~needed] = -np.inf
+    part = thin_caster_map(scene, view, t, needed, limit)
+    # Some casters were left out (the test below would hold trivially otherwise) ...
+    assert (part[0][needed] != full[0][needed]).sum() > 50
+    # ... and none that matters: for the polygons named anywhere, and one named nowhere.
+    for own in (full[1], full[3], part[1], np.full(full[1].shape, -7)):
+        other_full = np.where(full[1] != own, full[0], full[2])[needed]
+        other_part = np.where(part[1] != own, part[0], part[2])[needed]
+        front = other_full < limit[needed]
+        assert front.sum() > 50
+        assert np.array_equal(other_part < limit[needed], front)
+        assert np.array_equal(other_part[front], other_full[front])
+
+
 REAL_FILES = {
     "tum": "munich-tum-campus-lod2/TUM Munich.gml",
     "munich3": "munich-lod2-citygml3-tile/"
