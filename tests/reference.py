@@ -696,6 +696,15 @@ def reference_oriented_normals(surfaces, camera):
     return np.where(seen_from_back[..., None], -normal, normal)
 
 
+def reference_facing_mask(normal, valid, sun_dir):
+    """N·L > 0 summed left to right, element by element (numpy's elementwise products and
+    sums: no fused multiply-add), and valid."""
+    n = np.asarray(normal, np.float64)
+    s = np.asarray(sun_dir, np.float64)
+    return ((n[..., 0] * s[0] + n[..., 1] * s[1]) + n[..., 2] * s[2] > 0.0) & np.asarray(
+        valid, bool)
+
+
 def reference_shadow_origins(points, normals, sun_dir):
     """Shadow-ray origins in plain numpy (twin of ``cityshade.trace.shadow_rays_from_surface``):
     ``p + (n + sun) * 2^-18 * max(|p|_inf, 1 m)``."""

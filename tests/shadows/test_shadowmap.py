@@ -636,6 +636,34 @@ def test_lookups_on_kept_temporaries_equal_the_fresh_twin(sample):
             assert 0.0 < got.mean() < 1.0
 
 
+def test_facing_mask_agrees_with_its_twin(sample):
+    """The facing rule is N·L > 0 summed left to right: the kernel's mask is the twin's, on the
+    sample city's normals for suns all round, on normals that make N·L vanish or nearly
+    (walls along the sun's azimuth, ±0), and with ``valid`` as an array or True."""
+    from reference import reference_facing_mask
+
+    from cityshade.frame.pipeline import camera_pass
+    from cityshade.shadows import facing_mask
+
+    cp = camera_pass(sample, cams.overview(sample, 160, 100), T_1990)
+    normal = np.asarray(cp.normal)
+    valid = np.asarray(cp.surfaces.valid)
+    rng = np.random.default_rng(3)
+    a = np.deg2rad(rng.uniform(0.0, 360.0, 4000))
+    edge = np.stack([np.cos(a), np.sin(a), np.zeros_like(a)], axis=1)
+    for az in range(0, 360, 15):
+        sun = sun_from_angles(float(az), 20.0, sample.crs, sample.origin_m).direction
+        got = facing_mask(normal, valid, sun)
+        assert got.shape == valid.shape and got.dtype == bool
+        assert np.array_equal(got, reference_facing_mask(normal, valid, sun))
+        # Walls whose normal is square to the sun's azimuth: N·L within rounding of 0.
+        along = np.array([-sun[1], sun[0], 0.0]) / np.hypot(sun[0], sun[1])
+        walls = np.concatenate([edge, along[None], -along[None], [[0.0, 0.0, -0.0]]])
+        assert np.array_equal(facing_mask(walls, True, sun),
+                              reference_facing_mask(walls, True, sun))
+    assert 0 < got.sum() < valid.sum()
+
+
 def test_context_gathers_the_facing_receivers_once_per_sun(sample):
     """The contexts of one camera pass and sun share the facing mask and gathered receivers
     (evaluate runs every technique on them); another sun gets its own, equal to a fresh

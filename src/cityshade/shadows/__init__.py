@@ -485,10 +485,36 @@ def take_pixels(image, at) -> np.ndarray:
     return np.asarray(flat[np.asarray(at, np.int64)], np.float64)
 
 
+@njit(cache=True, nogil=True)
+def _facing_kernel(normal, valid, sx, sy, sz, out, i0, i1):
+    # N·L summed left to right in float64 (no fused multiply-add: the same bits anywhere).
+    every = valid.shape[0] == 0
+    for i in range(i0, i1):
+        cos = normal[i, 0] * sx + normal[i, 1] * sy + normal[i, 2] * sz
+        out[i] = (cos > 0.0) & (every or valid[i])
+
+
+#: Pixels per work item of :func:`facing_mask`.
+FACING_CHUNK = 1 << 16
+
+
 def facing_mask(normal, valid, sun_direction) -> np.ndarray:
-    """(H, W) bool: valid pixels whose oriented normal faces the sun (N·L > 0)."""
-    faces = (normal @ np.asarray(sun_direction, dtype=np.float64)) > 0
-    return faces & np.asarray(valid, bool)
+    """(H, W) bool: valid pixels whose oriented normal faces the sun: N·L > 0, with N·L
+    ``(nx sx + ny sy) + nz sz`` in float64 (numpy's ``normal @ sun`` took 12 ms for a 1080p
+    frame, every technique's and every batch step's, and its rounding depends on the BLAS
+    kernel the machine picks). ``normal`` (..., 3); ``valid`` bool of its leading shape, or
+    True."""
+    normal = np.asarray(normal, np.float64)
+    shape = normal.shape[:-1]
+    flat = np.ascontiguousarray(normal).reshape(-1, 3)
+    s = np.asarray(sun_direction, dtype=np.float64).reshape(3)
+    valid = np.asarray(valid, bool)
+    valid = (np.empty(0, bool) if valid.ndim == 0 and bool(valid)
+             else np.ascontiguousarray(np.broadcast_to(valid, shape)).reshape(-1))
+    out = np.empty(flat.shape[0], bool)
+    run_chunks(_facing_kernel, flat.shape[0], FACING_CHUNK, flat, valid, float(s[0]),
+               float(s[1]), float(s[2]), out)
+    return out.reshape(shape)
 
 
 def facing_sun(surfaces: "Surfaces", camera: "Camera", sun_direction
