@@ -108,6 +108,7 @@ class _PixelRays:
         """(H, W) float32: 1 lit, 0 shadow or no surface, between where only vegetation is in
         the way (its transmission, docs/DESIGN.md §21)."""
         from cityshade.geometry.vegetation import day_of_year
+        from cityshade.shadows import scatter_pixels
         from cityshade.shadows.visibility import transmission
 
         faces = self.cp.context(sun).faces
@@ -115,9 +116,10 @@ class _PixelRays:
         if faces.any():
             direction = np.asarray(sun.direction, dtype=np.float64)
             origins = self.receivers.origins(direction, faces[self.valid])
-            lit[faces] = transmission(scene, origins, direction, t_days, engine=self.engine,
-                                      day_of_year=day_of_year(sun), calls=self.calls,
-                                      chosen=self.chosen)
+            # Rows in parallel: numpy's boolean assignment took 6-8 ms of a 2.1 M-pixel step.
+            scatter_pixels(transmission(scene, origins, direction, t_days, engine=self.engine,
+                                        day_of_year=day_of_year(sun), calls=self.calls,
+                                        chosen=self.chosen), faces, lit)
         return lit
 
 
