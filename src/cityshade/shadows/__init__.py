@@ -509,8 +509,11 @@ def facing_mask(normal, valid, sun_direction) -> np.ndarray:
     flat = np.ascontiguousarray(normal).reshape(-1, 3)
     s = np.asarray(sun_direction, dtype=np.float64).reshape(3)
     valid = np.asarray(valid, bool)
-    valid = (np.empty(0, bool) if valid.ndim == 0 and bool(valid)
-             else np.ascontiguousarray(np.broadcast_to(valid, shape)).reshape(-1))
+    if valid.ndim == 0 and bool(valid):
+        valid = np.empty(0, bool)       # every pixel
+    else:
+        valid = np.ascontiguousarray(np.broadcast_to(valid, shape)).reshape(-1)
+    valid.flags.writeable = False       # one kernel type for both (a broadcast is read-only)
     out = np.empty(flat.shape[0], bool)
     run_chunks(_facing_kernel, flat.shape[0], FACING_CHUNK, flat, valid, float(s[0]),
                float(s[1]), float(s[2]), out)
