@@ -189,7 +189,11 @@ def intersect(tree, origins, directions, t_days: float = 0.0, tmax=None, *,
 def shadow_offset_m(points) -> np.ndarray:
     """(N,) offset in metres for shadow rays leaving ``points`` (N, 3): relative to magnitude."""
     points = np.asarray(points, dtype=np.float64)
-    scale = np.maximum(np.abs(points).max(axis=1), SHADOW_OFFSET_MIN_SCALE_M)
+    a = np.abs(points)
+    # Column by column (the same maximum): numpy's reduction over rows of 3 took 78 ms for a
+    # batch's 2.1 M receivers.
+    scale = np.maximum(np.maximum(np.maximum(a[:, 0], a[:, 1]), a[:, 2]),
+                       SHADOW_OFFSET_MIN_SCALE_M)
     return SHADOW_OFFSET_REL * scale
 
 
