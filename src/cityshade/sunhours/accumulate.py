@@ -92,6 +92,7 @@ class _PixelRays:
 
     def __init__(self, cp, engine: str = "exact", calls: int = 1):
         from cityshade.lightspace import SurfaceReceivers
+        from cityshade.shadows import gather_pixels
 
         self.cp = cp
         self.valid = cp.valid
@@ -101,8 +102,8 @@ class _PixelRays:
         # The valid pixels' points, normals and offsets, checked once: per step one pass makes
         # the facing pixels' origins (the numpy gathers and temporaries cost more than izb's
         # binning on the 1M-triangle city).
-        self.receivers = SurfaceReceivers(cp.surfaces.position_m[self.valid],
-                                          cp.normal[self.valid])
+        self.receivers = SurfaceReceivers(gather_pixels(cp.surfaces.position_m, self.valid),
+                                          gather_pixels(cp.normal, self.valid))
 
     def lit(self, scene, sun, t_days: float) -> np.ndarray:
         """(H, W) float32: 1 lit, 0 shadow or no surface, between where only vegetation is in
