@@ -694,6 +694,27 @@ def test_gather_pixels_is_the_boolean_gather_in_row_major_order():
         assert got.dtype == np.float64 and np.array_equal(got, image[mask].astype(np.float64))
 
 
+def test_take_pixels_is_numpys_fancy_index_of_rows(monkeypatch):
+    """take_pixels (chunks on the worker threads) gathers rows of an image or a 2-D array at
+    flat indices, repeated and unordered ones too, as numpy's fancy index does, over several
+    chunks, and refuses an index outside the array."""
+    from cityshade import shadows
+    from cityshade.errors import ContractError
+
+    monkeypatch.setattr(shadows, "TAKE_CHUNK", 7)
+    rng = np.random.default_rng(5)
+    image = rng.random((23, 17, 3)).astype(np.float32)
+    flat = image.reshape(-1, 3)
+    for at in (rng.integers(0, 23 * 17, 100), np.arange(0), np.array([390, 0, 0, 5])):
+        for src in (image, flat.astype(np.float64)):
+            got = shadows.take_pixels(src, at)
+            assert got.dtype == np.float64 and got.shape == (at.size, 3)
+            assert np.array_equal(got, flat[at].astype(np.float64))
+    for bad in ([391], [-1]):
+        with pytest.raises(ContractError, match="pixel indices"):
+            shadows.take_pixels(image, np.array(bad))
+
+
 def test_scatter_pixels_is_numpys_boolean_assignment():
     """scatter_pixels (rows in parallel) writes a mask's pixels as ``out[mask] = values``
     does, and refuses a wrong number of values."""

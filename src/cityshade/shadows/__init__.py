@@ -476,13 +476,33 @@ def scatter_pixels(values, mask, out) -> None:
         run_chunks(_scatter_kernel, mask.shape[0], ROW_CHUNK, values, mask, starts, out)
 
 
+@njit(cache=True, nogil=True)
+def _take_kernel(flat, at, out, i0, i1):
+    for i in range(i0, i1):
+        k = at[i]
+        for c in range(flat.shape[1]):
+            out[i, c] = flat[k, c]
+
+
+#: Rows per work item of :func:`take_pixels`.
+TAKE_CHUNK = 1 << 15
+
+
 def take_pixels(image, at) -> np.ndarray:
-    """(N, C) float64 rows of an (H, W, C) image at flat pixel indices ``at``: the gather of a
-    mask's few pixels (``gather_pixels(image, mask)`` equals it with ``at`` the mask's
-    ``np.flatnonzero``) without a pass over the whole frame."""
+    """(N, C) float64 rows of an (H, W, C) image (or of an (M, C) array) at flat pixel (row)
+    indices ``at``: the gather of a mask's few pixels (``gather_pixels(image, mask)`` equals
+    it with ``at`` the mask's ``np.flatnonzero``) without a pass over the whole frame, in
+    chunks on the worker threads (numpy's fancy index of 2-D rows: 1.15 ms for 81k rows of
+    3, this 0.12)."""
     image = np.asarray(image)
     flat = image.reshape(-1, image.shape[-1])
-    return np.asarray(flat[np.asarray(at, np.int64)], np.float64)
+    at = np.asarray(at, np.int64)
+    if at.size and not (0 <= int(at.min()) and int(at.max()) < flat.shape[0]):
+        raise ContractError(f"pixel indices outside 0..{flat.shape[0] - 1}")
+    out = np.empty((at.shape[0], flat.shape[1]), np.float64)
+    if at.size:
+        run_chunks(_take_kernel, at.shape[0], TAKE_CHUNK, flat, at, out)
+    return out
 
 
 @njit(cache=True, nogil=True)

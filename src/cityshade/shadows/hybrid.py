@@ -895,7 +895,8 @@ class Hybrid:
                     _apply_states(at, states, lit, refined, uncertain)
                     if len(maps) == 1:
                         sel = np.flatnonzero(states == UNCERTAIN)
-                        todo_rays = (at[sel], points[sel], normals[sel])
+                        todo_rays = (at[sel], take_pixels(points, sel),
+                                     take_pixels(normals, sel))
             classifier_used = "bracket"
         else:
             b = self.base.look_up(ctx, prepared) if base_lit is None else base_lit
