@@ -184,7 +184,7 @@ def with_crowns(run, ctx):
         opaque.__dict__[name] = getattr(ctx, name)
     result = run(opaque)
     t0 = time.perf_counter()
-    from cityshade.shadows import scatter_pixels
+    from cityshade.shadows import scatter_pixels, take_pixels
     from cityshade.trace import shadow_rays_from_surface
 
     faces = ctx.faces
@@ -192,8 +192,8 @@ def with_crowns(run, ctx):
     rays = np.flatnonzero(lit > 0)
     if rays.size:
         direction = np.asarray(ctx.sun.direction, np.float64)
-        origins = shadow_rays_from_surface(ctx.facing_points[rays], ctx.facing_normals[rays],
-                                           direction)
+        origins = shadow_rays_from_surface(take_pixels(ctx.facing_points, rays),
+                                           take_pixels(ctx.facing_normals, rays), direction)
         tau = veg.transmissivity(vegetation_settings(ctx.scene), day_of_year(ctx.sun))
         crowns = crowns_pass(veg, origins, direction, ctx.t_days,
                              np.arange(rays.size), (tau,))[0]

@@ -196,16 +196,20 @@ def samples_lit(scene, samples: SurfaceSamples, sun, t_days: float,
     ``izb`` (:mod:`cityshade.lightspace`) or ``raytrace`` (:mod:`cityshade.trace`), the same
     answer.
     """
+    from cityshade.shadows import facing_mask, take_pixels
     from cityshade.shadows.visibility import sun_fraction
 
     lit = np.zeros(samples.n, np.float64)
     if not sun.above_horizon or samples.n == 0:
         return lit
     direction = np.asarray(sun.direction, dtype=np.float64)
-    faces = np.flatnonzero(samples.normals @ direction > 0.0)
+    # The shared facing rule (a frame's, a batch's): numpy's ``normals @ direction`` rounds
+    # as the machine's BLAS kernel does.
+    faces = np.flatnonzero(facing_mask(samples.normals, True, direction))
     if len(faces):
-        lit[faces] = sun_fraction(scene, samples.points_m[faces], samples.normals[faces], sun,
-                                  t_days, engine=engine)
+        lit[faces] = sun_fraction(scene, take_pixels(samples.points_m, faces),
+                                  take_pixels(samples.normals, faces), sun, t_days,
+                                  engine=engine)
     return lit
 
 
