@@ -71,8 +71,26 @@ THIN_MARGIN_TEXELS = 1e-3
 
 
 @njit(cache=True, parallel=True)
-def _thin_boxes(vertices, triangles, present, m, width, height, blocks, limit, box, zmin):
-    """Project every present triangle into the light view; for the thin ones, the texels their
+def _project_vertices(vertices, m, width, height, out):
+    """(V, 4) ``out``: each vertex's column, row and NDC depth in the light view of clip matrix
+    ``m`` (16,), and its clip W (the point is in front of the light where W > 0). Once per
+    vertex for every triangle that uses it (the 1M city: 1.23 M vertices against 3 M corners),
+    in a loop that vectorises."""
+    for q in prange(vertices.shape[0]):
+        x = np.float64(vertices[q, 0])
+        y = np.float64(vertices[q, 1])
+        z = np.float64(vertices[q, 2])
+        cw = m[12] * x + m[13] * y + m[14] * z + m[15]
+        out[q, 0] = ((m[0] * x + m[1] * y + m[2] * z + m[3]) / cw + 1.0) * 0.5 * width
+        out[q, 1] = (1.0 - (m[4] * x + m[5] * y + m[6] * z + m[7]) / cw) * 0.5 * height
+        out[q, 2] = (m[8] * x + m[9] * y + m[10] * z + m[11]) / cw
+        out[q, 3] = cw
+
+
+@njit(cache=True, parallel=True)
+def _thin_boxes(light, triangles, present, width, height, blocks, limit, box, zmin):
+    """Every present triangle in the light view (its vertices' ``light``:
+    :func:`_project_vertices`); for the thin ones, the texels their
     bounding box touches, within :data:`THIN_MARGIN_TEXELS` (``box`` col0, col1, row0, row1;
     col0 > col1 for the others, for boxes off the map, for boxes that reach no block of
     :func:`_needed_blocks`'s ``blocks`` and, when ``limit`` (H, W) is not empty, for
@@ -85,14 +103,11 @@ def _thin_boxes(vertices, triangles, present, m, width, height, blocks, limit, b
         if not present[i]:
             continue
         q0, q1, q2 = triangles[i, 0], triangles[i, 1], triangles[i, 2]
-        cw0 = _clip_w(vertices, q0, m)
-        cw1 = _clip_w(vertices, q1, m)
-        cw2 = _clip_w(vertices, q2, m)
-        if not (cw0 > 0.0 and cw1 > 0.0 and cw2 > 0.0):
+        if not (light[q0, 3] > 0.0 and light[q1, 3] > 0.0 and light[q2, 3] > 0.0):
             continue
-        u0, v0, z0 = _light_texel(vertices, q0, m, cw0, width, height)
-        u1, v1, z1 = _light_texel(vertices, q1, m, cw1, width, height)
-        u2, v2, z2 = _light_texel(vertices, q2, m, cw2, width, height)
+        u0, v0, z0 = light[q0, 0], light[q0, 1], light[q0, 2]
+        u1, v1, z1 = light[q1, 0], light[q1, 1], light[q1, 2]
+        u2, v2, z2 = light[q2, 0], light[q2, 1], light[q2, 2]
         # Light-space height in texels: 2·area / longest edge.
         e1u, e1v = u1 - u0, v1 - v0
         e2u, e2v = u2 - u0, v2 - v0
@@ -123,29 +138,14 @@ def _thin_boxes(vertices, triangles, present, m, width, height, blocks, limit, b
         zmin[i] = z
 
 
-@njit(cache=True, inline="always")
-def _clip_w(vertices, q, m):
-    x, y, z = np.float64(vertices[q, 0]), np.float64(vertices[q, 1]), np.float64(vertices[q, 2])
-    return m[12] * x + m[13] * y + m[14] * z + m[15]
-
-
-@njit(cache=True, inline="always")
-def _light_texel(vertices, q, m, cw, width, height):
-    """(column, row, NDC depth) of vertex ``q`` in the light view (``cw`` its clip W)."""
-    x, y, z = np.float64(vertices[q, 0]), np.float64(vertices[q, 1]), np.float64(vertices[q, 2])
-    return (((m[0] * x + m[1] * y + m[2] * z + m[3]) / cw + 1.0) * 0.5 * width,
-            (1.0 - (m[4] * x + m[5] * y + m[6] * z + m[7]) / cw) * 0.5 * height,
-            (m[8] * x + m[9] * y + m[10] * z + m[11]) / cw)
-
-
 #: Row bands of the thin-caster splat: each band applies, in id order, the splats that touch
 #: it, so every texel sees the serial order and the map is the same for any thread count.
 THIN_BANDS = 64
 
 
 @njit(cache=True, parallel=True)
-def _thin_splat(vertices, triangles, m, box, zmin, poly, band_start, band_items, needed, d1,
-                p1, d2, p2):
+def _thin_splat(light, triangles, box, zmin, poly, band_start, band_items, needed, d1, p1, d2,
+                p2):
     """Splat the thin triangles over the texels whose squares they touch (a conservative
     rasterization: every edge's half-plane reaches the square, within the margin), each texel
     getting a lower bound of the triangle's depth over its square (the depth plane's minimum
@@ -167,9 +167,9 @@ def _thin_splat(vertices, triangles, m, box, zmin, poly, band_start, band_items,
         for j in range(band_start[b], band_start[b + 1]):
             i = band_items[j]
             q0, q1, q2 = triangles[i, 0], triangles[i, 1], triangles[i, 2]
-            u0, v0, z0 = _light_texel(vertices, q0, m, _clip_w(vertices, q0, m), w, h)
-            u1, v1, z1 = _light_texel(vertices, q1, m, _clip_w(vertices, q1, m), w, h)
-            u2, v2, z2 = _light_texel(vertices, q2, m, _clip_w(vertices, q2, m), w, h)
+            u0, v0, z0 = light[q0, 0], light[q0, 1], light[q0, 2]
+            u1, v1, z1 = light[q1, 0], light[q1, 1], light[q1, 2]
+            u2, v2, z2 = light[q2, 0], light[q2, 1], light[q2, 2]
             # Depth is affine in texel coordinates over a planar triangle (also under a
             # perspective warp): z = z0 + a (u - u0) + b (v - v0), unless it is seen edge-on.
             e1u, e1v, e2u, e2v = u1 - u0, v1 - v0, u2 - u0, v2 - v0
@@ -391,8 +391,8 @@ def thin_caster_map(scene, view, t_days: float, needed=None,
             _THIN_MAPS.empty((h, w), np.float32), _THIN_MAPS.empty((h, w), np.int32))
     n = scene.triangles.shape[0]
     m = np.ascontiguousarray(view.clip_from_world.reshape(16), np.float64)
-    # Per-triangle temporaries of every frame (a 1M-triangle city: 25 MB), kept: fresh pages
-    # were faulted in anew each time.
+    # Per-triangle and per-vertex temporaries of every frame (a 1M-triangle city: 25 + 39 MB),
+    # kept: fresh pages were faulted in anew each time.
     work = _THIN_SCRATCH.take()
     try:
         present = work.get("present", n, np.bool_)
@@ -400,11 +400,13 @@ def thin_caster_map(scene, view, t_days: float, needed=None,
         present &= t_days < np.asarray(scene.tri_t_end_days)
         box = work.get("box", (n, 4), np.int32)
         zmin = work.get("zmin", n)
-        _thin_boxes(scene.vertices, scene.triangles, present, m, w, h, blocks,
+        light = work.get("light", (scene.vertices.shape[0], 4))
+        _project_vertices(scene.vertices, m, float(w), float(h), light)
+        _thin_boxes(light, scene.triangles, present, w, h, blocks,
                     np.zeros((0, 0), np.float32) if limit is None else limit, box, zmin)
         band_start, band_items = _band_lists(box, h, min(THIN_BANDS, h))
-        _thin_splat(scene.vertices, scene.triangles, m, box, zmin,
-                    classifier_polygons(scene), band_start, band_items, needed, *thin)
+        _thin_splat(light, scene.triangles, box, zmin, classifier_polygons(scene), band_start,
+                    band_items, needed, *thin)
     finally:
         work.give_back()
     return thin
