@@ -714,10 +714,12 @@ def reference_shadow_origins(points, normals, sun_dir):
 
 
 def reference_bracket_states(depth_map, scene, points, normals, own_poly, sun_dir, radius,
-                             thin_map):
+                             thin_map, counts=None):
     """The bracket classifier's receiver states in plain numpy (twin of
     ``cityshade.shadows.hybrid.bracket_states``): origins, projection and receiver-plane
-    gradient step by step, then every texel of the (2 radius + 1)² window."""
+    gradient step by step, then every texel of the (2 radius + 1)² window. ``counts``, a
+    dict, gets ``near_proven``: the receivers clear at every texel centre whose ray hits a
+    caster near the plane."""
     from cityshade.shadows.shadowmap import project, receiver_plane_gradient
 
     origins = reference_shadow_origins(points, normals, np.asarray(sun_dir, np.float64))
@@ -739,6 +741,10 @@ def reference_bracket_states(depth_map, scene, points, normals, own_poly, sun_di
     clear = np.zeros(n, np.int64)
     first = np.full(n, -2, np.int64)
     mixed = np.zeros(n, bool)
+    # Another polygon's caster behind the plane at a texel centre by less than the plane's
+    # change across the window, and in front of the receiver's own depth: a proof is tried.
+    band = (radius + 0.5) * (np.abs(gu) + np.abs(gv))
+    near_texels = [[] for _ in range(n)]
     # A thin caster counts in the receiver's own texel, against its own depth.
     inside = (cv >= 0) & (cv < h) & (cu >= 0) & (cu < w)
     r, c = np.clip(cv, 0, h - 1), np.clip(cu, 0, w - 1)
@@ -759,6 +765,10 @@ def reference_bracket_states(depth_map, scene, points, normals, own_poly, sun_di
             clear += ~occ
             for i in np.flatnonzero(occ):
                 occluding_texels[i].append(int(prim[r[i], c[i]]))
+            near = (inside & ~occ & (texel_poly[r, c] != own_poly)
+                    & (depth[r, c] < np.minimum(plane + band, z)))
+            for i in np.flatnonzero(near):
+                near_texels[i].append(int(prim[r[i], c[i]]))
     state = np.where((occluding == 0) & (thin_occluding == 0), 0,
                      np.where((clear == 0) & ~mixed, 1, 2)).astype(np.uint8)
     state[~ok] = 2
@@ -770,6 +780,17 @@ def reference_bracket_states(depth_map, scene, points, normals, own_poly, sun_di
         ids = sorted(set(occluding_texels[i]))
         if reference_watertight_hits(scene.vertices, tri[ids], origins[i], sun_dir).any():
             state[i] = 3
+    # Clear at every texel centre, but near another polygon's caster: a hit proves shadow
+    # (a steep receiver at the corner of another polygon), before the thin casters count.
+    near_proven = 0
+    for i in np.flatnonzero(ok & (occluding == 0)):
+        ids = sorted(set(near_texels[i]))
+        if ids and reference_watertight_hits(scene.vertices, tri[ids], origins[i],
+                                             sun_dir).any():
+            state[i] = 3
+            near_proven += 1
+    if counts is not None:
+        counts["near_proven"] = near_proven
     return state
 
 

@@ -473,9 +473,13 @@ def _bracket_kernel(m, width, height, depth, prim, texel_poly, points, normals, 
         cv = int(np.floor(v_s))
         occluding = 0
         clear = 0
+        near = 0
         first_poly = -2
         mixed = False
         decided = False
+        # Another polygon's caster less than the plane's change across the window behind the
+        # plane at a texel centre may still cover the receiver's point in front of it.
+        band = (radius + 0.5) * (abs(dz_du) + abs(dz_dv))
         for dv in range(-radius, radius + 1):
             row = cv + dv
             if decided:
@@ -502,7 +506,16 @@ def _bracket_kernel(m, width, height, depth, prim, texel_poly, points, normals, 
                         mixed = True
                 else:
                     clear += 1
-        if occluding == 0:
+                    if tp != own and depth[row, col] < min(plane + band, z_s):
+                        near += 1
+        if occluding == 0 and near > 0 and _hits_a_window_caster(
+                depth, prim, texel_poly, vertices, triangles, cu, cv, radius, u_s, v_s, z_s,
+                dz_du, dz_dv, tol, own, band, z_s, px, py, pz, kx, ky, kz, sx, sy, sz):
+            # Lit at every texel centre, but the ray hits one of those casters: near the line
+            # where a steep receiver's plane meets another polygon's (a roof at the corner of
+            # two others on the TUM campus and the Munich CityGML 3.0 tile).
+            state[i] = PROVEN_SHADOW
+        elif occluding == 0:
             # Lit unless a thin caster covers its light-space point: the second pass reads
             # its own texel of the thin map, against its own depth.
             state[i] = SURE_LIT
@@ -516,7 +529,8 @@ def _bracket_kernel(m, width, height, depth, prim, texel_poly, points, normals, 
             state[i] = UNCERTAIN
             if _hits_a_window_caster(
                     depth, prim, texel_poly, vertices, triangles, cu, cv, radius, u_s, v_s,
-                    z_s, dz_du, dz_dv, tol, own, px, py, pz, kx, ky, kz, sx, sy, sz):
+                    z_s, dz_du, dz_dv, tol, own, 0.0, np.inf, px, py, pz, kx, ky, kz, sx, sy,
+                    sz):
                 state[i] = PROVEN_SHADOW
 
 
@@ -540,15 +554,17 @@ def _thin_kernel(thin_depth, thin_poly, thin_depth2, own_poly, own_texel, z_limi
 
 @njit(cache=True, inline="always")
 def _occluder_hit(depth, prim, texel_poly, vertices, triangles, row, col, u_s, v_s, z_s,
-                  dz_du, dz_dv, tol, own, last, okx, oky, okz, kx, ky, kz, sx, sy, sz):
+                  dz_du, dz_dv, tol, own, band, z_max, last, okx, oky, okz, kx, ky, kz, sx, sy,
+                  sz):
     """(triangle tested or ``last``, hit): the watertight test of texel (row, col)'s triangle
-    when it occludes (another polygon's caster in front of the receiver's plane) and is not
-    ``last``, the one tested just before."""
+    when it is another polygon's caster less than ``band`` behind the receiver's plane (0: in
+    front of it, an occluding texel) and in front of ``z_max``, and is not ``last``, the one
+    tested just before."""
     t = prim[row, col]
     if t < 0 or t == last or texel_poly[row, col] == own:
         return last, False
     plane = (z_s + dz_du * (col + 0.5 - u_s) + dz_dv * (row + 0.5 - v_s) - tol)
-    if not depth[row, col] < plane:
+    if not depth[row, col] < min(plane + band, z_max):
         return last, False
     hit, t_hit, _, _ = hit_triangle(vertices, triangles, t, okx, oky, okz, kx, ky, kz,
                                     sx, sy, sz)
@@ -557,17 +573,20 @@ def _occluder_hit(depth, prim, texel_poly, vertices, triangles, row, col, u_s, v
 
 @njit(cache=True, inline="always")
 def _hits_a_window_caster(depth, prim, texel_poly, vertices, triangles, cu, cv, radius, u_s,
-                          v_s, z_s, dz_du, dz_dv, tol, own, ox, oy, oz, kx, ky, kz, sx, sy, sz):
-    """Whether the shadow ray from ``o`` hits (t >= 0) the triangle of an occluding texel of
-    the window (the bracket test's occluding texels; a run of texels of one triangle is tested
-    once). The receiver's own texel first: its caster is the likeliest hit."""
+                          v_s, z_s, dz_du, dz_dv, tol, own, band, z_max, ox, oy, oz, kx, ky, kz,
+                          sx, sy, sz):
+    """Whether the shadow ray from ``o`` hits (t >= 0) the triangle of a window texel holding
+    another polygon's caster less than ``band`` behind the receiver's plane and in front of
+    ``z_max`` (0 and inf: the bracket test's occluding texels; a run of texels of one triangle
+    is tested once). The receiver's
+    own texel first: its caster is the likeliest hit."""
     h, w = depth.shape
     okx, oky, okz = on_axes(ox, oy, oz, kx, ky, kz)
     last = -1
     if 0 <= cv < h and 0 <= cu < w:
         last, hit = _occluder_hit(depth, prim, texel_poly, vertices, triangles, cv, cu, u_s, v_s,
-                                  z_s, dz_du, dz_dv, tol, own, last, okx, oky, okz, kx, ky, kz,
-                                  sx, sy, sz)
+                                  z_s, dz_du, dz_dv, tol, own, band, z_max, last, okx, oky, okz,
+                                  kx, ky, kz, sx, sy, sz)
         if hit:
             return True
     for row in range(max(cv - radius, 0), min(cv + radius + 1, h)):
@@ -575,8 +594,8 @@ def _hits_a_window_caster(depth, prim, texel_poly, vertices, triangles, cu, cv, 
             if row == cv and col == cu:
                 continue
             last, hit = _occluder_hit(depth, prim, texel_poly, vertices, triangles, row, col,
-                                      u_s, v_s, z_s, dz_du, dz_dv, tol, own, last, okx, oky,
-                                      okz, kx, ky, kz, sx, sy, sz)
+                                      u_s, v_s, z_s, dz_du, dz_dv, tol, own, band, z_max, last,
+                                      okx, oky, okz, kx, ky, kz, sx, sy, sz)
             if hit:
                 return True
     return False
