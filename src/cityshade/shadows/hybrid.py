@@ -31,8 +31,11 @@ the other class (4-neighbourhood), repeatedly, until no boundary pixel is untrac
 
 Pixels facing away from the sun are shadow by the shared rule and never traced.
 What remains wrong can only be a mistaken region that touches no verified boundary: a gap or a
-caster narrower than a texel, inside a region the map calls sure. ``cityshade evaluate`` counts
-those misses against ``raytrace``.
+caster narrower than a texel, inside a region the map calls sure; a receiver almost along the
+sun's rays (N·L near 0.003); a caster that the receiver's own polygon hides at the texel
+centres (on real LoD2 files, 12 suns at 4 elevations, two maps and an overview: 5 pixels of
+the Munich CityGML 3.0 tile's 288 frames, 11 of the Lyon opera's). ``cityshade evaluate``
+counts those misses against ``raytrace``.
 """
 from __future__ import annotations
 
