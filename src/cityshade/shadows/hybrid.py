@@ -581,8 +581,7 @@ def _hits_a_window_caster(depth, prim, texel_poly, vertices, triangles, cu, cv, 
     """Whether the shadow ray from ``o`` hits (t >= 0) the triangle of a window texel holding
     another polygon's caster less than ``band`` behind the receiver's plane and in front of
     ``z_max`` (0 and inf: the bracket test's occluding texels; a run of texels of one triangle
-    is tested once). The receiver's
-    own texel first: its caster is the likeliest hit."""
+    is tested once). The receiver's own texel first: its caster is the likeliest hit."""
     h, w = depth.shape
     okx, oky, okz = on_axes(ox, oy, oz, kx, ky, kz)
     last = -1
