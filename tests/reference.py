@@ -733,6 +733,10 @@ def reference_bracket_states(depth_map, scene, points, normals, own_poly, sun_di
     depth = np.asarray(depth_map.depth)
     h, w = depth.shape
     ok = np.isfinite(u) & np.isfinite(v) & np.isfinite(z)
+    # A receiver almost along the sun's rays is left to the rays.
+    nrm, s = np.asarray(normals, np.float64), np.asarray(sun_dir, np.float64)
+    grazing = (nrm[:, 0] * s[0] + nrm[:, 1] * s[1]) + nrm[:, 2] * s[2] < 1e-3
+    ok &= ~grazing
     cu = np.floor(np.where(ok, u, 0.0)).astype(np.int64)
     cv = np.floor(np.where(ok, v, 0.0)).astype(np.int64)
     n = len(u)
