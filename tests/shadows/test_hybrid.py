@@ -284,14 +284,23 @@ def test_hybrid_misses_no_pixel_on_real_lod2(name, tmp_path_factory):
     fine = float(max(hi[0] - lo[0], hi[1] - lo[1])) / 400     # the map of the sliver case
     for cam in (map_view(scene, 1.0), map_view(scene, fine), overview(scene, 480, 300)):
         for az, el in ((135.0, 30.0), (240.0, 10.0), (90.0, 3.0)):
-            sun = sun_from_angles(az, el, scene.crs, scene.origin_m)
-            ref = render_frame(scene, cam, 20000.0, sun, "raytrace")
-            for base in ("shadowmap", "vsm"):
-                frame = render_frame(scene, cam, 20000.0, sun, f"hybrid:{base}")
-                wrong = ((frame.lit >= 0.5) != (ref.lit >= 0.5)) & ref.surfaces.valid
-                assert wrong.sum() == 0, f"{name} {cam.kind} sun {az}/{el} {base}: {wrong.sum()}"
-                proven += frame.diagnostics.shadow["proven_px"]
+            for base, (wrong, n_proven) in hybrid_misses(scene, cam, az, el).items():
+                assert wrong == 0, f"{name} {cam.kind} sun {az}/{el} {base}: {wrong}"
+                proven += n_proven
     assert proven > 0
+
+
+def hybrid_misses(scene, cam, az, el) -> dict:
+    """{base: (pixels whose lit differs from raytrace's, proven shadow pixels)} of hybrid with
+    the shadowmap and vsm bases, sun at azimuth ``az``, elevation ``el`` (degrees)."""
+    sun = sun_from_angles(az, el, scene.crs, scene.origin_m)
+    ref = render_frame(scene, cam, 20000.0, sun, "raytrace")
+    out = {}
+    for base in ("shadowmap", "vsm"):
+        frame = render_frame(scene, cam, 20000.0, sun, f"hybrid:{base}")
+        wrong = ((frame.lit >= 0.5) != (ref.lit >= 0.5)) & ref.surfaces.valid
+        out[base] = (int(wrong.sum()), frame.diagnostics.shadow["proven_px"])
+    return out
 
 
 def test_casters_near_a_steep_receivers_plane_are_tested(tmp_path_factory):
@@ -314,12 +323,9 @@ def test_casters_near_a_steep_receivers_plane_are_tested(tmp_path_factory):
     scene = load_scene(out)
     cam = map_view(scene, 1.0)
     for az, el in ((157.0, 12.0), (307.0, 45.0)):
-        sun = sun_from_angles(az, el, scene.crs, scene.origin_m)
-        ref = render_frame(scene, cam, 20000.0, sun, "raytrace")
-        for base in ("shadowmap", "vsm"):
-            frame = render_frame(scene, cam, 20000.0, sun, f"hybrid:{base}")
-            wrong = ((frame.lit >= 0.5) != (ref.lit >= 0.5)) & ref.surfaces.valid
-            assert wrong.sum() == 0, f"{az}/{el} {base}: {wrong.sum()} pixels wrong"
+        for base, (wrong, _) in hybrid_misses(scene, cam, az, el).items():
+            assert wrong == 0, f"{az}/{el} {base}: {wrong} pixels wrong"
+    sun = sun_from_angles(307.0, 45.0, scene.crs, scene.origin_m)
     ctx = camera_pass(scene, cam, 20000.0).context(sun)
     use = get_technique("vsm").prepare(ctx).maps[0]
     # The facing pixels around the corners (the twin is slow on the whole map).
