@@ -694,14 +694,13 @@ def test_gather_pixels_is_the_boolean_gather_in_row_major_order():
         assert got.dtype == np.float64 and np.array_equal(got, image[mask].astype(np.float64))
 
 
-def test_take_pixels_is_numpys_fancy_index_of_rows(monkeypatch):
-    """take_pixels (chunks on the worker threads) gathers rows of an image or a 2-D array at
-    flat indices, repeated and unordered ones too, as numpy's fancy index does, over several
-    chunks, and refuses an index outside the array."""
+def test_take_pixels_is_numpys_fancy_index_of_rows():
+    """take_pixels (rows in parallel) gathers rows of an image or a 2-D array at flat
+    indices, repeated and unordered ones too, as numpy's fancy index does, and refuses an
+    index outside the array."""
     from cityshade import shadows
     from cityshade.errors import ContractError
 
-    monkeypatch.setattr(shadows, "TAKE_CHUNK", 7)
     rng = np.random.default_rng(5)
     image = rng.random((23, 17, 3)).astype(np.float32)
     flat = image.reshape(-1, 3)
