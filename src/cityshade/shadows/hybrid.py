@@ -92,9 +92,10 @@ def _project_vertices(vertices, m, width, height, out):
 
 
 @njit(cache=True, parallel=True)
-def _thin_boxes(light, triangles, present, width, height, blocks, limit, box, zmin):
-    """Every present triangle in the light view (its vertices' ``light``:
-    :func:`_project_vertices`); for the thin ones, the texels their
+def _thin_boxes(light, triangles, t_begin, t_end, t_days, width, height, blocks, limit, box,
+                zmin):
+    """Every triangle present at ``t_days`` (``t_begin <= t_days < t_end``) in the light view
+    (its vertices' ``light``: :func:`_project_vertices`); for the thin ones, the texels their
     bounding box touches, within :data:`THIN_MARGIN_TEXELS` (``box`` col0, col1, row0, row1;
     col0 > col1 for the others, for boxes off the map, for boxes that reach no block of
     :func:`_needed_blocks`'s ``blocks`` and, when ``limit`` (H, W) is not empty, for
@@ -104,7 +105,7 @@ def _thin_boxes(light, triangles, present, width, height, blocks, limit, box, zm
     for i in prange(triangles.shape[0]):
         box[i, 0] = 1
         box[i, 1] = 0
-        if not present[i]:
+        if not (t_begin[i] <= t_days and t_days < t_end[i]):
             continue
         q0, q1, q2 = triangles[i, 0], triangles[i, 1], triangles[i, 2]
         if not (light[q0, 3] > 0.0 and light[q1, 3] > 0.0 and light[q2, 3] > 0.0):
@@ -395,18 +396,16 @@ def thin_caster_map(scene, view, t_days: float, needed=None,
             _THIN_MAPS.empty((h, w), np.float32), _THIN_MAPS.empty((h, w), np.int32))
     n = scene.triangles.shape[0]
     m = np.ascontiguousarray(view.clip_from_world.reshape(16), np.float64)
-    # Per-triangle and per-vertex temporaries of every frame (a 1M-triangle city: 25 + 39 MB),
+    # Per-triangle and per-vertex temporaries of every frame (a 1M-triangle city: 24 + 39 MB),
     # kept: fresh pages were faulted in anew each time.
     work = _THIN_SCRATCH.take()
     try:
-        present = work.get("present", n, np.bool_)
-        np.less_equal(scene.tri_t_begin_days, t_days, out=present)
-        present &= t_days < np.asarray(scene.tri_t_end_days)
         box = work.get("box", (n, 4), np.int32)
         zmin = work.get("zmin", n)
         light = work.get("light", (scene.vertices.shape[0], 4))
         _project_vertices(scene.vertices, m, float(w), float(h), light)
-        _thin_boxes(light, scene.triangles, present, w, h, blocks,
+        _thin_boxes(light, scene.triangles, np.asarray(scene.tri_t_begin_days, np.float64),
+                    np.asarray(scene.tri_t_end_days, np.float64), float(t_days), w, h, blocks,
                     np.zeros((0, 0), np.float32) if limit is None else limit, box, zmin)
         band_start, band_items = _band_lists(box, h, min(THIN_BANDS, h))
         _thin_splat(light, scene.triangles, box, zmin, classifier_polygons(scene), band_start,
