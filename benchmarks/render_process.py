@@ -32,9 +32,15 @@ from provenance import commit  # noqa: E402  (the benchmarks' shared provenance)
 REPO = Path(__file__).resolve().parents[1]
 
 #: One render in a child, its wall time and peak RSS (ru_maxrss: KiB on Linux); a fresh wrapper
-#: process sees only this child.
+#: process sees only this child. The child starts with the kernel's transparent huge pages
+#: (this script's process has them off, as the command does; the flag is inherited), so each
+#: checkout runs as its own command decides: since session 33 the command turns them off.
 _WRAPPER = r"""
-import json, resource, subprocess, sys, time
+import ctypes, json, resource, subprocess, sys, time
+try:
+    ctypes.CDLL(None).prctl(41, 0, 0, 0, 0)   # PR_SET_THP_DISABLE off: the kernel's setting
+except (OSError, AttributeError):
+    pass
 t0 = time.perf_counter()
 proc = subprocess.run(sys.argv[1:], capture_output=True, text=True)
 seconds = time.perf_counter() - t0

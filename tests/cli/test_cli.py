@@ -435,3 +435,28 @@ def test_the_command_runs_numpy_on_one_blas_thread_unless_told(tmp_path):
     assert run("/usr/bin/cityshade", OPENBLAS_NUM_THREADS="3", OMP_WAIT_POLICY="ACTIVE") == \
         ["3", "1", "ACTIVE"]
     assert run("my_script.py") == ["None", "None", "None"]
+
+
+def test_the_command_runs_without_transparent_huge_pages_unless_told():
+    """The command's process turns transparent huge pages off for itself (the kernel's
+    per-process flag, ``THP_enabled`` in /proc/self/status); ``CITYSHADE_HUGE_PAGES=1`` keeps
+    them; a program importing the library is not touched."""
+    if not Path("/proc/self/status").exists() or \
+            "THP_enabled" not in Path("/proc/self/status").read_text():
+        pytest.skip("this kernel does not report THP_enabled in /proc/self/status")
+    probe = ("import sys; sys.argv[0] = {argv0!r}; import cityshade; "
+             "print([line.split()[1] for line in open('/proc/self/status') "
+             "if line.startswith('THP_enabled')][0])")
+
+    def run(argv0, **env):
+        base = {k: v for k, v in os.environ.items() if k != "CITYSHADE_HUGE_PAGES"}
+        out = subprocess.run([sys.executable, "-c", probe.format(argv0=argv0)],
+                             env={**base, **env}, capture_output=True, text=True, check=True)
+        return out.stdout.strip()
+
+    # The flag is inherited: the others keep whatever this process has.
+    own = [line.split()[1] for line in Path("/proc/self/status").read_text().splitlines()
+           if line.startswith("THP_enabled")][0]
+    assert run("/usr/bin/cityshade") == "0"
+    assert run("/usr/bin/cityshade", CITYSHADE_HUGE_PAGES="1") == own
+    assert run("my_script.py") == own
