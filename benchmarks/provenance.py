@@ -1,9 +1,8 @@
 """The commit a benchmark figure belongs to: one definition for every script here.
 
 Imported by every in-process benchmark before numpy: it also gives the benchmark's process the
-command's one BLAS thread (:func:`cityshade.runtime.startup.one_blas_thread`), sleeping OpenMP
-workers (:func:`~cityshade.runtime.startup.sleeping_omp_workers`) and no transparent huge pages
-(:func:`~cityshade.runtime.startup.no_transparent_huge_pages`), so that figures measure what
+command's one BLAS thread (:func:`cityshade.runtime.startup.one_blas_thread`) and sleeping OpenMP
+workers (:func:`~cityshade.runtime.startup.sleeping_omp_workers`), so that figures measure what
 ``cityshade`` does (idle OpenBLAS threads and OpenMP workers spin on the core Numba's second
 thread needs; a LocalCluster's workers inherit the settings, as the command's do).
 """
@@ -12,12 +11,10 @@ from __future__ import annotations
 import subprocess
 from pathlib import Path
 
-from cityshade.runtime.startup import (no_transparent_huge_pages, one_blas_thread,
-                                       sleeping_omp_workers)
+from cityshade.runtime.startup import one_blas_thread, sleeping_omp_workers
 
 one_blas_thread()
 sleeping_omp_workers()
-no_transparent_huge_pages()
 
 
 def commit(where: str | Path | None = None, full: bool = False) -> str:

@@ -32,9 +32,9 @@ from provenance import commit  # noqa: E402  (the benchmarks' shared provenance)
 REPO = Path(__file__).resolve().parents[1]
 
 #: One render in a child, its wall time and peak RSS (ru_maxrss: KiB on Linux); a fresh wrapper
-#: process sees only this child. The child starts with the kernel's transparent huge pages
-#: (this script's process has them off, as the command does; the flag is inherited), so each
-#: checkout runs as its own command decides: since session 33 the command turns them off.
+#: process sees only this child. The child starts with the kernel's transparent huge pages,
+#: whatever its parent had (the flag is inherited), so each checkout runs as its own command
+#: decides: since session 33 ``render`` turns them off.
 _WRAPPER = r"""
 import ctypes, json, resource, subprocess, sys, time
 try:

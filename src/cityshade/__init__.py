@@ -6,14 +6,12 @@ only by the stages that use them, so ``cityshade --help`` stays instant.
 from __future__ import annotations
 
 from cityshade.runtime.startup import (command_is_starting, hold_ctrl_c_while_starting,
-                                       no_transparent_huge_pages, one_blas_thread,
-                                       sleeping_omp_workers)
+                                       one_blas_thread, sleeping_omp_workers)
 
 hold_ctrl_c_while_starting()  # first: a Ctrl-C from here on is one line and status 130
 if command_is_starting():
     one_blas_thread()  # before numpy is imported
     sleeping_omp_workers()  # before Numba's first parallel kernel
-    no_transparent_huge_pages()  # before the command's large allocations
 
 import os as _os  # noqa: E402
 

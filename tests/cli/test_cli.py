@@ -437,26 +437,38 @@ def test_the_command_runs_numpy_on_one_blas_thread_unless_told(tmp_path):
     assert run("my_script.py") == ["None", "None", "None"]
 
 
-def test_the_command_runs_without_transparent_huge_pages_unless_told():
-    """The command's process turns transparent huge pages off for itself (the kernel's
-    per-process flag, ``THP_enabled`` in /proc/self/status); ``CITYSHADE_HUGE_PAGES=1`` keeps
-    them; a program importing the library is not touched."""
-    if not Path("/proc/self/status").exists() or \
-            "THP_enabled" not in Path("/proc/self/status").read_text():
+def test_no_transparent_huge_pages_turns_them_off_unless_told():
+    """``no_transparent_huge_pages`` sets the kernel's per-process flag (``THP_enabled`` in
+    /proc/self/status) to 0; ``CITYSHADE_HUGE_PAGES=1`` leaves it as it was."""
+    status = Path("/proc/self/status")
+    if not status.exists() or "THP_enabled" not in status.read_text():
         pytest.skip("this kernel does not report THP_enabled in /proc/self/status")
-    probe = ("import sys; sys.argv[0] = {argv0!r}; import cityshade; "
+    probe = ("from cityshade.runtime.startup import no_transparent_huge_pages as off; off(); "
              "print([line.split()[1] for line in open('/proc/self/status') "
              "if line.startswith('THP_enabled')][0])")
 
-    def run(argv0, **env):
+    def run(**env):
         base = {k: v for k, v in os.environ.items() if k != "CITYSHADE_HUGE_PAGES"}
-        out = subprocess.run([sys.executable, "-c", probe.format(argv0=argv0)],
-                             env={**base, **env}, capture_output=True, text=True, check=True)
+        out = subprocess.run([sys.executable, "-c", probe], env={**base, **env},
+                             capture_output=True, text=True, check=True)
         return out.stdout.strip()
 
-    # The flag is inherited: the others keep whatever this process has.
-    own = [line.split()[1] for line in Path("/proc/self/status").read_text().splitlines()
+    # The flag is inherited: with the variable, the child keeps what this process has.
+    own = [line.split()[1] for line in status.read_text().splitlines()
            if line.startswith("THP_enabled")][0]
-    assert run("/usr/bin/cityshade") == "0"
-    assert run("/usr/bin/cityshade", CITYSHADE_HUGE_PAGES="1") == own
-    assert run("my_script.py") == own
+    assert run() == "0"
+    assert run(CITYSHADE_HUGE_PAGES="1") == own
+
+
+def test_render_turns_transparent_huge_pages_off_first(monkeypatch, capsys):
+    """``cityshade render`` asks for no huge pages before anything else (here before it finds
+    nothing to write)."""
+    from cityshade.cli.main import main
+    from cityshade.runtime import startup
+
+    calls = []
+    monkeypatch.setattr(startup, "no_transparent_huge_pages", lambda: calls.append(1))
+    with pytest.raises(SystemExit) as done:
+        main(["render", "nosuch.cityshade"])
+    assert done.value.code != 0
+    assert calls == [1]

@@ -58,6 +58,11 @@ def render(file, date_text, city_date, tz, time_text, no_refraction, sun_azimuth
     and any of --png, --mask, --geotiff."""
     import time
 
+    from cityshade.runtime import startup
+
+    # One frame: its cost is mostly fresh memory, which huge pages made slower here.
+    startup.no_transparent_huge_pages()
+
     from cityshade.geo.temporal import parse_user_date
     from cityshade.cli.options import reparse_solar_date, solar_placeholder
     from cityshade.errors import UsageError

@@ -85,14 +85,16 @@ def sleeping_omp_workers() -> None:
 #: ``prctl`` option (Linux 3.15 and later): no transparent huge pages for the calling process and
 #: the processes it starts.
 PR_SET_THP_DISABLE = 41
-#: Set to 1 to keep transparent huge pages in the command's process
-#: (:func:`no_transparent_huge_pages`).
+#: Set to 1 to keep transparent huge pages where :func:`no_transparent_huge_pages` would turn
+#: them off.
 HUGE_PAGES_VAR = "CITYSHADE_HUGE_PAGES"
 
 
 def no_transparent_huge_pages() -> None:
-    """No transparent huge pages for the command's process and its children (Dask workers, the
-    build's), unless ``CITYSHADE_HUGE_PAGES=1``; nothing where ``prctl`` is missing.
+    """No transparent huge pages from here on for this process and the processes it starts,
+    unless ``CITYSHADE_HUGE_PAGES=1``; nothing where ``prctl`` is missing. ``cityshade render``
+    calls it first thing: one frame's cost is mostly fresh memory, where a run of many steps
+    (``batch``, ``sky``) reuses its arrays and gains from the huge pages' reach.
 
     With the kernel's THP setting ``always``, the first touch of fresh memory takes a whole
     2 MB page and zeroes it. On a virtual machine whose host takes back free memory in blocks
@@ -103,9 +105,9 @@ def no_transparent_huge_pages() -> None:
     1 m map 2.1-3.7 s against 1.5-1.8 s, a day's ``batch`` at 30-minute steps 10.1-15.5 against
     7.7-13.6 s (every pair faster); its 1080p overview (less fresh memory) 1.21-1.30 against
     1.29-1.45 s and the ``build`` of the 1M GML 5.1-7.5 against 5.7-7.7 s, no gain. Warm
-    kernels run as fast or up to 4 % slower without them (vsm's lookup; fewer TLB misses with
-    huge pages). Must run before the command's large allocations; the answers do not depend on
-    it.
+    kernels over large arrays ran 2-15 % slower without them (``benchmarks/batch.py`` 2 %, the
+    izb and Mitsuba rays of ``benchmarks/raytrace.py``'s map 10-15 %: more TLB misses). Must
+    run before the large allocations; the answers do not depend on it.
     """
     if os.environ.get(HUGE_PAGES_VAR) == "1" or not sys.platform.startswith("linux"):
         return
