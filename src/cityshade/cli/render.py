@@ -9,6 +9,7 @@ from cityshade.cli.helpfmt import GroupedCommand
 
 from cityshade.cli.options import (camera_options, city_date_option, ground_option,
                                    make_camera, parse_size, parse_triple, shadow_options)
+from cityshade.runtime import startup
 
 
 @click.command("render", cls=GroupedCommand)
@@ -58,11 +59,7 @@ def render(file, date_text, city_date, tz, time_text, no_refraction, sun_azimuth
     and any of --png, --mask, --geotiff."""
     import time
 
-    from cityshade.runtime import startup
-
-    # One frame: its cost is mostly fresh memory, which huge pages made slower here.
-    startup.no_transparent_huge_pages()
-
+    startup.no_transparent_huge_pages()  # one frame's cost is mostly fresh memory (see there)
     from cityshade.geo.temporal import parse_user_date
     from cityshade.cli.options import reparse_solar_date, solar_placeholder
     from cityshade.errors import UsageError
