@@ -194,13 +194,18 @@ def _cannot_write_in(folder: Path) -> str | None:
     """Why no file can be created in ``folder`` (None when one can): a real file is made and
     removed, since the permission bits say yes to root and to folders such as /proc."""
     probe = folder / f".cityshade-probe.{os.getpid()}.{uuid.uuid4().hex}"
+    fd = None
     try:
         fd = os.open(probe, os.O_WRONLY | os.O_CREAT | os.O_EXCL, 0o600)
     except OSError as exc:
         return exc.strerror or str(exc)
-    os.close(fd)
-    with contextlib.suppress(OSError):
-        os.unlink(probe)
+    finally:
+        # Also when a Ctrl-C lands right after the open (a build interrupted at 0.3 s left
+        # the probe behind once): the name is this call's own.
+        if fd is not None:
+            os.close(fd)
+        with contextlib.suppress(OSError):
+            os.unlink(probe)
     return None
 
 
