@@ -1228,3 +1228,10 @@ def reference_refs_per_size(boxes, sizes):
                 total += ((x1 - x0) / s + 1.0) * ((y1 - y0) / s + 1.0)
         out.append(total)
     return np.array(out)
+
+
+def reference_all_vertex_box(vertices):
+    """Twin of :func:`cityshade.geometry.bounds.all_vertex_box`: numpy's min and max of each
+    column, as float64."""
+    v = np.asarray(vertices)
+    return np.stack([v.min(axis=0), v.max(axis=0)]).astype(np.float64)

@@ -31,7 +31,7 @@ from cityshade.geo.temporal import (choose_interval, days_to_iso, has_creation_d
                                         parse_time_attribute)
 from cityshade.config import BuildSettings
 from cityshade.errors import ContractError, EmptyModelError, UsageError
-from cityshade.geometry.bounds import vertex_box
+from cityshade.geometry.bounds import all_vertices_box, vertex_box
 from cityshade.runtime.interpret import InterpretBudget, twin_if
 from cityshade.util import plural
 
@@ -124,6 +124,9 @@ class Scene:
     #: Set on a tiled cache's view (:meth:`cityshade.store.tiled.TiledCache.view`): the tiles it
     #: gathers and where its ids sit in the whole city. None for a scene of its own.
     tiling: "TiledParts | None" = None
+    #: Values derived from the arrays, by name (:meth:`derived`); a copy
+    #: (``dataclasses.replace``) starts without them.
+    _derived: dict = field(default_factory=dict, init=False, repr=False, compare=False)
 
     #: Array attributes stored in the cache (name → attribute).
     ARRAY_FIELDS = ("origin_m", "vertices", "uv", "triangles", "tri_object", "tri_polygon",
@@ -168,6 +171,19 @@ class Scene:
         :meth:`global_triangle_ids`)."""
         return ids if self.tiling is None else _to_global(self.tiling.global_obj, ids)
 
+    def derived(self, name: str, compute: Callable[[], np.ndarray]) -> np.ndarray:
+        """A copy of ``compute()``, an array derived from the vertices and triangles, computed
+        once per scene while neither can change (the same read-only arrays: the memory maps
+        of a loaded scene), else each time: a one-frame render asks for the model's box three
+        times (extent, margin, camera)."""
+        arrays = (self.vertices, self.triangles)
+        if any(a.flags.writeable for a in arrays):
+            return compute()
+        kept = self._derived.get(name)
+        if kept is None or any(a is not b for a, b in zip(kept[0], arrays)):
+            kept = self._derived[name] = (arrays, compute())
+        return kept[1].copy()
+
     def city_box_m(self) -> tuple[np.ndarray, np.ndarray]:
         """(lo (3,), hi (3,)) float64 render-space box of the whole city: the tiled cache's for
         a view of some of its tiles, else this scene's vertices' (float32 extremes cast to
@@ -175,8 +191,8 @@ class Scene:
         if self.tiling is not None:
             lo, hi = (np.asarray(b, np.float64) for b in self.tiling.source.box_m)
             return lo, hi
-        vertices = np.asarray(self.vertices)
-        return vertices.min(axis=0).astype(np.float64), vertices.max(axis=0).astype(np.float64)
+        box = self.derived("city_box_m", lambda: all_vertices_box(np.asarray(self.vertices)))
+        return box[0], box[1]
 
     def any_hit(self, origins: np.ndarray, directions: np.ndarray,
                 hit: Callable[[Any, Any], np.ndarray]) -> np.ndarray:

@@ -279,6 +279,9 @@ def scene_box(scene, t_days: float | None = None) -> np.ndarray:
     UsageError
         When no triangle is present.
     """
+    from cityshade.geometry.bounds import vertex_box
+    from cityshade.geometry.scene import Scene
+
     tris = np.asarray(scene.triangles)
     if t_days is not None:
         t = float(t_days)
@@ -287,8 +290,9 @@ def scene_box(scene, t_days: float | None = None) -> np.ndarray:
     if tris.shape[0] == 0:
         when = "" if t_days is None else f" at t = {t_days} days"
         raise UsageError(f"the scene has no triangles{when} to frame")
-    from cityshade.geometry.bounds import vertex_box
-
+    if t_days is None and isinstance(scene, Scene):   # asked for by extent, margin, camera
+        return scene.derived("box_m", lambda: vertex_box(np.ascontiguousarray(tris),
+                                                         np.asarray(scene.vertices)))
     return vertex_box(np.ascontiguousarray(tris), np.asarray(scene.vertices))
 
 
