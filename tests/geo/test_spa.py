@@ -167,12 +167,12 @@ def test_refraction_switch_and_nan_guard(monkeypatch):
     _, geometric = spa_angles(unix, 48.14, 11.58, 520.0, 69.0, refraction=False)
     assert 0.2 < refracted[0] - geometric[0] < 0.7  # ~0.5° near the horizon
     # SPA's refraction term is 0·NaN at e0 = −5.11° exactly: the geometric value is used.
-    import pvlib.spa
+    from cityshade.geo.sun import pvlib_spa
 
     def fake(*args, **kwargs):
         return np.array([[np.nan], [95.11], [np.nan], [-5.11], [10.0], [0.0]])
 
-    monkeypatch.setattr(pvlib.spa, "solar_position", fake)
+    monkeypatch.setattr(pvlib_spa(), "solar_position", fake)
     az, el = spa_angles(unix, 48.14, 11.58, 520.0, 69.0)
     assert el[0] == -5.11 and az[0] == 10.0
 
@@ -275,3 +275,71 @@ def test_explicit_angles_never_import_pvlib(built, tmp_path):
                           cwd=REPO, timeout=300)
     assert done.returncode == 0, done.stderr
     assert done.stdout.strip().splitlines()[-1] == "[]", done.stdout
+
+
+def test_a_date_and_time_render_loads_only_pvlibs_spa(built, tmp_path):
+    """A render whose sun SPA computes loads pvlib's SPA module from its file alone: neither
+    the pvlib package (its __init__ imports pandas, scipy and some 40 modules, 0.8 s) nor
+    pandas; and its sun is the one pvlib.spa gives (the metadata of the same render here)."""
+    scene, _ = built
+    out = tmp_path / "x.exr"
+    code = (
+        "import sys\n"
+        "from cityshade.cli.main import main\n"
+        "try:\n"
+        f"    main(['render', {str(scene)!r}, '--date', '2024-06-21', '--time', '15:00',\n"
+        f"          '--tz', 'Europe/Berlin', '--camera', 'map', '-o', {str(out)!r}])\n"
+        "except SystemExit as exc:\n"
+        "    assert not exc.code, exc.code\n"
+        "from cityshade.geo.sun import pvlib_spa\n"
+        "print(sorted(m for m in ('pvlib', 'pvlib.spa', 'pandas') if m in sys.modules),"
+        " pvlib_spa().__name__)\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          cwd=REPO, timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert done.stdout.strip().splitlines()[-1] == "[] cityshade_pvlib_spa", done.stdout
+    import pvlib
+
+    from cityshade.imageio import read_exr
+    from cityshade.store.scenefile import load_scene
+
+    s = load_scene(scene)
+    want = sun_from_instant(datetime(2024, 6, 21, 13, 0, tzinfo=timezone.utc), s.crs, s.origin_m)
+    _, meta = read_exr(out)
+    # The EXR's float attributes are float32.
+    assert float(meta["cityshade:sun_azimuth_true_deg"]) == np.float32(want.azimuth_true_deg)
+    assert float(meta["cityshade:sun_elevation_deg"]) == np.float32(want.elevation_deg)
+    assert meta["cityshade:sun_source"] == f"spa (pvlib {pvlib.__version__})"
+
+
+def test_pvlibs_spa_module_alone_is_pvlib_spa():
+    """The SPA module loaded from its file alone computes what pvlib.spa does, bit for bit
+    (the same code), and the standard atmosphere's pressure is pvlib's alt2pres."""
+    import pvlib
+    import pvlib.atmosphere
+    import pvlib.spa
+
+    from cityshade.geo import sun as S
+
+    code = ("import sys, numpy as np\n"
+            "from cityshade.geo.sun import pvlib_spa, pvlib_version\n"
+            "m = pvlib_spa()\n"
+            "u = np.array([1.7e9, 1.72e9, -5.0e9, 3.0e10])\n"
+            "dt = m.calculate_deltat(np.array([2023.0, 2024.0, 1811.0, 2920.0]),"
+            " np.array([11.0, 7.0, 5.0, 1.0]))\n"
+            "out = np.asarray(m.solar_position(u, 48.1, 11.5, 519.0, 955.0, 12.0, dt, 0.5667))\n"
+            "print(m.__name__, 'pvlib' in sys.modules, pvlib_version())\n"
+            "print(np.concatenate([dt, out.ravel()]).tobytes().hex())\n")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          cwd=REPO, timeout=120)
+    assert done.returncode == 0, done.stderr
+    head, data = done.stdout.strip().splitlines()[-2:]
+    assert head == f"cityshade_pvlib_spa False {pvlib.__version__}"
+    u = np.array([1.7e9, 1.72e9, -5.0e9, 3.0e10])
+    dt = pvlib.spa.calculate_deltat(np.array([2023.0, 2024.0, 1811.0, 2920.0]),
+                                    np.array([11.0, 7.0, 5.0, 1.0]))
+    out = np.asarray(pvlib.spa.solar_position(u, 48.1, 11.5, 519.0, 955.0, 12.0, dt, 0.5667))
+    assert bytes.fromhex(data) == np.concatenate([dt, out.ravel()]).tobytes()
+    for h in (-500.0, 0.0, 519.04, 1234.5, 9000.0):
+        assert S.standard_pressure_pa(h) == pvlib.atmosphere.alt2pres(h)
+    assert S.pvlib_version() == pvlib.__version__
