@@ -259,6 +259,15 @@ def test_render_cli_sun_failures(built, tmp_path):
                     "1000 to 3000", 2)
 
 
+def _stdout_of_python(code: str) -> list[str]:
+    """The stdout lines of ``python -c code`` run in a fresh process from the repository (it
+    must succeed)."""
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          cwd=REPO, timeout=300)
+    assert done.returncode == 0, done.stderr
+    return done.stdout.strip().splitlines()
+
+
 def test_explicit_angles_never_import_pvlib(built, tmp_path):
     """DESIGN §2: a render with an explicit sun imports neither pvlib nor pandas."""
     scene, _ = built
@@ -271,10 +280,7 @@ def test_explicit_angles_never_import_pvlib(built, tmp_path):
         "except SystemExit as exc:\n"
         "    assert not exc.code, exc.code\n"
         "print(sorted(m for m in ('pvlib', 'pandas') if m in sys.modules))\n")
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                          cwd=REPO, timeout=300)
-    assert done.returncode == 0, done.stderr
-    assert done.stdout.strip().splitlines()[-1] == "[]", done.stdout
+    assert _stdout_of_python(code)[-1] == "[]"
 
 
 def test_a_date_and_time_render_loads_only_pvlibs_spa(built, tmp_path):
@@ -294,10 +300,7 @@ def test_a_date_and_time_render_loads_only_pvlibs_spa(built, tmp_path):
         "from cityshade.geo.sun import pvlib_spa\n"
         "print(sorted(m for m in ('pvlib', 'pvlib.spa', 'pandas') if m in sys.modules),"
         " pvlib_spa().__name__)\n")
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                          cwd=REPO, timeout=300)
-    assert done.returncode == 0, done.stderr
-    assert done.stdout.strip().splitlines()[-1] == "[] cityshade_pvlib_spa", done.stdout
+    assert _stdout_of_python(code)[-1] == "[] cityshade_pvlib_spa"
     import pvlib
 
     from cityshade.imageio import read_exr
@@ -330,10 +333,7 @@ def test_pvlibs_spa_module_alone_is_pvlib_spa():
             "out = np.asarray(m.solar_position(u, 48.1, 11.5, 519.0, 955.0, 12.0, dt, 0.5667))\n"
             "print(m.__name__, 'pvlib' in sys.modules, pvlib_version())\n"
             "print(np.concatenate([dt, out.ravel()]).tobytes().hex())\n")
-    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
-                          cwd=REPO, timeout=120)
-    assert done.returncode == 0, done.stderr
-    head, data = done.stdout.strip().splitlines()[-2:]
+    head, data = _stdout_of_python(code)[-2:]
     assert head == f"cityshade_pvlib_spa False {pvlib.__version__}"
     u = np.array([1.7e9, 1.72e9, -5.0e9, 3.0e10])
     dt = pvlib.spa.calculate_deltat(np.array([2023.0, 2024.0, 1811.0, 2920.0]),
