@@ -428,6 +428,50 @@ def test_shadow_origins_equal_their_numpy_twin_bit_for_bit():
         shadow_rays_from_surface(pts, normals * 1.01, sun)
 
 
+def test_pixel_shadow_origins_equal_the_gathered_pixels_origins(sample_city_scene):
+    """shadow_rays_from_pixels (one pass over a frame's rows) against its twin, the gathered
+    pixels' shadow_rays_from_surface (whose own twin is numpy's), bit for bit: a real frame of
+    the sample city (its facing pixels, then every valid one), on one and two threads; the
+    same errors for a NaN point, a NaN normal and a normal off unit length."""
+    from cityshade.frame.pipeline import camera_pass
+    from cityshade.geo.sun import sun_from_angles
+    from cityshade.raster.camera import map_view
+    from cityshade.shadows import gather_pixels
+    from cityshade.trace import shadow_rays_from_pixels
+
+    def row_starts(mask):
+        return np.concatenate([[0], np.cumsum(mask.sum(axis=1))]).astype(np.int64)
+
+    scene = sample_city_scene
+    cp = camera_pass(scene, map_view(scene, 0.5), 7305.0, ground="auto")
+    ctx = cp.context(sun_from_angles(135.0, 30.0, scene.crs, scene.origin_m))
+    position, normal = cp.surfaces.position_m, ctx.normal
+    for mask in (ctx.faces, np.asarray(cp.surfaces.valid)):
+        want = shadow_rays_from_surface(gather_pixels(position, mask),
+                                        gather_pixels(normal, mask), ctx.sun.direction)
+        default = numba.get_num_threads()
+        try:
+            for threads in {1, default}:
+                numba.set_num_threads(threads)
+                got = shadow_rays_from_pixels(position, normal, mask, row_starts(mask),
+                                              ctx.sun.direction)
+                assert got.shape == want.shape and got.tobytes() == want.tobytes()
+        finally:
+            numba.set_num_threads(default)
+    assert ctx.facing_origins.tobytes() == shadow_rays_from_surface(
+        ctx.facing_points, ctx.facing_normals, ctx.sun.direction).tobytes()
+    mask = np.asarray(cp.surfaces.valid).copy()
+    r, c = np.argwhere(mask)[17]
+    for image, value, message in ((position, np.nan, "points contain NaN"),
+                                  (normal, np.inf, "normals contain NaN"),
+                                  (normal, None, "normals must be unit length")):
+        bad = np.array(image, copy=True)
+        bad[r, c] = bad[r, c] * 1.01 if value is None else value
+        args = (bad, normal) if image is position else (position, bad)
+        with pytest.raises(TraceInputError, match=message):
+            shadow_rays_from_pixels(*args, mask, row_starts(mask), ctx.sun.direction)
+
+
 def test_shared_direction_shadow_rays_agree_with_brute_force(city, tree):
     """Sun rays (one direction for all, whose terms the kernel computes once) give the
     brute-force answer, and the same as the per-ray path on the same rays."""

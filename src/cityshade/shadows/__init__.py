@@ -79,9 +79,10 @@ class ShadowContext:
     settings: ShadowSettings = field(default_factory=ShadowSettings)
     oriented_normal: np.ndarray | None = None
     measure: bool = False
-    #: The sun-dependent arrays below (``faces``, ``facing_points``, ``facing_normals``) kept
-    #: across the contexts of one camera pass and sun (:meth:`CameraPass.context`), so the
-    #: techniques of ``evaluate`` and their timed runs gather them once.
+    #: The sun-dependent arrays below (``faces``, ``facing_points``, ``facing_normals``,
+    #: ``facing_origins``) kept across the contexts of one camera pass and sun
+    #: (:meth:`CameraPass.context`), so the techniques of ``evaluate`` and their timed runs
+    #: gather them once.
     shared: dict | None = field(default=None, repr=False)
 
     def _shared(self, name: str, make):
@@ -116,6 +117,17 @@ class ShadowContext:
     def facing_normals(self) -> np.ndarray:
         """(N, 3) float64 oriented normals of the :attr:`faces` pixels."""
         return self._shared("facing_normals", lambda: gather_pixels(self.normal, self.faces))
+
+    @functools.cached_property
+    def facing_origins(self) -> np.ndarray:
+        """(N, 3) float64 shadow-ray origins of the :attr:`faces` pixels (row-major order):
+        ``shadow_rays_from_surface(facing_points, facing_normals, sun)``, made straight from
+        the frame's points and oriented normals (an exact technique needs no gathered copy)."""
+        from cityshade.trace import shadow_rays_from_pixels
+
+        return self._shared("facing_origins", lambda: shadow_rays_from_pixels(
+            self.surfaces.position_m, self.normal, self.faces, _row_starts(self.faces),
+            self.sun.direction))
 
     def receivers(self, pixels: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(points, oriented normals) of the pixels of mask ``pixels`` (the gathered facing

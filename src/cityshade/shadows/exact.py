@@ -127,11 +127,11 @@ class Exact(RayTraced):
 
     name = "exact"
 
-    def sunlit(self, scene, points, normals, sun, t_days, diagnostics):
-        from cityshade.shadows.visibility import sun_fraction
+    def sunlit(self, scene, origins, sun, t_days, diagnostics):
+        from cityshade.shadows.visibility import origins_sun_fraction
 
         chosen: list[EngineChoice] = []
-        lit = sun_fraction(scene, points, normals, sun, t_days, engine="exact", chosen=chosen)
+        lit = origins_sun_fraction(scene, origins, sun, t_days, engine="exact", chosen=chosen)
         if chosen:
             diagnostics.note = describe_choices(chosen, "tiles")
         return lit

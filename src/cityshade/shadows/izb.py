@@ -14,10 +14,10 @@ class LightSpace(RayTraced):
 
     name = "izb"
 
-    def sunlit(self, scene, points, normals, sun, t_days, diagnostics) -> np.ndarray:
-        from cityshade.shadows.visibility import sun_fraction
+    def sunlit(self, scene, origins, sun, t_days, diagnostics) -> np.ndarray:
+        from cityshade.shadows.visibility import origins_sun_fraction
 
         engine: dict = {}
-        lit = sun_fraction(scene, points, normals, sun, t_days, engine="izb", stats=engine)
+        lit = origins_sun_fraction(scene, origins, sun, t_days, engine="izb", stats=engine)
         diagnostics.engine = engine
         return lit

@@ -25,18 +25,19 @@ class RayTraced:
         t0 = time.perf_counter()
         faces = ctx.faces
         diagnostics.self_shadowed_px = int((surfaces.valid & ~faces).sum())
-        points, normals = ctx.receivers(faces)
-        if len(points):
-            scatter_pixels(self.sunlit(ctx.scene, points, normals, ctx.sun, ctx.t_days,
+        origins = ctx.facing_origins
+        if len(origins):
+            scatter_pixels(self.sunlit(ctx.scene, origins, ctx.sun, ctx.t_days,
                                        diagnostics).astype(np.float32), faces, lit)
-        diagnostics.rays = int(len(points))
+        diagnostics.rays = int(len(origins))
         diagnostics.shadow_s = time.perf_counter() - t0
         return ShadowResult(lit=lit, diagnostics=diagnostics)
 
-    def sunlit(self, scene, points, normals, sun, t_days,
+    def sunlit(self, scene, origins, sun, t_days,
                diagnostics: TechniqueDiagnostics) -> np.ndarray:
-        """(N,) float64: the exact per-point fraction of the sun (here one kd-tree shadow ray
-        per point; vegetation lets part through, docs/DESIGN.md §21)."""
-        from cityshade.shadows.visibility import sun_fraction
+        """(N,) float64: the exact fraction of the sun of each shadow ray from ``origins``
+        (N, 3) (here one kd-tree ray each; vegetation lets part through, docs/DESIGN.md
+        §21)."""
+        from cityshade.shadows.visibility import origins_sun_fraction
 
-        return sun_fraction(scene, points, normals, sun, t_days, engine="raytrace")
+        return origins_sun_fraction(scene, origins, sun, t_days, engine="raytrace")

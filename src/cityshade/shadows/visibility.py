@@ -230,12 +230,19 @@ def sun_fraction(scene, points, normals, sun, t_days: float = 0.0, *,
     (1 lit, 0 shadow, between where only vegetation is in the way). ``sun`` is a
     :class:`~cityshade.geo.sun.SunPosition` (its date decides leaf on or off); ``options``
     as :func:`occluded`'s."""
-    from cityshade.geometry.vegetation import day_of_year
     from cityshade.trace import shadow_rays_from_surface
 
-    direction = np.asarray(sun.direction, dtype=np.float64)
-    origins = shadow_rays_from_surface(points, normals, direction)
+    origins = shadow_rays_from_surface(points, normals, np.asarray(sun.direction, np.float64))
+    return origins_sun_fraction(scene, origins, sun, t_days, engine=engine, stats=stats,
+                                **options)
+
+
+def origins_sun_fraction(scene, origins, sun, t_days: float = 0.0, *, engine: str = "raytrace",
+                         stats: dict | None = None, **options) -> np.ndarray:
+    """:func:`sun_fraction` of shadow rays whose origins are made already (N, 3)."""
+    from cityshade.geometry.vegetation import day_of_year
+
     if stats is not None:
         options["stats"] = stats
-    return transmission(scene, origins, direction, t_days, engine=engine,
-                        day_of_year=day_of_year(sun), **options)
+    return transmission(scene, origins, np.asarray(sun.direction, dtype=np.float64), t_days,
+                        engine=engine, day_of_year=day_of_year(sun), **options)

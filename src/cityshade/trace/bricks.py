@@ -19,7 +19,7 @@ import numpy as np
 import numba
 from numba import njit
 
-from cityshade.runtime.threadpool import run_chunks
+from cityshade.runtime.threadpool import ROW_CHUNK, run_chunks
 from cityshade.trace.kernels import trace_range
 
 #: Rays per brick: large enough to amortise the per-brick scratch allocation and to keep the
@@ -182,6 +182,24 @@ BAD_NORMAL = 2
 NOT_UNIT_NORMAL = 4
 
 
+@njit(cache=True, inline="always")
+def _origin(px, py, pz, nx, ny, nz, sx, sy, sz, offset_rel, min_scale_m, unit_tol, out, k):
+    """``out[k]``, the shadow-ray origin of point p with normal n toward sun s (float64), and
+    the point's check code."""
+    code = 0
+    if not (np.isfinite(px) and np.isfinite(py) and np.isfinite(pz)):
+        code |= BAD_POINT
+    if not (np.isfinite(nx) and np.isfinite(ny) and np.isfinite(nz)):
+        code |= BAD_NORMAL
+    elif abs(np.sqrt(nx * nx + ny * ny + nz * nz) - 1.0) > unit_tol:
+        code |= NOT_UNIT_NORMAL
+    offset = offset_rel * max(max(max(abs(px), abs(py)), abs(pz)), min_scale_m)
+    out[k, 0] = px + (nx + sx) * offset
+    out[k, 1] = py + (ny + sy) * offset
+    out[k, 2] = pz + (nz + sz) * offset
+    return code
+
+
 @njit(cache=True, nogil=True)
 def _origins_range(points, normals, sun, offset_rel, min_scale_m, unit_tol, out, codes, i0, i1):
     """:func:`shadow_origins` of points ``[i0, i1)``: their check code ORed into
@@ -190,21 +208,31 @@ def _origins_range(points, normals, sun, offset_rel, min_scale_m, unit_tol, out,
     per_ray_sun = sun.shape[0] > 1
     code = 0
     for i in range(i0, i1):
-        px, py, pz = np.float64(points[i, 0]), np.float64(points[i, 1]), np.float64(points[i, 2])
-        nx, ny, nz = (np.float64(normals[i, 0]), np.float64(normals[i, 1]),
-                      np.float64(normals[i, 2]))
         j = np.int64(i) if per_ray_sun else np.int64(0)
-        if not (np.isfinite(px) and np.isfinite(py) and np.isfinite(pz)):
-            code |= BAD_POINT
-        if not (np.isfinite(nx) and np.isfinite(ny) and np.isfinite(nz)):
-            code |= BAD_NORMAL
-        elif abs(np.sqrt(nx * nx + ny * ny + nz * nz) - 1.0) > unit_tol:
-            code |= NOT_UNIT_NORMAL
-        offset = offset_rel * max(max(max(abs(px), abs(py)), abs(pz)), min_scale_m)
-        out[i, 0] = px + (nx + sun[j, 0]) * offset
-        out[i, 1] = py + (ny + sun[j, 1]) * offset
-        out[i, 2] = pz + (nz + sun[j, 2]) * offset
+        code |= _origin(np.float64(points[i, 0]), np.float64(points[i, 1]),
+                        np.float64(points[i, 2]), np.float64(normals[i, 0]),
+                        np.float64(normals[i, 1]), np.float64(normals[i, 2]), sun[j, 0],
+                        sun[j, 1], sun[j, 2], offset_rel, min_scale_m, unit_tol, out, i)
     codes[i0 // CHECK_CHUNK] |= code
+
+
+@njit(cache=True, nogil=True)
+def _pixel_origins_rows(position, normal, mask, starts, sun, offset_rel, min_scale_m, unit_tol,
+                        out, codes, r0, r1):
+    """:func:`pixel_shadow_origins` of rows ``[r0, r1)``, each from its start ``starts[r]``;
+    their check code ORed into ``codes[r0 // ROW_CHUNK]``."""
+    code = 0
+    for r in range(r0, r1):
+        k = starts[r]
+        for c in range(mask.shape[1]):
+            if mask[r, c]:
+                code |= _origin(np.float64(position[r, c, 0]), np.float64(position[r, c, 1]),
+                                np.float64(position[r, c, 2]), np.float64(normal[r, c, 0]),
+                                np.float64(normal[r, c, 1]), np.float64(normal[r, c, 2]),
+                                sun[0], sun[1], sun[2], offset_rel, min_scale_m, unit_tol,
+                                out, k)
+                k += 1
+    codes[r0 // ROW_CHUNK] |= code
 
 
 def shadow_origins(points, normals, sun, offset_rel, min_scale_m, unit_tol, out) -> int:
@@ -217,6 +245,19 @@ def shadow_origins(points, normals, sun, offset_rel, min_scale_m, unit_tol, out)
     if n:
         run_chunks(_origins_range, n, CHECK_CHUNK, points, normals, sun, offset_rel,
                    min_scale_m, unit_tol, out, codes)
+    return int(np.bitwise_or.reduce(codes))
+
+
+def pixel_shadow_origins(position, normal, mask, starts, sun, offset_rel, min_scale_m,
+                         unit_tol, out) -> int:
+    """:func:`shadow_origins` of the pixels of the (H, W) bool ``mask`` of the (H, W, 3)
+    images ``position`` and ``normal``, in row-major order (row ``r``'s first at
+    ``starts[r]``), rows in parallel; ``sun`` (3,). The same values as :func:`shadow_origins`
+    of the gathered pixels, without gathering them."""
+    codes = np.zeros(max(1, -(-mask.shape[0] // ROW_CHUNK)), np.uint8)
+    if mask.shape[0]:
+        run_chunks(_pixel_origins_rows, mask.shape[0], ROW_CHUNK, position, normal, mask,
+                   starts, sun, offset_rel, min_scale_m, unit_tol, out, codes)
     return int(np.bitwise_or.reduce(codes))
 
 
