@@ -286,7 +286,7 @@ def test_explicit_angles_never_import_pvlib(built, tmp_path):
 def test_a_date_and_time_render_loads_only_pvlibs_spa(built, tmp_path):
     """A render whose sun SPA computes loads pvlib's SPA module from its file alone: neither
     the pvlib package (its __init__ imports pandas, scipy and some 40 modules, 0.8 s) nor
-    pandas; and its sun is the one pvlib.spa gives (the metadata of the same render here)."""
+    pandas, nor pyproj; and its sun is the one pvlib.spa and pyproj give (computed here)."""
     scene, _ = built
     out = tmp_path / "x.exr"
     code = (
@@ -298,8 +298,9 @@ def test_a_date_and_time_render_loads_only_pvlibs_spa(built, tmp_path):
         "except SystemExit as exc:\n"
         "    assert not exc.code, exc.code\n"
         "from cityshade.geo.sun import pvlib_spa\n"
-        "print(sorted(m for m in ('pvlib', 'pvlib.spa', 'pandas') if m in sys.modules),"
+        "print(sorted(m for m in ('pvlib', 'pvlib.spa', 'pandas', 'pyproj') if m in sys.modules),"
         " pvlib_spa().__name__)\n")
+    # Nor pyproj: the place of the model's origin is stored in the scene file.
     assert _stdout_of_python(code)[-1] == "[] cityshade_pvlib_spa"
     import pvlib
 
@@ -343,3 +344,25 @@ def test_pvlibs_spa_module_alone_is_pvlib_spa():
     for h in (-500.0, 0.0, 519.04, 1234.5, 9000.0):
         assert S.standard_pressure_pa(h) == pvlib.atmosphere.alt2pres(h)
     assert S.pvlib_version() == pvlib.__version__
+
+
+def test_the_scene_file_stores_its_origins_place(built):
+    """Built, a scene's header holds its origin's grid convergence and WGS 84 position as
+    pyproj gives them (the process that loads it answers from them); a model without a CRS
+    stores none, and its sun still fails with the option to give."""
+    from cityshade.geo import crs as C
+    from cityshade.store.scenefile import load_scene, read_header
+
+    scene_path, nocrs_path = built
+    s = load_scene(scene_path)
+    x, y = float(s.origin_m[0]), float(s.origin_m[1])
+    place = read_header(scene_path)["place"]
+    C._PLACES.clear()                                   # pyproj's answers, not the memo's
+    assert place == {"point": [x, y], "convergence_deg": C.grid_convergence_deg(s.crs, x, y),
+                     "wgs84": list(C.to_wgs84(s.crs, x, y)[:2])}
+    load_scene(scene_path)
+    assert C._PLACES[(s.crs, x, y)]["convergence_deg"] == place["convergence_deg"]
+    assert read_header(nocrs_path)["place"] is None
+    n = load_scene(nocrs_path)
+    with pytest.raises(CRSError, match="--crs"):
+        sun_from_instant(datetime(2024, 6, 21, tzinfo=timezone.utc), n.crs, n.origin_m)

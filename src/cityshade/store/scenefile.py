@@ -13,7 +13,7 @@ import numpy as np
 
 from cityshade import __version__
 from cityshade.store.cache import FORMAT_VERSION, PackedStrings, open_cache, pack_strings, write_cache
-from cityshade.geo.crs import CrsInfo
+from cityshade.geo.crs import CrsInfo, place_record, remember_place
 from cityshade.errors import CacheError
 from cityshade.geometry.scene import Scene
 
@@ -80,6 +80,9 @@ def save_scene(scene: Scene, path: str | os.PathLike, source: dict[str, Any],
         "source": source,
         "build_options": build_options,
         "crs": scene.crs.to_json(),
+        # Its origin's grid convergence and WGS 84 position: a command loading the scene turns
+        # its sun without pyproj.
+        "place": place_record(scene.crs, float(scene.origin_m[0]), float(scene.origin_m[1])),
         "object_types": type_names,
         "materials": scene.materials,
         "textures": scene.textures,
@@ -137,6 +140,7 @@ def scene_from_cache(cache, with_kdtree: bool = True) -> Scene:
         if stored:
             scene.__dict__["stored_vegetation_kdtrees"] = stored
     scene.header = header
+    remember_place(scene.crs, header.get("place"))
     return scene
 
 
