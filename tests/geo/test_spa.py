@@ -366,3 +366,24 @@ def test_the_scene_file_stores_its_origins_place(built):
     n = load_scene(nocrs_path)
     with pytest.raises(CRSError, match="--crs"):
         sun_from_instant(datetime(2024, 6, 21, tzinfo=timezone.utc), n.crs, n.origin_m)
+
+
+def test_a_malformed_stored_place_is_left_to_pyproj():
+    """remember_place takes only a well-formed record (a crafted or damaged header's place
+    leaves the answers to pyproj, no traceback)."""
+    from cityshade.geo import crs as C
+
+    x, y = 691_000.0, 5_334_000.0
+    want = C.grid_convergence_deg(UTM32, x, y)
+    for bad in (None, {}, [], "place", {"point": [x, y]}, {"point": "xy", "convergence_deg": 1,
+                "wgs84": [1, 2]}, {"point": [x, y], "convergence_deg": "nan", "wgs84": [1, 2]},
+                {"point": [x, y], "convergence_deg": 1.0, "wgs84": [1.0, 95.0]},
+                {"point": [x, y], "convergence_deg": 1.0, "wgs84": [1.0]}):
+        C.remember_place(UTM32, bad)
+        assert C.grid_convergence_deg(UTM32, x, y) == want, bad
+    C.remember_place(UTM32, {"point": [x, y], "convergence_deg": 1.25, "wgs84": [11.5, 48.1]})
+    try:
+        assert C.grid_convergence_deg(UTM32, x, y) == 1.25
+        assert C.to_wgs84(UTM32, x, y, 7.0) == (11.5, 48.1, 7.0)
+    finally:
+        C._PLACES.pop((UTM32, x, y))

@@ -786,13 +786,19 @@ def place_record(crs: CrsInfo, x: float, y: float) -> dict | None:
         return None
 
 
-def remember_place(crs: CrsInfo, record: Mapping[str, Any] | None) -> None:
+def remember_place(crs: CrsInfo, record: Any) -> None:
     """Answer :func:`grid_convergence_deg` and :func:`to_wgs84` at ``record``'s point from
-    it (a loaded scene's stored :func:`place_record`) instead of asking pyproj."""
-    if record:
+    it (a loaded scene's stored :func:`place_record`) instead of asking pyproj. Anything but
+    such a record (None, an older file's nothing, a malformed one) is left out: pyproj
+    answers then, as without it."""
+    try:
         x, y = (float(v) for v in record["point"])
-        _PLACES[(crs, x, y)] = {"convergence_deg": float(record["convergence_deg"]),
-                                "wgs84": tuple(float(v) for v in record["wgs84"])}
+        convergence = float(record["convergence_deg"])
+        lon, lat = (float(v) for v in record["wgs84"])
+    except (TypeError, KeyError, ValueError):
+        return
+    if all(math.isfinite(v) for v in (x, y, convergence, lon, lat)) and abs(lat) <= 90.0:
+        _PLACES[(crs, x, y)] = {"convergence_deg": convergence, "wgs84": (lon, lat)}
 
 
 def to_wgs84(crs: CrsInfo, x: float, y: float, z: float = 0.0) -> tuple[float, float, float]:
