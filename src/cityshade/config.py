@@ -99,9 +99,8 @@ class BuildSettings:
 
 
 def _kdtree_settings():
-    # The kd-tree's tunables live next to its build kernel; importing them here lazily keeps
-    # `import cityshade.config` (and so `cityshade --help`) free of numba.
-    from cityshade.accel.kdtree_build import KdTreeSettings
+    # The kd-tree's tunables, in a module without kernels (a render loads no builder).
+    from cityshade.accel.settings import KdTreeSettings
 
     return KdTreeSettings()
 
@@ -655,7 +654,7 @@ class Settings:
 
     #: ``[build]``: reading and triangulating (``cityshade build``).
     build: BuildSettings = field(default_factory=BuildSettings)
-    #: ``[kdtree]``: the SAH build (:class:`cityshade.accel.kdtree_build.KdTreeSettings`).
+    #: ``[kdtree]``: the SAH build (:class:`cityshade.accel.settings.KdTreeSettings`).
     kdtree: Any = field(default_factory=_kdtree_settings)
     #: ``[shadows]`` and its sub-tables: the technique and its tunables.
     shadows: ShadowSettings = field(default_factory=ShadowSettings)

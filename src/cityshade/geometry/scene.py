@@ -16,7 +16,7 @@ from collections import Counter
 from dataclasses import dataclass, field
 from itertools import repeat
 from pathlib import Path
-from typing import Any, Callable, NamedTuple, Protocol
+from typing import TYPE_CHECKING, Any, Callable, NamedTuple, Protocol
 
 import numpy as np
 from numba import njit
@@ -26,7 +26,6 @@ from cityshade.citygml.appearance import (georeferenced_uv, read_world_file,
 from cityshade.geo.crs import (CrsInfo, GeographicProjector, area_of_use_warning,
                                    reproject_horizontal, resolve_model_crs_detailed)
 from cityshade.citygml.namespaces import SURFACE_CODE
-from cityshade.citygml.reader import RawModel
 from cityshade.geo.temporal import (choose_interval, days_to_iso, has_creation_dates,
                                         parse_time_attribute)
 from cityshade.config import BuildSettings
@@ -34,6 +33,9 @@ from cityshade.errors import ContractError, EmptyModelError, UsageError
 from cityshade.geometry.bounds import all_vertices_box, vertex_box
 from cityshade.runtime.interpret import InterpretBudget, twin_if
 from cityshade.util import plural
+
+if TYPE_CHECKING:   # the reader (and its parser) is loaded by a build, not by a loaded scene
+    from cityshade.citygml.reader import RawModel
 
 #: Time-source codes stored per object (uint8); new sources are appended (codes are stored).
 TIME_SOURCE_NAMES = ("none", "valid", "construction", "creation", "inherited", "attribute")

@@ -27,7 +27,7 @@ from cityshade.accel.kdtree_layout import (LEAF_CODE, TIME_AXIS, leaf_first, nod
                                            word_payload)
 
 #: Entries of the fixed traversal stack: at most one push per level, and the build caps the
-#: depth at 60 (``cityshade.accel.kdtree_build.MAX_DEPTH_LIMIT``).
+#: depth at 60 (``cityshade.accel.settings.MAX_DEPTH_LIMIT``).
 STACK_SIZE = 64
 #: Relative slack when deciding to skip a child: split distances and hit distances are both
 #: float64 estimates of the same value (errors ~1e-15 relative), so a child is still visited
