@@ -236,13 +236,7 @@ def shadow_rays_from_surface(points, normals, sun_dir, *, out: np.ndarray | None
         raise TraceInputError(f"points must have shape (N, 3), not {points.shape}")
     if normals.shape != points.shape:
         raise TraceInputError(f"normals must have shape {points.shape}, not {normals.shape}")
-    sun = np.asarray(sun_dir, dtype=np.float64)
-    if sun.shape not in ((3,), points.shape):
-        raise TraceInputError(f"sun_dir must have shape (3,) or {points.shape}, not {sun.shape}")
-    if not np.isfinite(sun).all():
-        raise TraceInputError("sun_dir contain NaN or infinite values")
-    if np.abs(np.linalg.norm(sun, axis=-1) - 1.0).max(initial=0.0) > UNIT_LENGTH_TOL:
-        raise TraceInputError("sun_dir must be unit length")
+    sun = _checked_sun(sun_dir, points.shape)
     if out is None:
         out = _ORIGINS.empty((points.shape[0], 3), np.float64)
     elif out.shape != points.shape or out.dtype != np.float64 or not out.flags.c_contiguous:
@@ -255,6 +249,20 @@ def shadow_rays_from_surface(points, normals, sun_dir, *, out: np.ndarray | None
                                      UNIT_LENGTH_TOL, out)
     _check_origins(code)
     return out
+
+
+def _checked_sun(sun_dir, per_ray_shape=None) -> np.ndarray:
+    """``sun_dir`` as float64, checked: shape (3,) (or ``per_ray_shape``, one per ray),
+    finite, unit length."""
+    sun = np.asarray(sun_dir, dtype=np.float64)
+    if sun.shape not in ((3,), per_ray_shape):
+        also = "" if per_ray_shape is None else f" or {per_ray_shape}"
+        raise TraceInputError(f"sun_dir must have shape (3,){also}, not {sun.shape}")
+    if not np.isfinite(sun).all():
+        raise TraceInputError("sun_dir contain NaN or infinite values")
+    if np.abs(np.linalg.norm(sun, axis=-1) - 1.0).max(initial=0.0) > UNIT_LENGTH_TOL:
+        raise TraceInputError("sun_dir must be unit length")
+    return sun
 
 
 def _check_origins(code: int) -> None:
@@ -295,11 +303,7 @@ def shadow_rays_from_pixels(position_m, normals, mask, row_starts, sun_dir) -> n
     starts = np.asarray(row_starts, dtype=np.int64)
     if starts.shape != (mask.shape[0] + 1,):
         raise TraceInputError(f"row starts must have shape ({mask.shape[0] + 1},)")
-    sun = np.asarray(sun_dir, dtype=np.float64)
-    if sun.shape != (3,) or not np.isfinite(sun).all():
-        raise TraceInputError(f"sun_dir must be 3 finite values, not {sun_dir!r}")
-    if abs(float(np.linalg.norm(sun)) - 1.0) > UNIT_LENGTH_TOL:
-        raise TraceInputError("sun_dir must be unit length")
+    sun = _checked_sun(sun_dir)
     out = _ORIGINS.empty((int(starts[-1]), 3), np.float64)
     with bricks.one_thread_when_small(out.shape[0]):
         code = bricks.pixel_shadow_origins(position_m, normals, mask, starts, sun,
