@@ -14,11 +14,12 @@ ray, so the choice is only about time, made per call and per kd-tree from a cost
 
 So ``izb`` wins on many receivers with a warm caster copy (a batch, the later frames of an
 ``evaluate``), ``raytrace`` on few receivers or a single frame of a large city in a fresh
-process (the 1M-triangle city's 1 m map: 2.12 s by ``raytrace`` against 2.82 s by ``izb`` as
-whole processes, though ``izb``'s warm query is faster).
+process (the 1M-triangle city's 1 m map: 1.74 s by ``raytrace`` against 2.02 s by ``izb`` as
+whole processes in session 35, though ``izb``'s warm query is faster).
 
 The constants are nanoseconds at two threads, from ``benchmarks/raytrace.py`` and the
-whole-process renders of the 1M-triangle city at cd5487c (docs/DESIGN.md §9, "exact");
+whole-process renders of the 1M-triangle city (cd5487c; the first use's, session 35;
+docs/DESIGN.md §9, "exact");
 ``python benchmarks/exact_choice.py`` reruns the workloads, times both engines and prints
 what the model chose against the faster one.
 """
@@ -35,9 +36,15 @@ IZB_NS_PER_CASTER = 80.0
 #: izb per receiver: the query (map 142 ms for 4.1 M receivers, overview 20 ms for 1.49 M).
 IZB_NS_PER_RECEIVER = 30.0
 #: izb once per process, tree and dominant sun axis: gathering and sorting the casters and
-#: faulting in their pages (the whole-process map render: +0.70 s against raytrace where the
-#: warm engines differ by -0.28 s, for 1.0 M triangles).
-IZB_FIRST_USE_NS_PER_CASTER = 1000.0
+#: faulting in their pages; and per receiver its work arrays' fresh pages, which later calls
+#: reuse (a first call's receiver costs about what a kd-tree ray does). Fitted to
+#: ``benchmarks/exact_choice.py`` on the 1M-triangle city (session 35, renders without huge
+#: pages, two runs of three): whole processes by izb took 0.18-0.28 s longer than by raytrace
+#: on the 1 m map (2.61 M rays) and 0.19-0.35 s on the 1080p overview (1.57 M); the model
+#: says 0.28 s for both. (1000 ns a caster and nothing per receiver, fitted at cd5487c with
+#: huge pages, said 0.9-1.0 s.)
+IZB_FIRST_USE_NS_PER_CASTER = 200.0
+IZB_FIRST_USE_NS_PER_RECEIVER = 70.0
 #: izb is taken only when it saves at least this much over all the calls: below it nobody
 #: notices, while izb holds its sorted copy and work arrays (issue 41: +236 MB on the 1M map)
 #: and, on a fresh install, compiles its own kernels on top of the kd-tree's.
@@ -88,7 +95,8 @@ def choose_engine(n_rays: int, n_casters: int, *, shared_direction: bool = True,
     if not shared_direction:
         return EngineChoice("raytrace", "rays in many directions (izb needs one sun)", float("inf"),
                             rt_ms)
-    first = 0.0 if warm else m * IZB_FIRST_USE_NS_PER_CASTER / max(int(calls), 1)
+    first = 0.0 if warm else (m * IZB_FIRST_USE_NS_PER_CASTER
+                              + n * IZB_FIRST_USE_NS_PER_RECEIVER) / max(int(calls), 1)
     izb_ms = (m * IZB_NS_PER_CASTER + n * IZB_NS_PER_RECEIVER + first) * 1e-6
     saving_ms = (rt_ms - izb_ms) * max(int(calls), 1) - (0.0 if compiled else IZB_COMPILE_MS)
     engine = "izb" if saving_ms >= IZB_MIN_SAVING_MS else "raytrace"
