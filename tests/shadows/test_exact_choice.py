@@ -20,9 +20,9 @@ def test_a_single_large_map_in_a_fresh_process_goes_to_raytrace():
     choice = choose_engine(4_100_000, CITY_1M)
     assert choice.engine == "raytrace" and "caster sort in this call" in choice.reason
     # Session 35 (benchmarks/exact_choice.py, renders without huge pages): izb's whole process
-    # took 0.18-0.28 s longer on the 1 m map (2,609,871 rays) and 0.19-0.35 s on the overview
-    # (1,566,120): its first call's receivers cost about what kd-tree rays do. -v's estimates
-    # differ by about that, not by the first model's 0.9-1.0 s.
+    # took 0.18 and 0.28 s longer on the 1 m map (2,609,871 rays) and 0.19-0.35 s on the
+    # overview (1,566,120): its first call's receivers cost about what kd-tree rays do. -v's
+    # estimates differ by about that, not by the first model's 0.9-1.0 s.
     for rays in (1_566_120, 2_609_871, 4_100_000):
         one = choose_engine(rays, CITY_1M)
         assert one.engine == "raytrace"

@@ -39,9 +39,9 @@ IZB_NS_PER_RECEIVER = 30.0
 #: faulting in their pages; and per receiver its work arrays' fresh pages, which later calls
 #: reuse (a first call's receiver costs about what a kd-tree ray does). Fitted to
 #: ``benchmarks/exact_choice.py`` on the 1M-triangle city (session 35, renders without huge
-#: pages, two runs of three): whole processes by izb took 0.18-0.28 s longer than by raytrace
-#: on the 1 m map (2.61 M rays) and 0.19-0.35 s on the 1080p overview (1.57 M); the model
-#: says 0.28 s for both. (1000 ns a caster and nothing per receiver, fitted at cd5487c with
+#: pages): whole processes by izb took 0.18 and 0.28 s longer than by raytrace on the 1 m map
+#: (2.61 M rays, two runs) and 0.19-0.35 s on the 1080p overview (1.57 M, four runs); the
+#: model says 0.28 s for both. (1000 ns a caster and nothing per receiver, fitted at cd5487c with
 #: huge pages, said 0.9-1.0 s.)
 IZB_FIRST_USE_NS_PER_CASTER = 200.0
 IZB_FIRST_USE_NS_PER_RECEIVER = 70.0
