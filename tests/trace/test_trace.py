@@ -472,6 +472,31 @@ def test_pixel_shadow_origins_equal_the_gathered_pixels_origins(sample_city_scen
             shadow_rays_from_pixels(*args, mask, row_starts(mask), ctx.sun.direction)
 
 
+
+def test_facing_origins_of_some_rows_are_the_same_from_either_source(sample_city_scene):
+    """ShadowContext.facing_origins_of (the crowns' pass): rows taken from the frame's origins
+    when an exact technique made them, else made from those rows of the gathered points and
+    normals; both equal the gathered rows' shadow_rays_from_surface bit for bit."""
+    from cityshade.frame.pipeline import camera_pass
+    from cityshade.geo.sun import sun_from_angles
+    from cityshade.raster.camera import map_view
+
+    scene = sample_city_scene
+    cp = camera_pass(scene, map_view(scene, 0.5), 7305.0, ground="auto")
+    sun = sun_from_angles(135.0, 30.0, scene.crs, scene.origin_m)
+    gathered, made = cp.context(sun), cp.context(sun)
+    made.shared = gathered.shared = None           # each its own arrays
+    rows = np.arange(0, int(made.faces.sum()), 7)
+    want = shadow_rays_from_surface(gathered.facing_points[rows],
+                                    gathered.facing_normals[rows], sun.direction)
+    assert "facing_origins" not in gathered.__dict__
+    assert gathered.facing_origins_of(rows).tobytes() == want.tobytes()
+    assert "facing_origins" not in gathered.__dict__      # not made for a few rows
+    made.facing_origins
+    assert "facing_points" not in made.__dict__
+    assert made.facing_origins_of(rows).tobytes() == want.tobytes()
+    assert "facing_points" not in made.__dict__           # taken, nothing gathered
+
 def test_shared_direction_shadow_rays_agree_with_brute_force(city, tree):
     """Sun rays (one direction for all, whose terms the kernel computes once) give the
     brute-force answer, and the same as the per-ray path on the same rays."""

@@ -129,6 +129,19 @@ class ShadowContext:
             self.surfaces.position_m, self.normal, self.faces, _row_starts(self.faces),
             self.sun.direction))
 
+    def facing_origins_of(self, rows: np.ndarray) -> np.ndarray:
+        """(len(rows), 3) shadow-ray origins of the facing pixels ``rows`` (indices in the
+        :attr:`faces` order): taken from :attr:`facing_origins` when an exact technique made
+        them, else made from those rows of the gathered points and normals (a map technique's
+        planner gathered them). The same values either way."""
+        if "facing_origins" in self.__dict__ or "facing_origins" in (self.shared or {}):
+            return take_pixels(self.facing_origins, rows)
+        from cityshade.trace import shadow_rays_from_surface
+
+        return shadow_rays_from_surface(take_pixels(self.facing_points, rows),
+                                        take_pixels(self.facing_normals, rows),
+                                        np.asarray(self.sun.direction, np.float64))
+
     def receivers(self, pixels: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """(points, oriented normals) of the pixels of mask ``pixels`` (the gathered facing
         ones when ``pixels`` is :attr:`faces` itself)."""

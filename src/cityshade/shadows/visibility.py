@@ -180,20 +180,22 @@ def with_crowns(run, ctx):
     opaque = dataclasses.replace(ctx, scene=veg.opaque, oriented_normal=ctx.normal)
     if not ctx.sun.above_horizon:
         return run(opaque)
-    for name in ("faces", "facing_points", "facing_normals"):
-        opaque.__dict__[name] = getattr(ctx, name)
+    # Those ctx made already; the rest the technique makes on opaque (or in the contexts'
+    # shared dict) and the crowns' pass reads from there: an exact technique's origins, a map
+    # technique's gathered points and normals.
+    for name in ("faces", "facing_points", "facing_normals", "facing_origins"):
+        if name in ctx.__dict__:
+            opaque.__dict__[name] = ctx.__dict__[name]
     result = run(opaque)
     t0 = time.perf_counter()
-    from cityshade.shadows import scatter_pixels, take_pixels
-    from cityshade.trace import shadow_rays_from_surface
+    from cityshade.shadows import scatter_pixels
 
-    faces = ctx.faces
+    faces = opaque.faces
     lit = result.lit[faces]
     rays = np.flatnonzero(lit > 0)
     if rays.size:
         direction = np.asarray(ctx.sun.direction, np.float64)
-        origins = shadow_rays_from_surface(take_pixels(ctx.facing_points, rays),
-                                           take_pixels(ctx.facing_normals, rays), direction)
+        origins = opaque.facing_origins_of(rays)
         tau = veg.transmissivity(vegetation_settings(ctx.scene), day_of_year(ctx.sun))
         crowns = crowns_pass(veg, origins, direction, ctx.t_days,
                              np.arange(rays.size), (tau,))[0]
